@@ -1,0 +1,133 @@
+"""One turtle: its state and turtlesim's ``Turtle::update`` step."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+from turtletui.sim.constants import (
+    ARENA_SIZE,
+    COMMAND_TIMEOUT,
+    PEN_COLOR,
+    PEN_WIDTH,
+    ROTATE_SPEED,
+    ROTATE_TOLERANCE,
+    normalize_angle,
+)
+from turtletui.sim.events import Event, RotationFeedback, RotationFinished, WallHit
+
+_cos = math.cos
+_PI = math.pi
+_sin = math.sin
+
+
+@dataclass(eq=False)
+class RotationGoal:
+    """An accepted rotate_absolute goal: turn ``turtle`` to heading ``theta``.
+
+    ``status`` is "active" until the goal succeeds, is canceled or aborted.
+    """
+
+    turtle: str
+    theta: float
+    start_theta: float
+    status: str = "active"
+    cancel_requested: bool = False
+    delta: float = 0.0
+
+
+@dataclass(eq=False, slots=True)
+class Turtle:
+    """State of one turtle, in metres, radians and seconds (world frame, y up)."""
+
+    name: str
+    x: float
+    y: float
+    theta: float
+    vx: float = 0.0
+    """Commanded forward speed, m/s."""
+    vy: float = 0.0
+    """Commanded sideways speed, m/s (used only when the world is holonomic)."""
+    wz: float = 0.0
+    """Commanded turn rate, rad/s."""
+    last_command_time: float = 0.0
+    pen_on: bool = True
+    pen_color: tuple[int, int, int] = PEN_COLOR
+    pen_width: int = PEN_WIDTH
+    teleports: list[tuple[bool, float, float, float]] = field(default_factory=list)
+    """Queued (relative, a, b, c) requests: absolute (x, y, theta), relative (linear, angular, -)."""
+    rotation: RotationGoal | None = None
+    color: tuple[int, int, int] = (0, 0, 0)
+    """Last colour sensed under the turtle (set by World.step when asked)."""
+
+    def update(self, now: float, dt: float, draw, events: list[Event]) -> None:
+        """Advance this turtle by ``dt`` seconds at simulated time ``now``.
+
+        Follows turtlesim's order: teleports, rotate_absolute goal, command
+        timeout, semi-implicit heading update, move, clamp. ``draw(x0, y0,
+        x1, y1, colour, width)`` paints a pen segment. Pose publishing happens
+        in the caller, between the clamp and the final pen segment, as in
+        turtlesim: the colour sensor reads the image before this step's line.
+        """
+        if self.teleports:
+            self._apply_teleports(draw)
+        if self.rotation is not None:
+            self._advance_rotation(now, events)
+        if now - self.last_command_time > COMMAND_TIMEOUT:
+            self.vx = self.vy = self.wz = 0.0
+        theta = self.theta + self.wz * dt
+        if not -_PI <= theta < _PI:
+            theta = normalize_angle(theta)
+        self.theta = theta
+        vx = self.vx
+        vy = self.vy
+        c = _cos(theta)
+        s = _sin(theta)
+        x = self.x + (c * vx - s * vy) * dt
+        y = self.y + (s * vx + c * vy) * dt
+        if x < 0.0 or x > ARENA_SIZE or y < 0.0 or y > ARENA_SIZE:
+            events.append(WallHit(self.name, x, y))
+            x = min(max(x, 0.0), ARENA_SIZE)
+            y = min(max(y, 0.0), ARENA_SIZE)
+        self.x = x
+        self.y = y
+
+    def _apply_teleports(self, draw) -> None:
+        for relative, a, b, c in self.teleports:
+            old_x, old_y = self.x, self.y
+            if relative:
+                self.theta = normalize_angle(self.theta + b)
+                self.x += _cos(self.theta) * a
+                self.y += _sin(self.theta) * a
+            else:
+                # turtlesim stores y flipped and clamps it at the top edge:
+                # pos.y = max(0, height - y)
+                self.x = a
+                self.y = min(b, ARENA_SIZE)
+                self.theta = normalize_angle(c)
+            if self.pen_on:
+                draw(old_x, old_y, self.x, self.y, self.pen_color, self.pen_width)
+        self.teleports.clear()
+
+    def _advance_rotation(self, now: float, events: list[Event]) -> None:
+        goal = self.rotation
+        assert goal is not None
+        theta = normalize_angle(self.theta)
+        goal.delta = normalize_angle(goal.start_theta - theta)
+        if goal.cancel_requested:
+            goal.status = "canceled"
+            self.rotation = None
+            self.vx = self.vy = self.wz = 0.0
+            events.append(RotationFinished(goal, "canceled", goal.delta))
+            return
+        remaining = normalize_angle(goal.theta - theta)
+        events.append(RotationFeedback(goal, remaining))
+        if abs(remaining) < ROTATE_TOLERANCE:
+            goal.status = "succeeded"
+            self.rotation = None
+            self.vx = self.vy = self.wz = 0.0
+            events.append(RotationFinished(goal, "succeeded", goal.delta))
+        else:
+            self.wz = -ROTATE_SPEED if remaining < 0.0 else ROTATE_SPEED
+            self.vx = self.vy = 0.0
+            self.last_command_time = now
