@@ -57,6 +57,11 @@ class Turtle:
     teleports: list[tuple[bool, float, float, float]] = field(default_factory=list)
     """Queued (relative, a, b, c) requests: absolute (x, y, theta), relative (linear, angular, -)."""
     rotation: RotationGoal | None = None
+    distance: float = 0.0
+    """Metres driven so far (teleports excluded)."""
+    wall_hits: int = 0
+    """Times the turtle ran into a wall (a stay against the wall counts once)."""
+    touching_wall: bool = False
     color: tuple[int, int, int] = (0, 0, 0)
     """Last colour sensed under the turtle (set by World.step when asked)."""
 
@@ -87,8 +92,13 @@ class Turtle:
         y = self.y + (s * vx + c * vy) * dt
         if x < 0.0 or x > ARENA_SIZE or y < 0.0 or y > ARENA_SIZE:
             events.append(WallHit(self.name, x, y))
+            if not self.touching_wall:
+                self.touching_wall = True
+                self.wall_hits += 1
             x = min(max(x, 0.0), ARENA_SIZE)
             y = min(max(y, 0.0), ARENA_SIZE)
+        elif self.touching_wall:
+            self.touching_wall = False
         self.x = x
         self.y = y
 

@@ -19,6 +19,7 @@ from turtletui.sim.turtle import RotationGoal, Turtle
 
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*\Z")
 _isfinite = math.isfinite
+_hypot = math.hypot
 
 
 class SimError(ValueError):
@@ -87,6 +88,8 @@ class World:
             old_x = turtle.x
             old_y = turtle.y
             turtle.update(now, DT, draw, events)
+            if turtle.x != old_x or turtle.y != old_y:
+                turtle.distance += _hypot(turtle.x - old_x, turtle.y - old_y)
             if sense_color:
                 turtle.color = canvas.color_at(turtle.x, turtle.y)
             if turtle.pen_on and (turtle.x != old_x or turtle.y != old_y):

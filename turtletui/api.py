@@ -1,0 +1,167 @@
+"""Library API: run controllers against the simulated turtlesim from Python.
+
+    >>> from turtletui.api import run
+    >>> result = run(["my_node.py"], duration=10.0)
+    >>> result.wall_hits, result.final_poses["turtle1"]
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from turtletui.compat.ros_args import RosArgsError, parse_ros_args
+from turtletui.graph.core import NS_PER_S
+from turtletui.graph.logs import LogRecord
+from turtletui.runtime.loader import ControllerError, ControllerSpec
+from turtletui.runtime.report import CrashReport
+from turtletui.runtime.simulation import Simulation
+
+
+@dataclass
+class TurtleSummary:
+    """Where a turtle ended and what it did."""
+
+    x: float
+    y: float
+    theta: float
+    distance: float
+    wall_hits: int
+
+
+@dataclass
+class RunResult:
+    """Outcome of ``run``: times in seconds, distances in metres."""
+
+    sim_time: float
+    wall_time: float
+    turtles: dict[str, TurtleSummary]
+    logs: list[LogRecord]
+    crashes: list[CrashReport] = field(default_factory=list)
+    service_calls: list[tuple[float, str, Any, Any]] = field(default_factory=list)
+    poses: dict[str, list[tuple[float, float, float, float]]] = field(default_factory=dict)
+    """(t, x, y, theta) per turtle at every pose, if ``keep_poses`` was asked."""
+
+    @property
+    def distance(self) -> float:
+        return sum(t.distance for t in self.turtles.values())
+
+    @property
+    def wall_hits(self) -> int:
+        return sum(t.wall_hits for t in self.turtles.values())
+
+    @property
+    def ok(self) -> bool:
+        return not self.crashes
+
+    def summary(self) -> str:
+        """The one line ``turtletui run --headless`` ends with."""
+        status = "ok" if self.ok else f"{len(self.crashes)} controller(s) failed"
+        return (
+            f"sim time {self.sim_time:.3f} s, wall time {self.wall_time:.3f} s, "
+            f"distance {self.distance:.2f} m, wall hits {self.wall_hits}: {status}"
+        )
+
+
+def as_spec(controller: str | Path | ControllerSpec, trusted: bool) -> ControllerSpec:
+    """A ControllerSpec for a path (or an existing spec)."""
+    if isinstance(controller, ControllerSpec):
+        return controller
+    path = Path(controller)
+    return ControllerSpec(name=path.stem, path=path, trusted=trusted)
+
+
+def run(
+    controllers: Sequence[str | Path | ControllerSpec],
+    *,
+    duration: float = 60.0,
+    seed: int = 0,
+    realtime: bool = False,
+    sandbox: bool | None = None,
+    ros_args: Sequence[str] = (),
+    record: str | Path | None = None,
+    on_log: Callable[[LogRecord], None] | None = None,
+    keep_poses: bool = False,
+    keep_calls: bool = True,
+    setup: Callable[[Simulation], None] | None = None,
+) -> RunResult:
+    """Run controllers for ``duration`` simulated seconds and summarise the run.
+
+    Files are sandboxed in a child process unless ``sandbox=False``; specs
+    marked trusted run in this process. ``ros_args`` is a ``--ros-args``
+    section (``["-p", "goal_x:=3.0"]``) given to every controller. Raises
+    ControllerError or RosArgsError (one-line messages) for bad input.
+    """
+    if not (duration > 0 and duration < 1e7):
+        raise ValueError(f"duration must be a positive number of seconds, got {duration}")
+    args = list(ros_args)
+    if args and args[0] != "--ros-args":
+        args = ["--ros-args", *args]
+    parse_ros_args(args)  # fail early with a one-line RosArgsError
+    specs = [as_spec(c, trusted=sandbox is False) for c in controllers]
+    logs: list[LogRecord] = []
+    sinks = [logs.append] if on_log is None else [logs.append, on_log]
+    sim = Simulation(realtime=realtime, log_sinks=sinks)
+    if setup is not None:
+        setup(sim)
+    calls: list[tuple[float, str, Any, Any]] = []
+    poses: dict[str, list[tuple[float, float, float, float]]] = {}
+
+    def tap(kind: str, payload: Any) -> None:
+        if kind == "service":
+            calls.append((sim.t, *payload))
+        elif kind == "topic" and keep_poses and payload[0].name.endswith("/pose"):
+            msg = payload[1]
+            poses.setdefault(payload[0].name.split("/")[1], []).append((sim.t, msg.x, msg.y, msg.theta))
+
+    if keep_poses or keep_calls:
+        sim.graph.taps.append(tap)
+    recorder = None
+    if record is not None:
+        from turtletui.runtime.recorder import Recorder
+
+        recorder = Recorder(sim.graph, record)
+    end_ns = int(round(duration * NS_PER_S))
+    crashes: list[CrashReport] = []
+    started = time.perf_counter()
+    try:
+        inprocess = [s for s in specs if s.trusted or sandbox is False]
+        sandboxed = [s for s in specs if s not in inprocess]
+        hosts = []
+        if sandboxed:
+            from turtletui.runtime.sandbox import SandboxHost
+
+            for spec in sandboxed:
+                hosts.append(SandboxHost.start(sim, spec, ros_args=args, seed=seed))
+        if len(inprocess) > 1:
+            raise ControllerError(
+                "only one controller can run in-process at a time; run the others sandboxed"
+            )
+        for spec in inprocess:
+            from turtletui.runtime.inprocess import run_in_process
+
+            crash = run_in_process(sim, spec, end_ns, ros_args=args, seed=seed)
+            if crash is not None:
+                crashes.append(crash)
+                sim.graph.log("turtletui", 40, crash.summary())
+        if sim.graph.now_ns < end_ns:
+            sim.run_until(end_ns)
+        for host in hosts:
+            crash = host.close()
+            if crash is not None:
+                crashes.append(crash)
+    finally:
+        if recorder is not None:
+            # A run cut short by an error keeps what it recorded so far.
+            recorder.close(keep=True)
+    wall = time.perf_counter() - started
+    turtles = {
+        name: TurtleSummary(t.x, t.y, t.theta, t.distance, t.wall_hits) for name, t in sim.world.turtles.items()
+    }
+    return RunResult(sim.t, wall, turtles, logs, crashes, calls, poses)
+
+
+__all__ = ["ControllerError", "ControllerSpec", "RosArgsError", "RunResult", "Simulation", "run"]

@@ -1,0 +1,50 @@
+"""The ``turtletui`` command: thin Typer commands over turtletui's library API.
+
+Importing this module must stay cheap (``turtletui --help`` in < 0.15 s): each
+command imports what it needs when it runs, and nothing here imports Textual.
+"""
+
+from __future__ import annotations
+
+import sys
+
+import typer
+
+from turtletui.cli import plugins_cmd, run_cmd
+
+app = typer.Typer(
+    name="turtletui",
+    help="ROS 2's turtlesim in your terminal: run ordinary rclpy nodes against a simulated turtle.",
+    no_args_is_help=True,
+    add_completion=False,
+    pretty_exceptions_enable=False,
+    rich_markup_mode=None,
+)
+app.command("run", context_settings={"allow_extra_args": False})(run_cmd.run)
+app.command("plugins")(plugins_cmd.plugins)
+
+
+@app.callback()
+def _root(
+    version: bool = typer.Option(False, "--version", help="Print the version and exit.", is_eager=True),
+) -> None:
+    if version:
+        from turtletui import __version__
+
+        typer.echo(f"turtletui {__version__}")
+        raise typer.Exit()
+
+
+def split_ros_args(argv: list[str]) -> tuple[list[str], list[str]]:
+    """Cut ``--ros-args ...`` off the command line: ROS's syntax is not Typer's."""
+    if "--ros-args" in argv:
+        i = argv.index("--ros-args")
+        return argv[:i], argv[i:]
+    return argv, []
+
+
+def main() -> None:
+    """Console-script entry point."""
+    argv, ros_args = split_ros_args(sys.argv[1:])
+    run_cmd.ROS_ARGS[:] = ros_args
+    app(args=argv, prog_name="turtletui")

@@ -1,0 +1,42 @@
+"""The rclpy-shaped API handed to controller code.
+
+Implementation lives in this package; ``ros/`` holds thin packages named like
+ROS's (rclpy, geometry_msgs, turtlesim, ...) that re-export it. ``install()``
+puts ``ros/`` first on sys.path: turtletui calls it only in processes that run
+controller code, so a real ROS installation elsewhere is never shadowed.
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+SHIM_PATH = str(Path(__file__).with_name("ros"))
+ROS_PACKAGES = (
+    "rclpy",
+    "geometry_msgs",
+    "std_msgs",
+    "std_srvs",
+    "sensor_msgs",
+    "builtin_interfaces",
+    "rcl_interfaces",
+    "action_msgs",
+    "turtlesim",
+    "turtlesim_msgs",
+)
+
+
+def install() -> None:
+    """Make ``import rclpy`` (and the message packages) resolve to turtletui's."""
+    if sys.path[:1] != [SHIM_PATH]:
+        if SHIM_PATH in sys.path:
+            sys.path.remove(SHIM_PATH)
+        sys.path.insert(0, SHIM_PATH)
+    for name in list(sys.modules):
+        top = name.partition(".")[0]
+        if top in ROS_PACKAGES:
+            module = sys.modules[name]
+            origin = getattr(module, "__file__", None) or ""
+            if not origin.startswith(SHIM_PATH):
+                # A real ROS package imported earlier would win over ours.
+                del sys.modules[name]

@@ -1,0 +1,169 @@
+"""``rclpy.action.ActionClient``: goals, feedback and results over the graph."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+from turtletui.compat.task import Future
+
+_NS = 1_000_000_000
+
+
+class GoalStatus:
+    """Numbers of action_msgs/msg/GoalStatus."""
+
+    STATUS_UNKNOWN = 0
+    STATUS_ACCEPTED = 1
+    STATUS_EXECUTING = 2
+    STATUS_CANCELING = 3
+    STATUS_SUCCEEDED = 4
+    STATUS_CANCELED = 5
+    STATUS_ABORTED = 6
+
+
+_STATUS = {"succeeded": 4, "canceled": 5, "aborted": 6}
+
+
+class _FeedbackMessage:
+    """What a feedback callback receives: ``msg.feedback`` is the Feedback."""
+
+    __slots__ = ("goal_id", "feedback")
+
+    def __init__(self, goal_id: int, feedback: Any) -> None:
+        self.goal_id = goal_id
+        self.feedback = feedback
+
+
+class _GetResultResponse:
+    """What ``get_result_async()`` completes with: ``.result`` and ``.status``."""
+
+    __slots__ = ("status", "result")
+
+    def __init__(self, status: int, result: Any) -> None:
+        self.status = status
+        self.result = result
+
+
+class _CancelResponse:
+    ERROR_NONE = 0
+    ERROR_REJECTED = 1
+
+    def __init__(self, accepted: bool) -> None:
+        self.return_code = 0 if accepted else 1
+        self.goals_canceling = []
+
+
+class ClientGoalHandle:
+    """The client's view of one goal."""
+
+    def __init__(self, client: ActionClient, accepted: bool) -> None:
+        self._client = client
+        self._accepted = accepted
+        self._status = GoalStatus.STATUS_ACCEPTED if accepted else GoalStatus.STATUS_UNKNOWN
+        self._result_future = Future()
+        self._server_handle: Any = None
+
+    @property
+    def accepted(self) -> bool:
+        return self._accepted
+
+    @property
+    def status(self) -> int:
+        return self._status
+
+    @property
+    def goal_id(self) -> Any:
+        return self._server_handle.goal_id if self._server_handle else None
+
+    def get_result_async(self) -> Future:
+        return self._result_future
+
+    def get_result(self) -> Any:
+        self._client._host().spin_until(self._result_future.done, None)
+        return self._result_future.result()
+
+    def cancel_goal_async(self) -> Future:
+        future = Future()
+        host = self._client._host()
+        if self._server_handle is not None and self._result_future.done() is False:
+            self._status = GoalStatus.STATUS_CANCELING
+            host.graph.cancel_goal(self._server_handle)
+            future.set_result(_CancelResponse(True))
+        else:
+            future.set_result(_CancelResponse(False))
+        return future
+
+    def cancel_goal(self) -> Any:
+        return self.cancel_goal_async().result()
+
+    def _finished(self, status: str, result: Any) -> None:
+        self._status = _STATUS.get(status, GoalStatus.STATUS_UNKNOWN)
+        self._result_future.set_result(_GetResultResponse(self._status, result))
+
+
+class ActionClient:
+    """Sends goals to an action server, as ``rclpy.action.ActionClient``."""
+
+    def __init__(self, node: Any, action_type: Any, action_name: str, **kwargs: Any) -> None:
+        if not all(hasattr(action_type, part) for part in ("Goal", "Result", "Feedback")):
+            raise TypeError(
+                f"ActionClient needs an action class such as turtlesim.action.RotateAbsolute, got {action_type!r}"
+            )
+        self._node = node
+        self._action_type = action_type
+        self._action_name = node.resolve_topic_name(action_name)
+        self._record = node.context.host.graph.add_action_client(node._record, self._action_name, action_type)
+
+    def _host(self) -> Any:
+        return self._node.context.host
+
+    def server_is_ready(self) -> bool:
+        return self._action_name in self._host().graph.action_servers
+
+    def wait_for_server(self, timeout_sec: float | None = None) -> bool:
+        if self.server_is_ready():
+            return True
+        timeout = None if timeout_sec is None else int(timeout_sec * _NS)
+        return self._host().spin_until(self.server_is_ready, timeout, callbacks=False)
+
+    def send_goal_async(
+        self, goal: Any, feedback_callback: Callable[[Any], None] | None = None, goal_uuid: Any = None
+    ) -> Future:
+        """Send ``goal``; the Future completes with a ClientGoalHandle."""
+        if type(goal) is not self._action_type.Goal:
+            raise TypeError(f"send_goal_async() on {self._action_name} expects a Goal of {self._action_type}, got {goal!r}")
+        future = Future()
+        host = self._host()
+        handle = ClientGoalHandle(self, accepted=True)
+
+        def on_accepted(server_handle: Any) -> None:
+            handle._server_handle = server_handle
+            if handle._status == GoalStatus.STATUS_ACCEPTED:
+                handle._status = GoalStatus.STATUS_EXECUTING
+            future.set_result(handle)
+
+        def on_feedback(feedback: Any) -> None:
+            if feedback_callback is not None:
+                feedback_callback(_FeedbackMessage(handle.goal_id, feedback))
+
+        host.graph.send_goal(
+            self._action_name,
+            goal,
+            host.owner,
+            host.wrap_callback(on_accepted),
+            host.wrap_callback(on_feedback),
+            host.wrap_callback(handle._finished),
+        )
+        return future
+
+    def send_goal(self, goal: Any, feedback_callback: Callable[[Any], None] | None = None, goal_uuid: Any = None) -> Any:
+        future = self.send_goal_async(goal, feedback_callback)
+        self._host().spin_until(future.done, None)
+        handle = future.result()
+        return handle.get_result() if handle else None
+
+    def destroy(self) -> None:
+        graph = self._host().graph
+        if self._record in graph.action_clients:
+            graph.action_clients.remove(self._record)

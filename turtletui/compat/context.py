@@ -1,0 +1,127 @@
+"""``rclpy.context``: the link between controller code and the host that runs it.
+
+A *host* (turtletui.runtime) owns the graph and decides how time passes. It
+binds itself with ``bind_host`` before the controller is loaded; ``rclpy.init``
+then attaches the default context to it. Controller code never sees the host.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any, Protocol
+
+from turtletui.compat.ros_args import RosArgs, parse_ros_args
+
+if TYPE_CHECKING:
+    from turtletui.graph.core import Graph
+
+
+class Host(Protocol):
+    """What the runtime offers the compat layer (see turtletui.runtime.host)."""
+
+    graph: Graph
+    owner: str
+    callback_depth: int
+
+    def spin_once(self, timeout_ns: int | None) -> bool:
+        """Run callbacks of this host (advancing time as needed) until one ran
+        or ``timeout_ns`` simulated ns passed. False when the run has ended."""
+
+    def spin_until(self, done: Any, timeout_ns: int | None) -> bool:
+        """Spin until ``done()`` is true, the timeout passes or the run ends."""
+
+    def sleep_until(self, t_ns: int) -> bool:
+        """Let simulated time run to ``t_ns`` without running this host's callbacks."""
+
+    @property
+    def running(self) -> bool:
+        """False once the run has ended (the context then shuts down)."""
+
+
+_current_host: Host | None = None
+
+
+def bind_host(host: Host | None) -> None:
+    """Make ``host`` the one that ``rclpy.init`` and new contexts attach to."""
+    global _current_host
+    _current_host = host
+
+
+def current_host() -> Host:
+    if _current_host is None:
+        raise RuntimeError(
+            "turtletui's rclpy only works inside a controller run by turtletui: "
+            "use `turtletui run FILE` or turtletui.api.run()"
+        )
+    return _current_host
+
+
+class Context:
+    """Shared state of the nodes of one program, as ``rclpy.context.Context``."""
+
+    def __init__(self) -> None:
+        self._host: Host | None = None
+        self._ok = False
+        self._nodes: list[Any] = []
+        self._callbacks: list[Any] = []
+        self.ros_args = RosArgs()
+
+    @property
+    def host(self) -> Host:
+        if self._host is None:
+            return current_host()
+        return self._host
+
+    def init(self, args: list[str] | None = None, *, initialize_logging: bool = True, domain_id: int | None = None) -> None:
+        if self._ok:
+            raise RuntimeError("Context.init() must only be called once")
+        import sys
+
+        self._host = current_host()
+        self.ros_args = parse_ros_args(sys.argv if args is None else list(args))
+        self._ok = True
+
+    def ok(self) -> bool:
+        return self._ok and self._host is not None and self._host.running
+
+    def shutdown(self) -> None:
+        if not self._ok:
+            raise RuntimeError("Context must be initialized before it can be shutdown")
+        self._shutdown()
+
+    def try_shutdown(self) -> None:
+        if self._ok:
+            self._shutdown()
+
+    def _shutdown(self) -> None:
+        self._ok = False
+        for callback in list(self._callbacks):
+            callback()
+        for node in list(self._nodes):
+            node.destroy_node()
+
+    def on_shutdown(self, callback: Any) -> None:
+        self._callbacks.append(callback)
+
+    def get_domain_id(self) -> int:
+        return 0
+
+    def track_node(self, node: Any) -> None:
+        self._nodes.append(node)
+
+    def untrack_node(self, node: Any) -> None:
+        if node in self._nodes:
+            self._nodes.remove(node)
+
+
+_default_context = Context()
+
+
+def get_default_context() -> Context:
+    return _default_context
+
+
+def reset_default_context() -> Context:
+    """Start a fresh default context (a host calls this before loading a controller)."""
+    global _default_context
+    _default_context = Context()
+    return _default_context

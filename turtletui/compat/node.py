@@ -1,0 +1,661 @@
+"""``rclpy.node.Node`` and its entities, backed by turtletui's graph."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Sequence
+from typing import Any
+
+from turtletui.compat.context import Context, get_default_context
+from turtletui.compat.logging import RcutilsLogger, get_logger
+from turtletui.compat.parameter import (
+    Parameter,
+    ParameterDescriptor,
+    SetParametersResult,
+    type_name,
+)
+from turtletui.compat.qos import QoSProfile, depth_of
+from turtletui.compat.task import Future
+from turtletui.compat.time import Clock, ClockType, Duration
+from turtletui.graph import core
+from turtletui.interfaces import interface_name
+
+_NS = 1_000_000_000
+
+
+class ParameterNotDeclaredException(Exception):
+    def __init__(self, parameters: Any) -> None:
+        super().__init__(f"Invalid access to undeclared parameter(s): {parameters}")
+
+
+class ParameterAlreadyDeclaredException(Exception):
+    def __init__(self, parameters: Any) -> None:
+        super().__init__(f"Parameter(s) already declared: {parameters}")
+
+
+class InvalidParameterTypeException(Exception):
+    def __init__(self, parameter: Parameter, expected_type: Any) -> None:
+        value = parameter.value
+        super().__init__(
+            f"Trying to set parameter '{parameter.name}' to '{value}' of type "
+            f"'{type_name(value) if value is not None else 'NOT_SET'}', expecting type "
+            f"'{expected_type.name}'" + _type_hint(value, expected_type)
+        )
+
+
+def _type_hint(value: Any, expected: Parameter.Type) -> str:
+    if expected is Parameter.Type.DOUBLE and isinstance(value, int) and not isinstance(value, bool):
+        return f" (write {value}.0: ROS reads {value} as an integer)"
+    return ""
+
+
+def _check_msg_type(msg_type: Any, what: str) -> str:
+    try:
+        return interface_name(msg_type)
+    except Exception:
+        raise TypeError(
+            f"{what} needs a ROS message class such as geometry_msgs.msg.Twist, got {msg_type!r}"
+        ) from None
+
+
+class Publisher:
+    """Publishes messages of one type on one topic."""
+
+    def __init__(self, node: Node, record: core.Publisher, qos_profile: QoSProfile | int) -> None:
+        self._node = node
+        self._record = record
+        self.msg_type = record.topic.msg_type
+        self.qos_profile = qos_profile
+        self._publish = node.context.host.graph.publish
+        self._topic = record.topic
+
+    @property
+    def topic_name(self) -> str:
+        return self._topic.name
+
+    @property
+    def topic(self) -> str:
+        return self._topic.name
+
+    def publish(self, msg: Any) -> None:
+        """Send ``msg`` to every subscriber of the topic."""
+        if type(msg) is not self.msg_type:
+            raise TypeError(
+                f"publish() on {self._topic.name} expects a {self._topic.type_name} message, got "
+                + (_describe(msg))
+            )
+        self._publish(self._topic, msg)
+
+    def get_subscription_count(self) -> int:
+        return len(self._topic.subscriptions)
+
+    def wait_for_all_acked(self, timeout: Duration = Duration(seconds=-1)) -> bool:
+        return True
+
+    def destroy(self) -> None:
+        self._node.destroy_publisher(self)
+
+
+def _describe(msg: Any) -> str:
+    try:
+        return interface_name(type(msg))
+    except Exception:
+        return f"{type(msg).__name__} {msg!r}"
+
+
+class Subscription:
+    """Calls ``callback(msg)`` for each message on a topic."""
+
+    def __init__(self, node: Node, record: core.Subscription, callback: Callable, qos_profile: Any) -> None:
+        self._node = node
+        self._record = record
+        self.msg_type = record.topic.msg_type
+        self.callback = callback
+        self.qos_profile = qos_profile
+
+    @property
+    def topic_name(self) -> str:
+        return self._record.topic.name
+
+    def destroy(self) -> None:
+        self._node.destroy_subscription(self)
+
+
+class Timer:
+    """Calls ``callback()`` every ``timer_period_ns`` of simulated time."""
+
+    def __init__(self, node: Node, record: core.Timer) -> None:
+        self._node = node
+        self._record = record
+        self._last_call: int | None = None
+
+    @property
+    def timer_period_ns(self) -> int:
+        return self._record.period_ns
+
+    def cancel(self) -> None:
+        self._record.canceled = True
+
+    def is_canceled(self) -> bool:
+        return self._record.canceled
+
+    def reset(self) -> None:
+        graph = self._node.context.host.graph
+        self._record.reset(graph.now_ns)
+        graph.reschedule(self._record)
+
+    def is_ready(self) -> bool:
+        graph = self._node.context.host.graph
+        return not self._record.canceled and self._record.next_due <= graph.now_ns
+
+    def time_since_last_call(self) -> int:
+        graph = self._node.context.host.graph
+        return graph.now_ns - (self._record.next_due - self._record.period_ns)
+
+    def time_until_next_call(self) -> int | None:
+        if self._record.canceled:
+            return None
+        return self._record.next_due - self._node.context.host.graph.now_ns
+
+    def destroy(self) -> None:
+        self._node.destroy_timer(self)
+
+
+class Client:
+    """A service client: ``call_async(request)`` returns a Future of the response."""
+
+    def __init__(self, node: Node, record: core.ServiceClient) -> None:
+        self._node = node
+        self._record = record
+        self.srv_type = record.srv_type
+        self.srv_name = record.name
+
+    def call_async(self, request: Any) -> Future:
+        """Send ``request``; the Future completes when the response arrives."""
+        if type(request) is not self.srv_type.Request:
+            raise TypeError(
+                f"call_async() on {self.srv_name} expects a {self._record.type_name}.Request, got "
+                + _describe(request)
+            )
+        future = Future()
+        host = self._node.context.host
+        host.graph.call(self.srv_name, request, future.set_result, host.owner)
+        return future
+
+    def call(self, request: Any, timeout_sec: float | None = None) -> Any:
+        """Call and wait for the response (never inside a callback: ROS deadlocks)."""
+        host = self._node.context.host
+        if host.callback_depth:
+            raise RuntimeError(
+                f"{self.srv_name}: Client.call() inside a callback would deadlock in ROS 2 "
+                "(the executor cannot deliver the response while your callback waits). "
+                "Use call_async() with add_done_callback() instead."
+            )
+        future = self.call_async(request)
+        host.spin_until(future.done, None if timeout_sec is None else int(timeout_sec * _NS))
+        return future.result()
+
+    def service_is_ready(self) -> bool:
+        return self.srv_name in self._node.context.host.graph.services
+
+    def wait_for_service(self, timeout_sec: float | None = None) -> bool:
+        """Wait (in simulated time) until the service exists; False on timeout."""
+        if self.service_is_ready():
+            return True
+        host = self._node.context.host
+        return host.spin_until(
+            self.service_is_ready, None if timeout_sec is None else int(timeout_sec * _NS), callbacks=False
+        )
+
+    def destroy(self) -> None:
+        self._node.destroy_client(self)
+
+
+class Service:
+    """A service server calling ``callback(request, response) -> response``."""
+
+    def __init__(self, node: Node, record: core.Service, callback: Callable) -> None:
+        self._node = node
+        self._record = record
+        self.srv_type = record.srv_type
+        self.srv_name = record.name
+        self.callback = callback
+
+    def destroy(self) -> None:
+        self._node.destroy_service(self)
+
+
+class Rate:
+    """``node.create_rate(hz).sleep()``: sleeps in simulated time."""
+
+    def __init__(self, node: Node, frequency: float) -> None:
+        if frequency <= 0:
+            raise ValueError("frequency must be > 0")
+        self._node = node
+        self._period_ns = int(_NS / frequency)
+        self._next: int | None = None
+
+    def sleep(self) -> None:
+        host = self._node.context.host
+        now = host.graph.now_ns
+        self._next = now + self._period_ns if self._next is None else max(self._next + self._period_ns, now)
+        host.sleep_until(self._next)
+
+    def destroy(self) -> None:
+        pass
+
+
+class Node:
+    """A ROS 2 node: the base class of every controller."""
+
+    PARAM_REL_TOL = 1e-6
+
+    def __init__(
+        self,
+        node_name: str,
+        *,
+        context: Context | None = None,
+        cli_args: list[str] | None = None,
+        namespace: str | None = None,
+        use_global_arguments: bool = True,
+        enable_rosout: bool = True,
+        start_parameter_services: bool = True,
+        parameter_overrides: list[Parameter] | None = None,
+        allow_undeclared_parameters: bool = False,
+        automatically_declare_parameters_from_overrides: bool = False,
+        enable_logger_service: bool = False,
+    ) -> None:
+        self._context = context or get_default_context()
+        if not self._context.ok():
+            raise RuntimeError(
+                "rclpy.init() has not been called (or the context was shut down): "
+                "call rclpy.init() before creating a node"
+            )
+        if not isinstance(node_name, str) or not node_name or not _valid_name(node_name):
+            raise ValueError(
+                f"Invalid node name {node_name!r}: use letters, digits and underscores, "
+                "not starting with a digit"
+            )
+        from turtletui.compat.ros_args import parse_ros_args
+
+        ros_args = self._context.ros_args
+        local = parse_ros_args(["--ros-args", *cli_args]) if cli_args else None
+        remaps: dict[str, str] = {}
+        overrides: dict[str, Any] = {}
+        if use_global_arguments:
+            remaps.update(ros_args.remaps_for(node_name))
+            overrides.update(ros_args.params_for(node_name))
+        if local is not None:
+            remaps.update(local.remaps_for(node_name))
+            overrides.update(local.params_for(node_name))
+        node_name = remaps.pop("__node", remaps.pop("__name", node_name))
+        namespace = remaps.pop("__ns", namespace or "")
+        if namespace and not namespace.startswith("/"):
+            namespace = "/" + namespace
+        self._overrides = overrides
+        for param in parameter_overrides or ():
+            self._overrides.setdefault(param.name, param.value)
+        self._allow_undeclared = allow_undeclared_parameters
+        host = self._context.host
+        self._graph = host.graph
+        self._record = host.graph.add_node(node_name, namespace, host.owner)
+        self._record.remaps = remaps
+        self._parameters: dict[str, Parameter] = {}
+        self._descriptors: dict[str, ParameterDescriptor] = {}
+        self._on_set: list[Callable] = []
+        self._entities: list[Any] = []
+        self._logger = get_logger(f"{namespace.strip('/').replace('/', '.')}.{node_name}".lstrip("."))
+        self._clock = Clock(clock_type=ClockType.ROS_TIME, context=self._context)
+        self._context.track_node(self)
+        self._destroyed = False
+        if automatically_declare_parameters_from_overrides:
+            for name, value in overrides.items():
+                self.declare_parameter(name, value)
+
+    # -- identity ---------------------------------------------------------------
+    @property
+    def context(self) -> Context:
+        return self._context
+
+    @property
+    def executor(self) -> Any:
+        return getattr(self, "_executor", None)
+
+    @executor.setter
+    def executor(self, value: Any) -> None:
+        self._executor = value
+
+    def get_name(self) -> str:
+        return self._record.name
+
+    def get_namespace(self) -> str:
+        return self._record.namespace or "/"
+
+    def get_fully_qualified_name(self) -> str:
+        return self._record.fqn
+
+    def get_logger(self) -> RcutilsLogger:
+        return self._logger
+
+    def get_clock(self) -> Clock:
+        return self._clock
+
+    # -- names ----------------------------------------------------------------
+    def resolve_topic_name(self, topic: str, *, only_expand: bool = False) -> str:
+        """Expand ``~``, relative names and remappings, as rcl does."""
+        if not isinstance(topic, str) or not topic:
+            raise ValueError(f"Invalid topic name {topic!r}: it must be a non-empty string")
+        remaps = self._record.remaps
+        if topic in remaps:
+            topic = remaps[topic]
+        if topic.startswith("~"):
+            name = self._record.fqn + topic[1:]
+        elif topic.startswith("/"):
+            name = topic
+        else:
+            name = f"{self._record.namespace.rstrip('/')}/{topic}"
+        name = remaps.get(name, name)
+        if not _valid_topic(name):
+            raise ValueError(
+                f"Invalid topic name {topic!r}: use letters, digits, underscores and '/', "
+                "without spaces, '//' or a trailing '/'"
+            )
+        return name
+
+    # -- entities ---------------------------------------------------------------
+    def create_publisher(
+        self,
+        msg_type: Any,
+        topic: str,
+        qos_profile: QoSProfile | int,
+        *,
+        callback_group: Any = None,
+        event_callbacks: Any = None,
+        qos_overriding_options: Any = None,
+        publisher_class: Any = None,
+    ) -> Publisher:
+        _check_msg_type(msg_type, "create_publisher()")
+        depth = depth_of(qos_profile)
+        record = self._graph.add_publisher(self._record, self.resolve_topic_name(topic), msg_type, depth)
+        publisher = Publisher(self, record, qos_profile)
+        self._entities.append(publisher)
+        return publisher
+
+    def create_subscription(
+        self,
+        msg_type: Any,
+        topic: str,
+        callback: Callable[[Any], None],
+        qos_profile: QoSProfile | int,
+        *,
+        callback_group: Any = None,
+        event_callbacks: Any = None,
+        qos_overriding_options: Any = None,
+        raw: bool = False,
+    ) -> Subscription:
+        _check_msg_type(msg_type, "create_subscription()")
+        if not callable(callback):
+            raise TypeError(f"create_subscription() needs a callable callback, got {callback!r}")
+        depth = depth_of(qos_profile)
+        host = self._context.host
+        record = self._graph.add_subscription(
+            self._record, self.resolve_topic_name(topic), msg_type, depth, host.wrap_callback(callback)
+        )
+        subscription = Subscription(self, record, callback, qos_profile)
+        self._entities.append(subscription)
+        return subscription
+
+    def create_timer(
+        self,
+        timer_period_sec: float,
+        callback: Callable[[], None],
+        callback_group: Any = None,
+        clock: Clock | None = None,
+        autostart: bool = True,
+    ) -> Timer:
+        if isinstance(timer_period_sec, bool) or not isinstance(timer_period_sec, (int, float)):
+            raise TypeError(f"timer_period_sec must be a number of seconds, got {timer_period_sec!r}")
+        if not math.isfinite(timer_period_sec) or timer_period_sec <= 0:
+            raise ValueError(f"timer_period_sec must be positive and finite, got {timer_period_sec}")
+        if not callable(callback):
+            raise TypeError(f"create_timer() needs a callable callback, got {callback!r}")
+        host = self._context.host
+        record = self._graph.add_timer(
+            self._record, max(1, int(round(timer_period_sec * _NS))), host.wrap_callback(callback)
+        )
+        if not autostart:
+            record.canceled = True
+        timer = Timer(self, record)
+        self._entities.append(timer)
+        return timer
+
+    def create_rate(self, frequency: float, clock: Clock | None = None) -> Rate:
+        return Rate(self, frequency)
+
+    def create_client(
+        self, srv_type: Any, srv_name: str, *, qos_profile: Any = None, callback_group: Any = None
+    ) -> Client:
+        _check_srv_type(srv_type, "create_client()")
+        record = self._graph.add_client(self._record, self.resolve_topic_name(srv_name), srv_type)
+        client = Client(self, record)
+        self._entities.append(client)
+        return client
+
+    def create_service(
+        self,
+        srv_type: Any,
+        srv_name: str,
+        callback: Callable[[Any, Any], Any],
+        *,
+        qos_profile: Any = None,
+        callback_group: Any = None,
+    ) -> Service:
+        _check_srv_type(srv_type, "create_service()")
+        host = self._context.host
+        name = self.resolve_topic_name(srv_name)
+
+        def handler(request: Any, respond: Callable[[Any], None]) -> None:
+            response = callback(request, srv_type.Response())
+            if type(response) is not srv_type.Response:
+                raise TypeError(
+                    f"service {name}: the callback must return a {interface_name(srv_type)}.Response, "
+                    f"got {response!r}"
+                )
+            respond(response)
+
+        record = self._graph.add_service(self._record, name, srv_type, host.wrap_callback(handler))
+        service = Service(self, record, callback)
+        self._entities.append(service)
+        return service
+
+    # -- destruction ---------------------------------------------------------------
+    def destroy_publisher(self, publisher: Publisher) -> bool:
+        self._graph.remove_endpoint(publisher._record)
+        return self._forget(publisher)
+
+    def destroy_subscription(self, subscription: Subscription) -> bool:
+        self._graph.remove_endpoint(subscription._record)
+        return self._forget(subscription)
+
+    def destroy_timer(self, timer: Timer) -> bool:
+        timer._record.canceled = True
+        return self._forget(timer)
+
+    def destroy_client(self, client: Client) -> bool:
+        if client._record in self._graph.clients:
+            self._graph.clients.remove(client._record)
+        return self._forget(client)
+
+    def destroy_service(self, service: Service) -> bool:
+        if self._graph.services.get(service.srv_name) is service._record:
+            del self._graph.services[service.srv_name]
+        return self._forget(service)
+
+    def destroy_rate(self, rate: Rate) -> bool:
+        return True
+
+    def _forget(self, entity: Any) -> bool:
+        if entity in self._entities:
+            self._entities.remove(entity)
+            return True
+        return False
+
+    def destroy_node(self) -> None:
+        """Remove the node and all its entities from the graph."""
+        if self._destroyed:
+            return
+        self._destroyed = True
+        self._graph.remove_node(self._record)
+        self._entities.clear()
+        self._context.untrack_node(self)
+
+    # -- graph queries ----------------------------------------------------------------
+    def count_publishers(self, topic_name: str) -> int:
+        topic = self._graph.topics.get(self.resolve_topic_name(topic_name))
+        return len(topic.publishers) if topic else 0
+
+    def count_subscribers(self, topic_name: str) -> int:
+        topic = self._graph.topics.get(self.resolve_topic_name(topic_name))
+        return len(topic.subscriptions) if topic else 0
+
+    def get_topic_names_and_types(self, no_demangle: bool = False) -> list[tuple[str, list[str]]]:
+        return sorted(
+            (name, [topic.type_name])
+            for name, topic in self._graph.topics.items()
+            if topic.publishers or topic.subscriptions
+        )
+
+    def get_service_names_and_types(self) -> list[tuple[str, list[str]]]:
+        return sorted((name, [s.type_name]) for name, s in self._graph.services.items())
+
+    def get_node_names(self) -> list[str]:
+        return [node.name for node in self._graph.nodes]
+
+    def get_node_names_and_namespaces(self) -> list[tuple[str, str]]:
+        return [(node.name, node.namespace or "/") for node in self._graph.nodes]
+
+    # -- parameters ----------------------------------------------------------------
+    def declare_parameter(
+        self,
+        name: str,
+        value: Any = None,
+        descriptor: ParameterDescriptor | None = None,
+        ignore_override: bool = False,
+    ) -> Parameter:
+        """Declare a parameter; a ``--ros-args -p`` override of the same type wins."""
+        if name in self._parameters:
+            raise ParameterAlreadyDeclaredException([name])
+        if isinstance(value, Parameter.Type):
+            expected, value = value, None
+        else:
+            expected = Parameter.Type.from_parameter_value(value)
+        descriptor = descriptor or ParameterDescriptor()
+        if not ignore_override and name in self._overrides:
+            override = self._overrides[name]
+            if (
+                expected is not Parameter.Type.NOT_SET
+                and not descriptor.dynamic_typing
+                and not expected.check(override)
+            ):
+                raise InvalidParameterTypeException(Parameter(name, value=override), expected)
+            value = override
+        parameter = Parameter(name, value=value)
+        self._parameters[name] = parameter
+        self._descriptors[name] = descriptor
+        self._record.parameters[name] = value
+        return parameter
+
+    def declare_parameters(
+        self, namespace: str, parameters: Sequence[tuple], ignore_override: bool = False
+    ) -> list[Parameter]:
+        declared = []
+        for entry in parameters:
+            name = f"{namespace}.{entry[0]}" if namespace else entry[0]
+            value = entry[1] if len(entry) > 1 else None
+            descriptor = entry[2] if len(entry) > 2 else None
+            declared.append(self.declare_parameter(name, value, descriptor, ignore_override))
+        return declared
+
+    def undeclare_parameter(self, name: str) -> None:
+        if name not in self._parameters:
+            raise ParameterNotDeclaredException(name)
+        del self._parameters[name]
+        self._record.parameters.pop(name, None)
+
+    def has_parameter(self, name: str) -> bool:
+        return name in self._parameters
+
+    def get_parameter(self, name: str) -> Parameter:
+        if name in self._parameters:
+            return self._parameters[name]
+        if self._allow_undeclared:
+            return Parameter(name, Parameter.Type.NOT_SET, None)
+        raise ParameterNotDeclaredException(name)
+
+    def get_parameter_or(self, name: str, alternative_value: Parameter | None = None) -> Parameter:
+        if alternative_value is None:
+            alternative_value = Parameter(name, Parameter.Type.NOT_SET)
+        return self._parameters.get(name, alternative_value)
+
+    def get_parameters(self, names: list[str]) -> list[Parameter]:
+        return [self.get_parameter(name) for name in names]
+
+    def get_parameters_by_prefix(self, prefix: str) -> dict[str, Parameter]:
+        start = f"{prefix}." if prefix else ""
+        return {n[len(start):]: p for n, p in self._parameters.items() if n.startswith(start)}
+
+    def add_on_set_parameters_callback(self, callback: Callable[[list[Parameter]], SetParametersResult]) -> None:
+        self._on_set.insert(0, callback)
+
+    def remove_on_set_parameters_callback(self, callback: Callable) -> None:
+        self._on_set.remove(callback)
+
+    def set_parameters(self, parameter_list: list[Parameter]) -> list[SetParametersResult]:
+        """Set parameters one by one; each gets its own result."""
+        return [self._set_parameters([parameter]) for parameter in parameter_list]
+
+    def set_parameters_atomically(self, parameter_list: list[Parameter]) -> SetParametersResult:
+        return self._set_parameters(parameter_list)
+
+    def _set_parameters(self, parameters: list[Parameter]) -> SetParametersResult:
+        for parameter in parameters:
+            if parameter.name not in self._parameters and not self._allow_undeclared:
+                raise ParameterNotDeclaredException(parameter.name)
+            old = self._parameters.get(parameter.name)
+            descriptor = self._descriptors.get(parameter.name, ParameterDescriptor())
+            if descriptor.read_only:
+                return SetParametersResult(successful=False, reason=f"parameter '{parameter.name}' is read-only")
+            if (
+                old is not None
+                and old.type_ is not Parameter.Type.NOT_SET
+                and parameter.type_ is not old.type_
+                and not descriptor.dynamic_typing
+            ):
+                raise InvalidParameterTypeException(parameter, old.type_)
+        for callback in self._on_set:
+            result = callback(parameters)
+            if not getattr(result, "successful", False):
+                return result if isinstance(result, SetParametersResult) else SetParametersResult(
+                    successful=False, reason="rejected by on-set-parameters callback"
+                )
+        for parameter in parameters:
+            self._parameters[parameter.name] = parameter
+            self._record.parameters[parameter.name] = parameter.value
+        return SetParametersResult(successful=True)
+
+
+def _valid_name(name: str) -> bool:
+    return (name[0].isalpha() or name[0] == "_") and all(c.isalnum() or c == "_" for c in name)
+
+
+def _valid_topic(name: str) -> bool:
+    if not name.startswith("/") or "//" in name or (len(name) > 1 and name.endswith("/")):
+        return False
+    return all(token and (token[0].isalpha() or token[0] == "_") and all(
+        c.isalnum() or c == "_" for c in token
+    ) for token in name[1:].split("/")) if name != "/" else False
+
+
+def _check_srv_type(srv_type: Any, what: str) -> None:
+    if not (hasattr(srv_type, "Request") and hasattr(srv_type, "Response")):
+        raise TypeError(f"{what} needs a ROS service class such as turtlesim.srv.SetPen, got {srv_type!r}")

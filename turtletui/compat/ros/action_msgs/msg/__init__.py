@@ -1,0 +1,1 @@
+from turtletui.compat.action import GoalStatus  # noqa: F401

@@ -1,0 +1,1 @@
+from turtletui.interfaces.builtin_interfaces import *  # noqa: F401,F403

@@ -1,0 +1,6 @@
+from turtletui.compat.parameter import (  # noqa: F401
+    ParameterDescriptor,
+    ParameterType,
+    ParameterValue,
+    SetParametersResult,
+)

@@ -1,0 +1,14 @@
+"""turtletui's rclpy: the API of ROS 2's rclpy over a simulated graph."""
+from turtletui.compat.rclpy_api import (  # noqa: F401
+    create_node,
+    init,
+    ok,
+    shutdown,
+    spin,
+    spin_once,
+    spin_until_future_complete,
+    try_shutdown,
+)
+from turtletui.compat.executors import get_global_executor  # noqa: F401
+from turtletui.compat.context import get_default_context  # noqa: F401
+from rclpy import logging, node, qos, time, duration, executors, task, parameter, callback_groups, clock, action  # noqa: F401,E402

@@ -1,0 +1,1 @@
+from turtletui.compat.action import ActionClient  # noqa: F401

@@ -1,0 +1,1 @@
+from turtletui.compat.action import ActionClient, ClientGoalHandle  # noqa: F401

@@ -1,0 +1,1 @@
+from turtletui.compat.node import Client  # noqa: F401

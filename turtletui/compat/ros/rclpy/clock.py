@@ -1,0 +1,1 @@
+from turtletui.compat.time import Clock, ClockType, ROSClock  # noqa: F401

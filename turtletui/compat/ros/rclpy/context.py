@@ -1,0 +1,1 @@
+from turtletui.compat.context import Context  # noqa: F401

@@ -1,0 +1,1 @@
+from turtletui.compat.executors import *  # noqa: F401,F403

@@ -1,0 +1,1 @@
+from turtletui.compat.parameter import Parameter  # noqa: F401

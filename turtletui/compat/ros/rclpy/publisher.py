@@ -1,0 +1,1 @@
+from turtletui.compat.node import Publisher  # noqa: F401

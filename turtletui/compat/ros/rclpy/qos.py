@@ -1,0 +1,1 @@
+from turtletui.compat.qos import *  # noqa: F401,F403

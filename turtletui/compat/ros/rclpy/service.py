@@ -1,0 +1,1 @@
+from turtletui.compat.node import Service  # noqa: F401

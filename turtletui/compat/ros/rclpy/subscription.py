@@ -1,0 +1,1 @@
+from turtletui.compat.node import Subscription  # noqa: F401

@@ -1,0 +1,1 @@
+from turtletui.compat.task import Future  # noqa: F401

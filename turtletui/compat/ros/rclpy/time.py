@@ -1,0 +1,1 @@
+from turtletui.compat.time import Time  # noqa: F401

@@ -1,0 +1,1 @@
+from turtletui.compat.node import Rate, Timer  # noqa: F401

@@ -1,0 +1,1 @@
+from turtletui.interfaces.turtlesim import RotateAbsolute  # noqa: F401

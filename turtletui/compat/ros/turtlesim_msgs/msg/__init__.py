@@ -1,0 +1,1 @@
+from turtletui.interfaces.turtlesim import Color, Pose  # noqa: F401

@@ -1,0 +1,454 @@
+"""A small deterministic ROS-like middleware: nodes, topics, services, actions, timers.
+
+Time is simulated and kept in integer nanoseconds. ``Graph.advance()`` jumps to
+the next due timer (turtlesim's 16 ms update timer is one of them), fires it,
+and runs every callback that became ready until the graph is quiet. Callbacks
+run in the order they became ready, so a run is the same every time.
+
+Endpoints carry an ``owner``: the controller host they belong to. Hosts that
+live in another process (the sandbox) register ``Remote`` endpoints whose
+callbacks forward to the child instead of running here.
+"""
+
+from __future__ import annotations
+
+import heapq
+from collections import deque
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any
+
+from turtletui.graph.logs import INFO, LogRecord
+
+NS_PER_S = 1_000_000_000
+LOCKSTEP_EPOCH_NS = 1_700_000_000 * NS_PER_S
+"""ROS time at simulated t = 0 in lockstep runs: fixed, so logs repeat bit for bit."""
+
+_RATE_WINDOW = 64
+
+
+class GraphError(Exception):
+    """A request the middleware refuses (wrong type on a topic, unknown service...)."""
+
+
+@dataclass(eq=False)
+class NodeRecord:
+    """A node in the graph, as ``ros2 node list`` sees it."""
+
+    name: str
+    namespace: str
+    owner: str
+    parameters: dict[str, Any] = field(default_factory=dict)
+    remaps: dict[str, str] = field(default_factory=dict)
+    alive: bool = True
+
+    @property
+    def fqn(self) -> str:
+        ns = self.namespace.rstrip("/")
+        return f"{ns}/{self.name}"
+
+
+@dataclass(eq=False)
+class Subscription:
+    node: NodeRecord
+    topic: Topic
+    depth: int
+    callback: Callable[[Any], None]
+    owner: str
+    queue: deque = field(init=False)
+    pending: bool = False
+
+    def __post_init__(self) -> None:
+        self.queue = deque(maxlen=max(self.depth, 1))
+
+
+@dataclass(eq=False)
+class Publisher:
+    node: NodeRecord
+    topic: Topic
+    depth: int
+    owner: str
+
+
+class Topic:
+    """A named channel with one message type, its endpoints and a measured rate."""
+
+    __slots__ = ("name", "msg_type", "type_name", "publishers", "subscriptions", "count", "_stamps", "last")
+
+    def __init__(self, name: str, msg_type: type, type_name: str) -> None:
+        self.name = name
+        self.msg_type = msg_type
+        self.type_name = type_name
+        self.publishers: list[Publisher] = []
+        self.subscriptions: list[Subscription] = []
+        self.count = 0
+        self.last: Any = None
+        self._stamps: deque[int] = deque(maxlen=_RATE_WINDOW)
+
+    def rate(self, now_ns: int) -> float:
+        """Messages per simulated second over the last 64 messages (0 if idle for 2 s)."""
+        stamps = self._stamps
+        if len(stamps) < 2 or now_ns - stamps[-1] > 2 * NS_PER_S:
+            return 0.0
+        span = stamps[-1] - stamps[0]
+        return (len(stamps) - 1) * NS_PER_S / span if span else 0.0
+
+
+@dataclass(eq=False)
+class Timer:
+    node: NodeRecord
+    period_ns: int
+    callback: Callable[[], None]
+    owner: str
+    next_due: int
+    canceled: bool = False
+    seq: int = 0
+
+    def reset(self, now_ns: int) -> None:
+        self.canceled = False
+        self.next_due = now_ns + self.period_ns
+
+
+@dataclass(eq=False)
+class Service:
+    """A service server. ``handler(request, respond)`` calls ``respond(response)``,
+    now or later (a sandboxed server answers in a later exchange)."""
+
+    node: NodeRecord
+    name: str
+    srv_type: type
+    type_name: str
+    handler: Callable[[Any, Callable[[Any], None]], None]
+    owner: str
+
+
+@dataclass(eq=False)
+class ServiceClient:
+    node: NodeRecord
+    name: str
+    srv_type: type
+    type_name: str
+    owner: str
+
+
+@dataclass(eq=False)
+class GoalHandle:
+    """The server side of one action goal."""
+
+    action: ActionServer
+    goal_id: int
+    goal: Any
+    on_feedback: Callable[[Any], None]
+    on_result: Callable[[str, Any], None]
+    status: str = "executing"
+    cancel_requested: bool = False
+    on_cancel: Callable[[], None] | None = None
+
+    def publish_feedback(self, feedback: Any) -> None:
+        if self.status == "executing":
+            self.on_feedback(feedback)
+
+    def finish(self, status: str, result: Any) -> None:
+        """End the goal as succeeded, aborted or canceled, sending its result."""
+        if self.status == "executing":
+            self.status = status
+            self.on_result(status, result)
+
+
+@dataclass(eq=False)
+class ActionServer:
+    """``on_goal(handle)`` accepts a goal and later finishes it through the handle."""
+
+    node: NodeRecord
+    name: str
+    action_type: type
+    type_name: str
+    on_goal: Callable[[GoalHandle], None]
+    owner: str
+
+
+@dataclass(eq=False)
+class ActionClientRecord:
+    node: NodeRecord
+    name: str
+    action_type: type
+    type_name: str
+    owner: str
+
+
+class Graph:
+    """Nodes, topics, services, actions and timers sharing one simulated clock."""
+
+    def __init__(self, *, epoch_ns: int = LOCKSTEP_EPOCH_NS, type_name: Callable[[type], str]) -> None:
+        self.now_ns = 0
+        """Simulated nanoseconds since start."""
+        self.epoch_ns = epoch_ns
+        self.nodes: list[NodeRecord] = []
+        self.topics: dict[str, Topic] = {}
+        self.services: dict[str, Service] = {}
+        self.clients: list[ServiceClient] = []
+        self.action_servers: dict[str, ActionServer] = {}
+        self.action_clients: list[ActionClientRecord] = []
+        self.log_sinks: list[Callable[[LogRecord], None]] = []
+        self.taps: list[Callable[[str, Any], None]] = []
+        """Observers of everything: ``tap(kind, payload)`` with kind "topic"
+        (topic, msg), "service" (name, request, response) or "log" (record)."""
+        self.ready: deque[tuple[str, Callable[[], None]]] = deque()
+        """Callbacks to run, each with the owner it runs for, in arrival order."""
+        self._type_name = type_name
+        self._timers: list[tuple[int, int, Timer]] = []
+        self._seq = 0
+        self._goal_ids = 0
+
+    # -- time ---------------------------------------------------------------
+    @property
+    def t(self) -> float:
+        """Simulated seconds since start."""
+        return self.now_ns / NS_PER_S
+
+    @property
+    def stamp_ns(self) -> int:
+        """ROS time now: the epoch plus simulated time."""
+        return self.epoch_ns + self.now_ns
+
+    def next_due(self) -> int | None:
+        """When the next live timer fires, in simulated ns; None if there is none."""
+        timers = self._timers
+        while timers and (timers[0][2].canceled or timers[0][0] != timers[0][2].next_due):
+            heapq.heappop(timers)
+        return timers[0][0] if timers else None
+
+    def advance(self, until_ns: int | None = None) -> bool:
+        """Jump to the next due timer (not past ``until_ns``) and fire every timer
+        due then. Returns False, leaving time at ``until_ns``, when none is due."""
+        due = self.next_due()
+        if due is None or (until_ns is not None and due > until_ns):
+            if until_ns is not None and until_ns > self.now_ns:
+                self.now_ns = until_ns
+            return False
+        self.now_ns = max(self.now_ns, due)
+        timers = self._timers
+        ready = self.ready
+        while timers and timers[0][0] <= self.now_ns:
+            due, _, timer = heapq.heappop(timers)
+            if timer.canceled or due != timer.next_due:
+                continue
+            timer.next_due = due + timer.period_ns
+            heapq.heappush(timers, (timer.next_due, timer.seq, timer))
+            ready.append((timer.owner, timer.callback))
+        return True
+
+    def run_ready(self) -> None:
+        """Run ready callbacks until none is left."""
+        ready = self.ready
+        while ready:
+            ready.popleft()[1]()
+
+    # -- nodes --------------------------------------------------------------
+    def add_node(self, name: str, namespace: str = "", owner: str = "local") -> NodeRecord:
+        node = NodeRecord(name, namespace or "", owner)
+        self.nodes.append(node)
+        return node
+
+    def remove_node(self, node: NodeRecord) -> None:
+        """Destroy a node and every endpoint it owns."""
+        node.alive = False
+        if node in self.nodes:
+            self.nodes.remove(node)
+        for topic in self.topics.values():
+            topic.publishers = [p for p in topic.publishers if p.node is not node]
+            topic.subscriptions = [s for s in topic.subscriptions if s.node is not node]
+        for name in [n for n, s in self.services.items() if s.node is node]:
+            del self.services[name]
+        for name in [n for n, a in self.action_servers.items() if a.node is node]:
+            del self.action_servers[name]
+        self.clients = [c for c in self.clients if c.node is not node]
+        self.action_clients = [c for c in self.action_clients if c.node is not node]
+        for _, _, timer in self._timers:
+            if timer.node is node:
+                timer.canceled = True
+
+    def remove_owner(self, owner: str) -> None:
+        """Destroy every node of one controller host (it ended or crashed)."""
+        for node in [n for n in self.nodes if n.owner == owner]:
+            self.remove_node(node)
+        self.ready = deque(item for item in self.ready if item[0] != owner)
+
+    # -- topics -------------------------------------------------------------
+    def topic(self, name: str, msg_type: type) -> Topic:
+        """The topic called ``name``, created with ``msg_type`` if new."""
+        topic = self.topics.get(name)
+        if topic is None:
+            topic = self.topics[name] = Topic(name, msg_type, self._type_name(msg_type))
+        elif topic.msg_type is not msg_type:
+            raise GraphError(
+                f"topic {name} carries {topic.type_name}, not {self._type_name(msg_type)}"
+            )
+        return topic
+
+    def add_publisher(self, node: NodeRecord, name: str, msg_type: type, depth: int) -> Publisher:
+        topic = self.topic(name, msg_type)
+        pub = Publisher(node, topic, depth, node.owner)
+        topic.publishers.append(pub)
+        return pub
+
+    def add_subscription(
+        self, node: NodeRecord, name: str, msg_type: type, depth: int, callback: Callable[[Any], None]
+    ) -> Subscription:
+        topic = self.topic(name, msg_type)
+        sub = Subscription(node, topic, depth, callback, node.owner)
+        topic.subscriptions.append(sub)
+        return sub
+
+    def remove_endpoint(self, endpoint: Publisher | Subscription) -> None:
+        topic = endpoint.topic
+        if isinstance(endpoint, Publisher):
+            topic.publishers = [p for p in topic.publishers if p is not endpoint]
+        else:
+            topic.subscriptions = [s for s in topic.subscriptions if s is not endpoint]
+
+    def publish(self, topic: Topic, msg: Any, source: str | None = None) -> None:
+        """Deliver ``msg`` to every subscription of ``topic`` except those owned by
+        ``source`` (a sandboxed host already delivered to its own subscribers)."""
+        topic.count += 1
+        topic.last = msg
+        topic._stamps.append(self.now_ns)
+        ready = self.ready
+        for sub in topic.subscriptions:
+            if sub.owner == source:
+                continue
+            sub.queue.append(msg)
+            if not sub.pending:
+                sub.pending = True
+                ready.append((sub.owner, _Delivery(sub)))
+        if self.taps:
+            for tap in self.taps:
+                tap("topic", (topic, msg))
+
+    # -- timers -------------------------------------------------------------
+    def add_timer(self, node: NodeRecord, period_ns: int, callback: Callable[[], None]) -> Timer:
+        if period_ns <= 0:
+            raise GraphError(f"timer period must be positive, got {period_ns / NS_PER_S} s")
+        self._seq += 1
+        timer = Timer(node, period_ns, callback, node.owner, self.now_ns + period_ns, seq=self._seq)
+        heapq.heappush(self._timers, (timer.next_due, timer.seq, timer))
+        return timer
+
+    def reschedule(self, timer: Timer) -> None:
+        """Put a reset timer back on the schedule."""
+        heapq.heappush(self._timers, (timer.next_due, timer.seq, timer))
+
+    # -- services -----------------------------------------------------------
+    def add_service(
+        self,
+        node: NodeRecord,
+        name: str,
+        srv_type: type,
+        handler: Callable[[Any, Callable[[Any], None]], None],
+    ) -> Service:
+        if name in self.services:
+            raise GraphError(f"service {name} is already provided by {self.services[name].node.fqn}")
+        service = Service(node, name, srv_type, self._type_name(srv_type), handler, node.owner)
+        self.services[name] = service
+        return service
+
+    def add_client(self, node: NodeRecord, name: str, srv_type: type) -> ServiceClient:
+        client = ServiceClient(node, name, srv_type, self._type_name(srv_type), node.owner)
+        self.clients.append(client)
+        return client
+
+    def call(self, name: str, request: Any, on_response: Callable[[Any], None], owner: str) -> None:
+        """Queue a call of service ``name``; ``on_response`` runs for ``owner`` with
+        the response. A call to a service that does not exist is never answered,
+        as in ROS."""
+        service = self.services.get(name)
+        if service is None:
+            return
+
+        def respond(response: Any) -> None:
+            if self.taps:
+                for tap in self.taps:
+                    tap("service", (name, request, response))
+            self.ready.append((owner, lambda: on_response(response)))
+
+        self.ready.append((service.owner, lambda: service.handler(request, respond)))
+
+    # -- actions ------------------------------------------------------------
+    def add_action_server(
+        self, node: NodeRecord, name: str, action_type: type, on_goal: Callable[[GoalHandle], None]
+    ) -> ActionServer:
+        if name in self.action_servers:
+            raise GraphError(f"action {name} is already provided by {self.action_servers[name].node.fqn}")
+        server = ActionServer(node, name, action_type, self._type_name(action_type), on_goal, node.owner)
+        self.action_servers[name] = server
+        return server
+
+    def add_action_client(self, node: NodeRecord, name: str, action_type: type) -> ActionClientRecord:
+        client = ActionClientRecord(node, name, action_type, self._type_name(action_type), node.owner)
+        self.action_clients.append(client)
+        return client
+
+    def send_goal(
+        self,
+        name: str,
+        goal: Any,
+        owner: str,
+        on_accepted: Callable[[GoalHandle | None], None],
+        on_feedback: Callable[[Any], None],
+        on_result: Callable[[str, Any], None],
+    ) -> None:
+        """Queue a goal for action ``name``; replies run for ``owner``."""
+        server = self.action_servers.get(name)
+        if server is None:
+            return
+        self._goal_ids += 1
+        ready = self.ready
+        handle = GoalHandle(
+            server,
+            self._goal_ids,
+            goal,
+            on_feedback=lambda fb: ready.append((owner, lambda: on_feedback(fb))),
+            on_result=lambda status, res: ready.append((owner, lambda: on_result(status, res))),
+        )
+
+        def accept() -> None:
+            server.on_goal(handle)
+            ready.append((owner, lambda: on_accepted(handle)))
+
+        ready.append((server.owner, accept))
+
+    def cancel_goal(self, handle: GoalHandle) -> None:
+        if handle.status == "executing" and not handle.cancel_requested:
+            handle.cancel_requested = True
+            if handle.on_cancel is not None:
+                self.ready.append((handle.action.owner, handle.on_cancel))
+
+    # -- logs ---------------------------------------------------------------
+    def log(self, node: str, level: int, msg: str) -> LogRecord:
+        record = LogRecord(self.epoch_ns + self.now_ns, self.now_ns / NS_PER_S, level, node, msg)
+        for sink in self.log_sinks:
+            sink(record)
+        if self.taps:
+            for tap in self.taps:
+                tap("log", record)
+        return record
+
+    def info(self, node: str, msg: str) -> LogRecord:
+        return self.log(node, INFO, msg)
+
+
+class _Delivery:
+    """Ready-queue entry that hands a subscription its queued messages one by one."""
+
+    __slots__ = ("sub",)
+
+    def __init__(self, sub: Subscription) -> None:
+        self.sub = sub
+
+    def __call__(self) -> None:
+        sub = self.sub
+        queue = sub.queue
+        sub.pending = False
+        callback = sub.callback
+        while queue:
+            callback(queue.popleft())

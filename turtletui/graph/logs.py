@@ -1,0 +1,41 @@
+"""Log records as ROS 2 writes them to the console."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+DEBUG, INFO, WARN, ERROR, FATAL = 10, 20, 30, 40, 50
+LEVEL_NAMES = {DEBUG: "DEBUG", INFO: "INFO", WARN: "WARN", ERROR: "ERROR", FATAL: "FATAL"}
+LEVELS_BY_NAME = {name: level for level, name in LEVEL_NAMES.items()}
+LEVELS_BY_NAME["WARNING"] = WARN
+
+
+@dataclass(frozen=True, slots=True)
+class LogRecord:
+    """One log line: ``stamp_ns`` is ROS time, ``t`` simulated seconds since start."""
+
+    stamp_ns: int
+    t: float
+    level: int
+    node: str
+    msg: str
+
+    @property
+    def level_name(self) -> str:
+        return LEVEL_NAMES.get(self.level, str(self.level))
+
+    def format(self) -> str:
+        """``[INFO] [1700000000.123456789] [turtle_controller]: message``, as rcutils does."""
+        sec, nsec = divmod(self.stamp_ns, 1_000_000_000)
+        return f"[{self.level_name}] [{sec}.{nsec:09d}] [{self.node}]: {self.msg}"
+
+
+def parse_level(value: str | int) -> int:
+    """A level from its name (any case, WARNING allowed) or number; ValueError otherwise."""
+    if isinstance(value, int):
+        return value
+    try:
+        return LEVELS_BY_NAME[value.upper()]
+    except KeyError:
+        names = ", ".join(n.lower() for n in LEVEL_NAMES.values())
+        raise ValueError(f"unknown log level {value!r}: use one of {names}") from None

@@ -1,0 +1,252 @@
+"""The /turtlesim node: turtlesim's topics, services, action and parameters over a World."""
+
+from __future__ import annotations
+
+import struct
+from typing import Any
+
+from turtletui.graph.core import NS_PER_S, GoalHandle, Graph, Publisher, Subscription
+from turtletui.graph.logs import ERROR, INFO, WARN
+from turtletui.interfaces.geometry_msgs import Twist
+from turtletui.interfaces.std_srvs import Empty
+from turtletui.interfaces.turtlesim import (
+    Color,
+    Kill,
+    Pose,
+    RotateAbsolute,
+    SetPen,
+    Spawn,
+    TeleportAbsolute,
+    TeleportRelative,
+)
+from turtletui.sim import (
+    DT,
+    Killed,
+    RotationFeedback,
+    RotationFinished,
+    SimError,
+    Spawned,
+    WallHit,
+    Warning_,
+    World,
+)
+
+QOS_DEPTH = 7
+"""turtlesim's topics: keep last 7, reliable (qos.hpp)."""
+
+_F32 = struct.Struct("5f")
+_PARAMETERS = ("background_r", "background_g", "background_b", "holonomic")
+
+
+def _float32(*values: float) -> tuple[float, ...]:
+    """Round to float32 as the Pose message does on the wire."""
+    try:
+        return _F32.unpack(_F32.pack(*values))
+    except OverflowError:
+        big = 3.4028234663852886e38
+        return _F32.unpack(_F32.pack(*(min(max(v, -big), big) for v in values)))
+
+
+class _TurtleEndpoints:
+    __slots__ = ("pose", "color", "cmd_vel", "services", "action")
+
+    def __init__(self) -> None:
+        self.pose: Publisher | None = None
+        self.color: Publisher | None = None
+        self.cmd_vel: Subscription | None = None
+        self.services: list[str] = []
+        self.action: str | None = None
+
+
+class TurtlesimNode:
+    """Adapts the physics onto the graph exactly where ROS 2 turtlesim puts it."""
+
+    NAME = "turtlesim"
+
+    def __init__(self, graph: Graph, world: World | None = None) -> None:
+        self.graph = graph
+        self.node = graph.add_node(self.NAME, owner="sim")
+        self.world = world if world is not None else World(spawn_turtle1=False)
+        self._turtles: dict[str, _TurtleEndpoints] = {}
+        self._goals: dict[int, GoalHandle] = {}
+        bg = self.world.background
+        self.node.parameters.update(
+            background_r=bg[0], background_g=bg[1], background_b=bg[2], holonomic=self.world.holonomic
+        )
+        self._log(INFO, f"Starting turtlesim with node name {self.node.fqn}")
+        node = self.node
+        graph.add_service(node, "/clear", Empty, self._clear)
+        graph.add_service(node, "/reset", Empty, self._reset)
+        graph.add_service(node, "/spawn", Spawn, self._spawn)
+        graph.add_service(node, "/kill", Kill, self._kill)
+        self.timer = graph.add_timer(node, round(DT * NS_PER_S), self._update)
+        if not self.world.turtles:
+            self.world.reset()
+        else:
+            for name in self.world.turtles:
+                self._add_turtle(name)
+        self._handle_events()
+
+    # -- the 16 ms update timer ---------------------------------------------
+    def _update(self) -> None:
+        world = self.world
+        turtles = self._turtles
+        sense = any(ends.color.topic.subscriptions for ends in turtles.values() if ends.color) or bool(
+            self.graph.taps
+        )
+        if not world.step(sense_color=sense):
+            return
+        if world.events:
+            self._handle_events()
+        publish = self.graph.publish
+        for turtle in world._order:
+            ends = turtles[turtle.name]
+            vx, vy = turtle.vx, turtle.vy
+            speed = (vx * vx + vy * vy) ** 0.5
+            publish(ends.pose.topic, Pose._trusted(*_float32(turtle.x, turtle.y, turtle.theta, speed, turtle.wz)))
+            if sense:
+                publish(ends.color.topic, Color._trusted(*turtle.color))
+
+    # -- parameters -----------------------------------------------------------
+    def set_parameter(self, name: str, value: Any) -> str | None:
+        """Set one of turtlesim's parameters; returns a reason if refused."""
+        if name not in _PARAMETERS:
+            return f"parameter '{name}' is not declared by {self.node.fqn}"
+        if name == "holonomic":
+            if not isinstance(value, bool):
+                return f"parameter 'holonomic' must be a bool, got {value!r}"
+            self.world.holonomic = value
+        else:
+            if isinstance(value, bool) or not isinstance(value, int) or not 0 <= value <= 255:
+                return f"parameter '{name}' must be an integer in 0..255, got {value!r}"
+            self.node.parameters[name] = value
+            params = self.node.parameters
+            self.world.set_background((params["background_r"], params["background_g"], params["background_b"]))
+            self.world.take_events()
+        self.node.parameters[name] = value
+        return None
+
+    # -- services ---------------------------------------------------------------
+    def _clear(self, request: Any, respond) -> None:
+        self._log(INFO, "Clearing turtlesim.")
+        self.world.clear()
+        self._handle_events()
+        respond(Empty.Response())
+
+    def _reset(self, request: Any, respond) -> None:
+        self._log(INFO, "Resetting turtlesim.")
+        self.world.reset()
+        self._handle_events()
+        respond(Empty.Response())
+
+    def _spawn(self, request: Any, respond) -> None:
+        name = ""
+        try:
+            name = self.world.spawn(request.x, request.y, request.theta, request.name)
+        except SimError as err:
+            self._log(ERROR, str(err))
+        self._handle_events()
+        respond(Spawn.Response(name=name))
+
+    def _kill(self, request: Any, respond) -> None:
+        try:
+            self.world.kill(request.name)
+        except SimError as err:
+            self._log(ERROR, str(err))
+        self._handle_events()
+        respond(Kill.Response())
+
+    def _turtle_service(self, turtle: str, srv_type: type, apply):
+        def handler(request: Any, respond) -> None:
+            try:
+                apply(turtle, request)
+            except SimError as err:
+                self._log(ERROR, str(err))
+            self._handle_events()
+            respond(srv_type.Response())
+
+        return handler
+
+    # -- per-turtle endpoints -----------------------------------------------------
+    def _add_turtle(self, name: str) -> None:
+        graph, node, world = self.graph, self.node, self.world
+        ends = _TurtleEndpoints()
+        ends.pose = graph.add_publisher(node, f"/{name}/pose", Pose, QOS_DEPTH)
+        ends.color = graph.add_publisher(node, f"/{name}/color_sensor", Color, QOS_DEPTH)
+
+        def on_cmd_vel(msg: Twist) -> None:
+            if name in world.turtles:
+                world.command_velocity(name, msg.linear.x, msg.linear.y, msg.angular.z)
+                if world.events:
+                    self._handle_events()
+
+        ends.cmd_vel = graph.add_subscription(node, f"/{name}/cmd_vel", Twist, QOS_DEPTH, on_cmd_vel)
+        services = {
+            "set_pen": (SetPen, lambda t, r: world.set_pen(t, r.r, r.g, r.b, r.width, r.off)),
+            "teleport_absolute": (
+                TeleportAbsolute,
+                lambda t, r: world.teleport_absolute(t, r.x, r.y, r.theta),
+            ),
+            "teleport_relative": (
+                TeleportRelative,
+                lambda t, r: world.teleport_relative(t, r.linear, r.angular),
+            ),
+        }
+        for short, (srv_type, apply) in services.items():
+            service = f"/{name}/{short}"
+            graph.add_service(node, service, srv_type, self._turtle_service(name, srv_type, apply))
+            ends.services.append(service)
+        ends.action = f"/{name}/rotate_absolute"
+        graph.add_action_server(node, ends.action, RotateAbsolute, lambda handle: self._on_goal(name, handle))
+        self._turtles[name] = ends
+
+    def _remove_turtle(self, name: str) -> None:
+        ends = self._turtles.pop(name, None)
+        if ends is None:
+            return
+        for endpoint in (ends.pose, ends.color, ends.cmd_vel):
+            if endpoint is not None:
+                self.graph.remove_endpoint(endpoint)
+        for service in ends.services:
+            self.graph.services.pop(service, None)
+        if ends.action:
+            self.graph.action_servers.pop(ends.action, None)
+
+    # -- rotate_absolute ------------------------------------------------------------
+    def _on_goal(self, turtle: str, handle: GoalHandle) -> None:
+        if turtle not in self.world.turtles:
+            handle.finish("aborted", RotateAbsolute.Result())
+            return
+        goal = self.world.start_rotation(turtle, handle.goal.theta)
+        self._handle_events()
+        self._goals[id(goal)] = handle
+        handle.on_cancel = lambda: self.world.cancel_rotation(goal)
+
+    # -- events -----------------------------------------------------------------------
+    def _handle_events(self) -> None:
+        for event in self.world.take_events():
+            if isinstance(event, WallHit):
+                self._log(WARN, f"Oh no! I hit the wall! (Clamping from [x={event.x:f}, y={event.y:f}])")
+            elif isinstance(event, RotationFeedback):
+                handle = self._goals.get(id(event.goal))
+                if handle is not None:
+                    handle.publish_feedback(RotateAbsolute.Feedback(remaining=_float32(event.remaining, 0, 0, 0, 0)[0]))
+            elif isinstance(event, RotationFinished):
+                handle = self._goals.pop(id(event.goal), None)
+                if handle is not None:
+                    delta = _float32(event.delta, 0, 0, 0, 0)[0]
+                    handle.finish(event.status, RotateAbsolute.Result(delta=delta))
+            elif isinstance(event, Spawned):
+                self._log(
+                    INFO,
+                    f"Spawning turtle [{event.turtle}] at x=[{event.x:f}], y=[{event.y:f}],"
+                    f" theta=[{event.theta:f}]",
+                )
+                self._add_turtle(event.turtle)
+            elif isinstance(event, Killed):
+                self._remove_turtle(event.turtle)
+            elif isinstance(event, Warning_):
+                self._log(WARN, event.text)
+
+    def _log(self, level: int, msg: str) -> None:
+        self.graph.log(self.NAME, level, msg)

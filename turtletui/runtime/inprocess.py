@@ -1,0 +1,122 @@
+"""Host a controller in this process: trusted code (reference plugins, tests).
+
+The controller's own ``main()`` drives: its ``rclpy.spin`` (or ``spin_once``,
+``spin_until_future_complete``, ``wait_for_service``, ``rate.sleep``) pumps
+the shared simulation, so lockstep needs no threads and no copies.
+"""
+
+from __future__ import annotations
+
+import random
+import sys
+import time
+from collections.abc import Callable
+from typing import Any
+
+from turtletui import compat
+from turtletui.compat import context as compat_context
+from turtletui.compat import logging as compat_logging
+from turtletui.runtime.loader import ControllerError, ControllerSpec, entry_point, load_module
+from turtletui.runtime.report import CrashReport, crash_from_exception, stop_turtles
+from turtletui.runtime.simulation import Simulation
+
+
+class InProcessHost:
+    """Implements turtletui.compat.context.Host over a Simulation in this process."""
+
+    def __init__(self, sim: Simulation, owner: str, end_ns: int) -> None:
+        self.sim = sim
+        self.graph = sim.graph
+        self.owner = owner
+        self.end_ns = end_ns
+        self.callback_depth = 0
+        self._ended = False
+
+    @property
+    def running(self) -> bool:
+        return not self._ended
+
+    def wrap_callback(self, callback: Callable) -> Callable:
+        host = self
+
+        def run(*args: Any) -> Any:
+            host.callback_depth += 1
+            try:
+                return callback(*args)
+            finally:
+                host.callback_depth -= 1
+
+        return run
+
+    def _limit(self, timeout_ns: int | None) -> int:
+        if timeout_ns is None:
+            return self.end_ns
+        return min(self.graph.now_ns + max(timeout_ns, 0), self.end_ns)
+
+    def _check_end(self) -> None:
+        if self.graph.now_ns >= self.end_ns:
+            self._ended = True
+
+    def spin_once(self, timeout_ns: int | None) -> bool:
+        if self._ended:
+            return False
+        outcome = self.sim.pump(self.owner, self._limit(timeout_ns))
+        self._check_end()
+        return outcome == "own" or not self._ended
+
+    def spin_until(self, done: Callable[[], bool], timeout_ns: int | None, *, callbacks: bool = True) -> bool:
+        limit = self._limit(timeout_ns)
+        while not done():
+            if self._ended or self.graph.now_ns >= limit:
+                self._check_end()
+                return False
+            self.sim.pump(self.owner, limit, run_own=callbacks, until=done)
+            self._check_end()
+        return True
+
+    def sleep_until(self, t_ns: int) -> bool:
+        if not self._ended:
+            self.sim.pump(self.owner, min(t_ns, self.end_ns), run_own=False)
+            self._check_end()
+        return not self._ended
+
+
+def run_in_process(
+    sim: Simulation, spec: ControllerSpec, end_ns: int, *, ros_args: list[str], seed: int
+) -> CrashReport | None:
+    """Load and run one controller until it returns or ``end_ns``; report a crash."""
+    owner = f"inproc:{spec.name}"
+    host = InProcessHost(sim, owner, end_ns)
+    compat.install()
+    compat_context.reset_default_context()
+    compat_logging.reset_levels()
+    compat_context.bind_host(host)
+    saved_argv = sys.argv
+    sys.argv = [spec.label, *ros_args]
+    random.seed(seed)
+    crash = None
+    started = time.perf_counter()
+    try:
+        if spec.factory is not None:
+            from turtletui.runtime.loader import spin_nodes
+
+            spin_nodes([spec.factory])
+        else:
+            spin_main = entry_point(load_module(spec), spec.label)
+            spin_main()
+    except ControllerError:
+        raise
+    except SystemExit as exc:
+        if exc.code not in (None, 0):
+            crash = CrashReport(spec.label, sim.t, "exit", f"exited with status {exc.code}", [])
+    except BaseException as exc:  # noqa: BLE001 - controller code may raise anything
+        crash = crash_from_exception(spec, sim.t, exc)
+    finally:
+        sys.argv = saved_argv
+        host._ended = True
+        stop_turtles(sim, owner)
+        sim.graph.remove_owner(owner)
+        compat_context.get_default_context().try_shutdown()
+        compat_context.bind_host(None)
+    del started
+    return crash

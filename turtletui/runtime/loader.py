@@ -1,0 +1,121 @@
+"""Find and load controller code: a file, a module, or a plugin's node factory."""
+
+from __future__ import annotations
+
+import ast
+import importlib.util
+import inspect
+import sys
+import types
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, Callable
+
+
+class ControllerError(Exception):
+    """A controller that cannot be loaded; the message is one line naming the file."""
+
+
+@dataclass
+class ControllerSpec:
+    """What to run: a file path, an importable module name, or a node factory."""
+
+    name: str
+    path: Path | None = None
+    module: str | None = None
+    factory: Callable[[], Any] | None = None
+    trusted: bool = False
+
+    @property
+    def label(self) -> str:
+        return str(self.path) if self.path else (self.module or self.name)
+
+
+def check_source(path: Path) -> str:
+    """Read a controller file, refusing what is not Python source, with one-line errors."""
+    if not path.exists():
+        raise ControllerError(f"{path}: no such file")
+    if path.is_dir():
+        raise ControllerError(f"{path}: is a folder; name a Python file (e.g. {path}/my_node.py)")
+    data = path.read_bytes()
+    if b"\0" in data[:8192]:
+        raise ControllerError(f"{path}: is a binary file, not Python source")
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as err:
+        raise ControllerError(f"{path}: is not UTF-8 text (byte {err.start})") from None
+    try:
+        ast.parse(text, filename=str(path))
+    except SyntaxError as err:
+        line = (err.text or "").strip()
+        where = f"{path}:{err.lineno}" + (f":{err.offset}" if err.offset else "")
+        raise ControllerError(f"{where}: SyntaxError: {err.msg}" + (f": {line}" if line else "")) from None
+    return text
+
+
+def load_module(spec: ControllerSpec) -> types.ModuleType:
+    """Import the controller's module (its top level runs now)."""
+    if spec.module:
+        return importlib.import_module(spec.module)
+    assert spec.path is not None
+    path = spec.path.resolve()
+    check_source(path)
+    name = f"__turtletui_controller_{abs(hash(str(path))):x}"
+    module_spec = importlib.util.spec_from_file_location(name, path)
+    assert module_spec is not None and module_spec.loader is not None
+    module = importlib.util.module_from_spec(module_spec)
+    folder = str(path.parent)
+    if folder not in sys.path:
+        sys.path.insert(1, folder)
+    sys.modules[name] = module
+    module_spec.loader.exec_module(module)
+    return module
+
+
+def entry_point(module: types.ModuleType, label: str) -> Callable[[], Any]:
+    """What to call to start the controller: ``main()``, or a function that
+    creates every Node subclass the module defines."""
+    main = getattr(module, "main", None)
+    if callable(main):
+        return main
+    from turtletui.compat.node import Node
+
+    classes = [
+        obj
+        for obj in vars(module).values()
+        if inspect.isclass(obj) and issubclass(obj, Node) and obj is not Node and obj.__module__ == module.__name__
+    ]
+    if not classes:
+        raise ControllerError(
+            f"{label}: found no main() function and no rclpy Node subclass to run"
+        )
+    return lambda: spin_nodes(classes)
+
+
+def spin_nodes(classes: list[type]) -> None:
+    """Run Node classes the way a ROS main() would: init, create, spin, shut down."""
+    import rclpy
+
+    rclpy.init()
+    nodes = [cls() for cls in classes]
+    executor = rclpy.executors.SingleThreadedExecutor()
+    for node in nodes:
+        executor.add_node(node)
+    try:
+        executor.spin()
+    finally:
+        for node in nodes:
+            node.destroy_node()
+        rclpy.try_shutdown()
+
+
+def user_frames(tb: Any, path: Path | None) -> list[str]:
+    """Traceback lines from the controller's own file (all frames if unknown)."""
+    import traceback
+
+    frames = traceback.extract_tb(tb)
+    if path is not None:
+        target = str(path.resolve())
+        own = [f for f in frames if f.filename == target]
+        frames = own or frames[-1:]
+    return [f"  File \"{f.filename}\", line {f.lineno}, in {f.name}\n    {(f.line or '').strip()}" for f in frames]

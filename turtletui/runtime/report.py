@@ -1,0 +1,64 @@
+"""What happened to a controller: crash reports and stopping its turtles."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from turtletui.runtime.loader import ControllerSpec
+    from turtletui.runtime.simulation import Simulation
+
+
+@dataclass
+class CrashReport:
+    """A controller that stopped abnormally.
+
+    ``kind`` is "exception", "exit", "timeout", "memory", "cpu" or "killed";
+    ``frames`` are traceback lines from the controller's own file.
+    """
+
+    controller: str
+    t: float
+    kind: str
+    message: str
+    frames: list[str] = field(default_factory=list)
+
+    def summary(self) -> str:
+        """One line: who, when, what and where."""
+        where = ""
+        if self.frames:
+            first = self.frames[-1].splitlines()[0].strip()
+            where = f" ({first})"
+        return f"controller {self.controller} {_VERB.get(self.kind, 'failed')} at t={self.t:.3f} s: {self.message}{where}"
+
+    def details(self) -> str:
+        return "\n".join([self.summary(), *self.frames])
+
+
+_VERB = {
+    "exception": "crashed",
+    "exit": "exited",
+    "timeout": "was stopped",
+    "memory": "was stopped",
+    "cpu": "was stopped",
+    "killed": "died",
+}
+
+
+def crash_from_exception(spec: ControllerSpec, t: float, exc: BaseException) -> CrashReport:
+    from turtletui.runtime.loader import user_frames
+
+    message = f"{type(exc).__name__}: {exc}" if str(exc) else type(exc).__name__
+    return CrashReport(spec.label, t, "exception", message, user_frames(exc.__traceback__, spec.path))
+
+
+def stop_turtles(sim: Simulation, owner: str) -> list[str]:
+    """Stop every turtle whose cmd_vel ``owner`` published to (its controller ended)."""
+    stopped = []
+    for name, turtle in sim.world.turtles.items():
+        topic = sim.graph.topics.get(f"/{name}/cmd_vel")
+        if topic and any(p.owner == owner for p in topic.publishers):
+            turtle.vx = turtle.vy = turtle.wz = 0.0
+            stopped.append(name)
+    return stopped

@@ -1,0 +1,142 @@
+"""The trusted side of a run: world, graph, turtlesim node and the loop that
+moves time forward, in lockstep or in real time."""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable, Sequence
+from typing import Protocol
+
+from turtletui.graph.core import LOCKSTEP_EPOCH_NS, NS_PER_S, Graph
+from turtletui.graph.logs import LogRecord
+from turtletui.graph.turtlesim_node import TurtlesimNode
+from turtletui.interfaces import interface_name
+from turtletui.sim import World
+
+MAX_EXCHANGE_ROUNDS = 1000
+"""Message ping-pong rounds allowed at one instant before time is forced on."""
+
+
+class RemoteHost(Protocol):
+    """A controller host in another process (turtletui.runtime.sandbox)."""
+
+    owner: str
+    wake_ns: int | None
+    """When the host's own timers or sleeps next need it, in simulated ns."""
+
+    def wants_exchange(self, now_ns: int) -> bool:
+        """Whether it has messages to receive or a timer due now."""
+
+    def exchange(self) -> None:
+        """Send what is queued for it, let it run, and publish what it sent back."""
+
+
+class Simulation:
+    """World + graph + /turtlesim, and the pump that runs them."""
+
+    def __init__(
+        self,
+        *,
+        world: World | None = None,
+        realtime: bool = False,
+        speed: float = 1.0,
+        log_sinks: Sequence[Callable[[LogRecord], None]] = (),
+    ) -> None:
+        epoch = time.time_ns() if realtime else LOCKSTEP_EPOCH_NS
+        self.graph = Graph(epoch_ns=epoch, type_name=interface_name)
+        self.graph.log_sinks.extend(log_sinks)
+        self.world = world if world is not None else World(spawn_turtle1=False)
+        self.turtlesim = TurtlesimNode(self.graph, self.world)
+        self.remotes: list[RemoteHost] = []
+        self.realtime = realtime
+        self.speed = speed
+        """Simulated seconds per wall second in real-time mode."""
+        self._wall_origin: float | None = None
+        self._sim_origin = 0
+
+    @property
+    def t(self) -> float:
+        """Simulated seconds since start."""
+        return self.graph.now_ns / NS_PER_S
+
+    def set_speed(self, speed: float) -> None:
+        """Change the real-time speed factor without a jump in time."""
+        self._wall_origin = None
+        self.speed = speed
+
+    def pump(
+        self,
+        own: str | None,
+        limit_ns: int,
+        *,
+        run_own: bool = True,
+        until: Callable[[], bool] | None = None,
+    ) -> str:
+        """Run callbacks, sandbox exchanges and timers up to ``limit_ns``.
+
+        Returns "own" right after a callback owned by ``own`` ran, "until" as
+        soon as ``until()`` holds, "limit" when nothing is left before the
+        limit (time is then at ``limit_ns``). With ``run_own`` False, ``own``'s
+        callbacks are held back and stay queued, as while a node sleeps.
+        """
+        graph = self.graph
+        ready = graph.ready
+        held: list = []
+        try:
+            while True:
+                while ready:
+                    item = ready.popleft()
+                    if item[0] == own and own is not None:
+                        if not run_own:
+                            held.append(item)
+                            continue
+                        item[1]()
+                        return "own"
+                    item[1]()
+                if until is not None and until():
+                    return "until"
+                if self.remotes and self._exchange():
+                    continue
+                if not self._advance(limit_ns):
+                    return "limit"
+        finally:
+            if held:
+                ready.extendleft(reversed(held))
+
+    def run_until(self, limit_ns: int) -> None:
+        """Run everything (no in-process controller driving) up to ``limit_ns``."""
+        self.pump(None, limit_ns)
+
+    def _exchange(self) -> bool:
+        now = self.graph.now_ns
+        busy = [remote for remote in self.remotes if remote.wants_exchange(now)]
+        for remote in busy:
+            remote.exchange()
+        return bool(busy)
+
+    def _advance(self, limit_ns: int) -> bool:
+        graph = self.graph
+        due = graph.next_due()
+        for remote in self.remotes:
+            wake = remote.wake_ns
+            if wake is not None and (due is None or wake < due):
+                due = wake
+        if due is None or due > limit_ns:
+            if limit_ns > graph.now_ns:
+                graph.now_ns = limit_ns
+            return False
+        if self.realtime:
+            self._wait_for(due)
+        graph.advance(due)
+        if graph.now_ns < due:
+            graph.now_ns = due
+        return True
+
+    def _wait_for(self, t_ns: int) -> None:
+        now = time.monotonic()
+        if self._wall_origin is None:
+            self._wall_origin = now
+            self._sim_origin = self.graph.now_ns
+        target = self._wall_origin + (t_ns - self._sim_origin) / NS_PER_S / self.speed
+        if target > now:
+            time.sleep(target - now)
