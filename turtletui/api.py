@@ -16,7 +16,7 @@ from typing import Any
 from turtletui.compat.ros_args import RosArgsError, parse_ros_args
 from turtletui.graph.core import NS_PER_S
 from turtletui.graph.logs import LogRecord
-from turtletui.runtime.loader import ControllerError, ControllerSpec
+from turtletui.runtime.loader import ControllerError, ControllerSpec, check_source
 from turtletui.runtime.report import CrashReport
 from turtletui.runtime.simulation import Simulation
 
@@ -102,6 +102,9 @@ def run(
         args = ["--ros-args", *args]
     parse_ros_args(args)  # fail early with a one-line RosArgsError
     specs = [as_spec(c, trusted=sandbox is False) for c in controllers]
+    for spec in specs:
+        if spec.path is not None:
+            check_source(spec.path)
     logs: list[LogRecord] = []
     sinks = [logs.append] if on_log is None else [logs.append, on_log]
     sim = Simulation(realtime=realtime, log_sinks=sinks)

@@ -119,7 +119,7 @@ class ActionClient:
         return self._node.context.host
 
     def server_is_ready(self) -> bool:
-        return self._action_name in self._host().graph.action_servers
+        return self._host().graph.has_action_server(self._action_name)
 
     def wait_for_server(self, timeout_sec: float | None = None) -> bool:
         if self.server_is_ready():

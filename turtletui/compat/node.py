@@ -196,7 +196,7 @@ class Client:
         return future.result()
 
     def service_is_ready(self) -> bool:
-        return self.srv_name in self._node.context.host.graph.services
+        return self._node.context.host.graph.has_service(self.srv_name)
 
     def wait_for_service(self, timeout_sec: float | None = None) -> bool:
         """Wait (in simulated time) until the service exists; False on timeout."""

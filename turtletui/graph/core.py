@@ -352,6 +352,12 @@ class Graph:
         self.services[name] = service
         return service
 
+    def has_service(self, name: str) -> bool:
+        return name in self.services
+
+    def has_action_server(self, name: str) -> bool:
+        return name in self.action_servers
+
     def add_client(self, node: NodeRecord, name: str, srv_type: type) -> ServiceClient:
         client = ServiceClient(node, name, srv_type, self._type_name(srv_type), node.owner)
         self.clients.append(client)

@@ -1,0 +1,1 @@
+"""A small deterministic ROS-like middleware (see core.py) and the /turtlesim node."""

@@ -1,0 +1,1 @@
+"""Hosting controllers: in this process (trusted) or in a sandboxed child."""

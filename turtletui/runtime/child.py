@@ -1,0 +1,358 @@
+"""The sandboxed side: runs one controller in a child process.
+
+The child has its own Graph holding the controller's nodes. Whenever the
+controller waits (spin, spin_once, sleeps, waiting for a future) and has
+nothing ready, the child sends the parent what its nodes did (declarations,
+messages, calls, logs) and blocks until the parent answers with the new time
+and what arrived for it. The parent's simulation never trusts anything else.
+This module must not import numpy or Textual: start-up time counts.
+"""
+
+from __future__ import annotations
+
+import itertools
+import json
+import os
+import random
+import sys
+import traceback
+from collections.abc import Callable
+from typing import Any
+
+from turtletui.graph.core import GoalHandle, Graph, NodeRecord, Publisher, Subscription, Topic
+from turtletui.graph.logs import LogRecord
+from turtletui.interfaces import from_dict, get_interface, interface_name, to_dict
+from turtletui.runtime import wire
+
+OWNER = "child"
+
+
+class _RemoteGoal:
+    """Child-side stand-in for a goal accepted by a server in the parent."""
+
+    def __init__(self, goal_id: int) -> None:
+        self.goal_id = goal_id
+        self.status = "executing"
+
+
+class ChildGraph(Graph):
+    """A Graph that also reports everything to the parent."""
+
+    def __init__(self) -> None:
+        super().__init__(type_name=interface_name)
+        self.out: dict[str, list] = {"decl": [], "pub": [], "call": [], "goal": [], "cancel": [], "log": [], "resp": []}
+        self._ids = itertools.count(1)
+        self.remote_services: set[str] = set()
+        self.remote_actions: set[str] = set()
+        self._subs: dict[int, Subscription] = {}
+        self._calls: dict[int, Callable[[Any], None]] = {}
+        self._goals: dict[int, tuple] = {}
+        self._sent_params: dict[int, str] = {}
+
+    def take_out(self) -> dict[str, Any]:
+        for node in self.nodes:
+            snapshot = json.dumps(node.parameters, default=str, sort_keys=True)
+            if self._sent_params.get(id(node)) != snapshot:
+                self._sent_params[id(node)] = snapshot
+                self.out["decl"].append(["params", node.wire_id, json.loads(snapshot)])
+        out = {key: value for key, value in self.out.items() if value}
+        for key in out:
+            self.out[key] = []
+        return out
+
+    # -- declarations --------------------------------------------------------
+    def add_node(self, name: str, namespace: str = "", owner: str = OWNER) -> NodeRecord:
+        node = super().add_node(name, namespace, owner)
+        node.wire_id = next(self._ids)
+        self.out["decl"].append(["node", node.wire_id, name, namespace])
+        return node
+
+    def remove_node(self, node: NodeRecord) -> None:
+        super().remove_node(node)
+        self.out["decl"].append(["rmnode", node.wire_id])
+
+    def add_publisher(self, node: NodeRecord, name: str, msg_type: type, depth: int) -> Publisher:
+        pub = super().add_publisher(node, name, msg_type, depth)
+        pub.wire_id = next(self._ids)
+        self.out["decl"].append(["pub", pub.wire_id, node.wire_id, name, pub.topic.type_name, depth])
+        return pub
+
+    def add_subscription(self, node, name, msg_type, depth, callback) -> Subscription:
+        sub = super().add_subscription(node, name, msg_type, depth, callback)
+        sub.wire_id = next(self._ids)
+        self._subs[sub.wire_id] = sub
+        self.out["decl"].append(["sub", sub.wire_id, node.wire_id, name, sub.topic.type_name, depth])
+        return sub
+
+    def remove_endpoint(self, endpoint: Publisher | Subscription) -> None:
+        super().remove_endpoint(endpoint)
+        self._subs.pop(getattr(endpoint, "wire_id", None), None)
+        self.out["decl"].append(["rm", endpoint.wire_id])
+
+    def add_client(self, node, name, srv_type):
+        client = super().add_client(node, name, srv_type)
+        self.out["decl"].append(["client", node.wire_id, name, client.type_name])
+        return client
+
+    def add_service(self, node, name, srv_type, handler):
+        service = super().add_service(node, name, srv_type, handler)
+        self.out["decl"].append(["srv", node.wire_id, name, service.type_name])
+        return service
+
+    def add_action_client(self, node, name, action_type):
+        client = super().add_action_client(node, name, action_type)
+        self.out["decl"].append(["aclient", node.wire_id, name, client.type_name])
+        return client
+
+    # -- traffic ------------------------------------------------------------------
+    def publish(self, topic: Topic, msg: Any, source: str | None = None) -> None:
+        super().publish(topic, msg, source)
+        self.out["pub"].append([topic.name, to_dict(msg)])
+
+    def has_service(self, name: str) -> bool:
+        return name in self.services or name in self.remote_services
+
+    def has_action_server(self, name: str) -> bool:
+        return name in self.action_servers or name in self.remote_actions
+
+    def call(self, name: str, request: Any, on_response: Callable[[Any], None], owner: str) -> None:
+        if name in self.services:
+            super().call(name, request, on_response, owner)
+            return
+        if name not in self.remote_services:
+            return  # as in ROS, a call to a missing service is never answered
+        call_id = next(self._ids)
+        self._calls[call_id] = on_response
+        self.out["call"].append([call_id, name, to_dict(request)])
+
+    def send_goal(self, name, goal, owner, on_accepted, on_feedback, on_result) -> None:
+        if name in self.action_servers:
+            super().send_goal(name, goal, owner, on_accepted, on_feedback, on_result)
+            return
+        if name not in self.remote_actions:
+            return
+        goal_id = next(self._ids)
+        handle = _RemoteGoal(goal_id)
+        self._goals[goal_id] = (handle, on_accepted, on_feedback, on_result, name)
+        self.out["goal"].append([goal_id, name, to_dict(goal)])
+
+    def cancel_goal(self, handle: Any) -> None:
+        if isinstance(handle, _RemoteGoal):
+            self.out["cancel"].append(handle.goal_id)
+        else:
+            super().cancel_goal(handle)
+
+    def log(self, node: str, level: int, msg: str) -> LogRecord:
+        self.out["log"].append([level, node, msg])
+        return LogRecord(self.epoch_ns + self.now_ns, self.now_ns / 1e9, level, node, msg)
+
+    # -- what the parent sent ---------------------------------------------------------
+    def receive(self, message: dict) -> None:
+        ready = self.ready
+        for sub_id, fields in message.get("msgs", ()):
+            sub = self._subs.get(sub_id)
+            if sub is None:
+                continue
+            sub.queue.append(from_dict(sub.topic.msg_type, fields))
+            if not sub.pending:
+                sub.pending = True
+                ready.append((OWNER, _deliver(sub)))
+        for call_id, type_name, fields in message.get("responses", ()):
+            on_response = self._calls.pop(call_id, None)
+            if on_response is not None:
+                response = from_dict(get_interface(type_name), fields)
+                ready.append((OWNER, lambda cb=on_response, r=response: cb(r)))
+        for goal_id, kind, payload in message.get("goals", ()):
+            entry = self._goals.get(goal_id)
+            if entry is None:
+                continue
+            handle, on_accepted, on_feedback, on_result, name = entry
+            action = self.remote_action_types.get(name)
+            if kind == "accepted":
+                ready.append((OWNER, lambda cb=on_accepted, h=handle: cb(h)))
+            elif kind == "feedback":
+                feedback = from_dict(action.Feedback, payload)
+                ready.append((OWNER, lambda cb=on_feedback, f=feedback: cb(f)))
+            else:
+                self._goals.pop(goal_id, None)
+                handle.status = payload[0]
+                result = from_dict(action.Result, payload[1])
+                ready.append((OWNER, lambda cb=on_result, s=payload[0], r=result: cb(s, r)))
+        for req_id, name, fields in message.get("requests", ()):
+            service = self.services.get(name)
+            if service is None:
+                continue
+            request = from_dict(service.srv_type.Request, fields)
+
+            def respond(response: Any, req_id: int = req_id) -> None:
+                self.out["resp"].append([req_id, to_dict(response)])
+
+            ready.append((OWNER, lambda s=service, q=request, r=respond: s.handler(q, r)))
+        if "services" in message:
+            self.remote_services = set(message["services"])
+        if "actions" in message:
+            self.remote_actions = set(message["actions"])
+            self.remote_action_types = {name: get_interface(t) for name, t in message["action_types"].items()}
+
+    remote_action_types: dict[str, Any] = {}
+
+
+def _deliver(sub: Subscription) -> Callable[[], None]:
+    def run() -> None:
+        sub.pending = False
+        queue = sub.queue
+        while queue:
+            sub.callback(queue.popleft())
+
+    return run
+
+
+class ChildHost:
+    """The compat Host inside the sandbox: waiting means asking the parent."""
+
+    owner = OWNER
+
+    def __init__(self, graph: ChildGraph, fd_in: int, fd_out: int) -> None:
+        self.graph = graph
+        self.fd_in = fd_in
+        self.fd_out = fd_out
+        self.callback_depth = 0
+        self.running = True
+
+    def wrap_callback(self, callback: Callable) -> Callable:
+        host = self
+
+        def run(*args: Any) -> Any:
+            host.callback_depth += 1
+            try:
+                return callback(*args)
+            finally:
+                host.callback_depth -= 1
+
+        return run
+
+    def exchange(self, wake_ns: int | None, **extra: Any) -> None:
+        """Report to the parent and wait for the next instant it gives us."""
+        reply = self.graph.take_out()
+        reply["wake"] = wake_ns
+        reply.update(extra)
+        wire.send_to_parent(self.fd_out, reply)
+        message = wire.read_from_parent(self.fd_in)
+        if message.get("end"):
+            self.running = False
+            return
+        graph = self.graph
+        now = message["now"]
+        graph.receive(message)
+        while graph.advance(now):
+            pass
+        graph.now_ns = now
+
+    def _wake(self, deadline: int | None) -> int | None:
+        due = self.graph.next_due()
+        if deadline is None:
+            return due
+        return deadline if due is None else min(due, deadline)
+
+    def spin_once(self, timeout_ns: int | None) -> bool:
+        graph = self.graph
+        deadline = None if timeout_ns is None else graph.now_ns + max(timeout_ns, 0)
+        while self.running:
+            if graph.ready:
+                graph.ready.popleft()[1]()
+                return True
+            if deadline is not None and graph.now_ns >= deadline and timeout_ns:
+                return False
+            self.exchange(self._wake(deadline))
+            if timeout_ns == 0 and not graph.ready:
+                return False
+        return False
+
+    def spin_until(self, done: Callable[[], bool], timeout_ns: int | None, *, callbacks: bool = True) -> bool:
+        graph = self.graph
+        deadline = None if timeout_ns is None else graph.now_ns + max(timeout_ns, 0)
+        while not done():
+            if not self.running or (deadline is not None and graph.now_ns >= deadline):
+                return False
+            if callbacks and graph.ready:
+                graph.ready.popleft()[1]()
+                continue
+            self.exchange(self._wake(deadline) if callbacks else deadline)
+        return True
+
+    def sleep_until(self, t_ns: int) -> bool:
+        while self.running and self.graph.now_ns < t_ns:
+            self.exchange(t_ns)
+        return self.running
+
+
+def _apply_limits(limits: dict[str, int]) -> None:
+    import resource
+
+    for name, value in (
+        ("RLIMIT_CPU", limits.get("cpu_seconds")),
+        ("RLIMIT_AS", limits.get("memory_bytes")),
+        ("RLIMIT_FSIZE", limits.get("file_bytes")),
+        ("RLIMIT_CORE", 0),
+    ):
+        if value is None or not hasattr(resource, name):
+            continue
+        kind = getattr(resource, name)
+        soft, hard = resource.getrlimit(kind)
+        new_hard = value if hard == resource.RLIM_INFINITY else min(value, hard)
+        try:
+            resource.setrlimit(kind, (min(value, new_hard), new_hard))
+        except (ValueError, OSError):
+            pass  # the limit is lower already
+
+
+def main() -> None:
+    config = json.loads(sys.argv[1])
+    fd_in, fd_out = config["fd_in"], config["fd_out"]
+    os.set_inheritable(fd_in, False)
+    os.set_inheritable(fd_out, False)
+    _apply_limits(config.get("limits", {}))
+    from turtletui import compat
+    from turtletui.compat import context as compat_context
+    from turtletui.runtime.loader import ControllerError, ControllerSpec, entry_point, load_module, user_frames
+
+    compat.install()
+    graph = ChildGraph()
+    graph.epoch_ns = config["epoch_ns"]
+    host = ChildHost(graph, fd_in, fd_out)
+    compat_context.reset_default_context()
+    compat_context.bind_host(host)
+    spec = ControllerSpec(
+        name=config["name"],
+        path=None if config.get("path") is None else __import__("pathlib").Path(config["path"]),
+        module=config.get("module"),
+    )
+    sys.argv = [spec.label, *config.get("ros_args", [])]
+    random.seed(config.get("seed", 0))
+    crash = None
+    try:
+        host.exchange(None)  # start together with the parent's clock
+        entry_point(load_module(spec), spec.label)()
+    except ControllerError as err:
+        crash = {"kind": "load", "message": str(err), "frames": []}
+    except SystemExit as exc:
+        if exc.code not in (None, 0):
+            crash = {"kind": "exit", "message": f"exited with status {exc.code}", "frames": []}
+    except MemoryError:
+        crash = {"kind": "memory", "message": "MemoryError: ran out of its memory limit", "frames": []}
+    except BaseException as exc:  # noqa: BLE001 - controller code may raise anything
+        message = f"{type(exc).__name__}: {exc}" if str(exc) else type(exc).__name__
+        crash = {"kind": "exception", "message": message, "frames": user_frames(exc.__traceback__, spec.path)}
+    try:
+        sys.stdout.flush()
+        sys.stderr.flush()
+        wire.send_to_parent(fd_out, {**graph.take_out(), "done": True, "crash": crash})
+    except (OSError, wire.WireError):
+        pass
+    except Exception:  # noqa: BLE001 - the report itself failed; say so on stderr
+        traceback.print_exc()
+    os._exit(0)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,431 @@
+"""Run an untrusted controller in a child process, in lockstep with the simulation.
+
+The child (turtletui.runtime.child) runs the student's code with CPU, memory
+and file-size limits, in its own session so every process it starts can be
+killed. Each exchange the parent sends the simulated time and the messages
+for the child's subscriptions; the child answers in JSON with what its nodes
+declared, published, called and logged. The parent validates every message
+against its type before it enters the simulation.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import select
+import signal
+import subprocess
+import sys
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from turtletui.graph.core import GraphError, NodeRecord
+from turtletui.graph.logs import ERROR, INFO
+from turtletui.interfaces import InterfaceError, from_dict, get_interface, to_dict
+from turtletui.runtime import wire
+from turtletui.runtime.loader import ControllerSpec, check_source
+from turtletui.runtime.report import CrashReport, stop_turtles
+from turtletui.runtime.simulation import Simulation
+
+_PACKAGE_ROOT = str(Path(__file__).resolve().parents[2])
+_BOOTSTRAP = (
+    "import sys; sys.path.insert(0, {root!r}); "
+    "from turtletui.runtime.child import main; main()"
+)
+MAX_ROUNDS_PER_INSTANT = 64
+"""Exchanges allowed at one simulated instant before the child must wait for time."""
+
+
+@dataclass
+class Limits:
+    """What a sandboxed controller may use."""
+
+    step_timeout: float = 2.0
+    """Wall seconds the child may take to answer one exchange (a hung callback)."""
+    start_timeout: float = 10.0
+    """Wall seconds for start-up and loading the controller's module."""
+    cpu_seconds: int = 120
+    memory_bytes: int = 2 * 1024**3
+    file_bytes: int = 64 * 1024**2
+    output_lines: int = 10_000
+    """Lines of print() output kept; the rest is dropped with a notice."""
+
+
+class SandboxHost:
+    """Parent-side proxy of a controller running in a child process."""
+
+    def __init__(self, sim: Simulation, spec: ControllerSpec, limits: Limits) -> None:
+        self.sim = sim
+        self.graph = sim.graph
+        self.spec = spec
+        self.limits = limits
+        self.owner = f"sandbox:{spec.name}:{id(self):x}"
+        self.wake_ns: int | None = None
+        self.crash: CrashReport | None = None
+        self.finished = False
+        self._inbox: list = []
+        self._responses: list = []
+        self._goal_events: list = []
+        self._requests: list = []
+        self._poll = False
+        self._instant = -1
+        self._rounds = 0
+        self._nodes: dict[int, NodeRecord] = {}
+        self._endpoints: dict[int, Any] = {}
+        self._goals: dict[int, Any] = {}
+        self._service_calls: dict[int, Any] = {}
+        self._known_services: tuple = ()
+        self._output_lines = 0
+        self._output_buffer = b""
+        self.proc: subprocess.Popen | None = None
+
+    # -- life cycle -----------------------------------------------------------
+    @classmethod
+    def start(
+        cls, sim: Simulation, spec: ControllerSpec, *, ros_args: list[str], seed: int, limits: Limits | None = None
+    ) -> SandboxHost:
+        """Check the file, start the child and let it load the controller."""
+        if spec.path is not None:
+            check_source(spec.path)
+        host = cls(sim, spec, limits or Limits())
+        host._spawn(ros_args, seed)
+        sim.remotes.append(host)
+        host._receive(host.limits.start_timeout, first=True)
+        host.exchange(timeout=host.limits.start_timeout)
+        return host
+
+    def _spawn(self, ros_args: list[str], seed: int) -> None:
+        to_child_r, to_child_w = os.pipe()
+        from_child_r, from_child_w = os.pipe()
+        config = {
+            "fd_in": to_child_r,
+            "fd_out": from_child_w,
+            "name": self.spec.name,
+            "path": str(self.spec.path.resolve()) if self.spec.path else None,
+            "module": self.spec.module,
+            "ros_args": ros_args,
+            "seed": seed,
+            "epoch_ns": self.graph.epoch_ns,
+            "limits": {
+                "cpu_seconds": self.limits.cpu_seconds,
+                "memory_bytes": self.limits.memory_bytes,
+                "file_bytes": self.limits.file_bytes,
+            },
+        }
+        env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "PYTHONSTARTUP")}
+        env.update(OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1", PYTHONUNBUFFERED="1")
+        cwd = str(self.spec.path.resolve().parent) if self.spec.path else None
+        self.proc = subprocess.Popen(
+            [sys.executable, "-I", "-c", _BOOTSTRAP.format(root=_PACKAGE_ROOT), json.dumps(config)],
+            stdin=subprocess.DEVNULL,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.STDOUT,
+            pass_fds=(to_child_r, from_child_w),
+            start_new_session=True,
+            cwd=cwd,
+            env=env,
+        )
+        os.close(to_child_r)
+        os.close(from_child_w)
+        self._to_child = to_child_w
+        self._from_child = from_child_r
+        self._stdout = self.proc.stdout.fileno()
+        os.set_blocking(self._stdout, False)
+
+    def close(self) -> CrashReport | None:
+        """End the child (asking it first), kill what it left behind, report."""
+        if self.proc is not None and not self.finished:
+            try:
+                wire.send_to_child(self._to_child, {"end": True})
+                self._receive(1.0, final=True)
+            except (OSError, wire.WireError, _Stop):
+                pass
+        self._terminate()
+        return self.crash
+
+    def _terminate(self) -> None:
+        self.finished = True
+        if self in self.sim.remotes:
+            self.sim.remotes.remove(self)
+        self.wake_ns = None
+        proc = self.proc
+        if proc is None:
+            return
+        try:
+            os.killpg(proc.pid, signal.SIGKILL)
+        except (ProcessLookupError, PermissionError):
+            pass
+        try:
+            proc.wait(timeout=5)
+        except subprocess.TimeoutExpired:
+            pass
+        self._drain_output(final=True)
+        for fd in (self._to_child, self._from_child):
+            try:
+                os.close(fd)
+            except OSError:
+                pass
+        if proc.stdout:
+            proc.stdout.close()
+        stop_turtles(self.sim, self.owner)
+        self.graph.remove_owner(self.owner)
+        self.proc = None
+
+    def _fail(self, kind: str, message: str, frames: list[str] | None = None) -> None:
+        if self.crash is None:
+            self.crash = CrashReport(self.spec.label, self.sim.t, kind, message, frames or [])
+            self.graph.log("turtletui", ERROR, self.crash.summary())
+            for line in self.crash.frames:
+                self.graph.log("turtletui", ERROR, line)
+        self._terminate()
+
+    # -- RemoteHost -------------------------------------------------------------
+    def wants_exchange(self, now_ns: int) -> bool:
+        if self.finished:
+            return False
+        if now_ns != self._instant:
+            self._instant = now_ns
+            self._rounds = 0
+        elif self._rounds >= MAX_ROUNDS_PER_INSTANT:
+            return False
+        if self._inbox or self._responses or self._goal_events or self._requests:
+            return True
+        if self._poll:
+            return True
+        return self.wake_ns is not None and self.wake_ns <= now_ns
+
+    def exchange(self, timeout: float | None = None) -> None:
+        """One lockstep round: send the time and inbox, apply the child's answer."""
+        if self.finished:
+            return
+        self._rounds += 1
+        message: dict[str, Any] = {"now": self.graph.now_ns}
+        if self._inbox:
+            message["msgs"], self._inbox = self._inbox, []
+        if self._responses:
+            message["responses"], self._responses = self._responses, []
+        if self._goal_events:
+            message["goals"], self._goal_events = self._goal_events, []
+        if self._requests:
+            message["requests"], self._requests = self._requests, []
+        services = (tuple(sorted(self.graph.services)), tuple(sorted(self.graph.action_servers)))
+        if services != self._known_services:
+            self._known_services = services
+            message["services"] = list(services[0])
+            message["actions"] = list(services[1])
+            message["action_types"] = {n: a.type_name for n, a in self.graph.action_servers.items()}
+        try:
+            wire.send_to_child(self._to_child, message)
+        except OSError:
+            self._child_died()
+            return
+        try:
+            self._receive(timeout or self.limits.step_timeout)
+        except _Stop:
+            return
+
+    # -- receiving ---------------------------------------------------------------
+    def _receive(self, timeout: float, *, first: bool = False, final: bool = False) -> None:
+        deadline = time.monotonic() + timeout
+        header = self._read(4, deadline)
+        try:
+            size = wire.read_header(header)
+        except wire.WireError as err:
+            self._fail("flood", str(err))
+            raise _Stop from None
+        payload = self._read(size, deadline)
+        try:
+            reply = wire.parse_reply(payload)
+        except wire.WireError as err:
+            self._fail("exception", str(err))
+            raise _Stop from None
+        if first:
+            return
+        try:
+            self._apply(reply)
+        except (InterfaceError, GraphError, KeyError, TypeError, ValueError) as err:
+            self._fail("exception", f"sent something turtlesim cannot accept: {err}")
+            raise _Stop from None
+
+    def _read(self, size: int, deadline: float) -> bytes:
+        chunks = []
+        fd = self._from_child
+        while size:
+            remaining = deadline - time.monotonic()
+            if remaining <= 0:
+                self._fail(
+                    "timeout",
+                    f"did not answer within {self.limits.step_timeout:g} s of wall time "
+                    "(an endless loop, a sleep or a blocking call in a callback?)",
+                )
+                raise _Stop
+            readable, _, _ = select.select([fd, self._stdout], [], [], remaining)
+            if self._stdout in readable:
+                self._drain_output()
+            if fd in readable:
+                chunk = os.read(fd, min(size, 1 << 20))
+                if not chunk:
+                    self._child_died()
+                    raise _Stop
+                chunks.append(chunk)
+                size -= len(chunk)
+        return b"".join(chunks)
+
+    def _child_died(self) -> None:
+        proc = self.proc
+        code = proc.wait(timeout=5) if proc is not None else None
+        if code is not None and code < 0:
+            sig = -code
+            kind, why = {
+                signal.SIGXCPU: ("cpu", f"used more than its {self.limits.cpu_seconds} s CPU limit"),
+                signal.SIGKILL: ("killed", "was killed (SIGKILL): out of memory, or killed by someone"),
+                signal.SIGSEGV: ("killed", "crashed the interpreter (SIGSEGV)"),
+            }.get(sig, ("killed", f"was killed by signal {signal.Signals(sig).name}"))
+            self._fail(kind, why)
+        else:
+            self._fail("exit", f"exited with status {code} without finishing its run")
+
+    def _drain_output(self, final: bool = False) -> None:
+        if self.proc is None or self.proc.stdout is None:
+            return
+        try:
+            while True:
+                data = os.read(self._stdout, 65536)
+                if not data:
+                    break
+                self._output_buffer += data
+        except (BlockingIOError, OSError, ValueError):
+            pass
+        *lines, self._output_buffer = self._output_buffer.split(b"\n")
+        if final and self._output_buffer:
+            lines.append(self._output_buffer)
+            self._output_buffer = b""
+        if len(self._output_buffer) > 65536:
+            lines.append(self._output_buffer)
+            self._output_buffer = b""
+        name = f"{self.spec.name}:stdout"
+        for line in lines:
+            self._output_lines += 1
+            if self._output_lines <= self.limits.output_lines:
+                self.graph.log(name, INFO, line[:4096].decode("utf-8", "replace"))
+            elif self._output_lines == self.limits.output_lines + 1:
+                self.graph.log("turtletui", ERROR, f"{self.spec.label}: output truncated after {self.limits.output_lines} lines")
+
+    # -- applying what the child did ------------------------------------------------
+    def _apply(self, reply: dict) -> None:
+        graph = self.graph
+        for decl in reply.get("decl", ()):
+            self._declare(decl)
+        for level, node, msg in reply.get("log", ()):
+            graph.log(str(node)[:200], int(level), str(msg)[:10_000])
+        for name, fields in reply.get("pub", ()):
+            topic = graph.topics.get(name)
+            if topic is None:
+                raise GraphError(f"published on undeclared topic {name}")
+            msg = from_dict(topic.msg_type, fields)
+            graph.publish(topic, msg, source=self.owner)
+        for call_id, name, fields in reply.get("call", ()):
+            service = graph.services.get(name)
+            if service is None:
+                continue
+            request = from_dict(service.srv_type.Request, fields)
+            response_type = f"{service.type_name}_Response"
+            graph.call(
+                name,
+                request,
+                lambda response, cid=call_id, rt=response_type: self._responses.append([cid, rt, to_dict(response)]),
+                self.owner,
+            )
+        for goal_id, name, fields in reply.get("goal", ()):
+            server = graph.action_servers.get(name)
+            if server is None:
+                continue
+            goal = from_dict(server.action_type.Goal, fields)
+            graph.send_goal(
+                name,
+                goal,
+                self.owner,
+                lambda handle, gid=goal_id: self._goal_accepted(gid, handle),
+                lambda feedback, gid=goal_id: self._goal_events.append([gid, "feedback", to_dict(feedback)]),
+                lambda status, result, gid=goal_id: self._goal_events.append(
+                    [gid, "result", [status, to_dict(result)]]
+                ),
+            )
+        for goal_id in reply.get("cancel", ()):
+            handle = self._goals.get(goal_id)
+            if handle is not None:
+                graph.cancel_goal(handle)
+        for req_id, fields in reply.get("resp", ()):
+            respond = self._service_calls.pop(req_id, None)
+            if respond is not None:
+                respond(fields)
+        wake = reply.get("wake")
+        now = graph.now_ns
+        if wake is not None and int(wake) <= now:
+            self.wake_ns, self._poll = None, True
+        else:
+            self.wake_ns, self._poll = (None if wake is None else int(wake)), False
+        if reply.get("done"):
+            crash = reply.get("crash")
+            if crash:
+                frames = [str(f) for f in crash.get("frames", [])][:50]
+                self._fail(str(crash.get("kind", "exception")), str(crash.get("message", ""))[:2000], frames)
+            else:
+                self._terminate()
+            raise _Stop
+
+    def _goal_accepted(self, goal_id: int, handle: Any) -> None:
+        self._goals[goal_id] = handle
+        self._goal_events.append([goal_id, "accepted", None])
+
+    def _declare(self, decl: list) -> None:
+        graph = self.graph
+        kind = decl[0]
+        if kind == "node":
+            _, wire_id, name, namespace = decl
+            self._nodes[wire_id] = graph.add_node(str(name), str(namespace), self.owner)
+        elif kind == "rmnode":
+            node = self._nodes.pop(decl[1], None)
+            if node is not None:
+                graph.remove_node(node)
+        elif kind == "pub":
+            _, wire_id, node_id, topic, type_name, depth = decl
+            self._endpoints[wire_id] = graph.add_publisher(
+                self._nodes[node_id], str(topic), get_interface(type_name), int(depth)
+            )
+        elif kind == "sub":
+            _, wire_id, node_id, topic, type_name, depth = decl
+            def forward(msg: Any, wire_id: int = wire_id) -> None:
+                self._inbox.append((wire_id, to_dict(msg)))
+
+            self._endpoints[wire_id] = graph.add_subscription(
+                self._nodes[node_id], str(topic), get_interface(type_name), int(depth), forward
+            )
+        elif kind == "rm":
+            endpoint = self._endpoints.pop(decl[1], None)
+            if endpoint is not None:
+                graph.remove_endpoint(endpoint)
+        elif kind == "client":
+            graph.add_client(self._nodes[decl[1]], str(decl[2]), get_interface(decl[3]))
+        elif kind == "aclient":
+            graph.add_action_client(self._nodes[decl[1]], str(decl[2]), get_interface(decl[3]))
+        elif kind == "srv":
+            _, node_id, name, type_name = decl
+            srv_type = get_interface(type_name)
+
+            def handler(request: Any, respond: Any, name: str = str(name), srv_type: Any = srv_type) -> None:
+                req_id = len(self._service_calls) + 1 + id(request) % 1000003
+                self._service_calls[req_id] = lambda fields: respond(from_dict(srv_type.Response, fields))
+                self._requests.append([req_id, name, to_dict(request)])
+
+            graph.add_service(self._nodes[node_id], str(name), srv_type, handler)
+        elif kind == "params":
+            node = self._nodes.get(decl[1])
+            if node is not None and isinstance(decl[2], dict):
+                node.parameters = dict(decl[2])
+
+
+class _Stop(Exception):
+    """The child finished or failed during an exchange."""
