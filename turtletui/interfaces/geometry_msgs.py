@@ -1,0 +1,147 @@
+"""geometry_msgs/msg: vectors, points, poses, twists.
+
+Import path in ROS 2: geometry_msgs.msg.
+Definitions copied from the ROS 2 interface packages (Apache-2.0);
+the text of each definition is what ``ros2 interface show`` prints.
+"""
+
+from turtletui.interfaces import std_msgs as _std_msgs  # noqa: F401  (nested types)
+from turtletui.interfaces._message import define_message as _msg
+
+__all__ = [
+    'Accel',
+    'Point',
+    'Point32',
+    'PointStamped',
+    'Pose',
+    'Pose2D',
+    'PoseStamped',
+    'Quaternion',
+    'Transform',
+    'Twist',
+    'TwistStamped',
+    'Vector3',
+    'Vector3Stamped',
+]
+
+Vector3 = _msg('geometry_msgs/msg/Vector3', '''\
+# This represents a vector in free space.
+
+# This is semantically different than a point.
+# A vector is always anchored at the origin.
+# When a transform is applied to a vector, only the rotational component is applied.
+
+float64 x
+float64 y
+float64 z
+''', globals())
+
+Point = _msg('geometry_msgs/msg/Point', '''\
+# This contains the position of a point in free space
+float64 x
+float64 y
+float64 z
+''', globals())
+
+Point32 = _msg('geometry_msgs/msg/Point32', '''\
+# This contains the position of a point in free space(with 32 bits of precision).
+# It is recommended to use Point wherever possible instead of Point32.
+#
+# This recommendation is to promote interoperability.
+#
+# This message is designed to take up less space when sending
+# lots of points at once, as in the case of a PointCloud.
+
+float32 x
+float32 y
+float32 z
+''', globals())
+
+Quaternion = _msg('geometry_msgs/msg/Quaternion', '''\
+# This represents an orientation in free space in quaternion form.
+
+float64 x 0
+float64 y 0
+float64 z 0
+float64 w 1
+''', globals())
+
+Pose = _msg('geometry_msgs/msg/Pose', '''\
+# A representation of pose in free space, composed of position and orientation.
+
+Point position
+Quaternion orientation
+''', globals())
+
+Pose2D = _msg('geometry_msgs/msg/Pose2D', '''\
+# Deprecated as of Foxy and will potentially be removed in any following release.
+# Please use the full 3D pose.
+
+# In general our recommendation is to use a full 3D representation of everything and \
+for 2D specific applications make the appropriate projections into the plane for \
+their calculations but optimally will preserve the 3D information during processing.
+
+# If we have parallel copies of 2D datatypes every UI and other pipeline will end up \
+needing to have dual interfaces to plot everything. And you will end up with not \
+being able to use 3D tools for 2D use cases even if they're completely valid, as \
+you'd have to reimplement it with different inputs and outputs. It's not particularly \
+hard to plot the 2D pose or compute the yaw error for the Pose message and there are \
+already tools and libraries that can do this for you.# This expresses a position and \
+orientation on a 2D manifold.
+
+float64 x
+float64 y
+float64 theta
+''', globals())
+
+Twist = _msg('geometry_msgs/msg/Twist', '''\
+# This expresses velocity in free space broken into its linear and angular parts.
+
+Vector3  linear
+Vector3  angular
+''', globals())
+
+Accel = _msg('geometry_msgs/msg/Accel', '''\
+# This expresses acceleration in free space broken into its linear and angular parts.
+Vector3  linear
+Vector3  angular
+''', globals())
+
+Transform = _msg('geometry_msgs/msg/Transform', '''\
+# This represents the transform between two coordinate frames in free space.
+
+Vector3 translation
+Quaternion rotation
+''', globals())
+
+PointStamped = _msg('geometry_msgs/msg/PointStamped', '''\
+# This represents a Point with reference coordinate frame and timestamp
+
+std_msgs/Header header
+Point point
+''', globals())
+
+PoseStamped = _msg('geometry_msgs/msg/PoseStamped', '''\
+# A Pose with reference coordinate frame and timestamp
+
+std_msgs/Header header
+Pose pose
+''', globals())
+
+Vector3Stamped = _msg('geometry_msgs/msg/Vector3Stamped', '''\
+# This represents a Vector3 with reference coordinate frame and timestamp
+
+# Note that this follows vector semantics with it always anchored at the origin,
+# so the rotational elements of a transform are the only parts applied when \
+transforming.
+
+std_msgs/Header header
+Vector3 vector
+''', globals())
+
+TwistStamped = _msg('geometry_msgs/msg/TwistStamped', '''\
+# A twist with reference coordinate frame and timestamp
+
+std_msgs/Header header
+Twist twist
+''', globals())
