@@ -100,7 +100,7 @@ def run_in_process(
         if spec.factory is not None:
             from turtletui.runtime.loader import spin_nodes
 
-            spin_nodes([spec.factory])
+            spin_nodes(list(spec.factory()))
         else:
             spin_main = entry_point(load_module(spec), spec.label)
             spin_main()

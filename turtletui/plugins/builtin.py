@@ -1,0 +1,67 @@
+"""The built-in plugin: the course's reference controllers and bundled lessons.
+
+Worlds and checks arrive with issue 4.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from turtletui.plugins import hookimpl
+from turtletui.plugins.hookspecs import RegisterController, RegisterLesson
+
+REFERENCE_CONTROLLERS: tuple[tuple[str, str, str], ...] = (
+    (
+        "part3_first_node",
+        "my_first_node.py",
+        "Part 3: a first node that logs a counter from a timer",
+    ),
+    ("part4_draw_circle", "draw_circle.py", "Part 4: publishes cmd_vel so turtle1 draws a circle"),
+    (
+        "part5_pose_subscriber",
+        "pose_subscriber.py",
+        "Part 5: subscribes to turtle1's pose and logs it",
+    ),
+    (
+        "part6_wall_avoider",
+        "turtle_controller.py",
+        "Part 6: closed-loop control that turns away from walls",
+    ),
+    (
+        "part7_pen_color",
+        "turtle_controller_pen.py",
+        "Part 7: the wall avoider, changing pen colour through a service",
+    ),
+)
+"""(controller name, file in the reference folder, description)."""
+
+
+def lessons_dir() -> Path | None:
+    """The bundled lessons folder, installed or in a source checkout; None if absent."""
+    try:
+        import turtletui.lessons_data as package
+    except ModuleNotFoundError as err:
+        if err.name != "turtletui.lessons_data":
+            raise
+        import turtletui
+
+        folder = Path(turtletui.__file__).resolve().parents[1] / "lessons"
+    else:
+        folder = Path(next(iter(package.__path__)))
+    return folder if folder.is_dir() else None
+
+
+@hookimpl
+def turtletui_register_controllers(register: RegisterController) -> None:
+    from turtletui.runtime.reference import reference_dir
+
+    folder = reference_dir()
+    for name, filename, description in REFERENCE_CONTROLLERS:
+        register(name, folder / filename, description)
+
+
+@hookimpl
+def turtletui_register_lessons(register: RegisterLesson) -> None:
+    folder = lessons_dir()
+    if folder is not None:
+        register(folder)
