@@ -19,7 +19,7 @@ import traceback
 from collections.abc import Callable
 from typing import Any
 
-from turtletui.graph.core import GoalHandle, Graph, NodeRecord, Publisher, Subscription, Topic
+from turtletui.graph.core import Graph, NodeRecord, Publisher, Subscription, Topic
 from turtletui.graph.logs import LogRecord
 from turtletui.interfaces import from_dict, get_interface, interface_name, to_dict
 from turtletui.runtime import wire
@@ -314,7 +314,13 @@ def main() -> None:
     _apply_limits(config.get("limits", {}))
     from turtletui import compat
     from turtletui.compat import context as compat_context
-    from turtletui.runtime.loader import ControllerError, ControllerSpec, entry_point, load_module, user_frames
+    from turtletui.runtime.loader import (
+        ControllerError,
+        ControllerSpec,
+        entry_point,
+        load_module,
+        user_frames,
+    )
 
     compat.install()
     graph = ChildGraph()

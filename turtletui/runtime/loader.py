@@ -7,9 +7,10 @@ import importlib.util
 import inspect
 import sys
 import types
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any
 
 
 class ControllerError(Exception):

@@ -1,4 +1,19 @@
 """turtletui's rclpy: the API of ROS 2's rclpy over a simulated graph."""
+from rclpy import (  # noqa: F401,E402
+    action,
+    callback_groups,
+    clock,
+    duration,
+    executors,
+    logging,
+    node,
+    parameter,
+    qos,
+    task,
+    time,
+)
+from turtletui.compat.context import get_default_context  # noqa: F401
+from turtletui.compat.executors import get_global_executor  # noqa: F401
 from turtletui.compat.rclpy_api import (  # noqa: F401
     create_node,
     init,
@@ -9,6 +24,3 @@ from turtletui.compat.rclpy_api import (  # noqa: F401
     spin_until_future_complete,
     try_shutdown,
 )
-from turtletui.compat.executors import get_global_executor  # noqa: F401
-from turtletui.compat.context import get_default_context  # noqa: F401
-from rclpy import logging, node, qos, time, duration, executors, task, parameter, callback_groups, clock, action  # noqa: F401,E402
