@@ -88,9 +88,7 @@ class RcutilsLogger:
                 return False
         elif severity < self.get_effective_level():
             return False
-        from turtletui.compat.context import current_host
-
-        graph = current_host().graph
+        graph = (_current_host or _bind_current_host())().graph
         if kwargs:
             unknown = set(kwargs) - {
                 "throttle_duration_sec",
@@ -116,6 +114,18 @@ class RcutilsLogger:
                 state[1] = now
         graph.log(self.name, severity, message)
         return True
+
+
+_current_host = None
+
+
+def _bind_current_host():
+    # Imported on first use: turtletui.compat.context may import this module.
+    global _current_host
+    from turtletui.compat.context import current_host
+
+    _current_host = current_host
+    return current_host
 
 
 _loggers: dict[str, RcutilsLogger] = {}

@@ -35,6 +35,8 @@ QOS_DEPTH = 7
 """turtlesim's topics: keep last 7, reliable (qos.hpp)."""
 
 _F32 = struct.Struct("5f")
+_F32_pack = _F32.pack
+_F32_unpack = _F32.unpack
 _PARAMETERS = ("background_r", "background_g", "background_b", "holonomic")
 
 
@@ -91,19 +93,30 @@ class TurtlesimNode:
     def _update(self) -> None:
         world = self.world
         turtles = self._turtles
-        sense = any(ends.color.topic.subscriptions for ends in turtles.values() if ends.color) or bool(
-            self.graph.taps
-        )
+        graph = self.graph
+        sense = False
+        for ends in turtles.values():
+            color = ends.color
+            if color and color.topic.subscriptions:
+                sense = True
+                break
+        else:
+            sense = bool(graph.taps)
         if not world.step(sense_color=sense):
             return
         if world.events:
             self._handle_events()
-        publish = self.graph.publish
+        publish = graph.publish
+        trusted_pose = Pose._trusted
         for turtle in world._order:
             ends = turtles[turtle.name]
             vx, vy = turtle.vx, turtle.vy
             speed = (vx * vx + vy * vy) ** 0.5
-            publish(ends.pose.topic, Pose._trusted(*_float32(turtle.x, turtle.y, turtle.theta, speed, turtle.wz)))
+            try:
+                fields = _F32_unpack(_F32_pack(turtle.x, turtle.y, turtle.theta, speed, turtle.wz))
+            except OverflowError:
+                fields = _float32(turtle.x, turtle.y, turtle.theta, speed, turtle.wz)
+            publish(ends.pose.topic, trusted_pose(*fields))
             if sense:
                 publish(ends.color.topic, Color._trusted(*turtle.color))
 

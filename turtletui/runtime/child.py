@@ -25,6 +25,7 @@ from turtletui.interfaces import from_dict, get_interface, interface_name, to_di
 from turtletui.runtime import wire
 
 OWNER = "child"
+"""Immutable types whose very same objects always serialise the same way."""
 
 
 class _RemoteGoal:
@@ -47,15 +48,12 @@ class ChildGraph(Graph):
         self._subs: dict[int, Subscription] = {}
         self._calls: dict[int, Callable[[Any], None]] = {}
         self._goals: dict[int, tuple] = {}
-        self._sent_params: dict[int, str] = {}
 
     def take_out(self) -> dict[str, Any]:
-        for node in self.nodes:
-            snapshot = json.dumps(node.parameters, default=str, sort_keys=True)
-            if self._sent_params.get(id(node)) != snapshot:
-                self._sent_params[id(node)] = snapshot
-                self.out["decl"].append(["params", node.wire_id, json.loads(snapshot)])
-        out = {key: value for key, value in self.out.items() if value}
+        out = {}
+        for key, value in self.out.items():
+            if value:
+                out[key] = value
         for key in out:
             self.out[key] = []
         return out
@@ -66,6 +64,12 @@ class ChildGraph(Graph):
         node.wire_id = next(self._ids)
         self.out["decl"].append(["node", node.wire_id, name, namespace])
         return node
+
+    def set_parameter(self, node: NodeRecord, name: str, value: Any, *, remove: bool = False) -> None:
+        super().set_parameter(node, name, value, remove=remove)
+        if isinstance(value, (bytes, bytearray)):
+            value = list(value)
+        self.out["decl"].append(["param", node.wire_id, name, value, remove])
 
     def remove_node(self, node: NodeRecord) -> None:
         super().remove_node(node)

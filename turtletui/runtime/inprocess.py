@@ -60,8 +60,9 @@ class InProcessHost:
     def spin_once(self, timeout_ns: int | None) -> bool:
         if self._ended:
             return False
-        outcome = self.sim.pump(self.owner, self._limit(timeout_ns))
-        self._check_end()
+        outcome = self.sim.pump(self.owner, self.end_ns if timeout_ns is None else self._limit(timeout_ns))
+        if self.graph.now_ns >= self.end_ns:
+            self._ended = True
         return outcome == "own" or not self._ended
 
     def spin_until(self, done: Callable[[], bool], timeout_ns: int | None, *, callbacks: bool = True) -> bool:

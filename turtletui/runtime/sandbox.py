@@ -77,6 +77,8 @@ class SandboxHost:
         self._goals: dict[int, Any] = {}
         self._service_calls: dict[int, Any] = {}
         self._known_services: tuple = ()
+        self._known_keys: tuple = (None, None)
+        self._read_buffer = b""
         self._output_lines = 0
         self._output_buffer = b""
         self.proc: subprocess.Popen | None = None
@@ -131,6 +133,7 @@ class SandboxHost:
         os.close(from_child_w)
         self._to_child = to_child_w
         self._from_child = from_child_r
+        os.set_blocking(from_child_r, False)  # polled briefly, then select (wire.spin_read)
         self._stdout = self.proc.stdout.fileno()
         os.set_blocking(self._stdout, False)
 
@@ -210,7 +213,15 @@ class SandboxHost:
             message["goals"], self._goal_events = self._goal_events, []
         if self._requests:
             message["requests"], self._requests = self._requests, []
-        services = (tuple(sorted(self.graph.services)), tuple(sorted(self.graph.action_servers)))
+        graph = self.graph
+        keys = graph.services.keys(), graph.action_servers.keys()
+        known = self._known_keys
+        if known[0] != keys[0] or known[1] != keys[1]:
+            # Sorted only when the set of names changed (dict-key views compare as sets).
+            self._known_keys = (frozenset(keys[0]), frozenset(keys[1]))
+            services = (tuple(sorted(keys[0])), tuple(sorted(keys[1])))
+        else:
+            services = self._known_services
         if services != self._known_services:
             self._known_services = services
             message["services"] = list(services[0])
@@ -229,13 +240,19 @@ class SandboxHost:
     # -- receiving ---------------------------------------------------------------
     def _receive(self, timeout: float, *, first: bool = False, final: bool = False) -> None:
         deadline = time.monotonic() + timeout
-        header = self._read(4, deadline)
+        buffer = self._read_buffer
+        if len(buffer) < 4:
+            buffer = self._read_more(buffer, 4, deadline)
         try:
-            size = wire.read_header(header)
+            size = wire.read_header(buffer[:4])
         except wire.WireError as err:
             self._fail("flood", str(err))
             raise _Stop from None
-        payload = self._read(size, deadline)
+        end = 4 + size
+        if len(buffer) < end:
+            buffer = self._read_more(buffer, end, deadline)
+        payload = buffer[4:end]
+        self._read_buffer = buffer[end:]
         try:
             reply = wire.parse_reply(payload)
         except wire.WireError as err:
@@ -249,28 +266,45 @@ class SandboxHost:
             self._fail("exception", f"sent something turtlesim cannot accept: {err}")
             raise _Stop from None
 
-    def _read(self, size: int, deadline: float) -> bytes:
-        chunks = []
+    def _read_more(self, buffer: bytes, total: int, deadline: float) -> bytes:
+        """``buffer`` extended with what the child sends until it holds ``total``
+        bytes: one select and one read per chunk the pipe has, not per field."""
+        chunks = [buffer]
+        have = len(buffer)
         fd = self._from_child
-        while size:
+        stdout = self._stdout
+        watch = [fd, stdout]
+        while have < total:
             remaining = deadline - time.monotonic()
             if remaining <= 0:
+                self._read_buffer = b"".join(chunks)
                 self._fail(
                     "timeout",
                     f"did not answer within {self.limits.step_timeout:g} s of wall time "
                     "(an endless loop, a sleep or a blocking call in a callback?)",
                 )
                 raise _Stop
-            readable, _, _ = select.select([fd, self._stdout], [], [], remaining)
-            if self._stdout in readable:
+            size = max(min(total - have, 1 << 20), 1 << 16)
+            chunk = wire.spin_read(fd, size, wire.SPIN_SECONDS)
+            if chunk is None:
+                readable, _, _ = select.select(watch, [], [], remaining)
+                if stdout in readable:
+                    self._drain_output()
+                if fd not in readable:
+                    continue
+                try:
+                    chunk = os.read(fd, size)
+                except BlockingIOError:
+                    continue
+            else:
+                # What the child printed before answering is logged before the
+                # answer, as when select reports both pipes ready.
                 self._drain_output()
-            if fd in readable:
-                chunk = os.read(fd, min(size, 1 << 20))
-                if not chunk:
-                    self._child_died()
-                    raise _Stop
-                chunks.append(chunk)
-                size -= len(chunk)
+            if not chunk:
+                self._child_died()
+                raise _Stop
+            chunks.append(chunk)
+            have += len(chunk)
         return b"".join(chunks)
 
     def _child_died(self) -> None:
@@ -421,10 +455,9 @@ class SandboxHost:
                 self._requests.append([req_id, name, to_dict(request)])
 
             graph.add_service(self._nodes[node_id], str(name), srv_type, handler)
-        elif kind == "params":
-            node = self._nodes.get(decl[1])
-            if node is not None and isinstance(decl[2], dict):
-                node.parameters = dict(decl[2])
+        elif kind == "param":
+            _, node_id, name, value, remove = decl
+            graph.set_parameter(self._nodes[node_id], str(name), value, remove=bool(remove))
 
 
 class _Stop(Exception):

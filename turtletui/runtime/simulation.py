@@ -81,13 +81,17 @@ class Simulation:
         """
         graph = self.graph
         ready = graph.ready
-        held: list = []
+        popleft = ready.popleft
+        held: list | None = None
+        remotes = self.remotes
         try:
             while True:
                 while ready:
-                    item = ready.popleft()
+                    item = popleft()
                     if item[0] == own and own is not None:
                         if not run_own:
+                            if held is None:
+                                held = []
                             held.append(item)
                             continue
                         item[1]()
@@ -95,7 +99,7 @@ class Simulation:
                     item[1]()
                 if until is not None and until():
                     return "until"
-                if self.remotes and self._exchange():
+                if remotes and self._exchange():
                     continue
                 if not self._advance(limit_ns):
                     return "limit"
@@ -116,6 +120,10 @@ class Simulation:
 
     def _advance(self, limit_ns: int) -> bool:
         graph = self.graph
+        if not self.remotes and not self.realtime:
+            # Same as below with no remote wake-ups and no waiting: Graph.advance
+            # jumps to the next timer not past the limit, or to the limit.
+            return graph.advance(limit_ns)
         due = graph.next_due()
         for remote in self.remotes:
             wake = remote.wake_ns
