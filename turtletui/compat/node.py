@@ -562,7 +562,7 @@ class Node:
         parameter = Parameter(name, value=value)
         self._parameters[name] = parameter
         self._descriptors[name] = descriptor
-        self._record.parameters[name] = value
+        self._graph.set_parameter(self._record, name, value)
         return parameter
 
     def declare_parameters(
@@ -580,7 +580,7 @@ class Node:
         if name not in self._parameters:
             raise ParameterNotDeclaredException(name)
         del self._parameters[name]
-        self._record.parameters.pop(name, None)
+        self._graph.set_parameter(self._record, name, None, remove=True)
 
     def has_parameter(self, name: str) -> bool:
         return name in self._parameters
@@ -640,7 +640,7 @@ class Node:
                 )
         for parameter in parameters:
             self._parameters[parameter.name] = parameter
-            self._record.parameters[parameter.name] = parameter.value
+            self._graph.set_parameter(self._record, parameter.name, parameter.value)
         return SetParametersResult(successful=True)
 
 

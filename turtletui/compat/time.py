@@ -54,9 +54,13 @@ class Duration:
         return hash(self._nanoseconds)
 
     def __add__(self, other: Duration) -> Duration:
+        if not isinstance(other, Duration):
+            return NotImplemented
         return Duration(nanoseconds=self._nanoseconds + other._nanoseconds)
 
     def __sub__(self, other: Duration) -> Duration:
+        if not isinstance(other, Duration):
+            return NotImplemented
         return Duration(nanoseconds=self._nanoseconds - other._nanoseconds)
 
     def __mul__(self, factor: float) -> Duration:
@@ -117,26 +121,34 @@ class Time:
             return Time(nanoseconds=self._nanoseconds - other.nanoseconds, clock_type=self._clock_type)
         return NotImplemented
 
-    def _key(self, other: object) -> int:
-        if not isinstance(other, Time):
-            raise TypeError("Can't compare time with object of type: ", type(other))
+    def _key(self, other: Time) -> int:
         if other._clock_type != self._clock_type:
             raise TypeError("Can't compare times with different clock types")
         return other._nanoseconds
 
     def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Time):
+            return NotImplemented
         return self._nanoseconds == self._key(other)
 
     def __lt__(self, other: Time) -> bool:
+        if not isinstance(other, Time):
+            return NotImplemented
         return self._nanoseconds < self._key(other)
 
     def __le__(self, other: Time) -> bool:
+        if not isinstance(other, Time):
+            return NotImplemented
         return self._nanoseconds <= self._key(other)
 
     def __gt__(self, other: Time) -> bool:
+        if not isinstance(other, Time):
+            return NotImplemented
         return self._nanoseconds > self._key(other)
 
     def __ge__(self, other: Time) -> bool:
+        if not isinstance(other, Time):
+            return NotImplemented
         return self._nanoseconds >= self._key(other)
 
     def __hash__(self) -> int:

@@ -73,7 +73,17 @@ class Publisher:
 class Topic:
     """A named channel with one message type, its endpoints and a measured rate."""
 
-    __slots__ = ("name", "msg_type", "type_name", "publishers", "subscriptions", "count", "_stamps", "last")
+    __slots__ = (
+        "name",
+        "msg_type",
+        "type_name",
+        "publishers",
+        "subscriptions",
+        "count",
+        "_stamps",
+        "last",
+        "publisher_owners",
+    )
 
     def __init__(self, name: str, msg_type: type, type_name: str) -> None:
         self.name = name
@@ -84,6 +94,8 @@ class Topic:
         self.count = 0
         self.last: Any = None
         self._stamps: deque[int] = deque(maxlen=_RATE_WINDOW)
+        self.publisher_owners: set[str] = set()
+        """Every owner that ever had a publisher here (kept after it is gone)."""
 
     def rate(self, now_ns: int) -> float:
         """Messages per simulated second over the last 64 messages (0 if idle for 2 s)."""
@@ -221,20 +233,35 @@ class Graph:
     def advance(self, until_ns: int | None = None) -> bool:
         """Jump to the next due timer (not past ``until_ns``) and fire every timer
         due then. Returns False, leaving time at ``until_ns``, when none is due."""
-        due = self.next_due()
-        if due is None or (until_ns is not None and due > until_ns):
+        timers = self._timers
+        while timers:
+            head = timers[0]
+            timer = head[2]
+            if timer.canceled or head[0] != timer.next_due:
+                heapq.heappop(timers)
+                continue
+            break
+        else:
             if until_ns is not None and until_ns > self.now_ns:
                 self.now_ns = until_ns
             return False
-        self.now_ns = max(self.now_ns, due)
-        timers = self._timers
+        due = head[0]
+        if until_ns is not None and due > until_ns:
+            if until_ns > self.now_ns:
+                self.now_ns = until_ns
+            return False
+        now = self.now_ns
+        if due > now:
+            self.now_ns = now = due
         ready = self.ready
-        while timers and timers[0][0] <= self.now_ns:
-            due, _, timer = heapq.heappop(timers)
+        heappop = heapq.heappop
+        heappush = heapq.heappush
+        while timers and timers[0][0] <= now:
+            due, _, timer = heappop(timers)
             if timer.canceled or due != timer.next_due:
                 continue
-            timer.next_due = due + timer.period_ns
-            heapq.heappush(timers, (timer.next_due, timer.seq, timer))
+            timer.next_due = next_due = due + timer.period_ns
+            heappush(timers, (next_due, timer.seq, timer))
             ready.append((timer.owner, timer.callback))
         return True
 
@@ -268,11 +295,21 @@ class Graph:
             if timer.node is node:
                 timer.canceled = True
 
+    def set_parameter(self, node: NodeRecord, name: str, value: Any, *, remove: bool = False) -> None:
+        """Record a node's parameter value (what ``ros2 param get`` shows)."""
+        if remove:
+            node.parameters.pop(name, None)
+        else:
+            node.parameters[name] = value
+
     def remove_owner(self, owner: str) -> None:
         """Destroy every node of one controller host (it ended or crashed)."""
         for node in [n for n in self.nodes if n.owner == owner]:
             self.remove_node(node)
-        self.ready = deque(item for item in self.ready if item[0] != owner)
+        # In place: the pump loop holds a reference to this deque.
+        kept = [item for item in self.ready if item[0] != owner]
+        self.ready.clear()
+        self.ready.extend(kept)
 
     # -- topics -------------------------------------------------------------
     def topic(self, name: str, msg_type: type) -> Topic:
@@ -290,6 +327,7 @@ class Graph:
         topic = self.topic(name, msg_type)
         pub = Publisher(node, topic, depth, node.owner)
         topic.publishers.append(pub)
+        topic.publisher_owners.add(node.owner)
         return pub
 
     def add_subscription(
@@ -313,13 +351,15 @@ class Graph:
         topic.count += 1
         topic.last = msg
         topic._stamps.append(self.now_ns)
-        ready = self.ready
+        ready = None
         for sub in topic.subscriptions:
             if sub.owner == source:
                 continue
             sub.queue.append(msg)
             if not sub.pending:
                 sub.pending = True
+                if ready is None:
+                    ready = self.ready
                 ready.append((sub.owner, _Delivery(sub)))
         if self.taps:
             for tap in self.taps:
@@ -456,5 +496,6 @@ class _Delivery:
         queue = sub.queue
         sub.pending = False
         callback = sub.callback
+        popleft = queue.popleft
         while queue:
-            callback(queue.popleft())
+            callback(popleft())

@@ -54,11 +54,21 @@ def crash_from_exception(spec: ControllerSpec, t: float, exc: BaseException) -> 
 
 
 def stop_turtles(sim: Simulation, owner: str) -> list[str]:
-    """Stop every turtle whose cmd_vel ``owner`` published to (its controller ended)."""
-    stopped = []
-    for name, turtle in sim.world.turtles.items():
-        topic = sim.graph.topics.get(f"/{name}/cmd_vel")
-        if topic and any(p.owner == owner for p in topic.publishers):
-            turtle.vx = turtle.vy = turtle.wz = 0.0
-            stopped.append(name)
-    return stopped
+    """Stop every turtle whose cmd_vel ``owner`` ever published to (its controller
+    ended). The stop is queued behind messages already on their way, so a
+    command sent just before a crash does not start the turtle again."""
+    names = [
+        name
+        for name in sim.world.turtles
+        if owner in getattr(sim.graph.topics.get(f"/{name}/cmd_vel"), "publisher_owners", ())
+    ]
+
+    def stop() -> None:
+        for name in names:
+            turtle = sim.world.turtles.get(name)
+            if turtle is not None:
+                turtle.vx = turtle.vy = turtle.wz = 0.0
+
+    if names:
+        sim.graph.ready.append(("sim", stop))
+    return names

@@ -65,17 +65,15 @@ class Turtle:
     color: tuple[int, int, int] = (0, 0, 0)
     """Last colour sensed under the turtle (set by World.step when asked)."""
 
-    def update(self, now: float, dt: float, draw, events: list[Event]) -> None:
+    def update(self, now: float, dt: float, events: list[Event]) -> None:
         """Advance this turtle by ``dt`` seconds at simulated time ``now``.
 
-        Follows turtlesim's order: teleports, rotate_absolute goal, command
-        timeout, semi-implicit heading update, move, clamp. ``draw(x0, y0,
-        x1, y1, colour, width)`` paints a pen segment. Pose publishing happens
-        in the caller, between the clamp and the final pen segment, as in
-        turtlesim: the colour sensor reads the image before this step's line.
+        Follows turtlesim's order after the queued teleports (``apply_teleports``,
+        called first by World.step): rotate_absolute goal, command timeout,
+        semi-implicit heading update, move, clamp. Pose publishing and the
+        step's pen segment happen in the caller, as in turtlesim: the colour
+        sensor reads the image before this step's line is drawn.
         """
-        if self.teleports:
-            self._apply_teleports(draw)
         if self.rotation is not None:
             self._advance_rotation(now, events)
         if now - self.last_command_time > COMMAND_TIMEOUT:
@@ -102,7 +100,8 @@ class Turtle:
         self.x = x
         self.y = y
 
-    def _apply_teleports(self, draw) -> None:
+    def apply_teleports(self, draw) -> None:
+        """Apply queued teleports in order, drawing each jump when the pen is on."""
         for relative, a, b, c in self.teleports:
             old_x, old_y = self.x, self.y
             if relative:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 import re
+import struct
 
 from turtletui.sim.canvas import PenCanvas
 from turtletui.sim.constants import BACKGROUND, CENTER, DT
@@ -20,6 +21,7 @@ from turtletui.sim.turtle import RotationGoal, Turtle
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*\Z")
 _isfinite = math.isfinite
 _hypot = math.hypot
+_F32 = struct.Struct("3f")
 
 
 class SimError(ValueError):
@@ -85,9 +87,12 @@ class World:
         canvas = self.canvas
         draw = canvas.draw_segment
         for turtle in self._order:
+            if turtle.teleports:
+                # turtlesim takes old_pos for the step's segment after teleports.
+                turtle.apply_teleports(draw)
             old_x = turtle.x
             old_y = turtle.y
-            turtle.update(now, DT, draw, events)
+            turtle.update(now, DT, events)
             if turtle.x != old_x or turtle.y != old_y:
                 turtle.distance += _hypot(turtle.x - old_x, turtle.y - old_y)
             if sense_color:
@@ -122,7 +127,9 @@ class World:
         for field, value in (("x", x), ("y", y), ("theta", theta)):
             if not _isfinite(value):
                 raise SimError(f"Refused to spawn turtle [{name}]: {field}={value} is not finite")
-        turtle = Turtle(name, float(x), float(y), float(theta), last_command_time=self.time)
+        # turtlesim's spawnTurtle takes floats: the pose starts float32-rounded.
+        x, y, theta = _F32.unpack(_F32.pack(x, y, theta))
+        turtle = Turtle(name, x, y, theta, last_command_time=self.time)
         self.turtles[name] = turtle
         self._reorder()
         self.events.append(Spawned(name, turtle.x, turtle.y, turtle.theta))

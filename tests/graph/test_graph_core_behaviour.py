@@ -1,0 +1,248 @@
+"""The middleware under the turtlesim node: time, delivery order, queues, services, actions."""
+
+from __future__ import annotations
+
+import pytest
+
+from turtletui.graph.core import LOCKSTEP_EPOCH_NS, NS_PER_S, Graph, GraphError
+from turtletui.graph.logs import INFO, WARN, LogRecord, parse_level
+from turtletui.interfaces import interface_name
+from turtletui.interfaces.geometry_msgs import Twist, Vector3
+from turtletui.interfaces.std_msgs import String
+from turtletui.interfaces.std_srvs import Empty
+from turtletui.interfaces.turtlesim import Pose, RotateAbsolute
+
+
+def make_graph() -> Graph:
+    return Graph(type_name=interface_name)
+
+
+def test_time_starts_at_zero_on_a_fixed_epoch():
+    graph = make_graph()
+    assert graph.now_ns == 0
+    assert graph.t == 0.0
+    assert graph.stamp_ns == LOCKSTEP_EPOCH_NS == 1_700_000_000 * NS_PER_S
+
+
+def test_advance_jumps_to_the_next_timer_and_fires_it():
+    graph = make_graph()
+    node = graph.add_node("n")
+    fired: list[int] = []
+    graph.add_timer(node, 250_000_000, lambda: fired.append(graph.now_ns))
+    assert graph.advance(until_ns=100_000_000) is False
+    assert graph.now_ns == 100_000_000 and fired == []
+    assert graph.advance() is True
+    graph.run_ready()
+    assert graph.now_ns == 250_000_000
+    assert fired == [250_000_000]
+    graph.advance()
+    graph.run_ready()
+    assert fired == [250_000_000, 500_000_000]
+
+
+def test_timers_due_together_fire_in_creation_order():
+    graph = make_graph()
+    node = graph.add_node("n")
+    order: list[str] = []
+    graph.add_timer(node, 100, lambda: order.append("a"))
+    graph.add_timer(node, 50, lambda: order.append("b"))
+    graph.add_timer(node, 100, lambda: order.append("c"))
+    graph.advance()
+    graph.run_ready()
+    graph.advance()
+    graph.run_ready()
+    assert order == ["b", "a", "b", "c"]
+
+
+def test_timer_period_must_be_positive():
+    graph = make_graph()
+    with pytest.raises(GraphError, match="positive"):
+        graph.add_timer(graph.add_node("n"), 0, lambda: None)
+
+
+def test_publish_delivers_to_every_subscription_in_order():
+    graph = make_graph()
+    node = graph.add_node("n")
+    got: list[tuple[str, str]] = []
+    graph.add_subscription(node, "/chat", String, 10, lambda m: got.append(("a", m.data)))
+    graph.add_subscription(node, "/chat", String, 10, lambda m: got.append(("b", m.data)))
+    topic = graph.topic("/chat", String)
+    graph.publish(topic, String(data="1"))
+    graph.publish(topic, String(data="2"))
+    assert got == []  # delivered when ready callbacks run
+    graph.run_ready()
+    assert got == [("a", "1"), ("a", "2"), ("b", "1"), ("b", "2")]
+    assert topic.count == 2
+    assert topic.last == String(data="2")
+
+
+def test_keep_last_depth_drops_the_oldest_messages():
+    graph = make_graph()
+    node = graph.add_node("n")
+    got: list[str] = []
+    graph.add_subscription(node, "/chat", String, 3, lambda m: got.append(m.data))
+    topic = graph.topic("/chat", String)
+    for i in range(6):
+        graph.publish(topic, String(data=str(i)))
+    graph.run_ready()
+    assert got == ["3", "4", "5"]
+
+
+def test_a_topic_has_one_type():
+    graph = make_graph()
+    graph.topic("/turtle1/cmd_vel", Twist)
+    with pytest.raises(GraphError, match="geometry_msgs/msg/Twist.*turtlesim/msg/Pose"):
+        graph.topic("/turtle1/cmd_vel", Pose)
+
+
+def test_publish_skips_the_source_owner():
+    graph = make_graph()
+    mine = graph.add_node("mine", owner="sandbox")
+    other = graph.add_node("other", owner="local")
+    got: list[str] = []
+    graph.add_subscription(mine, "/chat", String, 10, lambda m: got.append("mine"))
+    graph.add_subscription(other, "/chat", String, 10, lambda m: got.append("other"))
+    graph.publish(graph.topic("/chat", String), String(data="x"), source="sandbox")
+    graph.run_ready()
+    assert got == ["other"]
+
+
+def test_topic_rate_is_messages_per_simulated_second():
+    graph = make_graph()
+    topic = graph.topic("/p", Pose)
+    for i in range(11):
+        graph.now_ns = i * 100_000_000
+        graph.publish(topic, Pose())
+    assert topic.rate(graph.now_ns) == pytest.approx(10.0)
+    assert topic.rate(graph.now_ns + 3 * NS_PER_S) == 0.0
+
+
+def test_service_call_is_answered_through_the_ready_queue():
+    graph = make_graph()
+    server = graph.add_node("server", owner="a")
+    calls: list[object] = []
+
+    def handler(request, respond):
+        calls.append(request)
+        respond(Empty.Response())
+
+    graph.add_service(server, "/do", Empty, handler)
+    responses: list[object] = []
+    graph.call("/do", Empty.Request(), responses.append, owner="b")
+    assert calls == [] and responses == []
+    graph.run_ready()
+    assert len(calls) == 1 and responses == [Empty.Response()]
+
+
+def test_a_call_to_a_missing_service_is_never_answered():
+    graph = make_graph()
+    responses: list[object] = []
+    graph.call("/nobody", Empty.Request(), responses.append, owner="b")
+    graph.run_ready()
+    assert responses == []
+    assert graph.ready == type(graph.ready)()
+
+
+def test_a_service_name_can_be_provided_once():
+    graph = make_graph()
+    node = graph.add_node("n")
+    graph.add_service(node, "/do", Empty, lambda r, respond: respond(Empty.Response()))
+    with pytest.raises(GraphError, match="already provided by /n"):
+        graph.add_service(node, "/do", Empty, lambda r, respond: None)
+
+
+def test_service_taps_see_request_and_response():
+    graph = make_graph()
+    node = graph.add_node("n")
+    seen: list[tuple[str, object]] = []
+    graph.taps.append(lambda kind, payload: seen.append((kind, payload)))
+    graph.add_service(node, "/do", Empty, lambda r, respond: respond(Empty.Response()))
+    graph.call("/do", Empty.Request(), lambda r: None, owner="x")
+    graph.run_ready()
+    assert seen == [("service", ("/do", Empty.Request(), Empty.Response()))]
+
+
+def test_action_goal_feedback_result_and_cancel():
+    graph = make_graph()
+    node = graph.add_node("server")
+    handles = []
+
+    def on_goal(handle):
+        handles.append(handle)
+        handle.on_cancel = lambda: handle.finish("canceled", RotateAbsolute.Result(delta=0.5))
+
+    graph.add_action_server(node, "/rot", RotateAbsolute, on_goal)
+    accepted, feedback, results = [], [], []
+    graph.send_goal(
+        "/rot", RotateAbsolute.Goal(theta=1.0), "client", accepted.append, feedback.append,
+        lambda status, result: results.append((status, result)),
+    )
+    graph.run_ready()
+    assert accepted == handles and handles[0].goal == RotateAbsolute.Goal(theta=1.0)
+    handles[0].publish_feedback(RotateAbsolute.Feedback(remaining=0.25))
+    graph.run_ready()
+    assert feedback == [RotateAbsolute.Feedback(remaining=0.25)]
+    graph.cancel_goal(handles[0])
+    graph.run_ready()
+    assert results == [("canceled", RotateAbsolute.Result(delta=0.5))]
+    # a finished goal sends nothing more
+    handles[0].publish_feedback(RotateAbsolute.Feedback(remaining=0.1))
+    handles[0].finish("succeeded", RotateAbsolute.Result())
+    graph.run_ready()
+    assert len(feedback) == 1 and len(results) == 1
+
+
+def test_remove_owner_destroys_its_nodes_endpoints_and_queued_callbacks():
+    graph = make_graph()
+    keep = graph.add_node("keep", owner="sim")
+    gone = graph.add_node("gone", owner="ctl")
+    got: list[str] = []
+    graph.add_subscription(gone, "/chat", String, 10, lambda m: got.append("gone"))
+    graph.add_subscription(keep, "/chat", String, 10, lambda m: got.append("keep"))
+    graph.add_publisher(gone, "/cmd", Twist, 10)
+    graph.add_service(gone, "/svc", Empty, lambda r, respond: None)
+    fired: list[int] = []
+    graph.add_timer(gone, 10, lambda: fired.append(1))
+    graph.publish(graph.topic("/chat", String), String(data="x"))
+    graph.remove_owner("ctl")
+    graph.run_ready()
+    assert got == ["keep"]
+    assert [n.name for n in graph.nodes] == ["keep"]
+    assert graph.topics["/cmd"].publishers == []
+    assert "/svc" not in graph.services
+    assert graph.advance(until_ns=1000) is False and fired == []
+    assert gone.alive is False
+
+
+def test_log_records_carry_ros_time_and_format_like_rcutils():
+    graph = make_graph()
+    records: list[LogRecord] = []
+    graph.log_sinks.append(records.append)
+    graph.now_ns = 1_500_000_000
+    graph.log("turtle_controller", WARN, "careful")
+    graph.info("turtle_controller", "hello")
+    assert [r.level_name for r in records] == ["WARN", "INFO"]
+    assert records[1].level == INFO
+    assert records[0].t == 1.5
+    assert records[0].format() == "[WARN] [1700000001.500000000] [turtle_controller]: careful"
+
+
+@pytest.mark.parametrize(("text", "level"), [("info", 20), ("WARNING", 30), ("Warn", 30), ("debug", 10), (40, 40)])
+def test_parse_level(text, level):
+    assert parse_level(text) == level
+
+
+def test_parse_level_rejects_unknown_names():
+    with pytest.raises(ValueError, match="unknown log level 'loud'"):
+        parse_level("loud")
+
+
+def test_twist_is_delivered_as_the_same_object_type():
+    graph = make_graph()
+    node = graph.add_node("n")
+    got: list[object] = []
+    graph.add_subscription(node, "/turtle1/cmd_vel", Twist, 7, got.append)
+    msg = Twist(linear=Vector3(x=1.0))
+    graph.publish(graph.topics["/turtle1/cmd_vel"], msg)
+    graph.run_ready()
+    assert got == [msg] and type(got[0]) is Twist
