@@ -57,9 +57,21 @@ class Subscription:
     owner: str
     queue: deque = field(init=False)
     pending: bool = False
+    ready_item: tuple = field(init=False, repr=False)
+    """The ready-queue entry that delivers this subscription's queue (made once)."""
 
     def __post_init__(self) -> None:
         self.queue = deque(maxlen=max(self.depth, 1))
+        self.ready_item = (self.owner, self.deliver)
+
+    def deliver(self) -> None:
+        """Hand the queued messages to the callback, oldest first."""
+        self.pending = False
+        queue = self.queue
+        callback = self.callback
+        popleft = queue.popleft
+        while queue:
+            callback(popleft())
 
 
 @dataclass(eq=False)
@@ -115,6 +127,10 @@ class Timer:
     next_due: int
     canceled: bool = False
     seq: int = 0
+    ready_item: tuple = field(init=False, repr=False)
+
+    def __post_init__(self) -> None:
+        self.ready_item = (self.owner, self.callback)
 
     def reset(self, now_ns: int) -> None:
         self.canceled = False
@@ -262,7 +278,7 @@ class Graph:
                 continue
             timer.next_due = next_due = due + timer.period_ns
             heappush(timers, (next_due, timer.seq, timer))
-            ready.append((timer.owner, timer.callback))
+            ready.append(timer.ready_item)
         return True
 
     def run_ready(self) -> None:
@@ -360,7 +376,7 @@ class Graph:
                 sub.pending = True
                 if ready is None:
                     ready = self.ready
-                ready.append((sub.owner, _Delivery(sub)))
+                ready.append(sub.ready_item)
         if self.taps:
             for tap in self.taps:
                 tap("topic", (topic, msg))
@@ -481,21 +497,3 @@ class Graph:
 
     def info(self, node: str, msg: str) -> LogRecord:
         return self.log(node, INFO, msg)
-
-
-class _Delivery:
-    """Ready-queue entry that hands a subscription its queued messages one by one."""
-
-    __slots__ = ("sub",)
-
-    def __init__(self, sub: Subscription) -> None:
-        self.sub = sub
-
-    def __call__(self) -> None:
-        sub = self.sub
-        queue = sub.queue
-        sub.pending = False
-        callback = sub.callback
-        popleft = queue.popleft
-        while queue:
-            callback(popleft())

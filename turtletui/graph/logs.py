@@ -10,7 +10,7 @@ LEVELS_BY_NAME = {name: level for level, name in LEVEL_NAMES.items()}
 LEVELS_BY_NAME["WARNING"] = WARN
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(slots=True)
 class LogRecord:
     """One log line: ``stamp_ns`` is ROS time, ``t`` simulated seconds since start."""
 

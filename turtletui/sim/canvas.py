@@ -13,8 +13,11 @@ import numpy as np
 from turtletui.sim.constants import BACKGROUND, METER_PX, PIXELS
 
 _FLUSH_AT = 4096
-_SAMPLE_STEP_PX = 0.5
 _LAST_PX = PIXELS - 1
+
+
+def _pack(rgb: tuple[int, int, int]) -> int:
+    return rgb[0] | rgb[1] << 8 | rgb[2] << 16
 
 
 def to_pixel(x: float, y: float) -> tuple[int, int]:
@@ -25,12 +28,18 @@ def to_pixel(x: float, y: float) -> tuple[int, int]:
 
 
 class PenCanvas:
-    """Trails drawn by the turtles' pens over the background colour."""
+    """Trails drawn by the turtles' pens over the background colour.
+
+    Pixels are stored packed, one little-endian uint32 (r, g, b, 0) each, so a
+    batch of stamps is one fancy assignment; ``pixels`` is an RGB view of it.
+    """
 
     def __init__(self, background: tuple[int, int, int] = BACKGROUND) -> None:
-        self._pixels = np.empty((PIXELS, PIXELS, 3), dtype=np.uint8)
-        self._flat = memoryview(self._pixels).cast("B")
-        self._pending: list[tuple[float, float, float, float, int, int, int, int]] = []
+        self._packed = np.zeros((PIXELS, PIXELS), dtype="<u4")
+        self._flat = memoryview(self._packed).cast("B").cast("I")
+        self._rgb = self._packed.view(np.uint8).reshape(PIXELS, PIXELS, 4)[:, :, :3]
+        self._rgb.flags.writeable = False
+        self._pending: list[tuple[float, float, float, float, int, int]] = []
         self.background = background
         self.version = 0
         """Increases whenever the image changes; renderers cache on it."""
@@ -41,16 +50,14 @@ class PenCanvas:
         """The image as a (500, 500, 3) uint8 array, row 0 at the top. Read only."""
         if self._pending:
             self._flush()
-        view = self._pixels.view()
-        view.flags.writeable = False
-        return view
+        return self._rgb
 
     def clear(self, background: tuple[int, int, int] | None = None) -> None:
         """Fill the image with the background colour, dropping every trail."""
         if background is not None:
             self.background = background
         self._pending.clear()
-        self._pixels[:, :] = self.background
+        self._packed[:, :] = _pack(self.background)
         self.version += 1
 
     def draw_segment(
@@ -64,7 +71,7 @@ class PenCanvas:
     ) -> None:
         """Queue a pen line from (x0, y0) to (x1, y1) metres, ``width`` pixels wide."""
         pending = self._pending
-        pending.append((x0, y0, x1, y1, *color, width))
+        pending.append((x0, y0, x1, y1, color[0] | color[1] << 8 | color[2] << 16, width))
         if len(pending) >= _FLUSH_AT:
             self._flush()
 
@@ -73,11 +80,12 @@ class PenCanvas:
         if self._pending:
             self._flush()
         col, row = to_pixel(x, y)
-        i = (row * PIXELS + col) * 3
-        flat = self._flat
-        return flat[i], flat[i + 1], flat[i + 2]
+        value = self._flat[row * PIXELS + col]
+        return value & 0xFF, value >> 8 & 0xFF, value >> 16 & 0xFF
 
     def _flush(self) -> None:
+        if not self._pending:
+            return
         segments = np.asarray(self._pending, dtype=np.float64)
         self._pending.clear()
         self.version += 1
@@ -86,37 +94,47 @@ class PenCanvas:
         y0 = (top - segments[:, 1]) * METER_PX
         dx = segments[:, 2] * METER_PX - x0
         dy = (top - segments[:, 3]) * METER_PX - y0
-        colors = segments[:, 4:7].astype(np.uint8)
-        widths = segments[:, 7].astype(np.int64)
-        # Sample every segment at most one pixel apart on both axes, so the
-        # stamps along it join up.
-        samples = np.ceil(np.maximum(np.abs(dx), np.abs(dy))).astype(np.int64) + 1
+        colors = segments[:, 4].astype("<u4")
+        widths = np.maximum(segments[:, 5], 1.0)
+        # Qt's default square cap extends a wide line by half its width at
+        # both ends (a zero-length line becomes a width x width square).
+        length = np.hypot(dx, dy)
+        moving = length > 1e-9
+        ux = np.where(moving, dx / np.where(moving, length, 1.0), 1.0)
+        uy = np.where(moving, dy / np.where(moving, length, 1.0), 0.0)
+        cap = widths / 2.0
+        x0 = x0 - ux * cap
+        y0 = y0 - uy * cap
+        dx = dx + 2.0 * ux * cap
+        dy = dy + 2.0 * uy * cap
+        # Scan-convert each (capped) segment as a polygon of the pen's width:
+        # for every pixel centre along the major axis the line covers, paint
+        # the centres across the minor axis within half the width over the
+        # cosine of the line's angle. Pixel centres sit on integer coordinates,
+        # matching turtlesim's rounding of positions to pixels.
+        x_major = np.abs(dx) >= np.abs(dy)
+        start = np.where(x_major, x0, y0)
+        delta = np.where(x_major, dx, dy)
+        minor0 = np.where(x_major, y0, x0)
+        slope = np.where(x_major, dy, dx) / delta
+        half = widths * np.hypot(dx, dy) / np.abs(delta) / 2.0
+        lo = np.ceil(np.minimum(start, start + delta))
+        samples = np.maximum(np.ceil(np.maximum(start, start + delta)) - lo, 0).astype(np.int64)
         seg = np.repeat(np.arange(len(segments)), samples)
         first = np.cumsum(samples) - samples
-        t = (np.arange(seg.size) - first[seg]) / np.maximum(samples - 1, 1)[seg]
-        px = np.floor(x0[seg] + t * dx[seg] + 0.5).astype(np.int64)
-        py = np.floor(y0[seg] + t * dy[seg] + 0.5).astype(np.int64)
-        sample_width = widths[seg]
-        # A Qt pen of width w covers about w pixels across the line: stamp a
-        # w x w square at every sample.  The stamps are written in one
-        # assignment ordered by sample, so later segments overwrite earlier
-        # ones (numpy assigns repeated indices in order).
-        order, cols, rows = [], [], []
-        for width in np.unique(sample_width):
-            (which,) = np.nonzero(sample_width == width)
-            lo = -((int(width) - 1) // 2)
-            offsets = np.arange(lo, lo + max(int(width), 1))
-            ox = np.tile(offsets, offsets.size)
-            oy = np.repeat(offsets, offsets.size)
-            order.append(np.repeat(which, ox.size))
-            cols.append((px[which, None] + ox).ravel())
-            rows.append((py[which, None] + oy).ravel())
-        if len(order) == 1:
-            sample, col, row = order[0], cols[0], rows[0]
-        else:
-            sort = np.argsort(np.concatenate(order), kind="stable")
-            sample = np.concatenate(order)[sort]
-            col = np.concatenate(cols)[sort]
-            row = np.concatenate(rows)[sort]
-        ok = (col >= 0) & (col <= _LAST_PX) & (row >= 0) & (row <= _LAST_PX)
-        self._pixels[row[ok], col[ok]] = colors[seg[sample[ok]]]
+        along = lo[seg] + (np.arange(seg.size) - first[seg])
+        across = minor0[seg] + (along - start[seg]) * slope[seg]
+        low = np.ceil(across - half[seg])
+        count = (np.ceil(across + half[seg]) - low).astype(np.int64)
+        if not count.size:
+            return
+        # A fixed-width grid per sample; steps past a sample's count repeat its
+        # last pixel, which paints nothing new and avoids a masked copy.
+        steps = np.minimum(np.arange(int(count.max())), (count - 1)[:, None])
+        across_px = np.clip(low[:, None] + steps, 0, _LAST_PX).astype(np.int64)
+        along_px = np.clip(along, 0, _LAST_PX).astype(np.int64)[:, None]
+        major = x_major[seg][:, None]
+        index = np.where(major, along_px + across_px * PIXELS, along_px * PIXELS + across_px)
+        # Row-major order of the (sample, step) grid keeps later segments over
+        # earlier ones: numpy assigns repeated indices in order.
+        self._packed.ravel()[index.ravel()] = np.repeat(colors[seg], steps.shape[1])
