@@ -5,6 +5,11 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
+from turtletui.compat.qos import (
+    QoSProfile,
+    qos_profile_action_status_default,
+    qos_profile_services_default,
+)
 from turtletui.compat.task import Future
 
 _NS = 1_000_000_000
@@ -105,7 +110,21 @@ class ClientGoalHandle:
 class ActionClient:
     """Sends goals to an action server, as ``rclpy.action.ActionClient``."""
 
-    def __init__(self, node: Any, action_type: Any, action_name: str, **kwargs: Any) -> None:
+    def __init__(
+        self,
+        node: Any,
+        action_type: Any,
+        action_name: str,
+        *,
+        callback_group: Any = None,
+        goal_service_qos_profile: QoSProfile = qos_profile_services_default,
+        result_service_qos_profile: QoSProfile = qos_profile_services_default,
+        cancel_service_qos_profile: QoSProfile = qos_profile_services_default,
+        feedback_sub_qos_profile: QoSProfile = QoSProfile(depth=10),  # noqa: B008 - as rclpy's
+        status_sub_qos_profile: QoSProfile = qos_profile_action_status_default,
+    ) -> None:
+        """The callback group and QoS profiles are accepted and ignored (as for topics, only
+        delivery order matters in the simulation)."""
         if not all(hasattr(action_type, part) for part in ("Goal", "Result", "Feedback")):
             raise TypeError(
                 f"ActionClient needs an action class such as turtlesim.action.RotateAbsolute, got {action_type!r}"
@@ -157,8 +176,10 @@ class ActionClient:
         )
         return future
 
-    def send_goal(self, goal: Any, feedback_callback: Callable[[Any], None] | None = None, goal_uuid: Any = None) -> Any:
-        future = self.send_goal_async(goal, feedback_callback)
+    def send_goal(self, goal: Any, **kwargs: Any) -> Any:
+        """Send ``goal`` and wait for its result; ``kwargs`` are send_goal_async's
+        (``feedback_callback``, ``goal_uuid``). Never inside a callback: ROS deadlocks."""
+        future = self.send_goal_async(goal, **kwargs)
         self._host().spin_until(future.done, None)
         handle = future.result()
         return handle.get_result() if handle else None

@@ -113,11 +113,19 @@ class Context:
             self._nodes.remove(node)
 
 
-_default_context = Context()
+_default_context: Context | None = Context()
 
 
-def get_default_context() -> Context:
-    return _default_context
+def get_default_context(*, shutting_down: bool = False) -> Context:
+    """The default context; ``shutting_down=True`` also forgets it, so that the next call
+    makes a fresh one (what rclpy.shutdown() does, letting rclpy.init() run again)."""
+    global _default_context
+    if _default_context is None:
+        _default_context = Context()
+    context = _default_context
+    if shutting_down:
+        _default_context = None
+    return context
 
 
 def reset_default_context() -> Context:

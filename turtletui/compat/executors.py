@@ -58,6 +58,12 @@ class Executor:
         self._nodes.clear()
         return True
 
+    def __enter__(self) -> Executor:
+        return self
+
+    def __exit__(self, exc_type: Any, exc_val: Any, exc_tb: Any) -> None:
+        self.shutdown()
+
     def _guard(self, what: str) -> Any:
         host = self._context.host
         if host.callback_depth:
@@ -82,7 +88,8 @@ class Executor:
         host = self._guard("spin_until_future_complete()")
         if not self._context.ok():
             return
-        host.spin_until(future.done, _timeout_ns(timeout_sec))
+        # As rclpy: a cancelled future is not done(), but ends the wait too.
+        host.spin_until(lambda: future.done() or future.cancelled(), _timeout_ns(timeout_sec))
 
     def spin_once_until_future_complete(self, future: Future, timeout_sec: float | None = None) -> None:
         self.spin_once(timeout_sec)
@@ -96,6 +103,10 @@ class MultiThreadedExecutor(Executor):
     def __init__(self, num_threads: int | None = None, *, context: Context | None = None) -> None:
         super().__init__(context=context)
         self._num_threads = num_threads or 2
+
+    def shutdown(self, timeout_sec: float | None = None, *, wait_for_threads: bool = True) -> bool:
+        """``wait_for_threads`` is accepted and ignored: callbacks run on one thread here."""
+        return super().shutdown(timeout_sec)
 
 
 class EventsExecutor(SingleThreadedExecutor):

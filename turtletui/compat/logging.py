@@ -1,4 +1,10 @@
-"""``rclpy.logging``: node loggers with ROS's severities, throttling and ``once``."""
+"""``rclpy.logging``: loggers with ROS's severities and logging filters.
+
+Levels are kept by logger name (a child inherits its parent's), as rcutils does; the
+filters (``throttle_duration_sec``, ``skip_first``, ``once``) keep their state per call
+site and are checked like rclpy's RcutilsLogger: the same call site may not change its
+severity, logger name, filters or filter parameters between calls.
+"""
 
 from __future__ import annotations
 
@@ -7,6 +13,16 @@ from enum import IntEnum
 from typing import Any
 
 from turtletui.graph.logs import parse_level
+
+__all__ = [
+    "LoggingSeverity",
+    "RcutilsLogger",
+    "get_logger",
+    "get_logger_effective_level",
+    "get_logger_level",
+    "get_logging_severity_from_string",
+    "set_logger_level",
+]
 
 _NS = 1_000_000_000
 
@@ -20,10 +36,32 @@ class LoggingSeverity(IntEnum):
     FATAL = 50
 
 
+FILTERS: dict[str, dict[str, bool]] = {
+    "throttle": {"throttle_duration_sec": True, "throttle_time_source_type": False},
+    "skip_first": {"skip_first": True},
+    "once": {"once": True},
+}
+"""rclpy's logging filters, in the order it applies them: parameter -> required."""
+
+LOG_KEYWORDS = tuple(param for params in FILTERS.values() for param in params)
+"""Keyword arguments ``logger.log()`` accepts besides ``name``."""
+
+SEVERITY_METHOD_KEYWORDS = ("name", *LOG_KEYWORDS)
+"""Keyword arguments ``logger.info()`` (debug, warning, ...) accept."""
+
 _LEVELS: dict[str, int] = {}
-"""Levels set by name (``set_logger_level``, ``--log-level``), by logger name."""
+"""Levels set by name (``set_logger_level``, ``logger.set_level``), by logger name."""
 
 _DEFAULT_LEVEL = LoggingSeverity.INFO
+
+
+def _effective_level(name: str) -> LoggingSeverity:
+    while name:
+        level = _LEVELS.get(name)
+        if level:
+            return LoggingSeverity(level)
+        name = name.rpartition(".")[0]
+    return LoggingSeverity(_LEVELS.get("") or _DEFAULT_LEVEL)
 
 
 class RcutilsLogger:
@@ -31,90 +69,167 @@ class RcutilsLogger:
 
     def __init__(self, name: str = "") -> None:
         self.name = name
-        self._level: int | None = None
-        self._call_state: dict[tuple[str, int], list[Any]] = {}
+        self.contexts: dict[tuple, dict[str, Any]] = {}
 
     def get_child(self, name: str) -> RcutilsLogger:
         if not name:
             raise ValueError("Child logger name must not be empty.")
         return RcutilsLogger(f"{self.name}.{name}" if self.name else name)
 
-    def set_level(self, level: int | LoggingSeverity) -> bool:
-        self._level = int(level)
-        return True
+    def set_level(self, level: int | LoggingSeverity) -> None:
+        set_logger_level(self.name, level)
 
     def get_effective_level(self) -> LoggingSeverity:
-        if self._level:
-            return LoggingSeverity(self._level)
-        name = self.name
-        while name:
-            if name in _LEVELS:
-                return LoggingSeverity(_LEVELS[name])
-            name = name.rpartition(".")[0]
-        return LoggingSeverity(_LEVELS.get("", _DEFAULT_LEVEL))
+        return _effective_level(self.name)
 
     def is_enabled_for(self, severity: int | LoggingSeverity) -> bool:
-        return int(severity) >= self.get_effective_level()
+        severity = LoggingSeverity(severity)
+        if not _LEVELS:
+            return severity >= _DEFAULT_LEVEL
+        return severity >= _effective_level(self.name)
 
-    def log(self, message: str, severity: int | LoggingSeverity, **kwargs: Any) -> bool:
-        """Log ``message`` at ``severity``; returns whether it was logged."""
-        return self._log(message, int(severity), kwargs)
-
-    def debug(self, message: str, **kwargs: Any) -> bool:
-        return self._log(message, 10, kwargs)
-
-    def info(self, message: str, **kwargs: Any) -> bool:
-        return self._log(message, 20, kwargs)
-
-    def warning(self, message: str, **kwargs: Any) -> bool:
-        return self._log(message, 30, kwargs)
-
-    warn = warning
-
-    def error(self, message: str, **kwargs: Any) -> bool:
-        return self._log(message, 40, kwargs)
-
-    def fatal(self, message: str, **kwargs: Any) -> bool:
-        return self._log(message, 50, kwargs)
-
-    def _log(self, message: str, severity: int, kwargs: dict[str, Any]) -> bool:
-        if not isinstance(message, str):
-            raise TypeError(
-                f"log message must be a str, got {type(message).__name__} {message!r}: "
-                "ROS 2 loggers take one string, e.g. f'x = {x}'"
-            )
-        if self._level is None and not _LEVELS:
-            if severity < _DEFAULT_LEVEL:
-                return False
-        elif severity < self.get_effective_level():
+    def log(
+        self, message: str, severity: int | LoggingSeverity, name: str | None = None, **kwargs: Any
+    ) -> bool:
+        """Log ``message`` at ``severity``; False if the level or a filter dropped it."""
+        if not self.is_enabled_for(severity):
             return False
-        graph = (_current_host or _bind_current_host())().graph
-        if kwargs:
-            unknown = set(kwargs) - {
-                "throttle_duration_sec",
-                "throttle_time_source_type",
-                "skip_first",
-                "once",
-            }
-            if unknown:
-                raise TypeError(f"unsupported logging keyword argument(s): {', '.join(sorted(unknown))}")
-            frame = sys._getframe(2)
-            key = (frame.f_code.co_filename, frame.f_lineno)
-            state = self._call_state.setdefault(key, [0, None])
-            state[0] += 1
-            if kwargs.get("once") and state[0] > 1:
+        severity = LoggingSeverity(severity)
+        if name is None:
+            name = self.name
+        filters = _filters_from_kwargs(kwargs)
+        caller = _caller()
+        context = self.contexts.get(caller)
+        if context is None:
+            context = self.contexts[caller] = _new_context(name, severity, filters, kwargs)
+        else:
+            _check_unchanged(context, name, severity, filters, kwargs)
+        for kind in filters:
+            if not _SHOULD_LOG[kind](context):
                 return False
-            if kwargs.get("skip_first") and state[0] == 1:
-                return False
-            period = kwargs.get("throttle_duration_sec")
-            if period:
-                now = graph.now_ns
-                if state[1] is not None and now - state[1] < period * _NS:
-                    return False
-                state[1] = now
-        graph.log(self.name, severity, message)
+        (_current_host or _bind_current_host())().graph.log(name, int(severity), _text(message))
         return True
 
+    def debug(self, message: str, **kwargs: Any) -> bool:
+        return self.log(message, LoggingSeverity.DEBUG, **kwargs)
+
+    def info(self, message: str, **kwargs: Any) -> bool:
+        return self.log(message, LoggingSeverity.INFO, **kwargs)
+
+    def warning(self, message: str, **kwargs: Any) -> bool:
+        return self.log(message, LoggingSeverity.WARN, **kwargs)
+
+    def warn(self, message: str, **kwargs: Any) -> bool:
+        """Deprecated in rclpy in favour of ``warning``; still works."""
+        return self.log(message, LoggingSeverity.WARN, **kwargs)
+
+    def error(self, message: str, **kwargs: Any) -> bool:
+        return self.log(message, LoggingSeverity.ERROR, **kwargs)
+
+    def fatal(self, message: str, **kwargs: Any) -> bool:
+        return self.log(message, LoggingSeverity.FATAL, **kwargs)
+
+
+def _text(message: Any) -> str:
+    """What rclpy's C logging call makes of ``message``: a str, None ('(null)') or bytes."""
+    if isinstance(message, str):
+        return message
+    if message is None:
+        return "(null)"
+    if isinstance(message, bytes):
+        return message.decode("utf-8", errors="replace")
+    raise TypeError(
+        f"log message must be a str, got {type(message).__name__} {message!r}: "
+        "ROS 2 loggers take one string, e.g. f'x = {x}'"
+    )
+
+
+def _caller() -> tuple:
+    """The call site outside this module (file, line, instruction, function), as rclpy's CallerId."""
+    frame = sys._getframe(1)
+    while frame.f_code.co_filename == __file__ and frame.f_back is not None:
+        frame = frame.f_back
+    code = frame.f_code
+    return (code.co_name, code.co_filename, frame.f_lineno, frame.f_lasti)
+
+
+def _filters_from_kwargs(kwargs: dict[str, Any]) -> list[str]:
+    detected = [kind for kind, params in FILTERS.items() if any(kwargs.get(p) for p in params)]
+    for kind in detected:
+        for param, required in FILTERS[kind].items():
+            if required and param not in kwargs:
+                raise TypeError(
+                    f'required parameter "{param}" not specified but is required for the logging '
+                    f'filter "{kind}"'
+                )
+    for key in kwargs:
+        if key not in LOG_KEYWORDS:
+            raise TypeError(
+                f'parameter "{key}" is not one of the recognized logging options {list(LOG_KEYWORDS)}'
+            )
+    return detected
+
+
+def _filter_params(filters: list[str], kwargs: dict[str, Any]) -> dict[str, Any]:
+    return {param: kwargs.get(param) for kind in filters for param in FILTERS[kind]}
+
+
+def _new_context(name: str, severity: LoggingSeverity, filters: list[str], kwargs: dict[str, Any]) -> dict:
+    context: dict[str, Any] = {"name": name, "severity": severity, "filters": filters}
+    context["params"] = _filter_params(filters, kwargs)
+    if "throttle" in filters:
+        clock = kwargs.get("throttle_time_source_type")
+        if clock is not None:
+            from turtletui.compat.time import Clock
+
+            if not isinstance(clock, Clock):
+                raise ValueError(f'Received throttle_time_source_type of "{clock}" is not a clock instance')
+        context["throttle_last_logged"] = 0
+    context["has_been_logged_once"] = False
+    context["first_has_been_skipped"] = False
+    return context
+
+
+def _check_unchanged(
+    context: dict, name: str, severity: LoggingSeverity, filters: list[str], kwargs: dict[str, Any]
+) -> None:
+    if severity != context["severity"]:
+        raise ValueError(
+            "Logger severity cannot be changed between calls (rclpy keeps one severity per "
+            "line of code: use separate logging calls)."
+        )
+    if name != context["name"]:
+        raise ValueError("Logger name cannot be changed between calls.")
+    if filters != context["filters"]:
+        raise ValueError("Requested logging filters cannot be changed between calls.")
+    if _filter_params(filters, kwargs) != context["params"]:
+        raise ValueError("Logging filter parameters cannot be changed between calls.")
+
+
+def _throttle(context: dict) -> bool:
+    clock = context["params"].get("throttle_time_source_type")
+    now = clock.now().nanoseconds if clock is not None else (_current_host or _bind_current_host())().graph.stamp_ns
+    if now >= context["throttle_last_logged"] + context["params"]["throttle_duration_sec"] * _NS:
+        context["throttle_last_logged"] = now
+        return True
+    return False
+
+
+def _skip_first(context: dict) -> bool:
+    if not context["first_has_been_skipped"]:
+        context["first_has_been_skipped"] = True
+        return False
+    return True
+
+
+def _once(context: dict) -> bool:
+    if not context["has_been_logged_once"]:
+        context["has_been_logged_once"] = True
+        return True
+    return False
+
+
+_SHOULD_LOG = {"throttle": _throttle, "skip_first": _skip_first, "once": _once}
 
 _current_host = None
 
@@ -128,27 +243,36 @@ def _bind_current_host():
     return current_host
 
 
-_loggers: dict[str, RcutilsLogger] = {}
-
-
 def get_logger(name: str) -> RcutilsLogger:
-    """The logger called ``name`` (``rclpy.logging.get_logger``)."""
-    logger = _loggers.get(name)
-    if logger is None:
-        logger = _loggers[name] = RcutilsLogger(name)
-    return logger
+    """A logger called ``name`` (``rclpy.logging.get_logger``); a new object each call, as in
+    rclpy (levels belong to the name, filter state to the object)."""
+    if not name:
+        raise ValueError("Logger name must not be empty.")
+    return RcutilsLogger(name)
 
 
 def set_logger_level(name: str, level: int | LoggingSeverity, detailed_error: bool = False) -> None:
-    _LEVELS[name] = int(level)
+    level = LoggingSeverity(level)
+    if level is LoggingSeverity.UNSET:
+        _LEVELS.pop(name, None)
+    else:
+        _LEVELS[name] = int(level)
 
 
 def get_logger_effective_level(name: str) -> LoggingSeverity:
-    return get_logger(name).get_effective_level()
+    return _effective_level(name)
+
+
+def get_logger_level(name: str) -> LoggingSeverity:
+    return LoggingSeverity(_LEVELS.get(name, LoggingSeverity.UNSET))
+
+
+def get_logging_severity_from_string(log_severity: str) -> LoggingSeverity:
+    return LoggingSeverity(parse_level(log_severity))
 
 
 def apply_log_level(spec: str | None) -> None:
-    """Apply ``--log-level LEVEL`` or ``--log-level name:=LEVEL``."""
+    """Apply ``--log-level LEVEL``."""
     global _DEFAULT_LEVEL
     if not spec:
         return
@@ -158,5 +282,4 @@ def apply_log_level(spec: str | None) -> None:
 def reset_levels() -> None:
     global _DEFAULT_LEVEL
     _LEVELS.clear()
-    _loggers.clear()
     _DEFAULT_LEVEL = LoggingSeverity.INFO

@@ -11,12 +11,20 @@ from turtletui.compat.logging import RcutilsLogger, get_logger
 from turtletui.compat.parameter import (
     Parameter,
     ParameterDescriptor,
+    ParameterValue,
     SetParametersResult,
+    parameter_value_to_python,
+    type_matches,
     type_name,
 )
-from turtletui.compat.qos import QoSProfile, depth_of
+from turtletui.compat.qos import (
+    QoSProfile,
+    depth_of,
+    qos_profile_rosout_default,
+    qos_profile_services_default,
+)
 from turtletui.compat.task import Future
-from turtletui.compat.time import Clock, ClockType, Duration
+from turtletui.compat.time import Clock, ClockType, Duration, clock_for
 from turtletui.graph import core
 from turtletui.interfaces import interface_name
 
@@ -259,6 +267,7 @@ class Node:
         namespace: str | None = None,
         use_global_arguments: bool = True,
         enable_rosout: bool = True,
+        rosout_qos_profile: QoSProfile | int = qos_profile_rosout_default,
         start_parameter_services: bool = True,
         parameter_overrides: list[Parameter] | None = None,
         allow_undeclared_parameters: bool = False,
@@ -305,7 +314,7 @@ class Node:
         self._on_set: list[Callable] = []
         self._entities: list[Any] = []
         self._logger = get_logger(f"{namespace.strip('/').replace('/', '.')}.{node_name}".lstrip("."))
-        self._clock = Clock(clock_type=ClockType.ROS_TIME, context=self._context)
+        self._clock = clock_for(self._context, ClockType.ROS_TIME)
         self._context.track_node(self)
         self._destroyed = False
         if automatically_declare_parameters_from_overrides:
@@ -372,7 +381,7 @@ class Node:
         callback_group: Any = None,
         event_callbacks: Any = None,
         qos_overriding_options: Any = None,
-        publisher_class: Any = None,
+        publisher_class: type[Publisher] = Publisher,
     ) -> Publisher:
         _check_msg_type(msg_type, "create_publisher()")
         depth = depth_of(qos_profile)
@@ -392,6 +401,7 @@ class Node:
         event_callbacks: Any = None,
         qos_overriding_options: Any = None,
         raw: bool = False,
+        content_filter_options: Any = None,
     ) -> Subscription:
         _check_msg_type(msg_type, "create_subscription()")
         if not callable(callback):
@@ -433,7 +443,12 @@ class Node:
         return Rate(self, frequency)
 
     def create_client(
-        self, srv_type: Any, srv_name: str, *, qos_profile: Any = None, callback_group: Any = None
+        self,
+        srv_type: Any,
+        srv_name: str,
+        *,
+        qos_profile: QoSProfile = qos_profile_services_default,
+        callback_group: Any = None,
     ) -> Client:
         _check_srv_type(srv_type, "create_client()")
         record = self._graph.add_client(self._record, self.resolve_topic_name(srv_name), srv_type)
@@ -447,7 +462,7 @@ class Node:
         srv_name: str,
         callback: Callable[[Any, Any], Any],
         *,
-        qos_profile: Any = None,
+        qos_profile: QoSProfile = qos_profile_services_default,
         callback_group: Any = None,
     ) -> Service:
         _check_srv_type(srv_type, "create_service()")
@@ -545,6 +560,8 @@ class Node:
         """Declare a parameter; a ``--ros-args -p`` override of the same type wins."""
         if name in self._parameters:
             raise ParameterAlreadyDeclaredException([name])
+        if isinstance(value, ParameterValue):
+            value = parameter_value_to_python(value)
         if isinstance(value, Parameter.Type):
             expected, value = value, None
         else:
@@ -555,7 +572,7 @@ class Node:
             if (
                 expected is not Parameter.Type.NOT_SET
                 and not descriptor.dynamic_typing
-                and not expected.check(override)
+                and not type_matches(expected, override)
             ):
                 raise InvalidParameterTypeException(Parameter(name, value=override), expected)
             value = override

@@ -1,163 +1,120 @@
-"""``rclpy.parameter.Parameter`` and the rcl_interfaces parameter messages."""
+"""``rclpy.parameter.Parameter``. Its messages (ParameterValue, ParameterDescriptor,
+SetParametersResult, ...) are the rcl_interfaces ones from turtletui.interfaces."""
 
 from __future__ import annotations
 
-from enum import Enum
+import array
+from enum import IntEnum
 from typing import Any
 
+from turtletui.interfaces.rcl_interfaces import Parameter as ParameterMsg
+from turtletui.interfaces.rcl_interfaces import (
+    ParameterDescriptor,
+    ParameterType,
+    ParameterValue,
+    SetParametersResult,
+)
 
-class ParameterType:
-    """Numbers of rcl_interfaces/msg/ParameterType."""
-
-    PARAMETER_NOT_SET = 0
-    PARAMETER_BOOL = 1
-    PARAMETER_INTEGER = 2
-    PARAMETER_DOUBLE = 3
-    PARAMETER_STRING = 4
-    PARAMETER_BYTE_ARRAY = 5
-    PARAMETER_BOOL_ARRAY = 6
-    PARAMETER_INTEGER_ARRAY = 7
-    PARAMETER_DOUBLE_ARRAY = 8
-    PARAMETER_STRING_ARRAY = 9
-
-
-class ParameterValue:
-    """rcl_interfaces/msg/ParameterValue: one typed field holds the value."""
-
-    __slots__ = (
-        "type",
-        "bool_value",
-        "integer_value",
-        "double_value",
-        "string_value",
-        "byte_array_value",
-        "bool_array_value",
-        "integer_array_value",
-        "double_array_value",
-        "string_array_value",
-    )
-
-    def __init__(self, **kwargs: Any) -> None:
-        self.type = 0
-        self.bool_value = False
-        self.integer_value = 0
-        self.double_value = 0.0
-        self.string_value = ""
-        self.byte_array_value: list = []
-        self.bool_array_value: list = []
-        self.integer_array_value: list = []
-        self.double_array_value: list = []
-        self.string_array_value: list = []
-        for key, value in kwargs.items():
-            if key not in self.__slots__:
-                raise AssertionError(f"Invalid arguments passed to constructor: {key}")
-            setattr(self, key, value)
-
-    def __repr__(self) -> str:
-        return f"rcl_interfaces.msg.ParameterValue(type={self.type}, ...)"
-
-
-class ParameterDescriptor:
-    """rcl_interfaces/msg/ParameterDescriptor (the fields course code sets)."""
-
-    def __init__(
-        self,
-        *,
-        name: str = "",
-        type: int = 0,
-        description: str = "",
-        additional_constraints: str = "",
-        read_only: bool = False,
-        dynamic_typing: bool = False,
-        **_: Any,
-    ) -> None:
-        self.name = name
-        self.type = type
-        self.description = description
-        self.additional_constraints = additional_constraints
-        self.read_only = read_only
-        self.dynamic_typing = dynamic_typing
-
-
-class SetParametersResult:
-    """rcl_interfaces/msg/SetParametersResult."""
-
-    def __init__(self, *, successful: bool = False, reason: str = "") -> None:
-        self.successful = successful
-        self.reason = reason
-
-    def __repr__(self) -> str:
-        return f"rcl_interfaces.msg.SetParametersResult(successful={self.successful}, reason={self.reason!r})"
-
-
-_FIELD = {
-    1: "bool_value",
-    2: "integer_value",
-    3: "double_value",
-    4: "string_value",
-    5: "byte_array_value",
-    6: "bool_array_value",
-    7: "integer_array_value",
-    8: "double_array_value",
-    9: "string_array_value",
-}
+__all__ = [
+    "Parameter",
+    "ParameterDescriptor",
+    "ParameterType",
+    "ParameterValue",
+    "SetParametersResult",
+    "parameter_value_to_python",
+    "type_name",
+]
 
 
 class Parameter:
     """A named, typed node parameter, as ``rclpy.parameter.Parameter``."""
 
-    class Type(Enum):
-        NOT_SET = 0
-        BOOL = 1
-        INTEGER = 2
-        DOUBLE = 3
-        STRING = 4
-        BYTE_ARRAY = 5
-        BOOL_ARRAY = 6
-        INTEGER_ARRAY = 7
-        DOUBLE_ARRAY = 8
-        STRING_ARRAY = 9
+    class Type(IntEnum):
+        NOT_SET = ParameterType.PARAMETER_NOT_SET
+        BOOL = ParameterType.PARAMETER_BOOL
+        INTEGER = ParameterType.PARAMETER_INTEGER
+        DOUBLE = ParameterType.PARAMETER_DOUBLE
+        STRING = ParameterType.PARAMETER_STRING
+        BYTE_ARRAY = ParameterType.PARAMETER_BYTE_ARRAY
+        BOOL_ARRAY = ParameterType.PARAMETER_BOOL_ARRAY
+        INTEGER_ARRAY = ParameterType.PARAMETER_INTEGER_ARRAY
+        DOUBLE_ARRAY = ParameterType.PARAMETER_DOUBLE_ARRAY
+        STRING_ARRAY = ParameterType.PARAMETER_STRING_ARRAY
 
         @classmethod
-        def from_parameter_value(cls, value: Any) -> Parameter.Type:
-            """The type ROS infers for a Python value; TypeError if it has none."""
-            if value is None:
-                return cls.NOT_SET
-            if isinstance(value, bool):
-                return cls.BOOL
-            if isinstance(value, int):
-                return cls.INTEGER
-            if isinstance(value, float):
-                return cls.DOUBLE
-            if isinstance(value, str):
-                return cls.STRING
-            if isinstance(value, (bytes, bytearray)):
-                return cls.BYTE_ARRAY
-            if isinstance(value, (list, tuple)):
-                if all(isinstance(v, bool) for v in value) and value:
-                    return cls.BOOL_ARRAY
-                if all(isinstance(v, int) and not isinstance(v, bool) for v in value) and value:
-                    return cls.INTEGER_ARRAY
-                if all(isinstance(v, float) for v in value) and value:
-                    return cls.DOUBLE_ARRAY
-                if all(isinstance(v, str) for v in value):
-                    return cls.STRING_ARRAY
-            raise TypeError(f"The given value is not one of the allowed types '{value!r}'.")
+        def from_parameter_value(cls, parameter_value: Any) -> Parameter.Type:
+            """The type rclpy infers for a Python value; TypeError if it has none.
 
-        def check(self, value: Any) -> bool:
-            return value is None and self is Parameter.Type.NOT_SET or (
-                value is not None and Parameter.Type.from_parameter_value(value) is self
-            )
+            As in rclpy, an empty list is a BYTE_ARRAY and bools count as integers in a
+            list that also holds ints."""
+            if parameter_value is None:
+                return cls.NOT_SET
+            if isinstance(parameter_value, bool):
+                return cls.BOOL
+            if isinstance(parameter_value, int):
+                return cls.INTEGER
+            if isinstance(parameter_value, float):
+                return cls.DOUBLE
+            if isinstance(parameter_value, str):
+                return cls.STRING
+            if isinstance(parameter_value, (list, tuple, array.array)):
+                if all(isinstance(v, bytes) for v in parameter_value):
+                    return cls.BYTE_ARRAY
+                if all(isinstance(v, bool) for v in parameter_value):
+                    return cls.BOOL_ARRAY
+                if all(isinstance(v, int) for v in parameter_value):
+                    return cls.INTEGER_ARRAY
+                if all(isinstance(v, float) for v in parameter_value):
+                    return cls.DOUBLE_ARRAY
+                if all(isinstance(v, str) for v in parameter_value):
+                    return cls.STRING_ARRAY
+                raise TypeError(
+                    f"The given value is not a list of one of the allowed types '{parameter_value}'."
+                )
+            raise TypeError(f"The given value is not one of the allowed types '{parameter_value}'.")
+
+        def check(self, parameter_value: Any) -> bool:
+            """Whether ``parameter_value`` may be the value of a parameter of this type."""
+            T = Parameter.Type
+            if self is T.NOT_SET:
+                return parameter_value is None
+            if self is T.BOOL:
+                return isinstance(parameter_value, bool)
+            if self is T.INTEGER:
+                return isinstance(parameter_value, int)
+            if self is T.DOUBLE:
+                return isinstance(parameter_value, float)
+            if self is T.STRING:
+                return isinstance(parameter_value, str)
+            sequence = isinstance(parameter_value, (list, tuple))
+            numbers = isinstance(parameter_value, (list, tuple, array.array))
+            if self is T.BYTE_ARRAY:
+                return sequence and all(isinstance(v, bytes) and len(v) == 1 for v in parameter_value)
+            if self is T.BOOL_ARRAY:
+                return sequence and all(isinstance(v, bool) for v in parameter_value)
+            if self is T.INTEGER_ARRAY:
+                return numbers and all(isinstance(v, int) for v in parameter_value)
+            if self is T.DOUBLE_ARRAY:
+                return numbers and all(isinstance(v, float) for v in parameter_value)
+            if self is T.STRING_ARRAY:
+                return sequence and all(isinstance(v, str) for v in parameter_value)
+            return False
+
+    @classmethod
+    def from_parameter_msg(cls, param_msg: Any) -> Parameter:
+        type_ = Parameter.Type(param_msg.value.type)
+        field = _FIELD.get(type_)
+        return cls(param_msg.name, type_, getattr(param_msg.value, field) if field else None)
 
     def __init__(self, name: str, type_: Parameter.Type | None = None, value: Any = None) -> None:
         if type_ is None:
             type_ = Parameter.Type.from_parameter_value(value)
         if not isinstance(type_, Parameter.Type):
-            raise TypeError("type must be an instance of Parameter.Type")
-        if value is not None and type_ is not Parameter.Type.NOT_SET and not _fits(type_, value):
+            raise TypeError(f"type must be an instance of '{Parameter.Type!r}'")
+        if not type_.check(value):
             raise ValueError(f"Type '{type_}' and value '{value}' do not agree")
         self._name = name
-        self._type = type_
+        self._type_ = type_
         self._value = value
 
     @property
@@ -166,32 +123,68 @@ class Parameter:
 
     @property
     def type_(self) -> Parameter.Type:
-        return self._type
+        return self._type_
 
     @property
     def value(self) -> Any:
         return self._value
 
     def get_parameter_value(self) -> ParameterValue:
-        value = ParameterValue(type=self._type.value)
-        field = _FIELD.get(self._type.value)
+        """The value as an rcl_interfaces/msg/ParameterValue (``.double_value``, ...)."""
+        parameter_value = ParameterValue(type=self._type_.value)
+        field = _FIELD.get(self._type_)
         if field is not None:
-            setattr(value, field, self._value)
-        return value
+            value = self._value
+            # rclpy's checks let bools through as integers; the message field wants ints.
+            if self._type_ is Parameter.Type.INTEGER:
+                value = int(value)
+            elif self._type_ is Parameter.Type.INTEGER_ARRAY:
+                value = [int(v) for v in value]
+            setattr(parameter_value, field, value)
+        return parameter_value
+
+    def to_parameter_msg(self) -> ParameterMsg:
+        return ParameterMsg(name=self.name, value=self.get_parameter_value())
 
     def __repr__(self) -> str:
-        return f"Parameter(name={self._name!r}, type_={self._type}, value={self._value!r})"
+        return f"Parameter(name={self._name!r}, type_={self._type_.name}, value={self._value!r})"
 
 
-def _fits(type_: Parameter.Type, value: Any) -> bool:
+_FIELD = {
+    Parameter.Type.BOOL: "bool_value",
+    Parameter.Type.INTEGER: "integer_value",
+    Parameter.Type.DOUBLE: "double_value",
+    Parameter.Type.STRING: "string_value",
+    Parameter.Type.BYTE_ARRAY: "byte_array_value",
+    Parameter.Type.BOOL_ARRAY: "bool_array_value",
+    Parameter.Type.INTEGER_ARRAY: "integer_array_value",
+    Parameter.Type.DOUBLE_ARRAY: "double_array_value",
+    Parameter.Type.STRING_ARRAY: "string_array_value",
+}
+
+
+def parameter_value_to_python(parameter_value: ParameterValue) -> Any:
+    """The Python value held by an rcl_interfaces/msg/ParameterValue."""
+    type_ = Parameter.Type(parameter_value.type)
+    if type_ is Parameter.Type.NOT_SET:
+        return None
+    return getattr(parameter_value, _FIELD[type_])
+
+
+def type_of(value: Any) -> Parameter.Type | None:
+    """``Parameter.Type.from_parameter_value``, or None for a value with no ROS type."""
     try:
-        inferred = Parameter.Type.from_parameter_value(value)
+        return Parameter.Type.from_parameter_value(value)
     except TypeError:
-        return False
-    if inferred is type_:
+        return None
+
+
+def type_matches(expected: Parameter.Type, value: Any) -> bool:
+    """Whether ``value`` (e.g. a ``-p`` override) has the type a parameter was declared with;
+    an empty list fits any array type."""
+    if type_of(value) is expected:
         return True
-    # Empty lists fit any array type.
-    return isinstance(value, (list, tuple)) and not value and type_.name.endswith("_ARRAY")
+    return isinstance(value, (list, tuple)) and not value and expected.name.endswith("_ARRAY")
 
 
 def type_name(value: Any) -> str:

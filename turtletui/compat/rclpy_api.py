@@ -8,7 +8,30 @@ from turtletui.compat import logging as _logging
 from turtletui.compat.context import Context, get_default_context
 from turtletui.compat.executors import Executor, get_global_executor
 from turtletui.compat.node import Node
+from turtletui.compat.parameter import Parameter
+from turtletui.compat.qos import QoSProfile, qos_profile_rosout_default
 from turtletui.compat.task import Future
+
+
+class InitContextManager:
+    """What ``rclpy.init()`` returns: ``with rclpy.init(): ...`` shuts down at the end."""
+
+    def __init__(
+        self,
+        args: list[str] | None,
+        context: Context | None,
+        domain_id: int | None,
+        signal_handler_options: Any,
+    ) -> None:
+        self.context = get_default_context() if context is None else context
+        self.context.init(args, domain_id=domain_id)
+        _logging.apply_log_level(self.context.ros_args.log_level)
+
+    def __enter__(self) -> InitContextManager:
+        return self
+
+    def __exit__(self, exc_type: Any, exc_val: Any, exc_tb: Any) -> None:
+        try_shutdown(context=None if self.context is get_default_context() else self.context)
 
 
 def init(
@@ -17,53 +40,98 @@ def init(
     context: Context | None = None,
     domain_id: int | None = None,
     signal_handler_options: Any = None,
-) -> None:
-    """Initialise the context (reads ``--ros-args`` from ``args`` or sys.argv)."""
-    context = context or get_default_context()
-    context.init(args, domain_id=domain_id)
-    _logging.apply_log_level(context.ros_args.log_level)
+) -> InitContextManager:
+    """Initialise the context (reads ``--ros-args`` from ``args`` or sys.argv).
+
+    ``signal_handler_options`` is accepted and ignored: turtletui ends the run itself."""
+    return InitContextManager(args, context, domain_id, signal_handler_options)
 
 
 def shutdown(*, context: Context | None = None, uninstall_handlers: bool | None = None) -> None:
-    (context or get_default_context()).shutdown()
+    """Shut the context down; RuntimeError if it is not initialised (or already shut down)."""
+    if context is None:
+        context = get_default_context(shutting_down=True)
+    context.shutdown()
 
 
 def try_shutdown(*, context: Context | None = None, uninstall_handlers: bool | None = None) -> None:
-    (context or get_default_context()).try_shutdown()
+    """Shut the context down if it is initialised."""
+    if context is None:
+        context = get_default_context()
+        context.try_shutdown()
+        if not context.ok() and context is get_default_context():
+            get_default_context(shutting_down=True)
+    else:
+        context.try_shutdown()
 
 
 def ok(*, context: Context | None = None) -> bool:
     return (context or get_default_context()).ok()
 
 
-def create_node(node_name: str, **kwargs: Any) -> Node:
-    return Node(node_name, **kwargs)
-
-
-def _executor_for(node: Node | None, executor: Executor | None) -> Executor:
-    executor = executor or get_global_executor()
-    if node is not None:
-        executor.add_node(node)
-    return executor
+def create_node(
+    node_name: str,
+    *,
+    context: Context | None = None,
+    cli_args: list[str] | None = None,
+    namespace: str | None = None,
+    use_global_arguments: bool = True,
+    enable_rosout: bool = True,
+    rosout_qos_profile: QoSProfile | int = qos_profile_rosout_default,
+    start_parameter_services: bool = True,
+    parameter_overrides: list[Parameter] | None = None,
+    allow_undeclared_parameters: bool = False,
+    automatically_declare_parameters_from_overrides: bool = False,
+    enable_logger_service: bool = False,
+) -> Node:
+    return Node(
+        node_name,
+        context=context,
+        cli_args=cli_args,
+        namespace=namespace,
+        use_global_arguments=use_global_arguments,
+        enable_rosout=enable_rosout,
+        rosout_qos_profile=rosout_qos_profile,
+        start_parameter_services=start_parameter_services,
+        parameter_overrides=parameter_overrides,
+        allow_undeclared_parameters=allow_undeclared_parameters,
+        automatically_declare_parameters_from_overrides=automatically_declare_parameters_from_overrides,
+        enable_logger_service=enable_logger_service,
+    )
 
 
 def spin(node: Node, executor: Executor | None = None) -> None:
     """Run the node's callbacks until the context shuts down (the run ends)."""
-    _executor_for(node, executor).spin()
+    executor = get_global_executor() if executor is None else executor
+    try:
+        executor.add_node(node)
+        executor.spin()
+    finally:
+        executor.remove_node(node)
 
 
 def spin_once(node: Node, *, executor: Executor | None = None, timeout_sec: float | None = None) -> None:
-    _executor_for(node, executor).spin_once(timeout_sec=timeout_sec)
+    executor = get_global_executor() if executor is None else executor
+    node_was_added = False
+    try:
+        node_was_added = executor.add_node(node)
+        executor.spin_once(timeout_sec=timeout_sec)
+    finally:
+        if node_was_added:
+            executor.remove_node(node)
 
 
 def spin_until_future_complete(
     node: Node, future: Future, executor: Executor | None = None, timeout_sec: float | None = None
 ) -> None:
-    _executor_for(node, executor).spin_until_future_complete(future, timeout_sec=timeout_sec)
-
-
-def get_global_executor_() -> Executor:
-    return get_global_executor()
+    executor = get_global_executor() if executor is None else executor
+    node_added = False
+    try:
+        node_added = executor.add_node(node)
+        executor.spin_until_future_complete(future, timeout_sec)
+    finally:
+        if node_added:
+            executor.remove_node(node)
 
 
 def utilities_remove_ros_args(args: list[str] | None = None) -> list[str]:

@@ -7,7 +7,9 @@ from typing import Any
 
 
 class Future:
-    """Represents the outcome of a task (a service call, an action goal...)."""
+    """Represents the outcome of a task (a service call, an action goal...).
+
+    As in rclpy, a cancelled future is ``cancelled()`` but not ``done()``."""
 
     def __init__(self, *, executor: Any = None) -> None:
         self._state = "PENDING"
@@ -16,12 +18,13 @@ class Future:
         self._callbacks: list[Callable[[Future], None]] = []
 
     def __await__(self):
-        while not self.done():
+        while self._state == "PENDING":
             yield
         return self.result()
 
     def cancel(self) -> None:
-        if not self.done():
+        """Request cancellation if the future is still pending."""
+        if self._state == "PENDING":
             self._state = "CANCELLED"
             self._run_callbacks()
 
@@ -29,7 +32,8 @@ class Future:
         return self._state == "CANCELLED"
 
     def done(self) -> bool:
-        return self._state != "PENDING"
+        """True once a result or an exception was set."""
+        return self._state == "FINISHED"
 
     def result(self) -> Any:
         """The result, or None if not done yet; raises the task's exception."""
@@ -41,21 +45,29 @@ class Future:
         return self._exception
 
     def set_result(self, result: Any) -> None:
-        self._state = "FINISHED"
         self._result = result
+        self._state = "FINISHED"
         self._run_callbacks()
 
     def set_exception(self, exception: BaseException) -> None:
-        self._state = "FINISHED"
         self._exception = exception
+        self._state = "FINISHED"
         self._run_callbacks()
 
     def add_done_callback(self, callback: Callable[[Future], None]) -> None:
-        """Call ``callback(future)`` when done (at once if it already is)."""
-        if self.done():
+        """Call ``callback(future)`` when done (at once if it already is, or was cancelled)."""
+        if self._state != "PENDING":
             callback(self)
         else:
             self._callbacks.append(callback)
+
+    def remove_done_callback(self, callback: Callable[[Future], None]) -> bool:
+        """Remove a callback added earlier; False if it is not (or no longer) waiting."""
+        try:
+            self._callbacks.remove(callback)
+        except ValueError:
+            return False
+        return True
 
     def _run_callbacks(self) -> None:
         callbacks, self._callbacks = self._callbacks, []

@@ -1,1 +1,1 @@
-from turtletui.compat.parameter import Parameter  # noqa: F401
+from turtletui.compat.parameter import Parameter, parameter_value_to_python  # noqa: F401

@@ -1,6 +1,1 @@
-from turtletui.compat.parameter import (  # noqa: F401
-    ParameterDescriptor,
-    ParameterType,
-    ParameterValue,
-    SetParametersResult,
-)
+from turtletui.interfaces.rcl_interfaces import *  # noqa: F401,F403

@@ -1,0 +1,579 @@
+"""turtletui's rclpy behaves as the real rclpy does where course code can tell.
+
+Every expectation here was observed with the real rclpy (ros-rclpy 9.1.2 wheels, the ones
+make_rclpy_surface.py is run with), without a running ROS graph: init/shutdown, loggers
+and their filters, Duration/Time/Clock arithmetic, Parameter types and messages, QoS
+profiles and Futures. The tests that need no turtletui host (Duration, Time, Clock,
+Parameter, QoS, Future) were also run unchanged against the real rclpy and pass there, as do
+the host-based init/shutdown, logging-filter, level and parameter-callback ones (with a
+fixture doing rclpy.init/try_shutdown, and without the checks of captured log records).
+"""
+
+from __future__ import annotations
+
+import json
+import warnings
+from pathlib import Path
+
+import pytest
+
+from turtletui import compat
+from turtletui.compat import context as compat_context
+from turtletui.compat import logging as compat_logging
+from turtletui.graph.core import NS_PER_S
+from turtletui.runtime.inprocess import InProcessHost
+from turtletui.runtime.simulation import Simulation
+
+SURFACE = json.loads(Path(__file__).with_name("rclpy_surface.json").read_text(encoding="utf-8"))
+
+compat.install()
+
+import rclpy  # noqa: E402
+from rclpy.clock import Clock, ClockType, ROSClock  # noqa: E402
+from rclpy.duration import Duration  # noqa: E402
+from rclpy.logging import LoggingSeverity  # noqa: E402
+from rclpy.parameter import Parameter  # noqa: E402
+from rclpy.qos import (  # noqa: E402
+    HistoryPolicy,
+    InvalidQoSProfileException,
+    QoSProfile,
+    ReliabilityPolicy,
+    qos_profile_sensor_data,
+    qos_profile_system_default,
+)
+from rclpy.task import Future  # noqa: E402
+from rclpy.time import Time  # noqa: E402
+
+
+class Host:
+    """A simulation bound as the host of rclpy calls made by the test itself."""
+
+    def __init__(self) -> None:
+        self.records = []
+        self.sim = Simulation(log_sinks=[self.records.append])
+        self.inproc = InProcessHost(self.sim, "test", 60 * NS_PER_S)
+
+    def logs(self, node: str | None = None) -> list[str]:
+        return [r.msg for r in self.records if node is None or r.node == node]
+
+
+@pytest.fixture
+def host():
+    compat.install()
+    compat_context.reset_default_context()
+    compat_logging.reset_levels()
+    bound = Host()
+    compat_context.bind_host(bound.inproc)
+    try:
+        yield bound
+    finally:
+        bound.inproc._ended = True
+        compat_context.get_default_context().try_shutdown()
+        compat_context.bind_host(None)
+        compat_logging.reset_levels()
+
+
+@pytest.fixture
+def node(host):
+    rclpy.init(args=[])
+    return rclpy.create_node("beh")
+
+
+# -- init and shutdown ---------------------------------------------------------------------------
+
+
+def test_ok_is_false_before_init(host):
+    assert rclpy.ok() is False
+
+
+def test_shutdown_before_init_raises_and_try_shutdown_does_not(host):
+    with pytest.raises(RuntimeError, match="Context must be initialized before it can be shutdown"):
+        rclpy.shutdown()
+    assert rclpy.try_shutdown() is None
+
+
+def test_init_twice_raises(host):
+    rclpy.init(args=[])
+    with pytest.raises(RuntimeError, match="must only be called once"):
+        rclpy.init(args=[])
+    assert rclpy.ok() is True
+
+
+def test_shutdown_twice_raises_then_init_works_again(host):
+    rclpy.init(args=[])
+    assert rclpy.shutdown() is None
+    assert rclpy.ok() is False
+    with pytest.raises(RuntimeError, match="Context must be initialized before it can be shutdown"):
+        rclpy.shutdown()
+    rclpy.try_shutdown()
+    rclpy.init(args=[])
+    assert rclpy.ok() is True
+    rclpy.shutdown()
+
+
+def test_init_is_a_context_manager_that_shuts_down(host):
+    with rclpy.init(args=[]) as manager:
+        inside = rclpy.ok()
+    assert inside is True
+    assert rclpy.ok() is False
+    assert manager.context is not None
+    with rclpy.init(args=[]):
+        rclpy.shutdown()  # shutting down inside the block is fine too
+    assert rclpy.ok() is False
+
+
+# -- loggers --------------------------------------------------------------------------------------
+
+
+def test_logging_calls_return_whether_they_logged(host, node):
+    logger = node.get_logger()
+    assert logger.info("x") is True
+    assert logger.debug("x") is False
+    assert host.logs("beh") == ["x"]
+
+
+def test_non_string_messages_are_handled_as_rclpy_does(host, node):
+    logger = node.get_logger()
+    with pytest.raises(TypeError):
+        logger.info(5)
+    assert logger.debug(5) is False  # below the level: never converted, no error
+    assert logger.info(None) is True
+    assert logger.info(b"ab") is True
+    assert host.logs("beh") == ["(null)", "ab"]
+
+
+def test_unknown_logging_keyword_is_a_type_error(host, node):
+    with pytest.raises(TypeError, match='parameter "foo" is not one of the recognized logging options'):
+        node.get_logger().info("x", foo=1)
+
+
+def test_name_keyword_logs_under_another_name(host, node):
+    assert node.get_logger().info("x", name="other") is True
+    assert [(r.node, r.msg) for r in host.records if r.node != "turtlesim"] == [("other", "x")]
+
+
+def test_every_recorded_logging_keyword_is_accepted(host, node):
+    values = {
+        "name": "beh",
+        "once": True,
+        "skip_first": True,
+        "throttle_duration_sec": 1.0,
+        "throttle_time_source_type": node.get_clock(),
+    }
+    for keyword in SURFACE["logging_keywords"]["severity_methods"]:
+        kwargs = {keyword: values[keyword]}
+        if keyword == "throttle_time_source_type":
+            kwargs["throttle_duration_sec"] = 1.0
+        # a new logger object for each: one call site may not change its filters
+        logged = rclpy.logging.get_logger("kw").info(f"with {keyword}", **kwargs)
+        assert logged is (keyword != "skip_first")
+    for keyword in SURFACE["logging_keywords"]["log"]:
+        kwargs = {keyword: values[keyword]}
+        if keyword == "throttle_time_source_type":
+            kwargs["throttle_duration_sec"] = 1.0
+        logged = rclpy.logging.get_logger("kw").log(f"log {keyword}", LoggingSeverity.INFO, **kwargs)
+        assert logged is (keyword != "skip_first")
+    assert host.logs("beh") == ["with name"]
+
+
+def calls(log, n=3):
+    return [log() for _ in range(n)]
+
+
+def test_once_skip_first_and_their_combination(host, node):
+    logger = node.get_logger()
+    assert calls(lambda: logger.info("once", once=True)) == [True, False, False]
+    assert calls(lambda: logger.info("skip", skip_first=True)) == [False, True, True]
+    assert calls(lambda: logger.info("so", skip_first=True, once=True)) == [False, True, False]
+    assert calls(lambda: logger.info("of", once=False), 2) == [True, True]
+    assert host.logs("beh") == ["once", "skip", "skip", "so", "of", "of"]
+
+
+def test_throttle_logs_first_then_once_per_period_of_simulated_time(host, node):
+    logger = node.get_logger()
+
+    def tick():
+        return logger.info("th", throttle_duration_sec=1.0)
+
+    assert calls(tick) == [True, False, False]
+    node.get_clock().sleep_for(Duration(seconds=0.5))
+    assert tick() is False
+    node.get_clock().sleep_for(Duration(seconds=0.6))
+    assert tick() is True
+
+
+def test_throttle_parameters_are_checked(host, node):
+    logger = node.get_logger()
+    with pytest.raises(TypeError, match="throttle_duration_sec"):
+        logger.info("x", throttle_time_source_type=Clock())
+    with pytest.raises(ValueError, match="is not a clock instance"):
+        logger.info("x", throttle_duration_sec=1, throttle_time_source_type=5)
+
+
+def test_one_call_site_keeps_its_severity_and_filters(host, node):
+    logger = node.get_logger()
+    with pytest.raises(ValueError, match="Logger severity cannot be changed between calls"):
+        for severity in (LoggingSeverity.INFO, LoggingSeverity.WARN):
+            logger.log("x", severity)
+    with pytest.raises(ValueError, match="Logging filter parameters cannot be changed between calls"):
+        for period in (1, 2):
+            logger.info("t", throttle_duration_sec=period)
+    for i in range(2):  # two calls on one line are two call sites
+        logger.info("a") if i else logger.warning("b")
+
+
+def test_levels_belong_to_names_and_are_validated(host, node):
+    logger = node.get_logger()
+    assert logger.set_level(LoggingSeverity.DEBUG) is None
+    assert logger.get_effective_level() is LoggingSeverity.DEBUG
+    assert rclpy.logging.get_logger("beh").get_effective_level() is LoggingSeverity.DEBUG
+    assert logger.get_child("c").name == "beh.c"
+    assert logger.get_child("c").get_effective_level() is LoggingSeverity.DEBUG
+    assert logger.debug("now shown") is True
+    with pytest.raises(ValueError, match="15 is not a valid LoggingSeverity"):
+        logger.set_level(15)
+    with pytest.raises(ValueError):
+        logger.is_enabled_for(15)
+    with pytest.raises(ValueError):
+        logger.log("y", 25)
+    assert logger.log("y", 20) is True
+
+
+def test_module_level_logging_functions(host):
+    assert rclpy.logging.get_logger("a") is not rclpy.logging.get_logger("a")  # new object per call
+    with pytest.raises(ValueError, match="Logger name must not be empty"):
+        rclpy.logging.get_logger("")
+    assert rclpy.logging.set_logger_level("a", LoggingSeverity.DEBUG) is None
+    assert rclpy.logging.get_logger_effective_level("a") is LoggingSeverity.DEBUG
+    assert rclpy.logging.get_logger_effective_level("a.b") is LoggingSeverity.DEBUG
+    assert rclpy.logging.get_logger_effective_level("z") is LoggingSeverity.INFO
+    assert rclpy.logging.get_logger("a").debug("shown") is True
+
+
+# -- Duration, Time, Clock --------------------------------------------------------------------------
+
+
+def test_duration_arithmetic_and_comparisons():
+    d1, d2 = Duration(seconds=1.5), Duration(nanoseconds=500_000_000)
+    assert d1 + d2 == Duration(nanoseconds=2_000_000_000)
+    assert (d2 - d1).nanoseconds == -1_000_000_000
+    assert (d1 * 2).nanoseconds == 3_000_000_000
+    assert (d1 * 0.5).nanoseconds == 750_000_000
+    assert Duration(nanoseconds=1.7).nanoseconds == 1
+    assert Duration(seconds=0.1).nanoseconds == 100_000_000
+    assert Duration(seconds=-1).nanoseconds == -1_000_000_000
+    assert d2 < d1 and d1 >= d2 and d1 != d2
+    assert (Duration(seconds=1) == 1) is False
+    assert (Duration(seconds=1) != 1) is True
+    for bad in (lambda: 2 * d1, lambda: d1 * d2, lambda: d1 + 1, lambda: d2 < 1, lambda: hash(d1)):
+        with pytest.raises(TypeError):
+            bad()
+    with pytest.raises(TypeError):
+        Duration(1)
+    with pytest.raises(OverflowError):
+        Duration(seconds=2**63)
+
+
+def test_duration_text_and_messages():
+    d = Duration(seconds=1.5)
+    assert str(d) == "1500000000 nanoseconds"
+    assert repr(d) == "Duration(nanoseconds=1500000000)"
+    msg = d.to_msg()
+    assert (msg.sec, msg.nanosec) == (1, 500_000_000)
+    negative = Duration(nanoseconds=-1).to_msg()
+    assert (negative.sec, negative.nanosec) == (-1, 999_999_999)
+    assert Duration.from_msg(msg) == d
+    with pytest.raises(TypeError):
+        Duration.from_msg(5)
+
+
+def test_time_arithmetic_and_comparisons():
+    a = Time(seconds=10, clock_type=ClockType.ROS_TIME)
+    b = Time(seconds=4, nanoseconds=5, clock_type=ClockType.ROS_TIME)
+    system = Time(seconds=4)
+    assert Time().clock_type == ClockType.SYSTEM_TIME
+    assert a - b == Duration(nanoseconds=5_999_999_995)
+    assert a - Duration(seconds=1) == Time(seconds=9, clock_type=ClockType.ROS_TIME)
+    assert a + Duration(seconds=1) == Duration(seconds=1) + a
+    assert (a + Duration(seconds=1)).nanoseconds == 11_000_000_000
+    assert b < a and a >= b
+    assert (a == 5) is False
+    with pytest.raises(TypeError):
+        a + b
+    with pytest.raises(TypeError, match="Can't subtract times with different clock types"):
+        a - system
+    with pytest.raises(TypeError, match="Can't compare times with different clock types"):
+        system < a  # noqa: B015
+    with pytest.raises(TypeError, match="Can't compare times with different clock types"):
+        system == Time(seconds=4, clock_type=ClockType.ROS_TIME)  # noqa: B015
+    with pytest.raises(TypeError):
+        a < 5  # noqa: B015
+    with pytest.raises(TypeError):
+        hash(a)
+    with pytest.raises(ValueError, match="Subtraction leads to negative time"):
+        b - Duration(seconds=100)
+    with pytest.raises(ValueError, match="Seconds value must not be negative"):
+        Time(seconds=-1)
+    with pytest.raises(OverflowError):
+        Time(seconds=2**64)
+    assert Time(seconds=1.5, nanoseconds=0.5).nanoseconds == 1_500_000_000
+
+
+def test_time_text_and_messages():
+    b = Time(seconds=4, nanoseconds=5, clock_type=ClockType.ROS_TIME)
+    assert repr(b) == str(b) == "Time(nanoseconds=4000000005, clock_type=ROS_TIME)"
+    assert b.seconds_nanoseconds() == (4, 5)
+    msg = b.to_msg()
+    assert (msg.sec, msg.nanosec) == (4, 5)
+    assert Time.from_msg(msg) == b  # from_msg defaults to ROS time
+    with pytest.raises(TypeError):
+        Time.from_msg(Duration().to_msg())
+
+
+def test_clock_types():
+    assert Clock().clock_type == ClockType.SYSTEM_TIME
+    assert repr(Clock()) == "Clock(clock_type=SYSTEM_TIME)"
+    ros = Clock(clock_type=ClockType.ROS_TIME)
+    assert isinstance(ros, ROSClock) and ros.clock_type == ClockType.ROS_TIME
+    assert isinstance(ROSClock(), ROSClock)
+    with pytest.raises(TypeError):
+        Clock(clock_type=1)
+
+
+def test_node_clock_reads_simulated_ros_time(host, node):
+    now = node.get_clock().now()
+    assert now.clock_type == ClockType.ROS_TIME
+    assert Clock().now().clock_type == ClockType.SYSTEM_TIME
+    assert node.get_clock().sleep_for(Duration(seconds=2)) is True
+    assert node.get_clock().now() - now == Duration(seconds=2)
+
+
+# -- parameters ---------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("value", "expected"),
+    [
+        (None, "NOT_SET"),
+        (True, "BOOL"),
+        (1, "INTEGER"),
+        (1.0, "DOUBLE"),
+        ("a", "STRING"),
+        ([b"a"], "BYTE_ARRAY"),
+        ([], "BYTE_ARRAY"),
+        ((), "BYTE_ARRAY"),
+        ([True], "BOOL_ARRAY"),
+        ([1], "INTEGER_ARRAY"),
+        ([True, 1], "INTEGER_ARRAY"),
+        ([1.0], "DOUBLE_ARRAY"),
+        (["a"], "STRING_ARRAY"),
+        (b"a", TypeError),
+        (bytearray(b"a"), TypeError),
+        ([1, 1.0], TypeError),
+        ({}, TypeError),
+        (1j, TypeError),
+    ],
+)
+def test_parameter_type_from_value(value, expected):
+    if expected is TypeError:
+        with pytest.raises(TypeError):
+            Parameter.Type.from_parameter_value(value)
+    else:
+        assert Parameter.Type.from_parameter_value(value) is Parameter.Type[expected]
+
+
+def test_parameter_type_is_an_int_enum_with_rclpy_checks():
+    assert isinstance(Parameter.Type.BOOL, int) and Parameter.Type.DOUBLE == 3
+    assert Parameter.Type.INTEGER.check(True) is True
+    Parameter("p", Parameter.Type.INTEGER, True)
+    with pytest.raises(ValueError, match="do not agree"):
+        Parameter("p", Parameter.Type.DOUBLE, 1)
+    with pytest.raises(ValueError, match="do not agree"):
+        Parameter("p", Parameter.Type.INTEGER)
+    assert Parameter("p", value=[]).type_ is Parameter.Type.BYTE_ARRAY
+    assert Parameter("p", Parameter.Type.INTEGER_ARRAY, []).value == []
+
+
+def test_parameter_values_are_rcl_interfaces_messages():
+    from rcl_interfaces.msg import Parameter as ParameterMsg
+    from rcl_interfaces.msg import ParameterValue
+
+    value = Parameter("p", value=2.5).get_parameter_value()
+    assert isinstance(value, ParameterValue)
+    assert (value.type, value.double_value) == (3, 2.5)
+    assert Parameter("p", value=2).get_parameter_value().integer_value == 2
+    assert Parameter("p", value=True).get_parameter_value().bool_value is True
+    assert Parameter("p", value="s").get_parameter_value().string_value == "s"
+    assert list(Parameter("p", value=[1, 2]).get_parameter_value().integer_array_value) == [1, 2]
+    assert list(Parameter("p", value=[0.5]).get_parameter_value().double_array_value) == [0.5]
+    assert list(Parameter("p", value=("a", "b")).get_parameter_value().string_array_value) == ["a", "b"]
+    assert list(Parameter("p", value=[b"a"]).get_parameter_value().byte_array_value) == [b"a"]
+    assert Parameter("p").get_parameter_value().type == 0
+    msg = Parameter("p", value=[1.0]).to_parameter_msg()
+    assert isinstance(msg, ParameterMsg) and msg.name == "p"
+    back = Parameter.from_parameter_msg(msg)
+    assert back.type_ is Parameter.Type.DOUBLE_ARRAY and list(back.value) == [1.0]
+
+
+def test_parameter_messages_come_from_turtletui_interfaces():
+    import rcl_interfaces.msg
+
+    from turtletui.compat import parameter
+    from turtletui.interfaces import rcl_interfaces as interfaces
+
+    for name in ("ParameterValue", "ParameterDescriptor", "SetParametersResult", "ParameterType"):
+        assert getattr(rcl_interfaces.msg, name) is getattr(interfaces, name)
+        assert getattr(parameter, name) is getattr(interfaces, name)
+
+
+def test_on_set_callback_returning_the_rcl_interfaces_result(host, node):
+    from rcl_interfaces.msg import ParameterDescriptor, SetParametersResult
+
+    node.declare_parameter("speed", 1.0)
+    node.declare_parameter("fixed", 2, ParameterDescriptor(read_only=True))
+
+    def check(params):
+        ok = all(p.value >= 0 for p in params if p.name == "speed")
+        return SetParametersResult(successful=ok, reason="" if ok else "negative")
+
+    node.add_on_set_parameters_callback(check)
+    [good] = node.set_parameters([Parameter("speed", value=2.0)])
+    [bad] = node.set_parameters([Parameter("speed", value=-1.0)])
+    assert isinstance(good, SetParametersResult) and good.successful is True
+    assert (bad.successful, bad.reason) == (False, "negative")
+    assert node.get_parameter("speed").get_parameter_value().double_value == 2.0
+    assert node.set_parameters([Parameter("fixed", value=3)])[0].successful is False
+
+
+# -- QoS --------------------------------------------------------------------------------------------
+
+
+def test_qos_profile_needs_history_or_depth():
+    with pytest.raises(InvalidQoSProfileException):
+        QoSProfile()
+    with pytest.raises(InvalidQoSProfileException):
+        QoSProfile(history=HistoryPolicy.KEEP_LAST)
+    keep_all = QoSProfile(history=HistoryPolicy.KEEP_ALL)
+    assert keep_all.depth == 10
+
+
+def test_qos_profile_fields_are_converted_and_checked():
+    assert str(QoSProfile(1, 10)) == str(QoSProfile(depth=10)) == (
+        "QoSProfile(history=1, depth=10, reliability=1, durability=2, lifespan=0 nanoseconds, "
+        "deadline=0 nanoseconds, liveliness=0, liveliness_lease_duration=0 nanoseconds, "
+        "avoid_ros_namespace_conventions=False)"
+    )
+    profile = QoSProfile(history=1, depth=3, reliability=2)
+    assert profile.history is HistoryPolicy.KEEP_LAST
+    assert profile.reliability is ReliabilityPolicy.BEST_EFFORT
+    assert QoSProfile(depth=10) == QoSProfile(depth=10)
+    assert (QoSProfile(depth=10) == 10) is False
+    with pytest.raises(AssertionError):
+        QoSProfile(depth=1.5)
+    with pytest.raises(AssertionError):
+        QoSProfile(depth="1")
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        QoSProfile(depth=0)
+    assert "zero depth with KEEP_LAST" in str(caught[0].message)
+
+
+def test_qos_presets_print_as_rclpy_s():
+    assert str(qos_profile_sensor_data).startswith("QoSProfile(history=1, depth=5, reliability=2, durability=2,")
+    assert str(qos_profile_system_default).startswith("QoSProfile(history=0, depth=0, reliability=0, durability=0,")
+
+
+def test_queue_length_for_each_history():
+    from turtletui.compat.qos import KEEP_ALL_DEPTH, depth_of
+
+    assert depth_of(7) == 7
+    assert depth_of(QoSProfile(depth=3)) == 3
+    assert depth_of(qos_profile_system_default) == 1  # the DDS default: keep last 1
+    assert depth_of(QoSProfile(history=HistoryPolicy.KEEP_ALL)) == KEEP_ALL_DEPTH
+
+
+# -- futures ------------------------------------------------------------------------------------------
+
+
+def test_future_states():
+    f = Future()
+    assert f.result() is None and f.exception() is None
+    f.cancel()
+    assert (f.cancelled(), f.done()) == (True, False)  # cancelled is not done, as in rclpy
+    assert f.result() is None
+    failed = Future()
+    failed.set_exception(ValueError("boom"))
+    assert failed.done()
+    with pytest.raises(ValueError, match="boom"):
+        failed.result()
+    assert isinstance(failed.exception(), ValueError)
+    f3 = Future()
+    f3.set_result(1)
+    f3.set_result(2)
+    assert f3.result() == 2
+    f3.cancel()
+    assert f3.cancelled() is False
+
+
+def test_future_callbacks():
+    seen = []
+    f = Future()
+    f.add_done_callback(seen.append)
+    assert f.remove_done_callback(seen.append) is True
+    assert f.remove_done_callback(print) is False
+    f.add_done_callback(lambda fut: seen.append(fut.result()))
+    f.set_result(1)
+    f.add_done_callback(lambda fut: seen.append(fut.result() + 1))  # runs at once
+    assert seen == [1, 2]
+    cancelled = Future()
+    cancelled.cancel()
+    cancelled.add_done_callback(seen.append)
+    assert seen[-1] is cancelled
+
+
+def test_spin_until_future_complete_ends_on_cancel(host, node):
+    future = Future()
+    node.create_timer(1.0, future.cancel)
+    start = node.get_clock().now()
+    rclpy.spin_until_future_complete(node, future, timeout_sec=10.0)
+    assert future.cancelled() and not future.done()
+    assert node.get_clock().now() - start == Duration(seconds=1)
+
+
+# -- parameters turtletui accepts and ignores ------------------------------------------------------
+
+
+def test_accepted_but_ignored_arguments_change_nothing(host):
+    from geometry_msgs.msg import Twist
+    from rclpy.action import ActionClient
+    from rclpy.callback_groups import ReentrantCallbackGroup
+    from rclpy.executors import MultiThreadedExecutor
+    from std_srvs.srv import Empty
+    from turtlesim.action import RotateAbsolute
+
+    rclpy.init(args=[], domain_id=7, signal_handler_options=None)
+    node = rclpy.create_node("ignored", rosout_qos_profile=10, enable_rosout=False)
+    group = ReentrantCallbackGroup()
+    seen = []
+    node.create_subscription(
+        Twist, "/t", seen.append, 10, callback_group=group, raw=False, content_filter_options=None
+    )
+    pub = node.create_publisher(Twist, "/t", qos_profile_sensor_data, callback_group=group)
+    node.create_client(Empty, "/e", qos_profile=qos_profile_system_default, callback_group=group)
+    client = ActionClient(
+        node,
+        RotateAbsolute,
+        "/turtle1/rotate_absolute",
+        callback_group=group,
+        goal_service_qos_profile=QoSProfile(depth=1),
+        feedback_sub_qos_profile=QoSProfile(depth=1),
+    )
+    assert client.wait_for_server(timeout_sec=1.0) is True  # turtlesim serves it
+    pub.publish(Twist())
+    executor = MultiThreadedExecutor(num_threads=4)
+    executor.add_node(node)
+    executor.spin_once(timeout_sec=0.1)
+    assert len(seen) == 1
+    assert executor.shutdown(wait_for_threads=False) is True
+    rclpy.shutdown(uninstall_handlers=True)
+    assert rclpy.ok() is False

@@ -1,0 +1,1 @@
+from turtletui.compat.logging import LoggingSeverity  # noqa: F401

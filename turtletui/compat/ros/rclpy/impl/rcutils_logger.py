@@ -1,0 +1,1 @@
+from turtletui.compat.logging import LoggingSeverity, RcutilsLogger  # noqa: F401
