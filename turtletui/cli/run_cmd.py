@@ -68,9 +68,14 @@ def run(
         )
     except (ControllerError, RosArgsError, ValueError) as err:
         fail(str(err))
+    except BrokenPipeError:
+        raise  # stdout closed (``| head``): Click exits quietly
     except OSError as err:
         fail(str(err))
     for crash in result.crashes:
+        if crash.kind == "load":
+            # A sandboxed file without main() or Node is bad input, as in-process.
+            fail(crash.message)
         sys.stderr.write(crash.details() + "\n")
     sys.stdout.write(result.summary() + "\n")
     if result.crashes:
