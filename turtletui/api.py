@@ -7,11 +7,12 @@
 
 from __future__ import annotations
 
+import struct
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from turtletui.compat.ros_args import RosArgsError, parse_ros_args
 from turtletui.graph.core import NS_PER_S
@@ -19,6 +20,12 @@ from turtletui.graph.logs import LogRecord
 from turtletui.runtime.loader import ControllerError, ControllerSpec, check_source
 from turtletui.runtime.report import CrashReport
 from turtletui.runtime.simulation import Simulation
+
+if TYPE_CHECKING:
+    from turtletui.runtime.sandbox import Limits
+
+_F32X3 = struct.Struct("<3f")
+"""A pose's x, y, theta as turtlesim publishes them (float32)."""
 
 
 @dataclass
@@ -87,6 +94,7 @@ def run(
     keep_poses: bool = False,
     keep_calls: bool = True,
     setup: Callable[[Simulation], None] | None = None,
+    limits: Limits | None = None,
 ) -> RunResult:
     """Run controllers for ``duration`` simulated seconds and summarise the run.
 
@@ -94,6 +102,8 @@ def run(
     marked trusted run in this process. ``ros_args`` is a ``--ros-args``
     section (``["-p", "goal_x:=3.0"]``) given to every controller. Raises
     ControllerError or RosArgsError (one-line messages) for bad input.
+    ``limits`` (turtletui.runtime.sandbox.Limits) bounds what sandboxed
+    controllers may use; the defaults when None.
     """
     if not (duration > 0 and duration < 1e7):
         raise ValueError(f"duration must be a positive number of seconds, got {duration}")
@@ -117,8 +127,16 @@ def run(
         if kind == "service":
             calls.append((sim.t, *payload))
         elif kind == "topic" and keep_poses and payload[0].name.endswith("/pose"):
-            msg = payload[1]
-            poses.setdefault(payload[0].name.split("/")[1], []).append((sim.t, msg.x, msg.y, msg.theta))
+            topic, msg = payload
+            name = topic.name[1:-5]
+            turtle = sim.world.turtles.get(name)
+            # Only what the simulator publishes: a controller may publish a Pose
+            # there too (as in ROS), but the trajectory recorded is the turtle's.
+            if turtle is None or (msg.x, msg.y, msg.theta) != _F32X3.unpack(
+                _F32X3.pack(turtle.x, turtle.y, turtle.theta)
+            ):
+                return
+            poses.setdefault(name, []).append((sim.t, msg.x, msg.y, msg.theta))
 
     if keep_poses or keep_calls:
         sim.graph.taps.append(tap)
@@ -126,19 +144,20 @@ def run(
     if record is not None:
         from turtletui.runtime.recorder import Recorder
 
-        recorder = Recorder(sim.graph, record)
+        # turtlesim's start lines were logged before the recorder existed
+        recorder = Recorder(sim.graph, record, earlier_logs=logs)
     end_ns = int(round(duration * NS_PER_S))
     crashes: list[CrashReport] = []
     started = time.perf_counter()
+    hosts: list[Any] = []
     try:
         inprocess = [s for s in specs if s.trusted or sandbox is False]
         sandboxed = [s for s in specs if s not in inprocess]
-        hosts = []
         if sandboxed:
             from turtletui.runtime.sandbox import SandboxHost
 
             for spec in sandboxed:
-                hosts.append(SandboxHost.start(sim, spec, ros_args=args, seed=seed))
+                hosts.append(SandboxHost.start(sim, spec, ros_args=args, seed=seed, limits=limits))
         if len(inprocess) > 1:
             raise ControllerError(
                 "only one controller can run in-process at a time; run the others sandboxed"
@@ -157,6 +176,9 @@ def run(
             if crash is not None:
                 crashes.append(crash)
     finally:
+        for host in hosts:
+            if host.proc is not None:  # cut short by an error: leave no process behind
+                host.close()
         if recorder is not None:
             # A run cut short by an error keeps what it recorded so far.
             recorder.close(keep=True)

@@ -146,8 +146,14 @@ class ChildGraph(Graph):
         else:
             super().cancel_goal(handle)
 
+    log_budget = 1 << 62
+    """Log records still worth sending: the parent keeps only Limits.log_lines
+    (and notices one more), so a log flood costs no more than that."""
+
     def log(self, node: str, level: int, msg: str) -> LogRecord:
-        self.out["log"].append([level, node, msg])
+        if self.log_budget > 0:
+            self.log_budget -= 1
+            self.out["log"].append([level, node, msg])
         return LogRecord(self.epoch_ns + self.now_ns, self.now_ns / 1e9, level, node, msg)
 
     # -- what the parent sent ---------------------------------------------------------
@@ -310,11 +316,43 @@ def _apply_limits(limits: dict[str, int]) -> None:
             pass  # the limit is lower already
 
 
+def _become_subreaper() -> None:
+    """Processes the controller starts stay in this process's tree even when
+    their own parent dies (Linux), so that the parent finds and kills them all."""
+    if not sys.platform.startswith("linux"):
+        return
+    try:
+        import ctypes
+
+        ctypes.CDLL(None, use_errno=True).prctl(36, 1, 0, 0, 0)  # PR_SET_CHILD_SUBREAPER
+    except (OSError, AttributeError):
+        pass
+
+
+def _wait_to_be_ended(fd_in: int, seconds: float = 10.0) -> None:
+    """After the last report: stay alive until the parent has killed everything
+    this process started (it ends us with them), or it went away."""
+    import select
+    import time
+
+    deadline = time.monotonic() + seconds
+    while (remaining := deadline - time.monotonic()) > 0:
+        try:
+            readable, _, _ = select.select([fd_in], [], [], remaining)
+            if readable and not os.read(fd_in, 65536):
+                return
+        except BlockingIOError:
+            continue
+        except OSError:
+            return
+
+
 def main() -> None:
     config = json.loads(sys.argv[1])
     fd_in, fd_out = config["fd_in"], config["fd_out"]
     os.set_inheritable(fd_in, False)
     os.set_inheritable(fd_out, False)
+    _become_subreaper()
     _apply_limits(config.get("limits", {}))
     from turtletui import compat
     from turtletui.compat import context as compat_context
@@ -329,6 +367,9 @@ def main() -> None:
     compat.install()
     graph = ChildGraph()
     graph.epoch_ns = config["epoch_ns"]
+    log_lines = config.get("limits", {}).get("log_lines")
+    if log_lines is not None:
+        graph.log_budget = int(log_lines) + 1
     host = ChildHost(graph, fd_in, fd_out)
     compat_context.reset_default_context()
     compat_context.bind_host(host)
@@ -348,8 +389,16 @@ def main() -> None:
     except SystemExit as exc:
         if exc.code not in (None, 0):
             crash = {"kind": "exit", "message": f"exited with status {exc.code}", "frames": []}
-    except MemoryError:
-        crash = {"kind": "memory", "message": "MemoryError: ran out of its memory limit", "frames": []}
+    except MemoryError as exc:
+        # Free what the failed frames hold before building the report.
+        traceback.clear_frames(exc.__traceback__)
+        try:
+            frames = user_frames(exc.__traceback__, spec.path)
+        except MemoryError:
+            frames = []
+        limit = config.get("limits", {}).get("memory_bytes")
+        within = f" of {limit / 1024**2:g} MiB" if limit else ""
+        crash = {"kind": "memory", "message": f"MemoryError: ran out of its memory limit{within}", "frames": frames}
     except BaseException as exc:  # noqa: BLE001 - controller code may raise anything
         message = f"{type(exc).__name__}: {exc}" if str(exc) else type(exc).__name__
         crash = {"kind": "exception", "message": message, "frames": user_frames(exc.__traceback__, spec.path)}
@@ -361,6 +410,7 @@ def main() -> None:
         pass
     except Exception:  # noqa: BLE001 - the report itself failed; say so on stderr
         traceback.print_exc()
+    _wait_to_be_ended(fd_in)
     os._exit(0)
 
 

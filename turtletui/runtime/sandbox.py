@@ -51,6 +51,14 @@ class Limits:
     file_bytes: int = 64 * 1024**2
     output_lines: int = 10_000
     """Lines of print() output kept; the rest is dropped with a notice."""
+    log_lines: int = 20_000
+    """Log records (get_logger()) kept per run; the rest is dropped with a notice."""
+
+
+_CRASH_KINDS = frozenset({"exception", "exit", "memory", "load", "cpu", "timeout", "killed"})
+"""Kinds a child may report about itself (anything else is reported as an exception)."""
+_OUTPUT_READ_LIMIT = 1 << 20
+"""Bytes of print() output read in one go, so a flood cannot keep the parent reading."""
 
 
 class SandboxHost:
@@ -81,6 +89,9 @@ class SandboxHost:
         self._read_buffer = b""
         self._output_lines = 0
         self._output_buffer = b""
+        self._log_lines = 0
+        self._stdout_open = True
+        self._started = False
         self.proc: subprocess.Popen | None = None
 
     # -- life cycle -----------------------------------------------------------
@@ -94,7 +105,11 @@ class SandboxHost:
         host = cls(sim, spec, limits or Limits())
         host._spawn(ros_args, seed)
         sim.remotes.append(host)
-        host._receive(host.limits.start_timeout, first=True)
+        try:
+            host._receive(host.limits.start_timeout, first=True)
+        except _Stop:
+            return host  # it failed to start; host.crash says why
+        host._started = True
         host.exchange(timeout=host.limits.start_timeout)
         return host
 
@@ -114,10 +129,15 @@ class SandboxHost:
                 "cpu_seconds": self.limits.cpu_seconds,
                 "memory_bytes": self.limits.memory_bytes,
                 "file_bytes": self.limits.file_bytes,
+                "log_lines": self.limits.log_lines,
             },
         }
         env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "PYTHONSTARTUP")}
         env.update(OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1", PYTHONUNBUFFERED="1")
+        # Inherited by whatever the controller starts: found and killed at the end
+        # even if it left the child's session and lost its parent.
+        self._token = f"{os.getpid()}.{id(self):x}.{os.urandom(6).hex()}"
+        env[_TOKEN_VAR] = self._token
         cwd = str(self.spec.path.resolve().parent) if self.spec.path else None
         self.proc = subprocess.Popen(
             [sys.executable, "-I", "-c", _BOOTSTRAP.format(root=_PACKAGE_ROOT), json.dumps(config)],
@@ -132,6 +152,9 @@ class SandboxHost:
         os.close(to_child_r)
         os.close(from_child_w)
         self._to_child = to_child_w
+        # A child that stopped reading (it forged an answer, then hung) must not
+        # block the parent on a full pipe: writes wait up to the step timeout.
+        os.set_blocking(to_child_w, False)
         self._from_child = from_child_r
         os.set_blocking(from_child_r, False)  # polled briefly, then select (wire.spin_read)
         self._stdout = self.proc.stdout.fileno()
@@ -141,7 +164,7 @@ class SandboxHost:
         """End the child (asking it first), kill what it left behind, report."""
         if self.proc is not None and not self.finished:
             try:
-                wire.send_to_child(self._to_child, {"end": True})
+                wire.send_to_child(self._to_child, {"end": True}, time.monotonic() + 1.0)
                 self._receive(1.0, final=True)
             except (OSError, wire.WireError, _Stop):
                 pass
@@ -156,10 +179,9 @@ class SandboxHost:
         proc = self.proc
         if proc is None:
             return
-        try:
-            os.killpg(proc.pid, signal.SIGKILL)
-        except (ProcessLookupError, PermissionError):
-            pass
+        # Once reaped (poll() saw it die) its pid may be reused: spare the pid, but
+        # not its process group or what carries its token.
+        _kill_tree(proc.pid, f"{_TOKEN_VAR}={self._token}".encode(), reaped=proc.returncode is not None)
         try:
             proc.wait(timeout=5)
         except subprocess.TimeoutExpired:
@@ -178,6 +200,7 @@ class SandboxHost:
 
     def _fail(self, kind: str, message: str, frames: list[str] | None = None) -> None:
         if self.crash is None:
+            message = " ".join(message.splitlines())  # the summary stays one line
             self.crash = CrashReport(self.spec.label, self.sim.t, kind, message, frames or [])
             self.graph.log("turtletui", ERROR, self.crash.summary())
             for line in self.crash.frames:
@@ -227,13 +250,21 @@ class SandboxHost:
             message["services"] = list(services[0])
             message["actions"] = list(services[1])
             message["action_types"] = {n: a.type_name for n, a in self.graph.action_servers.items()}
+        timeout = timeout or self.limits.step_timeout
         try:
-            wire.send_to_child(self._to_child, message)
+            wire.send_to_child(self._to_child, message, time.monotonic() + timeout)
+        except wire.WireTimeout:
+            self._fail(
+                "timeout",
+                f"did not take the next step within {self.limits.step_timeout:g} s of wall time "
+                "(it stopped reading what turtletui sends)",
+            )
+            return
         except OSError:
             self._child_died()
             return
         try:
-            self._receive(timeout or self.limits.step_timeout)
+            self._receive(timeout)
         except _Stop:
             return
 
@@ -262,8 +293,13 @@ class SandboxHost:
             return
         try:
             self._apply(reply)
-        except (InterfaceError, GraphError, KeyError, TypeError, ValueError) as err:
+        except _Stop:
+            raise
+        except (InterfaceError, GraphError) as err:
             self._fail("exception", f"sent something turtlesim cannot accept: {err}")
+            raise _Stop from None
+        except Exception as err:  # noqa: BLE001 - a forged reply may break anything in _apply
+            self._fail("exception", f"sent something turtlesim cannot accept ({type(err).__name__}: {err})")
             raise _Stop from None
 
     def _read_more(self, buffer: bytes, total: int, deadline: float) -> bytes:
@@ -273,7 +309,7 @@ class SandboxHost:
         have = len(buffer)
         fd = self._from_child
         stdout = self._stdout
-        watch = [fd, stdout]
+        watch = [fd, stdout] if self._stdout_open else [fd]
         while have < total:
             remaining = deadline - time.monotonic()
             if remaining <= 0:
@@ -287,10 +323,17 @@ class SandboxHost:
             size = max(min(total - have, 1 << 20), 1 << 16)
             chunk = wire.spin_read(fd, size, wire.SPIN_SECONDS)
             if chunk is None:
-                readable, _, _ = select.select(watch, [], [], remaining)
+                # Wake up now and then to notice a child that died while something
+                # it started still holds the pipe open (no end of file then).
+                readable, _, _ = select.select(watch, [], [], min(remaining, _LIVENESS_SECONDS))
                 if stdout in readable:
                     self._drain_output()
+                    if not self._stdout_open and stdout in watch:
+                        watch.remove(stdout)
                 if fd not in readable:
+                    if not readable and self.proc is not None and self.proc.poll() is not None:
+                        self._child_died()
+                        raise _Stop
                     continue
                 try:
                     chunk = os.read(fd, size)
@@ -309,43 +352,64 @@ class SandboxHost:
 
     def _child_died(self) -> None:
         proc = self.proc
-        code = proc.wait(timeout=5) if proc is not None else None
+        try:
+            code = proc.wait(timeout=1) if proc is not None else None
+        except subprocess.TimeoutExpired:
+            # Still running, but it closed its end of the pipe.
+            self._fail("exception", "closed its connection to turtletui and was stopped")
+            return
         if code is not None and code < 0:
             sig = -code
             kind, why = {
                 signal.SIGXCPU: ("cpu", f"used more than its {self.limits.cpu_seconds} s CPU limit"),
                 signal.SIGKILL: ("killed", "was killed (SIGKILL): out of memory, or killed by someone"),
                 signal.SIGSEGV: ("killed", "crashed the interpreter (SIGSEGV)"),
-            }.get(sig, ("killed", f"was killed by signal {signal.Signals(sig).name}"))
+            }.get(sig, ("killed", f"was killed by signal {_signal_name(sig)}"))
             self._fail(kind, why)
+        elif not self._started:
+            self._fail("exit", f"exited with status {code} while starting, before loading the controller (see its output)")
         else:
             self._fail("exit", f"exited with status {code} without finishing its run")
 
     def _drain_output(self, final: bool = False) -> None:
-        if self.proc is None or self.proc.stdout is None:
+        if self.proc is None or self.proc.stdout is None or not self._stdout_open:
             return
+        truncated = self._output_lines > self.limits.output_lines
+        buffer = self._output_buffer
+        chunks = [buffer] if buffer else []
+        read = 0
         try:
-            while True:
+            while read < _OUTPUT_READ_LIMIT:
                 data = os.read(self._stdout, 65536)
                 if not data:
+                    self._stdout_open = False
                     break
-                self._output_buffer += data
+                read += len(data)
+                if not truncated:
+                    chunks.append(data)
         except (BlockingIOError, OSError, ValueError):
             pass
-        *lines, self._output_buffer = self._output_buffer.split(b"\n")
-        if final and self._output_buffer:
-            lines.append(self._output_buffer)
+        if truncated:
             self._output_buffer = b""
-        if len(self._output_buffer) > 65536:
-            lines.append(self._output_buffer)
-            self._output_buffer = b""
+            return  # past the limit: read (so the child never blocks) and drop
+        *lines, buffer = b"".join(chunks).split(b"\n")
+        if (final or not self._stdout_open) and buffer:
+            lines.append(buffer)
+            buffer = b""
+        while len(buffer) > 65536:  # a line without end: cut it in pieces
+            lines.append(buffer[:65536])
+            buffer = buffer[65536:]
+        self._output_buffer = buffer
         name = f"{self.spec.name}:stdout"
+        cap = self.limits.output_lines
         for line in lines:
             self._output_lines += 1
-            if self._output_lines <= self.limits.output_lines:
+            if self._output_lines <= cap:
                 self.graph.log(name, INFO, line[:4096].decode("utf-8", "replace"))
-            elif self._output_lines == self.limits.output_lines + 1:
-                self.graph.log("turtletui", ERROR, f"{self.spec.label}: output truncated after {self.limits.output_lines} lines")
+            else:
+                self._output_buffer = b""
+                self.graph.log("turtletui", ERROR, f"{self.spec.label}: output truncated after {cap} lines")
+                break
 
     # -- applying what the child did ------------------------------------------------
     def _apply(self, reply: dict) -> None:
@@ -353,7 +417,15 @@ class SandboxHost:
         for decl in reply.get("decl", ()):
             self._declare(decl)
         for level, node, msg in reply.get("log", ()):
-            graph.log(str(node)[:200], int(level), str(msg)[:10_000])
+            self._log_lines += 1
+            if self._log_lines <= self.limits.log_lines:
+                graph.log(str(node)[:200], int(level), str(msg)[:10_000])
+            elif self._log_lines == self.limits.log_lines + 1:
+                graph.log(
+                    "turtletui",
+                    ERROR,
+                    f"{self.spec.label}: log truncated after {self.limits.log_lines} log lines",
+                )
         for name, fields in reply.get("pub", ()):
             topic = graph.topics.get(name)
             if topic is None:
@@ -404,8 +476,13 @@ class SandboxHost:
         if reply.get("done"):
             crash = reply.get("crash")
             if crash:
-                frames = [str(f) for f in crash.get("frames", [])][:50]
-                self._fail(str(crash.get("kind", "exception")), str(crash.get("message", ""))[:2000], frames)
+                if not isinstance(crash, dict):
+                    raise TypeError("crash report is not an object")
+                frames = [str(f)[:1000] for f in crash.get("frames", [])][:50]
+                kind = str(crash.get("kind", "exception"))
+                self._fail(
+                    kind if kind in _CRASH_KINDS else "exception", str(crash.get("message", ""))[:2000], frames
+                )
             else:
                 self._terminate()
             raise _Stop
@@ -457,8 +534,98 @@ class SandboxHost:
             graph.add_service(self._nodes[node_id], str(name), srv_type, handler)
         elif kind == "param":
             _, node_id, name, value, remove = decl
+            if isinstance(value, dict) or (isinstance(value, list) and not all(map(_is_scalar, value))):
+                raise TypeError(f"parameter {str(name)[:100]} has a value no ROS parameter can hold")
             graph.set_parameter(self._nodes[node_id], str(name), value, remove=bool(remove))
 
 
 class _Stop(Exception):
     """The child finished or failed during an exchange."""
+
+
+_TOKEN_VAR = "TURTLETUI_SANDBOX"
+_LIVENESS_SECONDS = 0.1
+"""How often a parent waiting for an answer checks that the child is still alive."""
+
+
+def _is_scalar(value: Any) -> bool:
+    return value is None or isinstance(value, (bool, int, float, str))
+
+
+def _signal_name(sig: int) -> str:
+    try:
+        return signal.Signals(sig).name
+    except ValueError:
+        return f"{sig}"
+
+
+def _sandboxed(root: int, token: bytes) -> set[int]:
+    """Processes the child ``root`` started (Linux /proc; empty elsewhere): its
+    descendants, and any process whose environment holds ``token``."""
+    children: dict[int, list[int]] = {}
+    marked: set[int] = set()
+    try:
+        entries = os.listdir("/proc")
+    except OSError:
+        return marked
+    me = os.getpid()
+    for entry in entries:
+        if not entry.isdigit():
+            continue
+        pid = int(entry)
+        try:
+            with open(f"/proc/{entry}/stat", "rb") as f:
+                stat = f.read()
+            ppid = int(stat.rpartition(b")")[2].split()[1])
+        except (OSError, ValueError, IndexError):
+            continue
+        children.setdefault(ppid, []).append(pid)
+        try:
+            with open(f"/proc/{entry}/environ", "rb") as f:
+                if token in f.read().split(b"\0"):
+                    marked.add(pid)
+        except OSError:
+            pass
+    stack = [root, *marked]  # and what the marked ones started (a clean exec's environment)
+    seen = set(stack)
+    while stack:
+        for pid in children.get(stack.pop(), ()):
+            if pid not in seen:
+                seen.add(pid)
+                marked.add(pid)
+                stack.append(pid)
+    marked.discard(me)
+    marked.discard(1)
+    return marked
+
+
+def _signal(pid: int, sig: int, group: bool = False) -> None:
+    try:
+        if group:
+            os.killpg(pid, sig)
+        else:
+            os.kill(pid, sig)
+    except (ProcessLookupError, PermissionError):
+        pass
+
+
+def _kill_tree(pid: int, token: bytes, *, reaped: bool = False) -> None:
+    """Kill the child ``pid``, its process group, and every process it started,
+    also those that left its group or session (frozen first, so that none can
+    fork away while they are looked for)."""
+    _signal(pid, signal.SIGSTOP, group=True)
+    if not reaped:
+        _signal(pid, signal.SIGSTOP)
+    stopped: set[int] = set()
+    for _ in range(8):
+        fresh = _sandboxed(-1 if reaped else pid, token) - stopped
+        if not fresh:
+            break
+        for child in fresh:
+            _signal(child, signal.SIGSTOP)
+        stopped |= fresh
+    _signal(pid, signal.SIGKILL, group=True)
+    if not reaped:
+        _signal(pid, signal.SIGKILL)
+    for child in stopped:
+        _signal(child, signal.SIGKILL)

@@ -59,6 +59,10 @@ class WireError(Exception):
     """The other side closed the pipe or sent something malformed."""
 
 
+class WireTimeout(WireError):
+    """The other side did not take a frame in time (it is not reading)."""
+
+
 def _read_exact(fd: int, size: int) -> bytes:
     chunks = []
     while size:
@@ -70,10 +74,17 @@ def _read_exact(fd: int, size: int) -> bytes:
     return b"".join(chunks)
 
 
-def _write_all(fd: int, data: bytes) -> None:
+def _write_all(fd: int, data: bytes | memoryview, deadline: float | None = None) -> None:
     view = memoryview(data)
     while view:
-        written = os.write(fd, view)
+        try:
+            written = os.write(fd, view)
+        except BlockingIOError:  # a non-blocking fd with a full pipe: wait, up to deadline
+            remaining = None if deadline is None else deadline - time.monotonic()
+            if remaining is not None and remaining <= 0:
+                raise WireTimeout("the other side did not read what was sent") from None
+            select.select([], [fd], [], remaining)
+            continue
         view = view[written:]
 
 
@@ -83,16 +94,21 @@ _ENCODE = json.JSONEncoder(separators=(",", ":"), allow_nan=True).encode
 """``json.dumps(obj, separators=(",", ":"), allow_nan=True)`` without building an encoder each call."""
 
 
-def _write_frame(fd: int, payload: bytes) -> None:
+def _write_frame(fd: int, payload: bytes, deadline: float | None = None) -> None:
     # Header and payload in one write: one system call (one wake-up) per frame.
     data = _pack(len(payload)) + payload
-    written = os.write(fd, data)
+    try:
+        written = os.write(fd, data)
+    except BlockingIOError:
+        written = 0
     if written != len(data):
-        _write_all(fd, memoryview(data)[written:])
+        _write_all(fd, memoryview(data)[written:], deadline)
 
 
-def send_to_child(fd: int, obj: object) -> None:
-    _write_frame(fd, marshal.dumps(obj))
+def send_to_child(fd: int, obj: object, deadline: float | None = None) -> None:
+    """Send ``obj``; on a non-blocking ``fd``, raise WireTimeout if the child has
+    not taken it by ``deadline`` (time.monotonic), instead of waiting for ever."""
+    _write_frame(fd, marshal.dumps(obj), deadline)
 
 
 class FrameReader:
@@ -162,8 +178,10 @@ def read_header(data: bytes) -> int:
 def parse_reply(payload: bytes) -> dict:
     try:
         reply = json.loads(payload)
-    except ValueError as err:
+    except ValueError as err:  # also UnicodeDecodeError
         raise WireError(f"sent a malformed reply ({err})") from None
+    except RecursionError:
+        raise WireError("sent a malformed reply (nested too deeply)") from None
     if not isinstance(reply, dict):
         raise WireError("sent a malformed reply (not an object)")
     return reply
