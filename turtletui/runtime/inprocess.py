@@ -19,6 +19,7 @@ from turtletui.compat import logging as compat_logging
 from turtletui.runtime.loader import ControllerError, ControllerSpec, entry_point, load_module
 from turtletui.runtime.report import CrashReport, crash_from_exception, stop_turtles
 from turtletui.runtime.simulation import Simulation
+from turtletui.runtime.virtual_time import simulated_sleep
 
 
 class InProcessHost:
@@ -101,10 +102,11 @@ def run_in_process(
         if spec.factory is not None:
             from turtletui.runtime.loader import spin_nodes
 
-            spin_nodes(list(spec.factory()))
+            with simulated_sleep(host):
+                spin_nodes(list(spec.factory()))
         else:
-            spin_main = entry_point(load_module(spec), spec.label)
-            spin_main()
+            with simulated_sleep(host):
+                entry_point(load_module(spec), spec.label)()
     except ControllerError:
         raise
     except SystemExit as exc:
