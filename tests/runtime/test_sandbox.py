@@ -34,7 +34,7 @@ CRASH_TICK = 5
 CRASH_T = CRASH_TICK * 0.1
 
 PRELUDE = f"""\
-import os, signal, subprocess, sys, time
+import os, signal, subprocess, sys, threading, time
 import rclpy
 from rclpy.node import Node
 from geometry_msgs.msg import Twist
@@ -284,10 +284,10 @@ def test_multi_line_message_gives_a_one_line_summary(tmp_path: Path) -> None:
         """,
         """
         def misbehave(node):
-            time.sleep(10)
+            threading.Event().wait(10)  # blocks in wall time (time.sleep is simulated)
         """,
     ],
-    ids=["endless-loop", "sleep"],
+    ids=["endless-loop", "blocking-wait"],
 )
 def test_hung_callback_times_out(tmp_path: Path, body: str) -> None:
     path = write(tmp_path, body)
@@ -300,6 +300,29 @@ def test_hung_callback_times_out(tmp_path: Path, body: str) -> None:
     assert wall < 0.5 + 2.0, f"took {wall:.2f} s to stop a hung callback"
     assert_stopped(result, CRASH_T)
     assert_gone(read_pid(tmp_path))
+
+
+def test_sleep_in_a_callback_blocks_the_node_in_simulated_time(tmp_path: Path) -> None:
+    """time.sleep is simulated: the node is blocked for 1.5 simulated seconds, as
+    on a real robot, while the world goes on; nothing is stopped."""
+    path = write(tmp_path, """
+        def misbehave(node):
+            node.get_logger().info("sleeping")
+            time.sleep(1.5)
+            node.get_logger().info("awake")
+    """)
+    started = time.monotonic()
+    result = go(path, duration=3.0)
+    assert time.monotonic() - started < 2.0, "a simulated sleep took wall time"
+    assert result.crashes == []
+    lines = {r.msg: r.t for r in result.logs if r.node == "driver"}
+    assert lines["sleeping"] == pytest.approx(CRASH_T)
+    assert lines["awake"] == pytest.approx(CRASH_T + 1.5)
+    # The last command before the sleep times out after 1 s: the turtle stops
+    # before the node wakes up.
+    poses = result.poses["turtle1"]
+    still = [p for p in poses if CRASH_T + 1.1 < p[0] < CRASH_T + 1.5]
+    assert still and len({p[1:] for p in still}) == 1
 
 
 def test_endless_loop_in_main_before_spin(tmp_path: Path) -> None:
@@ -593,7 +616,7 @@ def test_daemonised_grandchild_of_a_dead_controller_is_killed(tmp_path: Path) ->
                     time.sleep(60)
                 os._exit(0)
             while not os.path.exists("grandchild_pid"):
-                time.sleep(0.01)
+                threading.Event().wait(0.01)
             os._exit(1)
     """)
     result = go(path)
@@ -721,7 +744,7 @@ def misbehave(node):
     # Write a reply of one's own on the pipe to turtletui, then keep quiet:
     # the parent acts on the forged frame (not on a timeout).
     os.write(context.current_host().fd_out, FRAME)
-    time.sleep(30)
+    threading.Event().wait(30)
 """
 
 
@@ -791,7 +814,7 @@ def test_forged_reply_then_not_reading(tmp_path: Path) -> None:
 
         def forge_and_hang():
             os.write(context.current_host().fd_out, struct.pack(">I", 2) + b"{}")
-            time.sleep(30)
+            threading.Event().wait(30)
 
         def misbehave(node):
             for _ in range(3000):

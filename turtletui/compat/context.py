@@ -22,6 +22,10 @@ class Host(Protocol):
     owner: str
     callback_depth: int
 
+    def spin(self, stop: Any) -> None:
+        """Run this host's callbacks as they become ready until ``stop()``
+        holds or the run ends (rclpy.spin)."""
+
     def spin_once(self, timeout_ns: int | None) -> bool:
         """Run callbacks of this host (advancing time as needed) until one ran
         or ``timeout_ns`` simulated ns passed. False when the run has ended."""

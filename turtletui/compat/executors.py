@@ -76,8 +76,9 @@ class Executor:
 
     def spin(self) -> None:
         host = self._guard("spin()")
-        while self._context.ok() and host.spin_once(None):
-            pass
+        context = self._context
+        if context.ok():
+            host.spin(lambda: not context.ok())
 
     def spin_once(self, timeout_sec: float | None = None) -> None:
         host = self._guard("spin_once()")

@@ -23,6 +23,7 @@ from turtletui.graph.core import Graph, NodeRecord, Publisher, Subscription, Top
 from turtletui.graph.logs import LogRecord
 from turtletui.interfaces import from_dict, get_interface, interface_name, to_dict
 from turtletui.runtime import wire
+from turtletui.runtime.host import CallbackTracking
 
 OWNER = "child"
 """Immutable types whose very same objects always serialise the same way."""
@@ -166,7 +167,7 @@ class ChildGraph(Graph):
             sub.queue.append(from_dict(sub.topic.msg_type, fields))
             if not sub.pending:
                 sub.pending = True
-                ready.append((OWNER, _deliver(sub)))
+                ready.append(sub.ready_item)
         for call_id, type_name, fields in message.get("responses", ()):
             on_response = self._calls.pop(call_id, None)
             if on_response is not None:
@@ -207,17 +208,7 @@ class ChildGraph(Graph):
     remote_action_types: dict[str, Any] = {}
 
 
-def _deliver(sub: Subscription) -> Callable[[], None]:
-    def run() -> None:
-        sub.pending = False
-        queue = sub.queue
-        while queue:
-            sub.callback(queue.popleft())
-
-    return run
-
-
-class ChildHost:
+class ChildHost(CallbackTracking):
     """The compat Host inside the sandbox: waiting means asking the parent."""
 
     owner = OWNER
@@ -226,20 +217,20 @@ class ChildHost:
         self.graph = graph
         self.fd_in = fd_in
         self.fd_out = fd_out
-        self.callback_depth = 0
         self.running = True
 
-    def wrap_callback(self, callback: Callable) -> Callable:
-        host = self
-
-        def run(*args: Any) -> Any:
-            host.callback_depth += 1
-            try:
-                return callback(*args)
-            finally:
-                host.callback_depth -= 1
-
-        return run
+    def spin(self, stop: Callable[[], bool]) -> None:
+        """Run every callback as it becomes ready until ``stop()`` or the end."""
+        graph = self.graph
+        ready = graph.ready
+        while self.running:
+            while ready:
+                ready.popleft()[1]()
+                if stop():
+                    return
+            if stop():
+                return
+            self.exchange(graph.next_due())
 
     def exchange(self, wake_ns: int | None, **extra: Any) -> None:
         """Report to the parent and wait for the next instant it gives us."""
@@ -361,8 +352,10 @@ def main() -> None:
         ControllerSpec,
         entry_point,
         load_module,
+        seed_numpy,
         user_frames,
     )
+    from turtletui.runtime.virtual_time import install_simulated_sleep
 
     compat.install()
     graph = ChildGraph()
@@ -373,6 +366,7 @@ def main() -> None:
     host = ChildHost(graph, fd_in, fd_out)
     compat_context.reset_default_context()
     compat_context.bind_host(host)
+    install_simulated_sleep(host)
     spec = ControllerSpec(
         name=config["name"],
         path=None if config.get("path") is None else __import__("pathlib").Path(config["path"]),
@@ -383,7 +377,9 @@ def main() -> None:
     crash = None
     try:
         host.exchange(None)  # start together with the parent's clock
-        entry_point(load_module(spec), spec.label)()
+        module = load_module(spec)
+        seed_numpy(config.get("seed", 0))
+        entry_point(module, spec.label)()
     except ControllerError as err:
         crash = {"kind": "load", "message": str(err), "frames": []}
     except SystemExit as exc:

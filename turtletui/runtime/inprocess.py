@@ -11,18 +11,24 @@ import random
 import sys
 import time
 from collections.abc import Callable
-from typing import Any
 
 from turtletui import compat
 from turtletui.compat import context as compat_context
 from turtletui.compat import logging as compat_logging
-from turtletui.runtime.loader import ControllerError, ControllerSpec, entry_point, load_module
+from turtletui.runtime.host import CallbackTracking
+from turtletui.runtime.loader import (
+    ControllerError,
+    ControllerSpec,
+    entry_point,
+    load_module,
+    seed_numpy,
+)
 from turtletui.runtime.report import CrashReport, crash_from_exception, stop_turtles
 from turtletui.runtime.simulation import Simulation
 from turtletui.runtime.virtual_time import simulated_sleep
 
 
-class InProcessHost:
+class InProcessHost(CallbackTracking):
     """Implements turtletui.compat.context.Host over a Simulation in this process."""
 
     def __init__(self, sim: Simulation, owner: str, end_ns: int) -> None:
@@ -30,24 +36,17 @@ class InProcessHost:
         self.graph = sim.graph
         self.owner = owner
         self.end_ns = end_ns
-        self.callback_depth = 0
         self._ended = False
 
     @property
     def running(self) -> bool:
         return not self._ended
 
-    def wrap_callback(self, callback: Callable) -> Callable:
-        host = self
-
-        def run(*args: Any) -> Any:
-            host.callback_depth += 1
-            try:
-                return callback(*args)
-            finally:
-                host.callback_depth -= 1
-
-        return run
+    def spin(self, stop: Callable[[], bool]) -> None:
+        """Run every callback as it becomes ready until ``stop()`` or the end."""
+        if not self._ended:
+            self.sim.pump(None, self.end_ns, until=stop)
+            self._check_end()
 
     def _limit(self, timeout_ns: int | None) -> int:
         if timeout_ns is None:
@@ -106,7 +105,9 @@ def run_in_process(
                 spin_nodes(list(spec.factory()))
         else:
             with simulated_sleep(host):
-                entry_point(load_module(spec), spec.label)()
+                module = load_module(spec)
+                seed_numpy(seed)
+                entry_point(module, spec.label)()
     except ControllerError:
         raise
     except SystemExit as exc:
@@ -117,7 +118,8 @@ def run_in_process(
     finally:
         sys.argv = saved_argv
         host._ended = True
-        stop_turtles(sim, owner)
+        if crash is not None:
+            stop_turtles(sim, owner)
         sim.graph.remove_owner(owner)
         compat_context.get_default_context().try_shutdown()
         compat_context.bind_host(None)

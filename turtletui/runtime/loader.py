@@ -110,6 +110,13 @@ def spin_nodes(classes: list[type]) -> None:
         rclpy.try_shutdown()
 
 
+def seed_numpy(seed: int) -> None:
+    """Seed numpy's global generator if the controller imported numpy."""
+    numpy = sys.modules.get("numpy")
+    if numpy is not None:
+        numpy.random.seed(seed % 2**32)
+
+
 def user_frames(tb: Any, path: Path | None) -> list[str]:
     """Traceback lines from the controller's own file (all frames if unknown)."""
     import traceback

@@ -132,15 +132,24 @@ class SandboxHost:
                 "log_lines": self.limits.log_lines,
             },
         }
-        env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "PYTHONSTARTUP")}
-        env.update(OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1", PYTHONUNBUFFERED="1")
+        # No -I/-E: they would also drop PYTHONHASHSEED, and a fixed hash seed
+        # keeps the iteration order of the student's sets and dicts of strings
+        # the same in every run. Python's other variables are cleared instead.
+        env = {k: v for k, v in os.environ.items() if not k.startswith("PYTHON")}
+        env.update(
+            OPENBLAS_NUM_THREADS="1",
+            OMP_NUM_THREADS="1",
+            PYTHONUNBUFFERED="1",
+            PYTHONHASHSEED="0",
+            PYTHONNOUSERSITE="1",
+        )
         # Inherited by whatever the controller starts: found and killed at the end
         # even if it left the child's session and lost its parent.
         self._token = f"{os.getpid()}.{id(self):x}.{os.urandom(6).hex()}"
         env[_TOKEN_VAR] = self._token
         cwd = str(self.spec.path.resolve().parent) if self.spec.path else None
         self.proc = subprocess.Popen(
-            [sys.executable, "-I", "-c", _BOOTSTRAP.format(root=_PACKAGE_ROOT), json.dumps(config)],
+            [sys.executable, "-s", "-c", _BOOTSTRAP.format(root=_PACKAGE_ROOT), json.dumps(config)],
             stdin=subprocess.DEVNULL,
             stdout=subprocess.PIPE,
             stderr=subprocess.STDOUT,
@@ -194,7 +203,10 @@ class SandboxHost:
                 pass
         if proc.stdout:
             proc.stdout.close()
-        stop_turtles(self.sim, self.owner)
+        if self.crash is not None:
+            # A controller that ends normally leaves its last command to
+            # turtlesim's 1 s timeout, as in ROS; a failed one stops its turtle.
+            stop_turtles(self.sim, self.owner)
         self.graph.remove_owner(self.owner)
         self.proc = None
 

@@ -11,6 +11,7 @@ leave them), and the rest of the world goes on.
 from __future__ import annotations
 
 import math
+import os
 import time
 from collections.abc import Iterator
 from contextlib import contextmanager
@@ -20,7 +21,13 @@ _real_sleep = time.sleep
 
 
 def _simulated_sleep(host: Any):
+    pid = os.getpid()
+
     def sleep(seconds: float) -> None:
+        if os.getpid() != pid:
+            # A process the controller forked has no simulated clock.
+            _real_sleep(seconds)
+            return
         if isinstance(seconds, bool) or not isinstance(seconds, (int, float)):
             raise TypeError(f"'{type(seconds).__name__}' object cannot be interpreted as an integer or float")
         if seconds < 0:

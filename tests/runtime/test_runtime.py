@@ -1,0 +1,122 @@
+"""How controllers are hosted: lockstep timing, simulated sleeps, determinism."""
+
+import textwrap
+from pathlib import Path
+
+import pytest
+
+from turtletui.api import run
+
+PUBLISH_AND_SLEEP = """
+import time
+import rclpy
+from rclpy.node import Node
+from geometry_msgs.msg import Twist
+
+
+def main():
+    rclpy.init()
+    node = Node("sleeper")
+    pub = node.create_publisher(Twist, "/turtle1/cmd_vel", 10)
+    for i in range(4):
+        msg = Twist()
+        msg.linear.x = 1.0
+        pub.publish(msg)
+        node.get_logger().info(f"published {i}")
+        time.sleep(0.5)
+    rclpy.shutdown()
+"""
+
+
+def write(tmp_path: Path, name: str, text: str) -> Path:
+    path = tmp_path / name
+    path.write_text(textwrap.dedent(text))
+    return path
+
+
+@pytest.mark.parametrize("sandbox", [True, False], ids=["sandboxed", "in-process"])
+def test_time_sleep_in_main_lets_simulated_time_pass(tmp_path: Path, sandbox: bool) -> None:
+    path = write(tmp_path, "sleeper.py", PUBLISH_AND_SLEEP)
+    result = run([path], duration=4.0, sandbox=sandbox)
+    assert result.crashes == []
+    stamps = [r.t for r in result.logs if r.node == "sleeper"]
+    assert stamps == [0.0, 0.5, 1.0, 1.5]
+    # Driven at 1 m/s from t=0.032 (the first update) until 1 s after the
+    # last command at t=1.5.
+    assert result.turtles["turtle1"].distance == pytest.approx(2.48, abs=0.02)
+
+
+def test_two_sandboxed_controllers_share_one_world(tmp_path: Path) -> None:
+    sleeper = write(tmp_path, "sleeper.py", PUBLISH_AND_SLEEP)
+    watcher = write(
+        tmp_path,
+        "watcher.py",
+        """
+        import rclpy
+        from rclpy.node import Node
+        from turtlesim.msg import Pose
+
+
+        class Watcher(Node):
+            def __init__(self):
+                super().__init__("watcher")
+                self.moving = False
+                self.create_subscription(Pose, "/turtle1/pose", self.on_pose, 10)
+
+            def on_pose(self, pose):
+                if pose.linear_velocity > 0 and not self.moving:
+                    self.moving = True
+                    self.get_logger().info(f"moving at x={pose.x:.3f}")
+        """,
+    )
+    result = run([sleeper, watcher], duration=2.0)
+    assert result.crashes == []
+    moving = [r for r in result.logs if r.node == "watcher"]
+    assert [(r.t, r.msg) for r in moving] == [(0.032, "moving at x=5.560")]
+
+
+def test_a_sandboxed_run_is_repeatable_including_hash_order(tmp_path: Path) -> None:
+    path = write(
+        tmp_path,
+        "hashy.py",
+        """
+        import random
+        import rclpy
+        from rclpy.node import Node
+
+
+        def main():
+            rclpy.init()
+            node = Node("hashy")
+            words = {"alpha", "beta", "gamma", "delta", "epsilon", "zeta"}
+            node.get_logger().info(" ".join(words) + f" {random.random()}")
+            rclpy.spin(node)
+        """,
+    )
+    first, second = (
+        [r.msg for r in run([path], duration=0.1).logs if r.node == "hashy"] for _ in range(2)
+    )
+    assert first == second and len(first) == 1
+
+
+def test_spin_returns_when_a_callback_shuts_down(tmp_path: Path) -> None:
+    path = write(
+        tmp_path,
+        "quitter.py",
+        """
+        import rclpy
+        from rclpy.node import Node
+
+
+        def main():
+            rclpy.init()
+            node = Node("quitter")
+            node.create_timer(0.5, lambda: rclpy.shutdown())
+            rclpy.spin(node)
+            node.get_logger().info("spin returned")
+        """,
+    )
+    for sandbox in (True, False):
+        result = run([path], duration=2.0, sandbox=sandbox)
+        assert result.crashes == []
+        assert [r.t for r in result.logs if r.msg == "spin returned"] == [0.5]
