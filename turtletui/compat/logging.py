@@ -111,23 +111,44 @@ class RcutilsLogger:
         return True
 
     def debug(self, message: str, **kwargs: Any) -> bool:
-        return self.log(message, LoggingSeverity.DEBUG, **kwargs)
+        if kwargs:
+            return self.log(message, LoggingSeverity.DEBUG, **kwargs)
+        return self._plain(message, 10)
 
     def info(self, message: str, **kwargs: Any) -> bool:
-        return self.log(message, LoggingSeverity.INFO, **kwargs)
+        if kwargs:
+            return self.log(message, LoggingSeverity.INFO, **kwargs)
+        return self._plain(message, 20)
 
     def warning(self, message: str, **kwargs: Any) -> bool:
-        return self.log(message, LoggingSeverity.WARN, **kwargs)
+        if kwargs:
+            return self.log(message, LoggingSeverity.WARN, **kwargs)
+        return self._plain(message, 30)
 
     def warn(self, message: str, **kwargs: Any) -> bool:
         """Deprecated in rclpy in favour of ``warning``; still works."""
-        return self.log(message, LoggingSeverity.WARN, **kwargs)
+        if kwargs:
+            return self.log(message, LoggingSeverity.WARN, **kwargs)
+        return self._plain(message, 30)
+
+    def _plain(self, message: Any, severity: int) -> bool:
+        # The common case, a call with no filters, on the per-tick hot path:
+        # only the level decides (there is no call-site state to keep).
+        if severity < (_effective_level(self.name) if _LEVELS else _DEFAULT_LEVEL):
+            return False
+        text = message if message.__class__ is str else _text(message)
+        (_current_host or _bind_current_host())().graph.log(self.name, severity, text)
+        return True
 
     def error(self, message: str, **kwargs: Any) -> bool:
-        return self.log(message, LoggingSeverity.ERROR, **kwargs)
+        if kwargs:
+            return self.log(message, LoggingSeverity.ERROR, **kwargs)
+        return self._plain(message, 40)
 
     def fatal(self, message: str, **kwargs: Any) -> bool:
-        return self.log(message, LoggingSeverity.FATAL, **kwargs)
+        if kwargs:
+            return self.log(message, LoggingSeverity.FATAL, **kwargs)
+        return self._plain(message, 50)
 
 
 def _text(message: Any) -> str:
