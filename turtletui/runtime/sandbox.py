@@ -73,6 +73,8 @@ class SandboxHost:
         self.wake_ns: int | None = None
         self.crash: CrashReport | None = None
         self.finished = False
+        self._awaiting: float | None = None
+        """Real time only: when the unanswered message went out (monotonic s)."""
         self._inbox: list = []
         self._responses: list = []
         self._goal_events: list = []
@@ -110,7 +112,7 @@ class SandboxHost:
         except _Stop:
             return host  # it failed to start; host.crash says why
         host._started = True
-        host.exchange(timeout=host.limits.start_timeout)
+        host.exchange(timeout=host.limits.start_timeout, wait=True)
         return host
 
     def _spawn(self, ros_args: list[str], seed: int) -> None:
@@ -172,6 +174,9 @@ class SandboxHost:
     def close(self) -> CrashReport | None:
         """End the child (asking it first), kill what it left behind, report."""
         if self.proc is not None and not self.finished:
+            if self._awaiting is not None:
+                self._collect(self.limits.step_timeout)
+        if self.proc is not None and not self.finished:
             try:
                 wire.send_to_child(self._to_child, {"end": True}, time.monotonic() + 1.0)
                 self._receive(1.0, final=True)
@@ -228,16 +233,27 @@ class SandboxHost:
             self._rounds = 0
         elif self._rounds >= MAX_ROUNDS_PER_INSTANT:
             return False
+        if self._awaiting is not None:
+            return True  # real time: see whether the answer has come
         if self._inbox or self._responses or self._goal_events or self._requests:
             return True
         if self._poll:
             return True
         return self.wake_ns is not None and self.wake_ns <= now_ns
 
-    def exchange(self, timeout: float | None = None) -> None:
-        """One lockstep round: send the time and inbox, apply the child's answer."""
+    def exchange(self, timeout: float | None = None, *, wait: bool = False) -> bool:
+        """Send the time and inbox and apply the child's answer. Returns whether
+        anything happened.
+
+        In lockstep the answer is awaited (up to the step deadline). In real
+        time it is awaited only until the simulation's next step is due; a
+        slower answer is picked up by a later call and its commands are late,
+        as they would be in ROS.
+        """
         if self.finished:
-            return
+            return False
+        if self._awaiting is not None:
+            return self._collect(0.0)
         self._rounds += 1
         message: dict[str, Any] = {"now": self.graph.now_ns}
         if self._inbox:
@@ -271,14 +287,71 @@ class SandboxHost:
                 f"did not take the next step within {self.limits.step_timeout:g} s of wall time "
                 "(it stopped reading what turtletui sends)",
             )
-            return
+            return True
         except OSError:
             self._child_died()
-            return
+            return True
+        if self.sim.realtime and not wait:
+            self._awaiting = time.monotonic()
+            self._collect(min(self.sim.wall_budget(), timeout))
+            return True
         try:
             self._receive(timeout)
         except _Stop:
-            return
+            pass
+        return True
+
+    def _collect(self, budget: float) -> bool:
+        """Real time: apply the pending answer if it arrives within ``budget``
+        seconds; stop the child once it is later than the step deadline."""
+        deadline = time.monotonic() + budget
+        fd = self._from_child
+        try:
+            while True:
+                if self._frame_ready():
+                    self._awaiting = None
+                    self._receive(0.0)
+                    return True
+                remaining = deadline - time.monotonic()
+                if remaining <= 0:
+                    break
+                select.select([fd], [], [], remaining)
+        except _Stop:
+            return True
+        assert self._awaiting is not None
+        if time.monotonic() - self._awaiting > self.limits.step_timeout:
+            self._fail(
+                "timeout",
+                f"did not answer within {self.limits.step_timeout:g} s of wall time "
+                "(an endless loop, a sleep or a blocking call in a callback?)",
+            )
+            return True
+        return False
+
+    def _frame_ready(self) -> bool:
+        """Read what the child has sent without waiting; is a whole frame in?"""
+        buffer = self._read_buffer
+        while True:
+            try:
+                chunk = os.read(self._from_child, 1 << 16)
+            except BlockingIOError:
+                break
+            if not chunk:
+                self._child_died()
+                raise _Stop
+            buffer += chunk
+            if len(buffer) > wire.MAX_REPLY_BYTES + 4:
+                break
+        self._read_buffer = buffer
+        self._drain_output()
+        if len(buffer) < 4:
+            return False
+        try:
+            size = wire.read_header(buffer[:4])
+        except wire.WireError as err:
+            self._fail("flood", str(err))
+            raise _Stop from None
+        return len(buffer) >= 4 + size
 
     # -- receiving ---------------------------------------------------------------
     def _receive(self, timeout: float, *, first: bool = False, final: bool = False) -> None:

@@ -29,8 +29,10 @@ class RemoteHost(Protocol):
     def wants_exchange(self, now_ns: int) -> bool:
         """Whether it has messages to receive or a timer due now."""
 
-    def exchange(self) -> None:
-        """Send what is queued for it, let it run, and publish what it sent back."""
+    def exchange(self) -> bool:
+        """Send what is queued for it, let it run, and publish what it sent
+        back. Returns whether anything happened (in real time an answer may
+        still be on its way)."""
 
 
 class Simulation:
@@ -116,9 +118,11 @@ class Simulation:
     def _exchange(self) -> bool:
         now = self.graph.now_ns
         busy = [remote for remote in self.remotes if remote.wants_exchange(now)]
+        progressed = False
         for remote in busy:
-            remote.exchange()
-        return bool(busy)
+            if remote.exchange():
+                progressed = True
+        return progressed
 
     def _advance(self, limit_ns: int) -> bool:
         graph = self.graph
@@ -141,6 +145,14 @@ class Simulation:
         if graph.now_ns < due:
             graph.now_ns = due
         return True
+
+    def wall_budget(self) -> float:
+        """Real time: wall seconds until the next timer is due (0 if overdue)."""
+        due = self.graph.next_due()
+        if due is None or self._wall_origin is None:
+            return 0.016
+        target = self._wall_origin + (due - self._sim_origin) / NS_PER_S / self.speed
+        return max(0.0, target - time.monotonic())
 
     def _wait_for(self, t_ns: int) -> None:
         now = time.monotonic()

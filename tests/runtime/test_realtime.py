@@ -1,0 +1,80 @@
+"""Real-time runs: 16 ms of wall time per tick; a slow controller is late, not waited for."""
+
+import textwrap
+import time
+from pathlib import Path
+
+import pytest
+
+from turtletui.api import run
+from turtletui.runtime.sandbox import Limits
+
+SLOW = """
+import threading
+import rclpy
+from rclpy.node import Node
+from geometry_msgs.msg import Twist
+from turtlesim.msg import Pose
+
+
+class Slow(Node):
+    def __init__(self):
+        super().__init__("slow")
+        self.pub = self.create_publisher(Twist, "/turtle1/cmd_vel", 10)
+        self.create_subscription(Pose, "/turtle1/pose", self.on_pose, 10)
+        self.handled = 0
+
+    def on_pose(self, pose):
+        self.handled += 1
+        threading.Event().wait({delay})  # real work that takes wall time
+        msg = Twist()
+        msg.linear.x = 1.0
+        self.pub.publish(msg)
+        self.get_logger().info(f"handled {{self.handled}}")
+"""
+
+
+def write(tmp_path: Path, text: str) -> Path:
+    path = tmp_path / "node.py"
+    path.write_text(textwrap.dedent(text))
+    return path
+
+
+def timed_run(path: Path, **kwargs):
+    started = time.monotonic()
+    result = run([path], realtime=True, **kwargs)
+    return result, time.monotonic() - started
+
+
+def test_real_time_runs_at_wall_clock_speed():
+    path = Path(__file__).resolve().parents[2] / "plugins" / "reference" / "turtle_controller.py"
+    result, wall = timed_run(path, duration=1.0)
+    assert result.crashes == []
+    assert 0.95 < wall < 1.8
+    lockstep = run([path], duration=1.0)
+    # A fast controller answers within the tick: the same drive as in lockstep,
+    # give or take a command that missed its tick on a busy machine.
+    assert result.turtles["turtle1"].distance == pytest.approx(lockstep.turtles["turtle1"].distance, abs=0.3)
+
+
+def test_a_slow_controller_is_late_and_the_world_does_not_wait(tmp_path: Path):
+    result, wall = timed_run(write(tmp_path, SLOW.format(delay=0.05)), duration=1.0)
+    assert result.crashes == []
+    assert wall < 1.8, "the simulation waited for the slow controller"
+    handled = [r for r in result.logs if r.node == "slow"]
+    poses = int(1.0 / 0.016) - 1
+    # About 20 callbacks of 50 ms fit in a second; the rest of the 61 poses
+    # were dropped by the keep-last queue or came too late.
+    assert 5 <= len(handled) < poses // 2
+    assert result.turtles["turtle1"].distance > 0.5
+
+
+def test_a_hung_controller_is_stopped_while_the_world_goes_on(tmp_path: Path):
+    result, wall = timed_run(
+        write(tmp_path, SLOW.format(delay=30)), duration=1.5, limits=Limits(step_timeout=0.4)
+    )
+    assert result.sim_time == pytest.approx(1.5)
+    assert wall < 3.0
+    [crash] = result.crashes
+    assert crash.kind == "timeout"
+    assert "did not answer within 0.4 s" in crash.message
