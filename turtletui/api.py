@@ -10,7 +10,7 @@ from __future__ import annotations
 import struct
 import time
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -19,6 +19,7 @@ from turtletui.graph.core import NS_PER_S
 from turtletui.graph.logs import LogRecord
 from turtletui.runtime.loader import ControllerError, ControllerSpec, check_source
 from turtletui.runtime.report import CrashReport
+from turtletui.runtime.runner import run_controllers
 from turtletui.runtime.simulation import Simulation
 
 if TYPE_CHECKING:
@@ -51,6 +52,8 @@ class RunResult:
     service_calls: list[tuple[float, str, Any, Any]] = field(default_factory=list)
     poses: dict[str, list[tuple[float, float, float, float]]] = field(default_factory=dict)
     """(t, x, y, theta) per turtle at every pose, if ``keep_poses`` was asked."""
+    interrupted: bool = False
+    """Ctrl-C ended the run before its duration."""
 
     @property
     def distance(self) -> float:
@@ -67,18 +70,20 @@ class RunResult:
     def summary(self) -> str:
         """The one line ``turtletui run --headless`` ends with."""
         status = "ok" if self.ok else f"{len(self.crashes)} controller(s) failed"
+        if self.interrupted:
+            status = f"interrupted, {status}"
         return (
             f"sim time {self.sim_time:.3f} s, wall time {self.wall_time:.3f} s, "
             f"distance {self.distance:.2f} m, wall hits {self.wall_hits}: {status}"
         )
 
 
-def as_spec(controller: str | Path | ControllerSpec, trusted: bool) -> ControllerSpec:
-    """A ControllerSpec for a path (or an existing spec)."""
+def as_spec(controller: str | Path | ControllerSpec) -> ControllerSpec:
+    """A ControllerSpec for a path (sandboxed), or an existing spec as it is."""
     if isinstance(controller, ControllerSpec):
         return controller
     path = Path(controller)
-    return ControllerSpec(name=path.stem, path=path, trusted=trusted)
+    return ControllerSpec(name=path.stem, path=path)
 
 
 def run(
@@ -111,7 +116,9 @@ def run(
     if args and args[0] != "--ros-args":
         args = ["--ros-args", *args]
     parse_ros_args(args)  # fail early with a one-line RosArgsError
-    specs = [as_spec(c, trusted=sandbox is False) for c in controllers]
+    specs = [as_spec(c) for c in controllers]
+    if sandbox is not None:
+        specs = [replace(s, trusted=not sandbox) for s in specs]
     for spec in specs:
         if spec.path is not None:
             check_source(spec.path)
@@ -146,47 +153,25 @@ def run(
 
         # turtlesim's start lines were logged before the recorder existed
         recorder = Recorder(sim.graph, record, earlier_logs=logs)
-    end_ns = int(round(duration * NS_PER_S))
-    crashes: list[CrashReport] = []
     started = time.perf_counter()
-    hosts: list[Any] = []
     try:
-        inprocess = [s for s in specs if s.trusted or sandbox is False]
-        sandboxed = [s for s in specs if s not in inprocess]
-        if sandboxed:
-            from turtletui.runtime.sandbox import SandboxHost
-
-            for spec in sandboxed:
-                hosts.append(SandboxHost.start(sim, spec, ros_args=args, seed=seed, limits=limits))
-        if len(inprocess) > 1:
-            raise ControllerError(
-                "only one controller can run in-process at a time; run the others sandboxed"
-            )
-        for spec in inprocess:
-            from turtletui.runtime.inprocess import run_in_process
-
-            crash = run_in_process(sim, spec, end_ns, ros_args=args, seed=seed)
-            if crash is not None:
-                crashes.append(crash)
-                sim.graph.log("turtletui", 40, crash.summary())
-        if sim.graph.now_ns < end_ns:
-            sim.run_until(end_ns)
-        for host in hosts:
-            crash = host.close()
-            if crash is not None:
-                crashes.append(crash)
+        outcome = run_controllers(
+            sim,
+            specs,
+            int(round(duration * NS_PER_S)),
+            ros_args=args,
+            seed=seed,
+            limits=limits,
+        )
     finally:
-        for host in hosts:
-            if host.proc is not None:  # cut short by an error: leave no process behind
-                host.close()
         if recorder is not None:
-            # A run cut short by an error keeps what it recorded so far.
+            # A run cut short (Ctrl-C, an error) keeps what it recorded so far.
             recorder.close(keep=True)
     wall = time.perf_counter() - started
     turtles = {
         name: TurtleSummary(t.x, t.y, t.theta, t.distance, t.wall_hits) for name, t in sim.world.turtles.items()
     }
-    return RunResult(sim.t, wall, turtles, logs, crashes, calls, poses)
+    return RunResult(sim.t, wall, turtles, logs, outcome.crashes, calls, poses, outcome.interrupted)
 
 
 __all__ = ["ControllerError", "ControllerSpec", "RosArgsError", "RunResult", "Simulation", "run"]

@@ -78,5 +78,7 @@ def run(
             fail(crash.message)
         sys.stderr.write(crash.details() + "\n")
     sys.stdout.write(result.summary() + "\n")
+    if result.interrupted:
+        raise SystemExit(130)
     if result.crashes:
         raise SystemExit(1)

@@ -108,7 +108,7 @@ def run_in_process(
                 module = load_module(spec)
                 seed_numpy(seed)
                 entry_point(module, spec.label)()
-    except ControllerError:
+    except (ControllerError, KeyboardInterrupt):
         raise
     except SystemExit as exc:
         if exc.code not in (None, 0):
