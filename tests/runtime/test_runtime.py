@@ -120,3 +120,35 @@ def test_spin_returns_when_a_callback_shuts_down(tmp_path: Path) -> None:
         result = run([path], duration=2.0, sandbox=sandbox)
         assert result.crashes == []
         assert [r.t for r in result.logs if r.msg == "spin returned"] == [0.5]
+
+
+@pytest.mark.parametrize("sandbox", [True, False], ids=["sandboxed", "in-process"])
+def test_a_crash_is_logged_as_one_line_records_with_the_students_frames(tmp_path: Path, sandbox: bool) -> None:
+    path = write(
+        tmp_path,
+        "crasher.py",
+        """
+        import rclpy
+        from rclpy.node import Node
+
+
+        def boom():
+            return 1 / 0
+
+
+        def main():
+            rclpy.init()
+            node = Node("crasher")
+            node.create_timer(0.25, boom)
+            rclpy.spin(node)
+        """,
+    )
+    result = run([path], duration=1.0, sandbox=sandbox)
+    lines = [r.msg for r in result.logs if r.node == "turtletui"]
+    assert all("\n" not in line for line in lines)
+    assert lines[0].startswith(f"controller {path} crashed at t=0.250 s: ZeroDivisionError")
+    # The student's frames only, outermost first, as Python prints them.
+    assert f'File "{path}", line 14, in main' in lines[1]
+    assert f'File "{path}", line 7, in boom' in lines[-2]
+    assert lines[-1].strip() == "return 1 / 0"
+    assert not any("turtletui" in line for line in lines[1:])

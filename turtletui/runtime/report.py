@@ -5,7 +5,10 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
+from turtletui.graph.logs import ERROR
+
 if TYPE_CHECKING:
+    from turtletui.graph.core import Graph
     from turtletui.runtime.loader import ControllerSpec
     from turtletui.runtime.simulation import Simulation
 
@@ -44,6 +47,14 @@ _VERB = {
     "cpu": "was stopped",
     "killed": "died",
 }
+
+
+def log_crash(graph: Graph, crash: CrashReport) -> None:
+    """Log a crash as turtletui's ERROR lines: the summary, then the student's frames."""
+    graph.log("turtletui", ERROR, crash.summary())
+    for frame in crash.frames:
+        for line in frame.splitlines():
+            graph.log("turtletui", ERROR, line)
 
 
 def crash_from_exception(spec: ControllerSpec, t: float, exc: BaseException) -> CrashReport:

@@ -11,7 +11,7 @@ from typing import Any
 
 from turtletui.graph.logs import ERROR
 from turtletui.runtime.loader import ControllerError, ControllerSpec
-from turtletui.runtime.report import CrashReport
+from turtletui.runtime.report import CrashReport, log_crash
 from turtletui.runtime.simulation import Simulation
 
 
@@ -78,7 +78,7 @@ def run_controllers(
                 crash = run_in_process(sim, spec, end_ns, ros_args=ros_args, seed=seed)
                 if crash is not None:
                     outcome.crashes.append(crash)
-                    sim.graph.log("turtletui", ERROR, crash.summary())
+                    log_crash(sim.graph, crash)
             if not interrupt.requested and sim.graph.now_ns < end_ns:
                 sim.run_until(end_ns)
         except KeyboardInterrupt:

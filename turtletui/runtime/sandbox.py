@@ -26,7 +26,7 @@ from turtletui.graph.logs import ERROR, INFO
 from turtletui.interfaces import InterfaceError, from_dict, get_interface, to_dict
 from turtletui.runtime import wire
 from turtletui.runtime.loader import ControllerSpec, check_source
-from turtletui.runtime.report import CrashReport, stop_turtles
+from turtletui.runtime.report import CrashReport, log_crash, stop_turtles
 from turtletui.runtime.simulation import Simulation
 
 _PACKAGE_ROOT = str(Path(__file__).resolve().parents[2])
@@ -219,9 +219,7 @@ class SandboxHost:
         if self.crash is None:
             message = " ".join(message.splitlines())  # the summary stays one line
             self.crash = CrashReport(self.spec.label, self.sim.t, kind, message, frames or [])
-            self.graph.log("turtletui", ERROR, self.crash.summary())
-            for line in self.crash.frames:
-                self.graph.log("turtletui", ERROR, line)
+            log_crash(self.graph, self.crash)
         self._terminate()
 
     # -- RemoteHost -------------------------------------------------------------
