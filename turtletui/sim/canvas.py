@@ -8,6 +8,8 @@ Coordinates follow turtlesim: pixel = metres * 45 with the y axis flipped
 
 from __future__ import annotations
 
+from array import array
+
 import numpy as np
 
 from turtletui.sim.constants import BACKGROUND, METER_PX, PIXELS
@@ -39,7 +41,8 @@ class PenCanvas:
         self._flat = memoryview(self._packed).cast("B").cast("I")
         self._rgb = self._packed.view(np.uint8).reshape(PIXELS, PIXELS, 4)[:, :, :3]
         self._rgb.flags.writeable = False
-        self._pending: list[tuple[float, float, float, float, int, int]] = []
+        self._pending = array("d")
+        """Queued segments, six numbers each: x0, y0, x1, y1 (m), packed colour, width."""
         self.background = background
         self.version = 0
         """Increases whenever the image changes; renderers cache on it."""
@@ -56,7 +59,7 @@ class PenCanvas:
         """Fill the image with the background colour, dropping every trail."""
         if background is not None:
             self.background = background
-        self._pending.clear()
+        del self._pending[:]
         self._packed[:, :] = _pack(self.background)
         self.version += 1
 
@@ -71,8 +74,8 @@ class PenCanvas:
     ) -> None:
         """Queue a pen line from (x0, y0) to (x1, y1) metres, ``width`` pixels wide."""
         pending = self._pending
-        pending.append((x0, y0, x1, y1, color[0] | color[1] << 8 | color[2] << 16, width))
-        if len(pending) >= _FLUSH_AT:
+        pending.extend((x0, y0, x1, y1, color[0] | color[1] << 8 | color[2] << 16, width))
+        if len(pending) >= _FLUSH_AT * 6:
             self._flush()
 
     def color_at(self, x: float, y: float) -> tuple[int, int, int]:
@@ -86,8 +89,8 @@ class PenCanvas:
     def _flush(self) -> None:
         if not self._pending:
             return
-        segments = np.asarray(self._pending, dtype=np.float64)
-        self._pending.clear()
+        segments = np.frombuffer(self._pending, dtype=np.float64).reshape(-1, 6).copy()
+        del self._pending[:]
         self.version += 1
         top = _LAST_PX / METER_PX
         x0 = segments[:, 0] * METER_PX
