@@ -93,12 +93,15 @@ class World:
             old_x = turtle.x
             old_y = turtle.y
             turtle.update(now, DT, events)
-            if turtle.x != old_x or turtle.y != old_y:
-                turtle.distance += _hypot(turtle.x - old_x, turtle.y - old_y)
+            x = turtle.x
+            y = turtle.y
+            moved = x != old_x or y != old_y
+            if moved:
+                turtle.distance += _hypot(x - old_x, y - old_y)
             if sense_color:
-                turtle.color = canvas.color_at(turtle.x, turtle.y)
-            if turtle.pen_on and (turtle.x != old_x or turtle.y != old_y):
-                draw(old_x, old_y, turtle.x, turtle.y, turtle.pen_color, turtle.pen_width)
+                turtle.color = canvas.color_at(x, y)
+            if moved and turtle.pen_on:
+                draw(old_x, old_y, x, y, turtle.pen_color, turtle.pen_width)
         return True
 
     # -- requests -----------------------------------------------------------
