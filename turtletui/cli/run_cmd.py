@@ -14,8 +14,10 @@ ROS_ARGS: list[str] = []
 
 
 def run(
-    controllers: list[Path] = typer.Argument(
-        None, help="Controller files (rclpy nodes). Default: the course's Part 6 wall avoider."
+    controllers: list[str] = typer.Argument(
+        None,
+        help="Controller files (rclpy nodes) or names of controllers registered by plugins"
+        " (see turtletui plugins). Default: part6_wall_avoider, the course's Part 6 node.",
     ),
     headless: bool = typer.Option(False, "--headless", help="Run without the terminal app and print the log."),
     duration: float = typer.Option(60.0, "--duration", "-d", help="Simulated seconds to run."),
@@ -26,6 +28,7 @@ def run(
         False, "--in-process", help="Run the controllers in this process (trusted code only: no sandbox)."
     ),
     quiet: bool = typer.Option(False, "--quiet", "-q", help="Print only the summary line."),
+    plugin: list[Path] = typer.Option(None, "--plugin", help="Load a plugin file or folder (repeatable)."),
 ) -> None:
     """Run rclpy controller files against the simulated turtlesim.
 
@@ -40,13 +43,13 @@ def run(
         fail("the terminal app is not available yet in this version; add --headless to run without it")
     from turtletui.api import run as run_controllers
     from turtletui.compat.ros_args import RosArgsError
-    from turtletui.runtime.loader import ControllerError, ControllerSpec
-    from turtletui.runtime.reference import reference_path
+    from turtletui.runtime.loader import ControllerError
+    from turtletui.runtime.resolve import resolve_controllers
 
-    specs: list[Path | ControllerSpec] = list(controllers or [])
-    if not specs:
-        path = reference_path("turtle_controller.py")
-        specs = [ControllerSpec(name="turtle_controller", path=path, trusted=True)]
+    try:
+        specs = resolve_controllers(controllers or ["part6_wall_avoider"], plugins=plugin or ())
+    except ControllerError as err:
+        fail(str(err))
     if not duration > 0:
         fail(f"--duration must be a positive number of seconds, got {duration}")
 

@@ -118,12 +118,16 @@ def seed_numpy(seed: int) -> None:
 
 
 def user_frames(tb: Any, path: Path | None) -> list[str]:
-    """Traceback lines from the controller's own file (all frames if unknown)."""
+    """Traceback lines from the controller's own file; for a controller that is
+    not one file (a plugin's node factory), every frame outside turtletui."""
     import traceback
 
     frames = traceback.extract_tb(tb)
     if path is not None:
         target = str(path.resolve())
         own = [f for f in frames if f.filename == target]
-        frames = own or frames[-1:]
+    else:
+        package = str(Path(__file__).resolve().parents[1]) + "/"
+        own = [f for f in frames if not f.filename.startswith(package)]
+    frames = own or frames[-1:]
     return [f"  File \"{f.filename}\", line {f.lineno}, in {f.name}\n    {(f.line or '').strip()}" for f in frames]
