@@ -26,7 +26,7 @@ from turtletui.plugins.manager import (
     get_plugin_manager,
     plugin_infos,
 )
-from turtletui.runtime.reference import reference_dir
+from turtletui.plugins.reference import reference_dir
 
 REPO = Path(__file__).resolve().parents[2]
 EXAMPLE_PLUGIN = REPO / "plugins" / "example_plugin"

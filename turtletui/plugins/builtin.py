@@ -53,7 +53,7 @@ def lessons_dir() -> Path | None:
 
 @hookimpl
 def turtletui_register_controllers(register: RegisterController) -> None:
-    from turtletui.runtime.reference import reference_dir
+    from turtletui.plugins.reference import reference_dir
 
     folder = reference_dir()
     for name, filename, description in REFERENCE_CONTROLLERS:
