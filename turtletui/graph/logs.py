@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from typing import NamedTuple
 
 DEBUG, INFO, WARN, ERROR, FATAL = 10, 20, 30, 40, 50
 LEVEL_NAMES = {DEBUG: "DEBUG", INFO: "INFO", WARN: "WARN", ERROR: "ERROR", FATAL: "FATAL"}
@@ -10,9 +10,12 @@ LEVELS_BY_NAME = {name: level for level, name in LEVEL_NAMES.items()}
 LEVELS_BY_NAME["WARNING"] = WARN
 
 
-@dataclass(slots=True)
-class LogRecord:
-    """One log line: ``stamp_ns`` is ROS time, ``t`` simulated seconds since start."""
+class LogRecord(NamedTuple):
+    """One log line: ``stamp_ns`` is ROS time, ``t`` simulated seconds since start.
+
+    A tuple of plain values: immutable, cheap to make, and ignored by the
+    garbage collector however many a long run keeps.
+    """
 
     stamp_ns: int
     t: float
