@@ -152,3 +152,35 @@ def test_a_crash_is_logged_as_one_line_records_with_the_students_frames(tmp_path
     assert f'File "{path}", line 7, in boom' in lines[-2]
     assert lines[-1].strip() == "return 1 / 0"
     assert not any("turtletui" in line for line in lines[1:])
+
+
+@pytest.mark.parametrize("sandbox", [True, False], ids=["sandboxed", "in-process"])
+def test_a_loop_of_calls_cannot_stop_simulated_time(tmp_path: Path, sandbox: bool) -> None:
+    path = write(
+        tmp_path,
+        "looper.py",
+        """
+        import rclpy
+        from rclpy.node import Node
+        from turtlesim.srv import SetPen
+
+
+        def main():
+            rclpy.init()
+            node = Node("looper")
+            client = node.create_client(SetPen, "/turtle1/set_pen")
+            calls = 0
+            while rclpy.ok():
+                future = client.call_async(SetPen.Request(r=calls % 256))
+                rclpy.spin_until_future_complete(node, future)
+                calls += 1
+            node.get_logger().info(f"calls: {calls}")
+        """,
+    )
+    result = run([path], duration=0.5, sandbox=sandbox, keep_calls=False)
+    assert result.sim_time == pytest.approx(0.5)
+    [line] = [r.msg for r in result.logs if r.node == "looper"]
+    calls = int(line.split()[1])
+    ticks = 0.5 / 0.016
+    # At most 64 at each instant: t=0, every 16 ms tick, and the end.
+    assert ticks * 32 < calls <= (ticks + 2) * 64

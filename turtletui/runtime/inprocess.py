@@ -24,7 +24,7 @@ from turtletui.runtime.loader import (
     seed_numpy,
 )
 from turtletui.runtime.report import CrashReport, crash_from_exception, stop_turtles
-from turtletui.runtime.simulation import Simulation
+from turtletui.runtime.simulation import MAX_ROUNDS_PER_INSTANT, Simulation
 from turtletui.runtime.virtual_time import simulated_sleep
 
 
@@ -37,6 +37,8 @@ class InProcessHost(CallbackTracking):
         self.owner = owner
         self.end_ns = end_ns
         self._ended = False
+        self._instant = -1
+        self._rounds = 0
 
     @property
     def running(self) -> bool:
@@ -66,6 +68,15 @@ class InProcessHost(CallbackTracking):
         return outcome == "own" or not self._ended
 
     def spin_until(self, done: Callable[[], bool], timeout_ns: int | None, *, callbacks: bool = True) -> bool:
+        now = self.graph.now_ns
+        if now != self._instant:
+            self._instant, self._rounds = now, 0
+        self._rounds += 1
+        if self._rounds > MAX_ROUNDS_PER_INSTANT:
+            # A loop of waits that each finish at once (calls answered in the
+            # same instant) must not stop the world: let time reach its next event.
+            due = self.graph.next_due()
+            self.sleep_until(self.end_ns if due is None else due)
         limit = self._limit(timeout_ns)
         while not done():
             if self._ended or self.graph.now_ns >= limit:

@@ -27,15 +27,13 @@ from turtletui.interfaces import InterfaceError, from_dict, get_interface, to_di
 from turtletui.runtime import wire
 from turtletui.runtime.loader import ControllerSpec, check_source
 from turtletui.runtime.report import CrashReport, log_crash, stop_turtles
-from turtletui.runtime.simulation import Simulation
+from turtletui.runtime.simulation import MAX_ROUNDS_PER_INSTANT, Simulation
 
 _PACKAGE_ROOT = str(Path(__file__).resolve().parents[2])
 _BOOTSTRAP = (
     "import sys; sys.path.insert(0, {root!r}); "
     "from turtletui.runtime.child import main; main()"
 )
-MAX_ROUNDS_PER_INSTANT = 64
-"""Exchanges allowed at one simulated instant before the child must wait for time."""
 
 
 @dataclass

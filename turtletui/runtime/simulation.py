@@ -15,8 +15,10 @@ from turtletui.sim import World
 
 _real_sleep = time.sleep  # controllers may get a simulated time.sleep
 
-MAX_EXCHANGE_ROUNDS = 1000
-"""Message ping-pong rounds allowed at one instant before time is forced on."""
+MAX_ROUNDS_PER_INSTANT = 64
+"""Waits a controller may finish at one simulated instant before its next wait
+lets time move on: a real call takes wall time, so a loop of calls cannot
+stop the world."""
 
 
 class RemoteHost(Protocol):
