@@ -426,7 +426,20 @@ def _build(cls: type) -> None:
             ns[f'_d{i}'] = spec.default_factory()
             params.append(f'{spec.name}=_M, ')
             default_body.append(f'    _o.{spec.slot} = _d{i}()')
-        body.append(f'    self.{spec.slot} = {_init_expr(spec, i)}')
+        inner = spec.msg_cls._FIELDS if spec.array == _SCALAR and spec.kind == 'msg' else None
+        if inner is not None and all(f.array == _SCALAR and f.kind != 'msg' for f in inner):
+            # A flat nested message (Vector3 in Twist) defaults inline: no call.
+            n = spec.name
+            body.append(f'    if {n} is _M:')
+            body.append(f'        _v = _new(_T{i})')
+            for j, field in enumerate(inner):
+                ns[f'_k{i}_{j}'] = field.default
+                body.append(f'        _v.{field.slot} = _k{i}_{j}')
+            body.append(f'        self.{spec.slot} = _v')
+            body.append('    else:')
+            body.append(f'        self.{spec.slot} = {n} if {n}.__class__ is _T{i} else _c{i}({n})')
+        else:
+            body.append(f'    self.{spec.slot} = {_init_expr(spec, i)}')
     src = [
         f"def __init__(self, *, {''.join(params)}check_fields=None, **_kw):",
         '    if _kw:',
