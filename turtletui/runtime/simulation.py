@@ -8,12 +8,16 @@ from collections.abc import Callable, Sequence
 from typing import Protocol
 
 from turtletui.graph.core import LOCKSTEP_EPOCH_NS, NS_PER_S, Graph
-from turtletui.graph.logs import LogRecord
+from turtletui.graph.introspection import dangling_endpoints
+from turtletui.graph.logs import WARN, LogRecord
 from turtletui.graph.turtlesim_node import TurtlesimNode
 from turtletui.interfaces import interface_name
 from turtletui.sim import World
 
 _real_sleep = time.sleep  # controllers may get a simulated time.sleep
+
+TOPIC_CHECK_AFTER_NS = NS_PER_S
+"""When to warn about controller topics nothing is connected to (likely typos)."""
 
 MAX_ROUNDS_PER_INSTANT = 64
 """Waits a controller may finish at one simulated instant before its next wait
@@ -54,6 +58,9 @@ class Simulation:
         self.world = world if world is not None else World(spawn_turtle1=False)
         self.turtlesim = TurtlesimNode(self.graph, self.world)
         self.remotes: list[RemoteHost] = []
+        self._typo_check = self.graph.add_timer(
+            self.turtlesim.node, TOPIC_CHECK_AFTER_NS, self._warn_dangling_topics
+        )
         self.realtime = realtime
         self.speed = speed
         """Simulated seconds per wall second in real-time mode."""
@@ -64,6 +71,11 @@ class Simulation:
     def t(self) -> float:
         """Simulated seconds since start."""
         return self.graph.now_ns / NS_PER_S
+
+    def _warn_dangling_topics(self) -> None:
+        self._typo_check.canceled = True
+        for warning in dangling_endpoints(self.graph):
+            self.graph.log("turtletui", WARN, warning)
 
     def set_speed(self, speed: float) -> None:
         """Change the real-time speed factor without a jump in time."""

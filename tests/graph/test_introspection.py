@@ -1,0 +1,113 @@
+"""The introspection API: what ros2 node/topic/service/action and rqt_graph would show."""
+
+import textwrap
+from pathlib import Path
+
+import pytest
+
+from turtletui.api import run
+from turtletui.graph.introspection import GraphSnapshot, snapshot
+
+PART6 = Path(__file__).resolve().parents[2] / "plugins" / "reference" / "turtle_controller.py"
+
+
+def snapshot_at(t: float, controllers: list, **kwargs) -> GraphSnapshot:
+    """Run the controllers and take a snapshot of the graph at simulated time t."""
+    taken: list[GraphSnapshot] = []
+
+    def setup(sim):
+        timer = sim.graph.add_timer(sim.turtlesim.node, int(t * 1e9), lambda: (
+            taken.append(snapshot(sim.graph)), setattr(timer, "canceled", True)))
+
+    run(controllers, duration=t + 0.1, setup=setup, **kwargs)
+    assert len(taken) == 1
+    return taken[0]
+
+
+@pytest.mark.parametrize("sandbox", [True, False], ids=["sandboxed", "in-process"])
+def test_the_part6_graph_as_rqt_graph_draws_it(sandbox: bool) -> None:
+    graph = snapshot_at(1.0, [PART6], sandbox=sandbox)
+    assert [n.name for n in graph.nodes] == ["/turtle_controller", "/turtlesim"]
+    for arrow in [
+        ("/turtlesim", "/turtle1/pose"),
+        ("/turtle1/pose", "/turtle_controller"),
+        ("/turtle_controller", "/turtle1/cmd_vel"),
+        ("/turtle1/cmd_vel", "/turtlesim"),
+    ]:
+        assert arrow in graph.edges()
+    pose = graph.topic("/turtle1/pose")
+    assert pose.type == "turtlesim/msg/Pose"
+    assert pose.publishers == ("/turtlesim",) and pose.subscribers == ("/turtle_controller",)
+    assert pose.rate_hz == pytest.approx(62.5, rel=0.01)
+    assert graph.topic("/turtle1/cmd_vel").rate_hz == pytest.approx(62.5, rel=0.01)
+    assert graph.topic("/turtle1/color_sensor").subscribers == ()
+
+
+def test_services_actions_and_parameters_of_turtlesim() -> None:
+    graph = snapshot_at(0.5, [PART6], sandbox=False)
+    services = {s.name: s for s in graph.services}
+    assert set(services) >= {"/clear", "/reset", "/spawn", "/kill", "/turtle1/set_pen",
+                             "/turtle1/teleport_absolute", "/turtle1/teleport_relative"}
+    assert services["/spawn"].type == "turtlesim/srv/Spawn" and services["/spawn"].server == "/turtlesim"
+    [action] = graph.actions
+    assert (action.name, action.type, action.server) == (
+        "/turtle1/rotate_absolute", "turtlesim/action/RotateAbsolute", "/turtlesim")
+    turtlesim = graph.node("turtlesim")
+    assert dict(turtlesim.parameters) == {
+        "background_r": 69, "background_g": 86, "background_b": 255, "holonomic": False}
+    assert ("/turtle1/pose", "turtlesim/msg/Pose") in turtlesim.publishers
+    assert ("/turtle1/cmd_vel", "geometry_msgs/msg/Twist") in turtlesim.subscribers
+    with pytest.raises(KeyError, match="did you mean /turtle1/pose"):
+        graph.topic("/turtle1/pos")
+
+
+def test_a_sandboxed_nodes_parameters_and_clients_are_visible(tmp_path: Path) -> None:
+    path = tmp_path / "params.py"
+    path.write_text(textwrap.dedent("""
+        import rclpy
+        from rclpy.node import Node
+        from turtlesim.srv import SetPen
+
+
+        def main():
+            rclpy.init()
+            node = Node("tuned")
+            node.declare_parameter("speed", 1.5)
+            node.create_client(SetPen, "/turtle1/set_pen")
+            rclpy.spin(node)
+    """))
+    graph = snapshot_at(0.5, [path], ros_args=["-p", "speed:=2.5"])
+    node = graph.node("/tuned")
+    assert dict(node.parameters) == {"speed": 2.5}
+    assert node.service_clients == (("/turtle1/set_pen", "turtlesim/srv/SetPen"),)
+    assert {s.name: s.clients for s in graph.services}["/turtle1/set_pen"] == ("/tuned",)
+
+
+@pytest.mark.parametrize("sandbox", [True, False], ids=["sandboxed", "in-process"])
+def test_topic_name_typos_are_pointed_out_after_a_second(tmp_path: Path, sandbox: bool) -> None:
+    path = tmp_path / "typo.py"
+    path.write_text(textwrap.dedent("""
+        import rclpy
+        from rclpy.node import Node
+        from geometry_msgs.msg import Twist
+        from turtlesim.msg import Pose
+
+
+        class Typo(Node):
+            def __init__(self):
+                super().__init__("typo")
+                self.create_publisher(Twist, "/turtle1/cmd_vell", 10)
+                self.create_publisher(Twist, "/debug/twist", 10)
+                self.create_subscription(Pose, "/turtle1/pos", lambda msg: None, 10)
+    """))
+    result = run([path], duration=2.0, sandbox=sandbox)
+    warnings = [(r.t, r.msg) for r in result.logs if r.node == "turtletui"]
+    assert warnings == [
+        (1.0, "/typo publishes on /turtle1/cmd_vell, but nothing subscribes to it (did you mean /turtle1/cmd_vel?)"),
+        (1.0, "/typo subscribes to /turtle1/pos, but nothing publishes it (did you mean /turtle1/pose?)"),
+    ]
+
+
+def test_a_well_connected_controller_gets_no_warning() -> None:
+    result = run([PART6], duration=2.0, sandbox=False)
+    assert [r for r in result.logs if r.node == "turtletui"] == []

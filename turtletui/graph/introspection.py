@@ -1,0 +1,191 @@
+"""What ``ros2 node/topic/service/action list|info`` and rqt_graph show, as data.
+
+``snapshot(graph)`` copies the graph's state into plain frozen records that a
+view, the grader or a test can keep and compare; nothing in them refers back
+to live endpoints.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from difflib import get_close_matches
+from typing import Any
+
+from turtletui.graph.core import Graph
+
+
+@dataclass(frozen=True)
+class NodeInfo:
+    """A node and its endpoints (``ros2 node info``); names are fully qualified."""
+
+    name: str
+    publishers: tuple[tuple[str, str], ...]
+    """(topic, type) pairs."""
+    subscribers: tuple[tuple[str, str], ...]
+    service_servers: tuple[tuple[str, str], ...]
+    service_clients: tuple[tuple[str, str], ...]
+    action_servers: tuple[tuple[str, str], ...]
+    action_clients: tuple[tuple[str, str], ...]
+    parameters: tuple[tuple[str, Any], ...]
+
+
+@dataclass(frozen=True)
+class TopicInfo:
+    """A topic (``ros2 topic info`` and ``hz``): its type, endpoints and rate."""
+
+    name: str
+    type: str
+    publishers: tuple[str, ...]
+    """Fully qualified names of the publishing nodes (once per publisher)."""
+    subscribers: tuple[str, ...]
+    rate_hz: float
+    """Messages per simulated second over the last 64 (0 when idle for 2 s)."""
+    count: int
+    """Messages published since the start."""
+
+
+@dataclass(frozen=True)
+class ServiceInfo:
+    name: str
+    type: str
+    server: str
+    clients: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class ActionInfo:
+    name: str
+    type: str
+    server: str
+    clients: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class GraphSnapshot:
+    """The whole graph at simulated time ``t``; every list sorted by name."""
+
+    t: float
+    nodes: tuple[NodeInfo, ...]
+    topics: tuple[TopicInfo, ...]
+    services: tuple[ServiceInfo, ...]
+    actions: tuple[ActionInfo, ...]
+
+    def node(self, name: str) -> NodeInfo:
+        """The node called ``name`` (with or without its leading slash)."""
+        wanted = name if name.startswith("/") else f"/{name}"
+        for node in self.nodes:
+            if node.name == wanted:
+                return node
+        raise KeyError(_unknown("node", name, [n.name for n in self.nodes]))
+
+    def topic(self, name: str) -> TopicInfo:
+        for topic in self.topics:
+            if topic.name == name:
+                return topic
+        raise KeyError(_unknown("topic", name, [t.name for t in self.topics]))
+
+    def edges(self) -> tuple[tuple[str, str], ...]:
+        """rqt_graph's arrows: node -> topic for publishers, topic -> node for
+        subscribers, e.g. ('/turtlesim', '/turtle1/pose')."""
+        arrows = set()
+        for topic in self.topics:
+            arrows.update((node, topic.name) for node in topic.publishers)
+            arrows.update((topic.name, node) for node in topic.subscribers)
+        return tuple(sorted(arrows))
+
+
+def _unknown(kind: str, name: str, known: list[str]) -> str:
+    close = get_close_matches(name, known, n=3)
+    hint = f" (did you mean {', '.join(close)}?)" if close else ""
+    return f"unknown {kind} {name}{hint}"
+
+
+def snapshot(graph: Graph) -> GraphSnapshot:
+    """Copy what the graph holds now into a GraphSnapshot."""
+    now = graph.now_ns
+    per_node: dict[int, dict[str, list]] = {
+        id(node): {key: [] for key in ("pub", "sub", "srv", "cli", "asrv", "acli")} for node in graph.nodes
+    }
+
+    def add(node: Any, key: str, entry: tuple[str, str]) -> None:
+        if id(node) in per_node:
+            per_node[id(node)][key].append(entry)
+
+    topics = []
+    for name, topic in graph.topics.items():
+        if not topic.publishers and not topic.subscriptions:
+            continue
+        for pub in topic.publishers:
+            add(pub.node, "pub", (name, topic.type_name))
+        for sub in topic.subscriptions:
+            add(sub.node, "sub", (name, topic.type_name))
+        topics.append(
+            TopicInfo(
+                name,
+                topic.type_name,
+                tuple(sorted(p.node.fqn for p in topic.publishers)),
+                tuple(sorted(s.node.fqn for s in topic.subscriptions)),
+                topic.rate(now),
+                topic.count,
+            )
+        )
+    services = []
+    for name, service in graph.services.items():
+        add(service.node, "srv", (name, service.type_name))
+        clients = tuple(sorted(c.node.fqn for c in graph.clients if c.name == name))
+        services.append(ServiceInfo(name, service.type_name, service.node.fqn, clients))
+    for client in graph.clients:
+        add(client.node, "cli", (client.name, client.type_name))
+    actions = []
+    for name, server in graph.action_servers.items():
+        add(server.node, "asrv", (name, server.type_name))
+        clients = tuple(sorted(c.node.fqn for c in graph.action_clients if c.name == name))
+        actions.append(ActionInfo(name, server.type_name, server.node.fqn, clients))
+    for client in graph.action_clients:
+        add(client.node, "acli", (client.name, client.type_name))
+    nodes = []
+    for node in graph.nodes:
+        entries = per_node[id(node)]
+        nodes.append(
+            NodeInfo(
+                node.fqn,
+                *(tuple(sorted(set(entries[key]))) for key in ("pub", "sub", "srv", "cli", "asrv", "acli")),
+                tuple(sorted(node.parameters.items())),
+            )
+        )
+    return GraphSnapshot(
+        now / 1e9,
+        tuple(sorted(nodes, key=lambda n: n.name)),
+        tuple(sorted(topics, key=lambda t: t.name)),
+        tuple(sorted(services, key=lambda s: s.name)),
+        tuple(sorted(actions, key=lambda a: a.name)),
+    )
+
+
+def dangling_endpoints(graph: Graph, owner_prefix: str = "") -> list[str]:
+    """One warning per controller subscription that nothing publishes to and
+    per controller publisher that nothing listens to, with the closest
+    existing topic names: the usual sign of a typo in a topic name."""
+    warnings = []
+    live = {name for name, t in graph.topics.items() if t.publishers or t.subscriptions}
+    for name, topic in sorted(graph.topics.items()):
+        for sub in topic.subscriptions:
+            if sub.owner.startswith(owner_prefix) and sub.owner != "sim" and not topic.publishers:
+                warnings.append(_dangling(sub.node.fqn, "subscribes to", name, "publishes", live))
+        for pub in topic.publishers:
+            if pub.owner.startswith(owner_prefix) and pub.owner != "sim" and not topic.subscriptions:
+                # Publishing to no one is normal (a debug topic): say so only
+                # when a topic of a very similar name exists.
+                if _close(name, live):
+                    warnings.append(_dangling(pub.node.fqn, "publishes on", name, "subscribes to", live))
+    return sorted(set(warnings))
+
+
+def _close(topic: str, live: set[str]) -> list[str]:
+    return get_close_matches(topic, sorted(live - {topic}), n=2, cutoff=0.75)
+
+
+def _dangling(node: str, verb: str, topic: str, other: str, live: set[str]) -> str:
+    close = _close(topic, live)
+    hint = f" (did you mean {' or '.join(close)}?)" if close else ""
+    return f"{node} {verb} {topic}, but nothing {other} it{hint}"
