@@ -184,3 +184,57 @@ def test_a_loop_of_calls_cannot_stop_simulated_time(tmp_path: Path, sandbox: boo
     ticks = 0.5 / 0.016
     # At most 64 at each instant: t=0, every 16 ms tick, and the end.
     assert ticks * 32 < calls <= (ticks + 2) * 64
+
+
+SERVER = """
+import rclpy
+from rclpy.node import Node
+from std_srvs.srv import SetBool
+
+
+class Switch(Node):
+    def __init__(self):
+        super().__init__("switch")
+        self.create_service(SetBool, "/switch", self.on_request)
+
+    def on_request(self, request, response):
+        response.success = True
+        response.message = "on" if request.data else "off"
+        return response
+"""
+
+CLIENT = """
+import rclpy
+from rclpy.node import Node
+from std_srvs.srv import SetBool
+
+
+def main():
+    rclpy.init()
+    node = Node("caller")
+    client = node.create_client(SetBool, "/switch")
+    if not client.wait_for_service(timeout_sec=1.0):
+        node.get_logger().error("no /switch")
+        return
+    for data in (True, False):
+        future = client.call_async(SetBool.Request(data=data))
+        rclpy.spin_until_future_complete(node, future)
+        node.get_logger().info(f"{future.result().success} {future.result().message}")
+    rclpy.spin(node)
+"""
+
+
+@pytest.mark.parametrize("server_in_process", [False, True], ids=["both-sandboxed", "server-in-process"])
+def test_a_controllers_service_answers_another_controller(tmp_path: Path, server_in_process: bool) -> None:
+    from turtletui.runtime.loader import ControllerSpec
+
+    server = write(tmp_path, "switch.py", SERVER)
+    client = write(tmp_path, "caller.py", CLIENT)
+    server_spec = ControllerSpec("switch", path=server, trusted=server_in_process)
+    result = run([server_spec, client], duration=1.0)
+    assert result.crashes == []
+    assert [r.msg for r in result.logs if r.node == "caller"] == ["True on", "True off"]
+    assert [(name, req.data, resp.message) for _, name, req, resp in result.service_calls] == [
+        ("/switch", True, "on"),
+        ("/switch", False, "off"),
+    ]

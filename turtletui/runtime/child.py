@@ -46,6 +46,7 @@ class ChildGraph(Graph):
         self._ids = itertools.count(1)
         self.remote_services: set[str] = set()
         self.remote_actions: set[str] = set()
+        self.remote_action_types: dict[str, Any] = {}
         self._subs: dict[int, Subscription] = {}
         self._calls: dict[int, Callable[[Any], None]] = {}
         self._goals: dict[int, tuple] = {}
@@ -204,8 +205,6 @@ class ChildGraph(Graph):
         if "actions" in message:
             self.remote_actions = set(message["actions"])
             self.remote_action_types = {name: get_interface(t) for name, t in message["action_types"].items()}
-
-    remote_action_types: dict[str, Any] = {}
 
 
 class ChildHost(CallbackTracking):

@@ -10,6 +10,7 @@ against its type before it enters the simulation.
 
 from __future__ import annotations
 
+import itertools
 import json
 import os
 import select
@@ -71,6 +72,7 @@ class SandboxHost:
         self.wake_ns: int | None = None
         self.crash: CrashReport | None = None
         self.finished = False
+        self._request_ids = itertools.count(1)
         self._awaiting: float | None = None
         """Real time only: when the unanswered message went out (monotonic s)."""
         self._inbox: list = []
@@ -608,7 +610,7 @@ class SandboxHost:
             srv_type = get_interface(type_name)
 
             def handler(request: Any, respond: Any, name: str = str(name), srv_type: Any = srv_type) -> None:
-                req_id = len(self._service_calls) + 1 + id(request) % 1000003
+                req_id = next(self._request_ids)
                 self._service_calls[req_id] = lambda fields: respond(from_dict(srv_type.Response, fields))
                 self._requests.append([req_id, name, to_dict(request)])
 
