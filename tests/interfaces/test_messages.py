@@ -11,6 +11,7 @@ import copy
 import json
 import math
 import pickle
+import re
 import subprocess
 import sys
 import time
@@ -678,3 +679,42 @@ def test_hot_paths_are_fast():
     trusted_us = (time.perf_counter() - start) / n * 1e6
     # measured ~0.4 us and ~0.13 us; bounds leave room for slow CI machines
     assert twist_us < 20 and trusted_us < 10
+
+
+# -- to_values / from_values: the sandbox's positional wire format ------------------------------
+
+def test_values_round_trip_for_every_registered_message() -> None:
+    from turtletui.interfaces import from_values, to_values, trusted_from_values
+
+    for name in I.all_interfaces():
+        cls = I.get_interface(name)
+        if not issubclass(cls, I.Message):
+            continue
+        msg = cls()
+        values = to_values(msg)
+        assert from_values(cls, values) == msg, name
+        assert trusted_from_values(cls)(values) == msg, name
+
+
+def test_values_are_positional_and_nested() -> None:
+    from turtletui.interfaces import from_values, to_values
+
+    twist = Twist(linear=Vector3(x=5.0), angular=Vector3(z=1.5))
+    assert to_values(twist) == [[5.0, 0.0, 0.0], [0.0, 0.0, 1.5]]
+    assert from_values("geometry_msgs/msg/Twist", [[5.0, 0.0, 0.0], [0.0, 0.0, 1.5]]) == twist
+
+
+@pytest.mark.parametrize(
+    ("values", "message"),
+    [
+        ([[5.0, "a", 0.0], [0.0, 0.0, 0.0]], "field 'linear.y' must be a float, got str 'a'"),
+        ([[5.0]], "the message must be a list of 2 field values"),
+        ({"linear": {}}, "message values must be a list"),
+        ([[5.0, 0.0, 0.0], {"x": 1.0}], "field 'angular' must be a list of the geometry_msgs/msg/Vector3 field values"),
+    ],
+)
+def test_from_values_names_what_is_wrong(values, message) -> None:
+    from turtletui.interfaces import from_values
+
+    with pytest.raises(I.InterfaceError, match=re.escape(message)):
+        from_values(Twist, values)

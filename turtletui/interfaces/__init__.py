@@ -66,10 +66,13 @@ __all__ = [
     'all_interfaces',
     'definition_text',
     'from_dict',
+    'from_values',
     'get_interface',
     'interface_name',
     'ros_module_members',
     'to_dict',
+    'to_values',
+    'trusted_from_values',
 ]
 
 _KINDS = ('msg', 'srv', 'action')
@@ -415,12 +418,142 @@ def from_dict(cls: type | str, data: Any) -> Message:
     try:
         return _from_dict(target, data)
     except _Bad as bad:
-        path = _render_path(bad.path)
-        if bad.unknown_in is not None:
-            fields = [s.name for s in bad.unknown_in._FIELDS]
-            has = f"has fields: {', '.join(fields)}" if fields else 'has no fields'
-            text = (f"{root}: unknown field '{path}' "
-                    f'({bad.unknown_in._TYPE_NAME} {has})')
-        else:
-            text = f"{root}: field '{path}' must be {bad.what}, got {_describe(bad.value)}"
-        raise InterfaceError(text, type_name=root, path=path) from None
+        raise _interface_error(root, bad) from None
+
+
+def _interface_error(root: str, bad: _Bad) -> InterfaceError:
+    path = _render_path(bad.path)
+    if bad.unknown_in is not None:
+        fields = [s.name for s in bad.unknown_in._FIELDS]
+        has = f"has fields: {', '.join(fields)}" if fields else 'has no fields'
+        text = (f"{root}: unknown field '{path}' "
+                f'({bad.unknown_in._TYPE_NAME} {has})')
+    elif path:
+        text = f"{root}: field '{path}' must be {bad.what}, got {_describe(bad.value)}"
+    else:
+        text = f"{root}: the message must be {bad.what}, got {_describe(bad.value)}"
+    return InterfaceError(text, type_name=root, path=path)
+
+
+# --------------------------------------------------------------------------
+# to_values / from_values: the same, positionally (the sandbox's wire format)
+# --------------------------------------------------------------------------
+
+def _values_of(spec: FieldSpec) -> Callable[[Any], Any]:
+    if spec.kind != 'msg':
+        return _to_plain(spec)
+    if spec.array == _SCALAR:
+        return _to_values
+    return lambda value: [_to_values(item) for item in value]
+
+
+def _to_values_plan(cls: type) -> tuple:
+    plan = cls.__dict__.get('_TO_VALUES_PLAN')
+    if plan is None:
+        plan = tuple((s.get, _values_of(s)) for s in cls._FIELDS)
+        cls._TO_VALUES_PLAN = plan
+    return plan
+
+
+def _to_values(msg: Message) -> list[Any]:
+    return [conv(get(msg)) for get, conv in _to_values_plan(type(msg))]
+
+
+def to_values(msg: Message) -> list[Any]:
+    """Message -> its field values in field order, nested messages as lists:
+    ``Twist`` gives ``[[5.0, 0.0, 0.0], [0.0, 0.0, 1.5]]``. Compact for a wire."""
+    if not isinstance(msg, Message):
+        raise InterfaceError(f'to_values() needs a message instance, got {_describe(msg)}')
+    return _to_values(msg)
+
+
+def _values_converter(spec: FieldSpec) -> Callable[[Any], Any]:
+    if spec.kind != 'msg':
+        return _from_plain(spec)
+    msg_cls = spec.msg_cls
+
+    def one(value: Any) -> Message:
+        if value.__class__ is not list:
+            raise _Bad(f'a list of the {msg_cls._TYPE_NAME} field values', value)
+        return _from_values(msg_cls, value)
+
+    if spec.array == _SCALAR:
+        return one
+    arr, size = spec.array, spec.size
+
+    def seq(value: Any) -> list:
+        if value.__class__ is not list or (arr == _FIXED and len(value) != size) or (
+            size is not None and len(value) > size
+        ):
+            raise _Bad('a list of messages' + (f' ({size} at most)' if size else ''), value)
+        out = []
+        for i, item in enumerate(value):
+            try:
+                out.append(one(item))
+            except _Bad as bad:
+                bad.path.insert(0, f'[{i}]')
+                raise
+        return out
+    return seq
+
+
+def _from_values_plan(cls: type) -> tuple:
+    plan = cls.__dict__.get('_FROM_VALUES_PLAN')
+    if plan is None:
+        plan = tuple((s.name, s.set, _values_converter(s)) for s in cls._FIELDS)
+        cls._FROM_VALUES_PLAN = plan
+    return plan
+
+
+def _from_values(cls: type, values: list) -> Message:
+    plan = _from_values_plan(cls)
+    if len(values) != len(plan):
+        raise _Bad(f'a list of {len(plan)} field values', values)
+    msg = cls._make_default()
+    for (name, set_, conv), value in zip(plan, values, strict=True):
+        try:
+            set_(msg, conv(value))
+        except _Bad as bad:
+            bad.path.insert(0, name)
+            raise
+    return msg
+
+
+def from_values(cls: type | str, values: Any) -> Message:
+    """Build a message from its field values in field order (see to_values),
+    validating everything exactly as from_dict does."""
+    target = get_interface(cls)
+    root = target._TYPE_NAME
+    if values.__class__ is not list:
+        raise InterfaceError(f'{root}: message values must be a list, got {_describe(values)}',
+                             type_name=root)
+    try:
+        return _from_values(target, values)
+    except _Bad as bad:
+        raise _interface_error(root, bad) from None
+
+
+def trusted_from_values(cls: type) -> Callable[[list], Message]:
+    """A fast builder of ``cls`` messages from to_values output that the caller
+    trusts (no checks for flat fields), e.g. what the simulator sends its own
+    sandbox child. Falls back to the checked path for arrays and bytes."""
+    builder = cls.__dict__.get('_TRUSTED_FROM_VALUES')
+    if builder is not None:
+        return builder
+    fields = cls._FIELDS
+    simple = all(f.array == _SCALAR and f.kind not in ('msg', 'byte') for f in fields)
+    nested = all(f.array == _SCALAR and f.kind != 'byte' for f in fields)
+    trusted = cls._trusted
+    if simple:
+        def builder(values: list) -> Message:
+            return trusted(*values)
+    elif nested:
+        parts = [trusted_from_values(f.msg_cls) if f.kind == 'msg' else None for f in fields]
+
+        def builder(values: list) -> Message:
+            return trusted(*[v if p is None else p(v) for p, v in zip(parts, values, strict=True)])
+    else:
+        def builder(values: list) -> Message:
+            return from_values(cls, values)
+    cls._TRUSTED_FROM_VALUES = builder
+    return builder

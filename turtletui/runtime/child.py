@@ -21,7 +21,7 @@ from typing import Any
 
 from turtletui.graph.core import Graph, NodeRecord, Publisher, Subscription, Topic
 from turtletui.graph.logs import LogRecord
-from turtletui.interfaces import from_dict, get_interface, interface_name, to_dict
+from turtletui.interfaces import get_interface, interface_name, to_values, trusted_from_values
 from turtletui.runtime import wire
 from turtletui.runtime.host import CallbackTracking
 
@@ -113,7 +113,7 @@ class ChildGraph(Graph):
     # -- traffic ------------------------------------------------------------------
     def publish(self, topic: Topic, msg: Any, source: str | None = None) -> None:
         super().publish(topic, msg, source)
-        self.out["pub"].append([topic.name, to_dict(msg)])
+        self.out["pub"].append([topic.name, to_values(msg)])
 
     def has_service(self, name: str) -> bool:
         return name in self.services or name in self.remote_services
@@ -129,7 +129,7 @@ class ChildGraph(Graph):
             return  # as in ROS, a call to a missing service is never answered
         call_id = next(self._ids)
         self._calls[call_id] = on_response
-        self.out["call"].append([call_id, name, to_dict(request)])
+        self.out["call"].append([call_id, name, to_values(request)])
 
     def send_goal(self, name, goal, owner, on_accepted, on_feedback, on_result) -> None:
         if name in self.action_servers:
@@ -140,7 +140,7 @@ class ChildGraph(Graph):
         goal_id = next(self._ids)
         handle = _RemoteGoal(goal_id)
         self._goals[goal_id] = (handle, on_accepted, on_feedback, on_result, name)
-        self.out["goal"].append([goal_id, name, to_dict(goal)])
+        self.out["goal"].append([goal_id, name, to_values(goal)])
 
     def cancel_goal(self, handle: Any) -> None:
         if isinstance(handle, _RemoteGoal):
@@ -165,14 +165,14 @@ class ChildGraph(Graph):
             sub = self._subs.get(sub_id)
             if sub is None:
                 continue
-            sub.queue.append(from_dict(sub.topic.msg_type, fields))
+            sub.queue.append(trusted_from_values(sub.topic.msg_type)(fields))
             if not sub.pending:
                 sub.pending = True
                 ready.append(sub.ready_item)
         for call_id, type_name, fields in message.get("responses", ()):
             on_response = self._calls.pop(call_id, None)
             if on_response is not None:
-                response = from_dict(get_interface(type_name), fields)
+                response = trusted_from_values(get_interface(type_name))(fields)
                 ready.append((OWNER, lambda cb=on_response, r=response: cb(r)))
         for goal_id, kind, payload in message.get("goals", ()):
             entry = self._goals.get(goal_id)
@@ -183,21 +183,21 @@ class ChildGraph(Graph):
             if kind == "accepted":
                 ready.append((OWNER, lambda cb=on_accepted, h=handle: cb(h)))
             elif kind == "feedback":
-                feedback = from_dict(action.Feedback, payload)
+                feedback = trusted_from_values(action.Feedback)(payload)
                 ready.append((OWNER, lambda cb=on_feedback, f=feedback: cb(f)))
             else:
                 self._goals.pop(goal_id, None)
                 handle.status = payload[0]
-                result = from_dict(action.Result, payload[1])
+                result = trusted_from_values(action.Result)(payload[1])
                 ready.append((OWNER, lambda cb=on_result, s=payload[0], r=result: cb(s, r)))
         for req_id, name, fields in message.get("requests", ()):
             service = self.services.get(name)
             if service is None:
                 continue
-            request = from_dict(service.srv_type.Request, fields)
+            request = trusted_from_values(service.srv_type.Request)(fields)
 
             def respond(response: Any, req_id: int = req_id) -> None:
-                self.out["resp"].append([req_id, to_dict(response)])
+                self.out["resp"].append([req_id, to_values(response)])
 
             ready.append((OWNER, lambda s=service, q=request, r=respond: s.handler(q, r)))
         if "services" in message:

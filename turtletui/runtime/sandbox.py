@@ -24,7 +24,7 @@ from typing import Any
 
 from turtletui.graph.core import GraphError, NodeRecord
 from turtletui.graph.logs import ERROR, INFO
-from turtletui.interfaces import InterfaceError, from_dict, get_interface, to_dict
+from turtletui.interfaces import InterfaceError, from_values, get_interface, to_values
 from turtletui.runtime import wire
 from turtletui.runtime.loader import ControllerSpec, check_source
 from turtletui.runtime.report import CrashReport, log_crash, stop_turtles
@@ -513,33 +513,33 @@ class SandboxHost:
             topic = graph.topics.get(name)
             if topic is None:
                 raise GraphError(f"published on undeclared topic {name}")
-            msg = from_dict(topic.msg_type, fields)
+            msg = from_values(topic.msg_type, fields)
             graph.publish(topic, msg, source=self.owner)
         for call_id, name, fields in reply.get("call", ()):
             service = graph.services.get(name)
             if service is None:
                 continue
-            request = from_dict(service.srv_type.Request, fields)
+            request = from_values(service.srv_type.Request, fields)
             response_type = f"{service.type_name}_Response"
             graph.call(
                 name,
                 request,
-                lambda response, cid=call_id, rt=response_type: self._responses.append([cid, rt, to_dict(response)]),
+                lambda response, cid=call_id, rt=response_type: self._responses.append([cid, rt, to_values(response)]),
                 self.owner,
             )
         for goal_id, name, fields in reply.get("goal", ()):
             server = graph.action_servers.get(name)
             if server is None:
                 continue
-            goal = from_dict(server.action_type.Goal, fields)
+            goal = from_values(server.action_type.Goal, fields)
             graph.send_goal(
                 name,
                 goal,
                 self.owner,
                 lambda handle, gid=goal_id: self._goal_accepted(gid, handle),
-                lambda feedback, gid=goal_id: self._goal_events.append([gid, "feedback", to_dict(feedback)]),
+                lambda feedback, gid=goal_id: self._goal_events.append([gid, "feedback", to_values(feedback)]),
                 lambda status, result, gid=goal_id: self._goal_events.append(
-                    [gid, "result", [status, to_dict(result)]]
+                    [gid, "result", [status, to_values(result)]]
                 ),
             )
         for goal_id in reply.get("cancel", ()):
@@ -592,7 +592,7 @@ class SandboxHost:
         elif kind == "sub":
             _, wire_id, node_id, topic, type_name, depth = decl
             def forward(msg: Any, wire_id: int = wire_id) -> None:
-                self._inbox.append((wire_id, to_dict(msg)))
+                self._inbox.append((wire_id, to_values(msg)))
 
             self._endpoints[wire_id] = graph.add_subscription(
                 self._nodes[node_id], str(topic), get_interface(type_name), int(depth), forward
@@ -611,8 +611,8 @@ class SandboxHost:
 
             def handler(request: Any, respond: Any, name: str = str(name), srv_type: Any = srv_type) -> None:
                 req_id = next(self._request_ids)
-                self._service_calls[req_id] = lambda fields: respond(from_dict(srv_type.Response, fields))
-                self._requests.append([req_id, name, to_dict(request)])
+                self._service_calls[req_id] = lambda fields: respond(from_values(srv_type.Response, fields))
+                self._requests.append([req_id, name, to_values(request)])
 
             graph.add_service(self._nodes[node_id], str(name), srv_type, handler)
         elif kind == "param":
