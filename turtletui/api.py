@@ -1,8 +1,9 @@
 """Library API: run controllers against the simulated turtlesim from Python.
 
-    >>> from turtletui.api import run
-    >>> result = run(["my_node.py"], duration=10.0)
-    >>> result.wall_hits, result.final_poses["turtle1"]
+    from turtletui.api import run
+
+    result = run(["my_node.py"], duration=10.0, keep_poses=True)
+    result.wall_hits, result.turtles["turtle1"].x, result.poses["turtle1"][-1]
 """
 
 from __future__ import annotations
