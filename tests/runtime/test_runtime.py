@@ -238,3 +238,41 @@ def test_a_controllers_service_answers_another_controller(tmp_path: Path, server
         ("/switch", True, "on"),
         ("/switch", False, "off"),
     ]
+
+
+def test_a_plugin_node_factory_runs_sandboxed_and_in_process(tmp_path: Path, monkeypatch) -> None:
+    from turtletui.runtime.loader import ControllerSpec
+
+    package = tmp_path / "site" / "square_plugin"
+    package.mkdir(parents=True)
+    (package / "__init__.py").write_text(textwrap.dedent("""
+        def nodes():
+            from square_plugin.driver import Driver
+            return [Driver]
+    """))
+    (package / "driver.py").write_text(textwrap.dedent("""
+        from geometry_msgs.msg import Twist
+        from rclpy.node import Node
+
+
+        class Driver(Node):
+            def __init__(self):
+                super().__init__("driver")
+                self.pub = self.create_publisher(Twist, "/turtle1/cmd_vel", 10)
+                self.create_timer(0.1, self.drive)
+
+            def drive(self):
+                msg = Twist()
+                msg.linear.x = 1.0
+                self.pub.publish(msg)
+    """))
+    monkeypatch.syspath_prepend(str(tmp_path / "site"))
+    import square_plugin
+
+    distances = []
+    for trusted in (False, True):
+        spec = ControllerSpec("square", factory=square_plugin.nodes, trusted=trusted)
+        result = run([spec], duration=1.0)
+        assert result.crashes == []
+        distances.append(result.turtles["turtle1"].distance)
+    assert distances[0] == distances[1] == pytest.approx(0.9, abs=0.05)

@@ -351,7 +351,9 @@ def main() -> None:
         ControllerSpec,
         entry_point,
         load_module,
+        resolve_factory,
         seed_numpy,
+        spin_nodes,
         user_frames,
     )
     from turtletui.runtime.virtual_time import install_simulated_sleep
@@ -376,9 +378,15 @@ def main() -> None:
     crash = None
     try:
         host.exchange(None)  # start together with the parent's clock
-        module = load_module(spec)
-        seed_numpy(config.get("seed", 0))
-        entry_point(module, spec.label)()
+        if config.get("factory"):
+            sys.path[1:1] = [p for p in config.get("sys_path", []) if p]
+            factory = resolve_factory(config["factory"])
+            seed_numpy(config.get("seed", 0))
+            spin_nodes(list(factory()))
+        else:
+            module = load_module(spec)
+            seed_numpy(config.get("seed", 0))
+            entry_point(module, spec.label)()
     except ControllerError as err:
         crash = {"kind": "load", "message": str(err), "frames": []}
     except SystemExit as exc:

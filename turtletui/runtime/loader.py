@@ -110,6 +110,34 @@ def spin_nodes(classes: list[type]) -> None:
         rclpy.try_shutdown()
 
 
+def factory_reference(factory: Callable[[], Any]) -> str:
+    """``module:qualified.name`` of a node factory, to find it in another process."""
+    module = getattr(factory, "__module__", None)
+    qualname = getattr(factory, "__qualname__", "")
+    if not module or "<" in qualname:
+        raise ControllerError(f"{factory!r}: a node factory must be a module-level function to run sandboxed")
+    return f"{module}:{qualname}"
+
+
+def import_root(factory: Callable[[], Any]) -> str | None:
+    """The sys.path entry the factory's top-level package was imported from."""
+    top = sys.modules.get(factory.__module__.partition(".")[0])
+    origin = getattr(top, "__file__", None)
+    if origin is None:
+        return None
+    path = Path(origin).resolve()
+    return str(path.parents[1] if path.name == "__init__.py" else path.parent)
+
+
+def resolve_factory(reference: str) -> Callable[[], Any]:
+    """The node factory named by factory_reference()."""
+    module_name, _, qualname = reference.partition(":")
+    obj: Any = importlib.import_module(module_name)
+    for part in qualname.split("."):
+        obj = getattr(obj, part)
+    return obj
+
+
 def seed_numpy(seed: int) -> None:
     """Seed numpy's global generator if the controller imported numpy."""
     numpy = sys.modules.get("numpy")

@@ -26,7 +26,7 @@ from turtletui.graph.core import GraphError, NodeRecord
 from turtletui.graph.logs import ERROR, INFO
 from turtletui.interfaces import InterfaceError, from_values, get_interface, to_values
 from turtletui.runtime import wire
-from turtletui.runtime.loader import ControllerSpec, check_source
+from turtletui.runtime.loader import ControllerSpec, check_source, factory_reference, import_root
 from turtletui.runtime.report import CrashReport, log_crash, stop_turtles
 from turtletui.runtime.simulation import MAX_ROUNDS_PER_INSTANT, Simulation
 
@@ -124,6 +124,8 @@ class SandboxHost:
             "name": self.spec.name,
             "path": str(self.spec.path.resolve()) if self.spec.path else None,
             "module": self.spec.module,
+            "factory": factory_reference(self.spec.factory) if self.spec.factory else None,
+            "sys_path": [import_root(self.spec.factory)] if self.spec.factory else [],
             "ros_args": ros_args,
             "seed": seed,
             "epoch_ns": self.graph.epoch_ns,

@@ -19,6 +19,11 @@ _real_sleep = time.sleep  # controllers may get a simulated time.sleep
 TOPIC_CHECK_AFTER_NS = NS_PER_S
 """When to warn about controller topics nothing is connected to (likely typos)."""
 
+_UNPACED_BUDGET = 0.002
+"""Seconds an externally paced simulation waits for a sandboxed answer before
+moving on (the answer is then picked up on a later step): keeps an app's
+event loop responsive."""
+
 MAX_ROUNDS_PER_INSTANT = 64
 """Waits a controller may finish at one simulated instant before its next wait
 lets time move on: a real call takes wall time, so a loop of calls cannot
@@ -50,6 +55,7 @@ class Simulation:
         world: World | None = None,
         realtime: bool = False,
         speed: float = 1.0,
+        paced: bool = True,
         log_sinks: Sequence[Callable[[LogRecord], None]] = (),
     ) -> None:
         epoch = time.time_ns() if realtime else LOCKSTEP_EPOCH_NS
@@ -64,6 +70,9 @@ class Simulation:
         self.realtime = realtime
         self.speed = speed
         """Simulated seconds per wall second in real-time mode."""
+        self.paced = paced
+        """Real time: whether the pump sleeps until each step is due. An app
+        that calls run_until from its own 16 ms timer paces it instead."""
         self._wall_origin: float | None = None
         self._sim_origin = 0
 
@@ -153,7 +162,7 @@ class Simulation:
             if limit_ns > graph.now_ns:
                 graph.now_ns = limit_ns
             return False
-        if self.realtime:
+        if self.realtime and self.paced:
             self._wait_for(due)
         graph.advance(due)
         if graph.now_ns < due:
@@ -162,6 +171,8 @@ class Simulation:
 
     def wall_budget(self) -> float:
         """Real time: wall seconds until the next timer is due (0 if overdue)."""
+        if not self.paced:
+            return _UNPACED_BUDGET
         due = self.graph.next_due()
         if due is None or self._wall_origin is None:
             return 0.016
