@@ -1,6 +1,7 @@
 """Package layout that pyproject.toml cannot express on its own: the reference
-nodes live at the top of the repository (plugins/reference), where students
-find them, and install as the package turtletui.reference."""
+nodes (plugins/reference) and the lesson files (lessons/) live at the top of
+the repository, where students find them, and install as the packages
+turtletui.reference and turtletui.lessons_data."""
 
 from setuptools import find_namespace_packages, setup
 
@@ -9,6 +10,7 @@ setup(
     packages=[
         *find_namespace_packages(include=["turtletui", "turtletui.*"], exclude=["*.__pycache__"]),
         "turtletui.reference",
+        "turtletui.lessons_data",
     ],
-    package_dir={"turtletui.reference": "plugins/reference"},
+    package_dir={"turtletui.reference": "plugins/reference", "turtletui.lessons_data": "lessons"},
 )

@@ -11,7 +11,7 @@ import pytest
 
 from turtletui.api import RosArgsError, run
 from turtletui.graph.core import LOCKSTEP_EPOCH_NS
-from turtletui.plugins.reference import reference_path
+from turtletui.plugins.bundled import reference_path
 
 
 def f32(value: float) -> float:

@@ -13,6 +13,7 @@ import pytest
 
 from turtletui.plugins import PROJECT_NAME, hookimpl, hookspecs
 from turtletui.plugins import builtin as builtin_plugin
+from turtletui.plugins.bundled import reference_dir
 from turtletui.plugins.manager import (
     BUILTIN_PLUGINS,
     DISABLE_AUTOLOAD_ENV,
@@ -26,7 +27,6 @@ from turtletui.plugins.manager import (
     get_plugin_manager,
     plugin_infos,
 )
-from turtletui.plugins.reference import reference_dir
 
 REPO = Path(__file__).resolve().parents[2]
 EXAMPLE_PLUGIN = REPO / "plugins" / "example_plugin"

@@ -29,6 +29,8 @@ def run(
     ),
     quiet: bool = typer.Option(False, "--quiet", "-q", help="Print only the summary line."),
     plugin: list[Path] = typer.Option(None, "--plugin", help="Load a plugin file or folder (repeatable)."),
+    lesson: Path = typer.Option(None, "--lesson", help="Lesson file to open in the app (Markdown)."),
+    ascii_only: bool = typer.Option(False, "--ascii", help="Draw with plain ASCII and no colour."),
 ) -> None:
     """Run rclpy controller files against the simulated turtlesim.
 
@@ -40,7 +42,8 @@ def run(
                 "no terminal to draw the app in; run headless instead: "
                 "turtletui run FILE.py --headless --duration 60"
             )
-        fail("the terminal app is not available yet in this version; add --headless to run without it")
+        _run_app(controllers, plugin, lesson, ascii_only, seed)
+        return
     from turtletui.api import run as run_controllers
     from turtletui.compat.ros_args import RosArgsError
     from turtletui.runtime.loader import ControllerError
@@ -85,3 +88,33 @@ def run(
         raise SystemExit(130)
     if result.crashes:
         raise SystemExit(1)
+
+
+PART6_SAFE_BOX = (2.0, 2.0, 9.0, 9.0)
+"""The Part 6 controller's safe zone (x, y from and to, metres), drawn on the arena."""
+
+
+def _run_app(
+    controllers: list[str] | None, plugins: list[Path] | None, lesson: Path | None, ascii_only: bool, seed: int
+) -> None:
+    """The Textual app (imported only here: headless runs never load Textual)."""
+    from turtletui.plugins.bundled import lessons_dir
+    from turtletui.runtime.loader import ControllerError
+    from turtletui.runtime.resolve import resolve_controllers
+
+    overlays: tuple = ()
+    if not controllers:
+        controllers = ["part6_wall_avoider"]
+        overlays = (PART6_SAFE_BOX,)
+        folder = lessons_dir()
+        if lesson is None and folder is not None:
+            lesson = folder / "part6_closed_loop.md"
+    if lesson is not None and not lesson.is_file():
+        fail(f"--lesson {lesson}: no such lesson file")
+    try:
+        specs = resolve_controllers(controllers, plugins=plugins or ())
+    except ControllerError as err:
+        fail(str(err))
+    from turtletui.tui.app import TurtleApp
+
+    TurtleApp(specs, lesson=lesson, ascii=ascii_only, ros_args=ROS_ARGS, seed=seed, overlays=overlays).run()

@@ -5,9 +5,8 @@ Worlds and checks arrive with issue 4.
 
 from __future__ import annotations
 
-from pathlib import Path
-
 from turtletui.plugins import hookimpl
+from turtletui.plugins.bundled import lessons_dir, reference_dir
 from turtletui.plugins.hookspecs import RegisterController, RegisterLesson
 
 REFERENCE_CONTROLLERS: tuple[tuple[str, str, str], ...] = (
@@ -36,25 +35,8 @@ REFERENCE_CONTROLLERS: tuple[tuple[str, str, str], ...] = (
 """(controller name, file in the reference folder, description)."""
 
 
-def lessons_dir() -> Path | None:
-    """The bundled lessons folder, installed or in a source checkout; None if absent."""
-    try:
-        import turtletui.lessons_data as package
-    except ModuleNotFoundError as err:
-        if err.name != "turtletui.lessons_data":
-            raise
-        import turtletui
-
-        folder = Path(turtletui.__file__).resolve().parents[1] / "lessons"
-    else:
-        folder = Path(next(iter(package.__path__)))
-    return folder if folder.is_dir() else None
-
-
 @hookimpl
 def turtletui_register_controllers(register: RegisterController) -> None:
-    from turtletui.plugins.reference import reference_dir
-
     folder = reference_dir()
     for name, filename, description in REFERENCE_CONTROLLERS:
         register(name, folder / filename, description)

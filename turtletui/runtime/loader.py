@@ -60,16 +60,18 @@ def load_module(spec: ControllerSpec) -> types.ModuleType:
         return importlib.import_module(spec.module)
     assert spec.path is not None
     path = spec.path.resolve()
-    check_source(path)
+    # Compiled from the text just checked, never from a cached .pyc: a file
+    # edited twice within a second at the same size would look unchanged to
+    # the bytecode cache, and a hot reload would run the old code.
+    code = compile(check_source(path), str(path), "exec")
     name = f"__turtletui_controller_{abs(hash(str(path))):x}"
-    module_spec = importlib.util.spec_from_file_location(name, path)
-    assert module_spec is not None and module_spec.loader is not None
-    module = importlib.util.module_from_spec(module_spec)
+    module = types.ModuleType(name)
+    module.__file__ = str(path)
     folder = str(path.parent)
     if folder not in sys.path:
         sys.path.insert(1, folder)
     sys.modules[name] = module
-    module_spec.loader.exec_module(module)
+    exec(code, module.__dict__)
     return module
 
 

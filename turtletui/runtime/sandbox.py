@@ -146,6 +146,7 @@ class SandboxHost:
             PYTHONUNBUFFERED="1",
             PYTHONHASHSEED="0",
             PYTHONNOUSERSITE="1",
+            PYTHONDONTWRITEBYTECODE="1",  # no __pycache__ left in students' folders
         )
         # Inherited by whatever the controller starts: found and killed at the end
         # even if it left the child's session and lost its parent.

@@ -1,0 +1,1 @@
+"""Lesson files of the course series (installed with turtletui as turtletui.lessons_data)."""

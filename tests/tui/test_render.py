@@ -1,0 +1,511 @@
+"""The arena renderer (turtletui.tui.render): pure, so tested without Textual."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from rich.segment import Segment
+
+from turtletui.sim import BACKGROUND, PEN_COLOR, World
+from turtletui.tui.render import (
+    ARROWS,
+    ASCII_ARROWS,
+    MIN_HEIGHT,
+    MIN_WIDTH,
+    OVERLAY_COLOR,
+    TOO_SMALL,
+    ArenaRenderer,
+    Overlay,
+    downsample,
+    heading_index,
+    layout_for,
+    normalise_overlays,
+)
+
+RED = (255, 0, 0)
+GREEN = (0, 200, 0)
+SIZES = [(80, 24), (160, 50), (100, 60), (200, 40), (MIN_WIDTH, MIN_HEIGHT), (1200, 400)]
+
+
+def empty_world() -> World:
+    return World(spawn_turtle1=False)
+
+
+def text(line: list[Segment]) -> str:
+    return "".join(segment.text for segment in line)
+
+
+def cells(line: list[Segment]) -> list[tuple[str, Segment]]:
+    """(character, segment) per cell of a line."""
+    return [(char, segment) for segment in line for char in segment.text]
+
+
+def colours_at(line: list[Segment], column: int) -> set[tuple[int, int, int]]:
+    """The colours a cell shows: the upper pixel (fg of '▀') and the lower (bg)."""
+    char, segment = cells(line)[column]
+    shown = {segment.style.bgcolor.triplet}
+    if char == "▀":
+        shown.add(segment.style.color.triplet)
+    return {tuple(colour) for colour in shown}
+
+
+def pixel_colour(renderer: ArenaRenderer, lines, x: float, y: float) -> tuple[int, int, int]:
+    """The colour the frame shows for the arena pixel under (x, y) metres."""
+    layout = renderer.layout
+    col, row = layout.cell_of(x, y)
+    char, segment = cells(lines[layout.top + row // 2])[layout.left + col]
+    if char == "▀" and row % 2 == 0:
+        return tuple(segment.style.color.triplet)
+    return tuple(segment.style.bgcolor.triplet)
+
+
+def arena_colours(renderer: ArenaRenderer, lines) -> set[tuple[int, int, int]]:
+    layout = renderer.layout
+    seen: set[tuple[int, int, int]] = set()
+    for line in lines[layout.top : layout.top + layout.rows]:
+        for column in range(layout.left, layout.left + layout.size):
+            seen |= colours_at(line, column)
+    return seen
+
+
+def find_glyphs(lines, glyphs: str) -> list[tuple[int, int, str]]:
+    return [
+        (y, x, char)
+        for y, line in enumerate(lines)
+        for x, (char, _) in enumerate(cells(line))
+        if char in glyphs
+    ]
+
+
+# -- geometry -----------------------------------------------------------------
+@pytest.mark.parametrize("size", SIZES)
+def test_the_arena_is_the_largest_square_that_fits_and_is_centred(size):
+    width, height = size
+    renderer = ArenaRenderer()
+    lines = renderer.frame(empty_world(), width, height)
+    layout = renderer.layout
+    assert len(lines) == height
+    assert all(Segment.get_line_length(line) == width for line in lines)
+    n = layout.size
+    # Square pixels: N cells wide, N / 2 cells (N pixels) tall.
+    assert n % 2 == 0 and layout.rows == n // 2
+    assert n <= 500
+    # Labels (2) and the left border before, the right border after.
+    assert layout.left - 3 >= 0 and layout.left + n + 1 <= width
+    # Top border above, bottom border and label line below.
+    assert layout.top - 1 >= 0 and layout.top + layout.rows + 2 <= height
+    assert n == 500 or n + 2 > min(width - 4, 2 * (height - 3))
+    margin_left = layout.left - 3
+    margin_right = width - (layout.left + n + 1)
+    assert abs(margin_left - margin_right) <= 1
+    margin_top = layout.top - 1
+    margin_bottom = height - (layout.top + layout.rows + 2)
+    assert abs(margin_top - margin_bottom) <= 1
+
+
+def test_the_80x24_layout():
+    layout = layout_for(80, 24)
+    assert (layout.size, layout.rows, layout.left, layout.top) == (42, 21, 20, 1)
+    assert layout_for(160, 50).size == 94
+
+
+def test_the_border_encloses_the_arena():
+    renderer = ArenaRenderer()
+    lines = renderer.frame(empty_world(), 80, 24)
+    layout = renderer.layout
+    top = text(lines[layout.top - 1])
+    assert top[layout.left - 1] == "┌" and top[layout.left + layout.size] == "┐"
+    assert set(top[layout.left : layout.left + layout.size]) == {"─"}
+    for line in lines[layout.top : layout.top + layout.rows]:
+        row = text(line)
+        assert row[layout.left - 1] in "│┤" and row[layout.left + layout.size] == "│"
+    bottom = text(lines[layout.top + layout.rows])
+    assert bottom[layout.left - 1] == "└" and bottom[layout.left + layout.size] == "┘"
+
+
+# -- pen image ----------------------------------------------------------------
+def test_an_empty_arena_is_the_background_colour():
+    renderer = ArenaRenderer()
+    lines = renderer.frame(empty_world(), 80, 24)
+    assert arena_colours(renderer, lines) == {BACKGROUND}
+
+
+@pytest.mark.parametrize("size", [(80, 24), (160, 50), (MIN_WIDTH, MIN_HEIGHT)])
+def test_a_drawn_trail_shows_in_the_cells_under_it(size):
+    world = empty_world()
+    world.canvas.draw_segment(1.0, 3.0, 10.0, 3.0, RED, 3)  # a 3 pixel wide line
+    world.canvas.draw_segment(8.0, 5.0, 8.0, 10.0, GREEN, 3)
+    renderer = ArenaRenderer()
+    lines = renderer.frame(world, *size)
+    for x in np.linspace(1.0, 10.0, 25):
+        assert pixel_colour(renderer, lines, x, 3.0) == RED, x
+    for y in np.linspace(5.0, 10.0, 15):
+        assert pixel_colour(renderer, lines, 8.0, y) == GREEN, y
+    # Away from the lines: background.
+    for x, y in [(0.5, 0.5), (5.0, 7.0), (10.5, 10.5), (0.5, 3.0), (10.8, 3.0), (8.0, 4.0)]:
+        assert pixel_colour(renderer, lines, x, y) == BACKGROUND, (x, y)
+    assert arena_colours(renderer, lines) == {BACKGROUND, RED, GREEN}
+
+
+def test_a_trail_drawn_by_a_turtle_is_visible_at_80x24():
+    world = World()
+    world.step()  # the first tick only records the time
+    world.teleport_absolute("turtle1", 2.0, 2.0, 0.0)
+    world.step()
+    world.set_pen("turtle1", 0, 0, 0, 0, 1)
+    world.teleport_absolute("turtle1", 10.0, 10.0, 0.0)
+    world.step()
+    renderer = ArenaRenderer()
+    lines = renderer.frame(world, 80, 24)
+    # The pen drew from the centre to (2, 2) with its default colour, then lifted.
+    for t in np.linspace(0.1, 0.9, 9):
+        x = y = 5.544 + t * (2.0 - 5.544)
+        assert pixel_colour(renderer, lines, x, y) == PEN_COLOR
+    assert pixel_colour(renderer, lines, 8.0, 8.0) == BACKGROUND
+
+
+def test_downsampling_keeps_a_single_trail_pixel():
+    pixels = np.empty((500, 500, 3), dtype=np.uint8)
+    pixels[:] = BACKGROUND
+    pixels[123, 321] = RED
+    small = downsample(pixels, BACKGROUND, 42)
+    assert small.shape == (42, 42)
+    packed_red = RED[0] | RED[1] << 8 | RED[2] << 16
+    packed_background = BACKGROUND[0] | BACKGROUND[1] << 8 | BACKGROUND[2] << 16
+    assert np.count_nonzero(small == packed_red) == 1
+    assert np.count_nonzero(small == packed_background) == 42 * 42 - 1
+    row, col = np.argwhere(small == packed_red)[0]
+    edges = np.arange(43) * 500 // 42  # block i covers pixels edges[i] .. edges[i + 1] - 1
+    assert edges[row] <= 123 < edges[row + 1] and edges[col] <= 321 < edges[col + 1]
+    assert (row, col) == (layout_for(80, 24).block_of(123), layout_for(80, 24).block_of(321))
+
+
+def test_queued_segments_are_drawn_and_then_the_frame_is_stable():
+    world = empty_world()
+    renderer = ArenaRenderer()
+    renderer.frame(world, 80, 24)
+    world.canvas.draw_segment(1.0, 1.0, 9.0, 1.0, RED, 3)  # queued, not yet rasterised
+    lines = renderer.frame(world, 80, 24)
+    assert pixel_colour(renderer, lines, 5.0, 1.0) == RED
+    assert renderer.changed_lines
+    renderer.frame(world, 80, 24)
+    assert renderer.changed_lines == []
+
+
+def test_changing_the_background_recolours_the_arena():
+    world = empty_world()
+    renderer = ArenaRenderer()
+    renderer.frame(world, 80, 24)
+    world.set_background((10, 20, 30))
+    lines = renderer.frame(world, 80, 24)
+    assert arena_colours(renderer, lines) == {(10, 20, 30)}
+
+
+# -- turtles ------------------------------------------------------------------
+@pytest.mark.parametrize("k", range(8))
+def test_the_turtle_glyph_shows_its_heading(k):
+    world = empty_world()
+    world.spawn(3.0, 7.0, k * math.pi / 4, "t")
+    renderer = ArenaRenderer()
+    lines = renderer.frame(world, 80, 24)
+    layout = renderer.layout
+    col, row = layout.cell_of(3.0, 7.0)
+    found = find_glyphs(lines, ARROWS)
+    assert found == [(layout.top + row // 2, layout.left + col, ARROWS[k])]
+    _, segment = cells(lines[layout.top + row // 2])[layout.left + col]
+    assert segment.style.bold
+    # Contrasting: the glyph's colour is not the colour it sits on.
+    assert segment.style.color.triplet != segment.style.bgcolor.triplet
+    assert tuple(segment.style.bgcolor.triplet) == BACKGROUND
+    ascii_lines = renderer.frame(world, 80, 24, ascii=True)
+    assert text(ascii_lines[layout.top + row // 2])[layout.left + col] == ASCII_ARROWS[k]
+
+
+@pytest.mark.parametrize(
+    ("theta", "glyph"),
+    [
+        (0.0, "→"),
+        (0.39, "→"),
+        (0.40, "↗"),
+        (-math.pi / 2, "↓"),
+        (-math.pi, "←"),
+        (math.pi, "←"),
+        (3 * math.pi / 4, "↖"),
+        (-3 * math.pi / 4, "↙"),
+        (-0.8, "↘"),
+        (2 * math.pi + 1.57, "↑"),
+    ],
+)
+def test_headings_round_to_the_nearest_of_eight(theta, glyph):
+    assert ARROWS[heading_index(theta)] == glyph
+
+
+def test_a_turtle_on_its_trail_is_still_visible():
+    world = World()
+    world.command_velocity("turtle1", 2.0, 0.0, 0.0)
+    for _ in range(30):
+        world.step()
+    renderer = ArenaRenderer()
+    lines = renderer.frame(world, 80, 24)
+    [(y, x, glyph)] = find_glyphs(lines, ARROWS)
+    assert glyph == "→"
+    _, segment = cells(lines[y])[x]
+    assert tuple(segment.style.bgcolor.triplet) == PEN_COLOR
+    assert segment.style.color.triplet != segment.style.bgcolor.triplet
+
+
+def test_several_turtles_are_each_drawn():
+    world = empty_world()
+    world.spawn(1.0, 1.0, 0.0, "a")
+    world.spawn(10.0, 10.0, math.pi, "b")
+    world.spawn(1.0, 10.0, math.pi / 2, "c")
+    world.spawn(10.0, 1.0, -math.pi / 2, "d")
+    renderer = ArenaRenderer()
+    lines = renderer.frame(world, 160, 50)
+    layout = renderer.layout
+    expected = []
+    for name in ("a", "b", "c", "d"):
+        turtle = world.turtles[name]
+        col, row = layout.cell_of(turtle.x, turtle.y)
+        expected.append(
+            (layout.top + row // 2, layout.left + col, ARROWS[heading_index(turtle.theta)])
+        )
+    assert sorted(find_glyphs(lines, ARROWS)) == sorted(expected)
+
+
+# -- scale --------------------------------------------------------------------
+def test_metre_ticks_and_labels_at_80x24():
+    renderer = ArenaRenderer()
+    lines = renderer.frame(empty_world(), 80, 24)
+    layout = renderer.layout
+    bottom = text(lines[layout.top + layout.rows])
+    labels = text(lines[layout.top + layout.rows + 1])
+    assert labels.split() == [str(m) for m in range(12)]
+    assert bottom.count("┬") == 12
+    for m in range(12):
+        col = layout.left + layout.block_of(round(m * 45))
+        assert bottom[col] == "┬"
+        assert labels[col : col + len(str(m))] == str(m)
+    # x = 0 is the first arena column, y = 0 the last arena line, y = 11 the first.
+    assert labels[layout.left] == "0"
+    left_labels = {}
+    for line in range(layout.top, layout.top + layout.rows):
+        row = text(lines[line])
+        label = row[layout.left - 3 : layout.left - 1].strip()
+        if label:
+            assert row[layout.left - 1] == "┤"
+            left_labels[int(label)] = line
+    assert sorted(left_labels) == list(range(12))
+    assert left_labels[0] == layout.top + layout.rows - 1
+    assert left_labels[11] == layout.top
+    assert all(left_labels[m] > left_labels[m + 1] for m in range(11))
+
+
+def test_as_many_labels_as_fit_at_the_minimum_size():
+    renderer = ArenaRenderer()
+    lines = renderer.frame(empty_world(), MIN_WIDTH, MIN_HEIGHT)
+    layout = renderer.layout
+    labels = text(lines[layout.top + layout.rows + 1]).split()
+    assert labels[0] == "0" and 2 <= len(labels) < 12
+    step = int(labels[1])
+    assert labels == [str(m) for m in range(0, 12, step)]
+    left = [
+        text(line)[layout.left - 3 : layout.left - 1].strip()
+        for line in lines[layout.top : layout.top + layout.rows]
+    ]
+    left = [int(label) for label in left if label]
+    assert 0 in left and len(left) == len(set(left)) >= 2
+
+
+# -- overlays -----------------------------------------------------------------
+def test_an_overlay_is_a_dotted_outline_under_the_turtles():
+    world = empty_world()
+    world.spawn(2.0, 2.0, 0.0, "t")  # on the corner of the box
+    renderer = ArenaRenderer()
+    lines = renderer.frame(world, 160, 50, overlays=[(2.0, 2.0, 9.0, 9.0)])
+    layout = renderer.layout
+    assert OVERLAY_COLOR in arena_colours(renderer, lines)
+    for x, y in [(9.0, 9.0), (2.0, 9.0), (9.0, 2.0)]:
+        assert pixel_colour(renderer, lines, x, y) == OVERLAY_COLOR
+    # Dotted: along an edge, overlay and background pixels alternate.
+    c0, r0 = layout.cell_of(2.0, 9.0)
+    c1, _ = layout.cell_of(9.0, 9.0)
+    line = lines[layout.top + r0 // 2]
+    edge = []
+    for col in range(c0, c1 + 1):
+        char, segment = cells(line)[layout.left + col]
+        upper = segment.style.color if char == "▀" else segment.style.bgcolor
+        lower = segment.style.bgcolor
+        edge.append(tuple((upper if r0 % 2 == 0 else lower).triplet))
+    assert edge.count(OVERLAY_COLOR) >= (c1 - c0) // 2
+    assert BACKGROUND in edge
+    # Inside and outside the box: background.
+    for x, y in [(5.5, 5.5), (1.0, 1.0), (10.0, 10.0), (5.5, 1.5), (9.5, 5.5)]:
+        assert pixel_colour(renderer, lines, x, y) == BACKGROUND
+    # The turtle on the corner is drawn over the outline.
+    col, row = layout.cell_of(2.0, 2.0)
+    assert cells(lines[layout.top + row // 2])[layout.left + col][0] == "→"
+
+
+def test_overlays_take_a_colour_and_any_corner_order():
+    world = empty_world()
+    renderer = ArenaRenderer()
+    purple = (200, 0, 200)
+    lines = renderer.frame(world, 80, 24, overlays=[Overlay(8.0, 8.0, 3.0, 3.0, purple)])
+    assert arena_colours(renderer, lines) == {BACKGROUND, purple}
+    assert normalise_overlays([(1, 2, 3, 4)]) == (Overlay(1.0, 2.0, 3.0, 4.0, OVERLAY_COLOR),)
+
+
+# -- ASCII --------------------------------------------------------------------
+def test_ascii_mode_is_plain_ascii_without_style():
+    world = World()
+    world.command_velocity("turtle1", 2.0, 0.0, 1.0)
+    for _ in range(60):
+        world.step()
+    renderer = ArenaRenderer()
+    lines = renderer.frame(world, 80, 24, ascii=True, overlays=[(2, 2, 9, 9)])
+    assert len(lines) == 24
+    for line in lines:
+        for segment in line:
+            assert segment.style is None
+            assert segment.text.isascii()
+        assert len(text(line)) == 80
+    layout = renderer.layout
+    arena = "".join(
+        text(line)[layout.left : layout.left + layout.size]
+        for line in lines[layout.top : layout.top + layout.rows]
+    )
+    assert set(arena) <= set(" #.") | set(ASCII_ARROWS)
+    assert "#" in arena and "." in arena
+    assert sum(arena.count(glyph) for glyph in set(ASCII_ARROWS)) == 1
+    top = text(lines[layout.top - 1])
+    assert top.strip() == "+" + "-" * layout.size + "+"
+    assert text(lines[layout.top])[layout.left - 1] in "|+"
+    assert text(lines[layout.top + layout.rows + 1]).split() == [str(m) for m in range(12)]
+
+
+def test_ascii_trail_cells_follow_the_pen_image():
+    world = empty_world()
+    world.canvas.draw_segment(1.0, 3.0, 10.0, 3.0, RED, 3)
+    renderer = ArenaRenderer()
+    lines = renderer.frame(world, 80, 24, ascii=True)
+    layout = renderer.layout
+    col0, row = layout.cell_of(1.0, 3.0)
+    col1, _ = layout.cell_of(10.0, 3.0)
+    line = text(lines[layout.top + row // 2])[layout.left : layout.left + layout.size]
+    assert set(line[col0 : col1 + 1]) == {"#"}
+    assert line.count("#") <= col1 - col0 + 3
+
+
+# -- what changed -------------------------------------------------------------
+def test_the_first_frame_changes_every_line_and_an_unchanged_world_none():
+    world = World()
+    renderer = ArenaRenderer()
+    first = renderer.frame(world, 80, 24)
+    assert renderer.changed_lines == list(range(24))
+    keys = list(renderer.line_keys)
+    second = renderer.frame(world, 80, 24)
+    assert renderer.changed_lines == []
+    assert second == first and renderer.line_keys == keys
+    world.step()  # the first tick only records the time: nothing moves
+    world.step()
+    renderer.frame(world, 80, 24)
+    assert renderer.changed_lines == []
+
+
+def test_a_moving_turtle_changes_only_its_old_and_new_lines():
+    world = World()
+    world.set_pen("turtle1", 0, 0, 0, 0, 1)
+    renderer = ArenaRenderer()
+    renderer.frame(world, 160, 50)
+    layout = renderer.layout
+    turtle = world.turtles["turtle1"]
+    old_line = layout.top + layout.cell_of(turtle.x, turtle.y)[1] // 2
+    world.teleport_absolute("turtle1", 5.544, 8.0, math.pi / 2)
+    world.step()
+    world.step()
+    renderer.frame(world, 160, 50)
+    new_line = layout.top + layout.cell_of(turtle.x, turtle.y)[1] // 2
+    assert old_line != new_line
+    assert renderer.changed_lines == [new_line, old_line]
+    # Turning in place changes one line.
+    world.teleport_relative("turtle1", 0.0, math.pi / 2)
+    world.step()
+    renderer.frame(world, 160, 50)
+    assert renderer.changed_lines == [new_line]
+
+
+def test_a_drawing_turtle_changes_a_few_lines_per_step():
+    world = World()
+    renderer = ArenaRenderer()
+    renderer.frame(world, 80, 24)
+    world.step()
+    counts = []
+    for _ in range(100):
+        world.command_velocity("turtle1", 2.0, 0.0, 1.0)
+        world.step()
+        renderer.frame(world, 80, 24)
+        counts.append(len(renderer.changed_lines))
+    assert max(counts) <= 3
+    assert sum(counts) > 0
+
+
+def test_equal_line_keys_mean_equal_lines():
+    world = World()
+    renderer = ArenaRenderer()
+    seen: dict = {}
+    for step in range(40):
+        world.command_velocity("turtle1", 2.0, 0.0, 1.5)
+        world.step()
+        for ascii in (False, True):
+            lines = renderer.frame(world, 80, 24, ascii=ascii, overlays=[(2, 2, 9, 9)])
+            for key, line in zip(renderer.line_keys, lines, strict=True):
+                assert seen.setdefault(key, line) == line, step
+
+
+def test_a_resize_or_a_mode_change_changes_every_line():
+    world = World()
+    renderer = ArenaRenderer()
+    renderer.frame(world, 80, 24)
+    renderer.frame(world, 100, 24)
+    assert renderer.changed_lines == list(range(24))
+    renderer.frame(world, 100, 24, ascii=True)
+    assert renderer.changed_lines == list(range(24))
+
+
+# -- too small ----------------------------------------------------------------
+@pytest.mark.parametrize("size", [(0, 0), (0, 5), (5, 0), (1, 1), (10, 3), (23, 40), (200, 11)])
+def test_too_small_shows_the_message(size):
+    width, height = size
+    renderer = ArenaRenderer()
+    lines = renderer.frame(World(), width, height)
+    assert renderer.layout is None
+    assert len(lines) == height
+    assert all(Segment.get_line_length(line) == width for line in lines)
+    shown = " ".join(text(line).strip() for line in lines).split()
+    if width >= 20 and height >= 4:
+        assert " ".join(shown) == TOO_SMALL
+    for word in shown:
+        assert word in TOO_SMALL
+    assert not find_glyphs(lines, ARROWS)
+    renderer.frame(World(), width, height)
+    assert renderer.changed_lines == []
+
+
+def test_the_minimum_size_shows_the_arena():
+    renderer = ArenaRenderer()
+    lines = renderer.frame(World(), MIN_WIDTH, MIN_HEIGHT)
+    assert renderer.layout is not None
+    assert len(find_glyphs(lines, ARROWS)) == 1
+
+
+def test_a_new_world_is_never_mistaken_for_the_old_one():
+    renderer = ArenaRenderer()
+    for colour in (RED, GREEN, RED):
+        world = empty_world()  # same canvas version each time
+        world.canvas.draw_segment(1.0, 5.0, 10.0, 5.0, colour, 3)
+        lines = renderer.frame(world, 80, 24)
+        assert pixel_colour(renderer, lines, 5.0, 5.0) == colour
+        del world

@@ -1,0 +1,654 @@
+"""The ros2 command interpreter: the tutorials' commands against a live
+turtlesim, with ros2's own output, and one clear line for every mistake."""
+
+from __future__ import annotations
+
+import math
+import os
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from turtletui.graph.core import NS_PER_S
+from turtletui.interfaces import definition_text
+from turtletui.runtime.simulation import Simulation
+from turtletui.tui.ros2cli import (
+    MAX_BUFFERED_LINES,
+    CommandResult,
+    Ros2Cli,
+    YamlError,
+    parse_yaml,
+    yaml_lines,
+)
+
+PACKAGE_ROOT = Path(__file__).resolve().parents[2]
+
+
+@pytest.fixture
+def sim() -> Simulation:
+    return Simulation()
+
+
+@pytest.fixture
+def cli(sim: Simulation) -> Ros2Cli:
+    return Ros2Cli(sim)
+
+
+def step(sim: Simulation, seconds: float) -> None:
+    """Advance the lockstep simulation by ``seconds``."""
+    sim.run_until(sim.graph.now_ns + round(seconds * NS_PER_S))
+
+
+def ok(cli: Ros2Cli, line: str) -> CommandResult:
+    result = cli.run(line)
+    assert not result.error, result.lines
+    return result
+
+
+def hidden_nodes(sim: Simulation) -> list[str]:
+    return [n.fqn for n in sim.graph.nodes if n.name.startswith("_")]
+
+
+# -- ros2 node ------------------------------------------------------------------
+
+def test_node_list_hides_the_cli_s_own_nodes(sim, cli):
+    assert ok(cli, "ros2 node list").lines == ["/turtlesim"]
+    echo = ok(cli, "ros2 topic echo /turtle1/pose")
+    assert hidden_nodes(sim) == ["/_ros2cli_1"]
+    assert ok(cli, "ros2 node list").lines == ["/turtlesim"]
+    assert ok(cli, "ros2 node list -a").lines == ["/_ros2cli_1", "/turtlesim"]
+    assert ok(cli, "ros2 node list --count-nodes").lines == ["1"]
+    echo.stream.close()
+    assert hidden_nodes(sim) == []
+
+
+def test_node_info_turtlesim_as_ros2node_prints_it(cli):
+    assert ok(cli, "ros2 node info /turtlesim").lines == [
+        "/turtlesim",
+        "  Subscribers:",
+        "    /turtle1/cmd_vel: geometry_msgs/msg/Twist",
+        "  Publishers:",
+        "    /turtle1/color_sensor: turtlesim/msg/Color",
+        "    /turtle1/pose: turtlesim/msg/Pose",
+        "  Service Servers:",
+        "    /clear: std_srvs/srv/Empty",
+        "    /kill: turtlesim/srv/Kill",
+        "    /reset: std_srvs/srv/Empty",
+        "    /spawn: turtlesim/srv/Spawn",
+        "    /turtle1/set_pen: turtlesim/srv/SetPen",
+        "    /turtle1/teleport_absolute: turtlesim/srv/TeleportAbsolute",
+        "    /turtle1/teleport_relative: turtlesim/srv/TeleportRelative",
+        "  Service Clients:",
+        "",
+        "  Action Servers:",
+        "    /turtle1/rotate_absolute: turtlesim/action/RotateAbsolute",
+        "  Action Clients:",
+        "",
+    ]
+
+
+def test_node_info_shows_the_clients_of_a_running_command(cli):
+    call = ok(cli, "ros2 service call /clear std_srvs/srv/Empty")
+    info = ok(cli, f"ros2 node info {call.stream.node.fqn}").lines
+    assert info[info.index("  Service Clients:") + 1] == "    /clear: std_srvs/srv/Empty"
+
+
+# -- ros2 topic -----------------------------------------------------------------
+
+def test_topic_list(cli):
+    assert ok(cli, "ros2 topic list").lines == [
+        "/turtle1/cmd_vel", "/turtle1/color_sensor", "/turtle1/pose"]
+    assert ok(cli, "topic list -t").lines == [
+        "/turtle1/cmd_vel [geometry_msgs/msg/Twist]",
+        "/turtle1/color_sensor [turtlesim/msg/Color]",
+        "/turtle1/pose [turtlesim/msg/Pose]",
+    ]
+    assert ok(cli, "topic list -c").lines == ["3"]
+
+
+def test_topic_info_counts_endpoints_including_a_running_echo(cli):
+    assert ok(cli, "ros2 topic info /turtle1/pose").lines == [
+        "Type: turtlesim/msg/Pose", "Publisher count: 1", "Subscription count: 0"]
+    ok(cli, "ros2 topic echo /turtle1/pose")
+    assert ok(cli, "ros2 topic info turtle1/pose").lines == [
+        "Type: turtlesim/msg/Pose", "Publisher count: 1", "Subscription count: 1"]
+
+
+def test_topic_info_verbose_names_nodes_and_qos(cli):
+    lines = ok(cli, "ros2 topic info /turtle1/cmd_vel -v").lines
+    assert lines[:4] == ["Type: geometry_msgs/msg/Twist", "", "Publisher count: 0", ""]
+    at = lines.index("Subscription count: 1")
+    assert lines[at + 2:at + 6] == [
+        "Node name: turtlesim", "Node namespace: /", "Topic type: geometry_msgs/msg/Twist",
+        "Endpoint type: SUBSCRIPTION"]
+    assert "  History (Depth): KEEP_LAST (7)" in lines
+
+
+def test_topic_type_and_find(cli):
+    assert ok(cli, "ros2 topic type /turtle1/pose").lines == ["turtlesim/msg/Pose"]
+    assert ok(cli, "ros2 topic find geometry_msgs/msg/Twist").lines == ["/turtle1/cmd_vel"]
+    assert ok(cli, "ros2 topic find turtlesim/Color").lines == ["/turtle1/color_sensor"]
+
+
+def test_topic_echo_prints_poses_as_yaml(sim, cli):
+    result = ok(cli, "ros2 topic echo /turtle1/pose")
+    assert result.lines == [] and not result.stream.done
+    assert result.stream.poll() == []
+    step(sim, 0.05)
+    lines = result.stream.poll()
+    assert lines[:6] == [
+        "x: 5.544444561004639",
+        "y: 5.544444561004639",
+        "theta: 0.0",
+        "linear_velocity: 0.0",
+        "angular_velocity: 0.0",
+        "---",
+    ]
+    assert len(lines) == 6 * lines.count("---") and lines.count("---") >= 2
+    assert result.stream.poll() == []  # nothing new since
+
+
+def test_topic_echo_once_ends_by_itself(sim, cli):
+    result = ok(cli, "ros2 topic echo --once /turtle1/pose")
+    step(sim, 0.5)
+    assert result.stream.done
+    assert result.stream.poll()[-1] == "---"
+    assert result.stream.poll() == []
+    assert hidden_nodes(sim) == [] and cli.streams == []
+
+
+def test_topic_echo_field(sim, cli):
+    result = ok(cli, "ros2 topic echo /turtle1/pose --field x --once")
+    step(sim, 0.1)
+    assert result.stream.poll() == ["5.544444561004639", "---"]
+
+
+def test_topic_echo_nested_message_from_topic_pub(sim, cli):
+    echo = ok(cli, "ros2 topic echo /turtle1/cmd_vel")
+    ok(cli, "ros2 topic pub --once /turtle1/cmd_vel geometry_msgs/msg/Twist "
+            "'{linear: {x: 2.0}, angular: {z: 1.8}}'")
+    step(sim, 0.02)
+    assert echo.stream.poll() == [
+        "linear:", "  x: 2.0", "  y: 0.0", "  z: 0.0",
+        "angular:", "  x: 0.0", "  y: 0.0", "  z: 1.8",
+        "---",
+    ]
+
+
+def test_topic_echo_keeps_at_most_200_lines_of_whole_messages(sim, cli):
+    echo = ok(cli, "ros2 topic echo /turtle1/pose")
+    step(sim, 5.0)  # ~310 poses, 6 lines each, never polled
+    lines = echo.stream.poll()
+    assert 200 - 6 < len(lines) <= MAX_BUFFERED_LINES
+    assert lines[0].startswith("x: ") and lines[-1] == "---"
+
+
+def test_topic_hz_reports_62_5_hz_once_a_second(sim, cli):
+    hz = ok(cli, "ros2 topic hz /turtle1/pose")
+    step(sim, 0.9)
+    assert hz.stream.poll() == []
+    step(sim, 1.2)
+    lines = hz.stream.poll()
+    assert len(lines) == 4  # two reports
+    assert lines[2] == "average rate: 62.500"
+    assert re.fullmatch(r"\tmin: 0\.016s max: 0\.016s std dev: 0\.00000s window: \d+", lines[3])
+    assert int(lines[3].rsplit(" ", 1)[1]) > int(lines[1].rsplit(" ", 1)[1]) > 50
+
+
+def test_topic_hz_window(sim, cli):
+    hz = ok(cli, "ros2 topic hz /turtle1/pose -w 10")
+    step(sim, 1.1)
+    assert hz.stream.poll()[1].endswith("window: 11")
+
+
+def test_topic_pub_once_moves_the_turtle(sim, cli):
+    result = ok(cli, "ros2 topic pub --once /turtle1/cmd_vel geometry_msgs/msg/Twist "
+                     "'{linear: {x: 2.0, y: 0.0, z: 0.0}, angular: {x: 0.0, y: 0.0, z: 0.0}}'")
+    assert result.lines == [
+        "publisher: beginning loop",
+        "publishing #1: geometry_msgs.msg.Twist(linear=geometry_msgs.msg.Vector3(x=2.0, y=0.0, z=0.0),"
+        " angular=geometry_msgs.msg.Vector3(x=0.0, y=0.0, z=0.0))",
+        "",
+    ]
+    assert result.stream is None and hidden_nodes(sim) == []
+    step(sim, 1.5)  # turtlesim stops 1 s after the last command
+    turtle = sim.world.turtles["turtle1"]
+    assert turtle.x == pytest.approx(5.544 + 2.0, abs=0.05)
+    assert turtle.y == pytest.approx(5.544, abs=1e-3)
+
+
+def test_topic_pub_without_outer_braces_and_with_ints(sim, cli):
+    ok(cli, "ros2 topic pub -1 /turtle1/cmd_vel geometry_msgs/msg/Twist 'angular: {z: 1}'")
+    step(sim, 0.5)
+    assert sim.world.turtles["turtle1"].theta > 0.3
+
+
+def test_unquoted_yaml_is_joined_back_together(sim, cli):
+    """The shell would split it; students forget the quotes, so join the rest."""
+    pub = ok(cli, "ros2 topic pub --once /turtle1/cmd_vel geometry_msgs/msg/Twist "
+                  "{linear: {x: -1.0}, angular: {z: -1.5}} ")
+    assert "angular=geometry_msgs.msg.Vector3(x=0.0, y=0.0, z=-1.5)" in pub.lines[1]
+    goal = ok(cli, "ros2 action send_goal /turtle1/rotate_absolute turtlesim/action/RotateAbsolute "
+                   "{theta: -1.57} --feedback")
+    assert goal.lines[2] == "     theta: -1.57"
+    step(sim, 0.1)
+    assert "Feedback:" in goal.stream.poll()
+
+
+def test_topic_pub_rate_and_times(sim, cli):
+    result = ok(cli, "ros2 topic pub -r 10 -t 3 /turtle1/cmd_vel geometry_msgs/Twist '{}'")
+    topic = sim.graph.topics["/turtle1/cmd_vel"]
+    assert topic.count == 1 and not result.stream.done
+    step(sim, 0.25)
+    assert topic.count == 3 and result.stream.done
+    lines = result.stream.poll()
+    assert [line.split(":")[0] for line in lines if line] == ["publishing #2", "publishing #3"]
+    step(sim, 1.0)
+    assert topic.count == 3 and hidden_nodes(sim) == []
+
+
+def test_topic_pub_keeps_the_turtle_moving_until_closed(sim, cli):
+    pub = ok(cli, "ros2 topic pub /turtle1/cmd_vel geometry_msgs/msg/Twist "
+                  "\"{linear: {x: 2.0, y: 0.0, z: 0.0}, angular: {x: 0.0, y: 0.0, z: 1.8}}\"")
+    step(sim, 2.5)
+    turtle = sim.world.turtles["turtle1"]
+    assert turtle.vx == 2.0 and turtle.wz == 1.8  # default 1 Hz keeps it going
+    pub.stream.close()
+    assert pub.stream.done and hidden_nodes(sim) == [] and cli.streams == []
+    step(sim, 1.5)
+    assert turtle.vx == 0.0
+
+
+def test_topic_pub_rate_is_capped(sim, cli):
+    result = ok(cli, "ros2 topic pub -r 1000 /turtle1/cmd_vel geometry_msgs/msg/Twist '{}'")
+    assert result.lines[0] == "WARNING: rate limited to 100 Hz in turtletui"
+    step(sim, 1.0)
+    assert sim.graph.topics["/turtle1/cmd_vel"].count == 101
+
+
+def test_topic_pub_print_every_nth(sim, cli):
+    result = ok(cli, "ros2 topic pub -r 100 -p 50 /turtle1/cmd_vel geometry_msgs/msg/Twist '{}'")
+    assert result.lines == ["publisher: beginning loop"]
+    step(sim, 1.0)
+    assert [line[:14] for line in result.stream.poll() if line] == ["publishing #50", "publishing #10"]
+
+
+def test_topic_pub_to_a_new_topic_and_string_fields(sim, cli):
+    pub = ok(cli, "ros2 topic pub -r 10 /chatter std_msgs/msg/String '{data: 42}'")
+    echo = ok(cli, "ros2 topic echo /chatter std_msgs/msg/String")
+    step(sim, 0.15)
+    assert echo.stream.poll() == ["data: '42'", "---"]
+    pub.stream.close()
+    echo.stream.close()
+
+
+def test_topic_pub_warns_about_a_topic_nobody_listens_to(cli):
+    result = ok(cli, "ros2 topic pub --once /turtle1/cmd_vell geometry_msgs/msg/Twist '{}'")
+    assert result.lines[0] == (
+        "WARNING: nothing subscribes to '/turtle1/cmd_vell' yet (did you mean /turtle1/cmd_vel?)")
+
+
+# -- ros2 service ---------------------------------------------------------------
+
+def test_service_list_type_find_info(cli):
+    assert ok(cli, "ros2 service list").lines == [
+        "/clear", "/kill", "/reset", "/spawn", "/turtle1/set_pen",
+        "/turtle1/teleport_absolute", "/turtle1/teleport_relative"]
+    assert ok(cli, "ros2 service list -t").lines[3] == "/spawn [turtlesim/srv/Spawn]"
+    assert ok(cli, "ros2 service type /spawn").lines == ["turtlesim/srv/Spawn"]
+    assert ok(cli, "ros2 service find std_srvs/srv/Empty").lines == ["/clear", "/reset"]
+    assert ok(cli, "ros2 service info /spawn").lines == [
+        "Type: turtlesim/srv/Spawn", "Clients count: 0", "Services count: 1"]
+
+
+def test_service_call_spawn_creates_turtle2(sim, cli):
+    result = ok(cli, "ros2 service call /spawn turtlesim/srv/Spawn \"{x: 2, y: 2, theta: 0.2, name: ''}\"")
+    assert result.lines == [
+        "requester: making request: turtlesim.srv.Spawn_Request(x=2.0, y=2.0, theta=0.2, name='')",
+        "",
+    ]
+    assert not result.stream.done
+    step(sim, 0.016)
+    assert result.stream.done
+    assert result.stream.poll() == ["response:", "turtlesim.srv.Spawn_Response(name='turtle2')", ""]
+    assert "turtle2" in sim.world.turtles
+    assert sim.world.turtles["turtle2"].x == pytest.approx(2.0)
+    assert "/turtle2/pose" in ok(cli, "ros2 topic list").lines
+    assert hidden_nodes(sim) == [] and cli.streams == []
+
+
+def test_service_call_type_may_be_left_out_and_empty_request(sim, cli):
+    kill = ok(cli, "ros2 service call /kill '{name: turtle1}'")
+    reset = ok(cli, "ros2 service call /clear std_srvs/srv/Empty")
+    step(sim, 0.016)
+    assert kill.stream.poll()[:2] == ["response:", "turtlesim.srv.Kill_Response()"]
+    assert reset.stream.poll()[:2] == ["response:", "std_srvs.srv.Empty_Response()"]
+    assert "turtle1" not in sim.world.turtles
+
+
+def test_service_call_set_pen_with_off_key(sim, cli):
+    call = ok(cli, "ros2 service call /turtle1/set_pen turtlesim/srv/SetPen "
+                   "'{r: 255, g: 0, b: 0, width: 5, off: 1}'")
+    step(sim, 0.016)
+    assert call.stream.done
+    assert not sim.world.turtles["turtle1"].pen_on
+
+
+# -- ros2 param ------------------------------------------------------------------
+
+def test_param_list_get(sim, cli):
+    assert ok(cli, "ros2 param list").lines == [
+        "/turtlesim:", "  background_b", "  background_g", "  background_r", "  holonomic"]
+    assert ok(cli, "ros2 param list /turtlesim").lines == [
+        "  background_b", "  background_g", "  background_r", "  holonomic"]
+    assert ok(cli, "ros2 param get /turtlesim background_r").lines == ["Integer value is: 69"]
+    assert ok(cli, "ros2 param get /turtlesim holonomic").lines == ["Boolean value is: False"]
+
+
+def test_param_set_background_r_changes_the_canvas(sim, cli):
+    assert ok(cli, "ros2 param set /turtlesim background_r 150").lines == ["Set parameter successful"]
+    assert sim.world.canvas.background == (150, 86, 255)
+    assert ok(cli, "ros2 param get /turtlesim background_r").lines == ["Integer value is: 150"]
+
+
+def test_param_set_holonomic(sim, cli):
+    assert ok(cli, "ros2 param set /turtlesim holonomic true").lines == ["Set parameter successful"]
+    assert sim.world.holonomic is True
+
+
+def test_param_dump(cli):
+    assert ok(cli, "ros2 param dump /turtlesim").lines == [
+        "/turtlesim:",
+        "  ros__parameters:",
+        "    background_b: 255",
+        "    background_g: 86",
+        "    background_r: 69",
+        "    holonomic: false",
+    ]
+
+
+def test_params_of_other_nodes_and_setters(sim, cli):
+    node = sim.graph.add_node("my_node", owner="test")
+    sim.graph.set_parameter(node, "speed", 2.5)
+    sim.graph.set_parameter(node, "name", "abc")
+    assert ok(cli, "ros2 param get /my_node speed").lines == ["Double value is: 2.5"]
+    assert ok(cli, "ros2 param get /my_node name").lines == ["String value is: abc"]
+    refused = cli.run("ros2 param set /my_node speed 3.0")
+    assert refused.error and refused.lines[0].startswith("Setting parameter failed:")
+    seen = []
+    cli.param_setters["/my_node"] = lambda name, value: seen.append((name, value))
+    assert ok(cli, "ros2 param set /my_node speed 3").lines == ["Set parameter successful"]
+    assert seen == [("speed", 3)]
+
+
+# -- ros2 action ------------------------------------------------------------------
+
+def test_action_list_and_info(cli):
+    assert ok(cli, "ros2 action list").lines == ["/turtle1/rotate_absolute"]
+    assert ok(cli, "ros2 action list -t").lines == [
+        "/turtle1/rotate_absolute [turtlesim/action/RotateAbsolute]"]
+    assert ok(cli, "ros2 action info /turtle1/rotate_absolute").lines == [
+        "Action: /turtle1/rotate_absolute", "Action clients: 0", "Action servers: 1", "    /turtlesim"]
+
+
+def test_action_send_goal_reaches_the_goal(sim, cli):
+    result = ok(cli, "ros2 action send_goal /turtle1/rotate_absolute turtlesim/action/RotateAbsolute "
+                     "\"{theta: 1.57}\"")
+    assert result.lines == [
+        "Waiting for an action server to become available...",
+        "Sending goal:",
+        "     theta: 1.57",
+        "",
+    ]
+    step(sim, 0.016)
+    accepted = result.stream.poll()
+    assert re.fullmatch(r"Goal accepted with ID: [0-9a-f]{32}", accepted[0]) and accepted[1] == ""
+    step(sim, 2.5)  # 1 rad/s
+    assert result.stream.done
+    lines = result.stream.poll()
+    assert "Feedback:" not in lines
+    assert lines[0] == "Result:" and lines[1].startswith("    delta: ") and lines[2] == ""
+    assert lines[3] == "Goal finished with status: SUCCEEDED"
+    assert sim.world.turtles["turtle1"].theta == pytest.approx(1.57, abs=0.02)
+    assert hidden_nodes(sim) == []
+
+
+def test_action_send_goal_feedback(sim, cli):
+    result = ok(cli, "ros2 action send_goal --feedback /turtle1/rotate_absolute "
+                     "turtlesim/action/RotateAbsolute '{theta: -0.5}'")
+    step(sim, 1.0)
+    lines = result.stream.poll()
+    assert lines[2:5] == ["Feedback:", "    remaining: -0.5", ""]
+    assert lines[-1] == "Goal finished with status: SUCCEEDED"
+
+
+def test_closing_send_goal_cancels_it(sim, cli):
+    result = ok(cli, "ros2 action send_goal /turtle1/rotate_absolute turtlesim/action/RotateAbsolute "
+                     "'{theta: 3.0}'")
+    step(sim, 0.5)
+    handle = result.stream.handle
+    result.stream.close()
+    step(sim, 0.1)
+    assert handle.status == "canceled"
+    theta = sim.world.turtles["turtle1"].theta
+    step(sim, 0.5)
+    assert sim.world.turtles["turtle1"].theta == theta
+
+
+# -- ros2 interface ----------------------------------------------------------------
+
+def test_interface_show(cli):
+    lines = ok(cli, "ros2 interface show geometry_msgs/msg/Twist").lines
+    assert lines == definition_text("geometry_msgs/msg/Twist").split("\n")
+    assert lines[2:4] == ["Vector3  linear", "\tfloat64 x"]
+    assert ok(cli, "ros2 interface show turtlesim/srv/Spawn").lines[-2:] == ["---", "string name"]
+
+
+def test_interface_list_and_package(cli):
+    lines = ok(cli, "ros2 interface list").lines
+    assert lines[0] == "Messages:" and "Services:" in lines and "Actions:" in lines
+    assert "    turtlesim/action/RotateAbsolute" in lines
+    assert ok(cli, "ros2 interface package turtlesim").lines[0] == "turtlesim/action/RotateAbsolute"
+    assert "turtlesim" in ok(cli, "ros2 interface packages").lines
+
+
+# -- the command line ---------------------------------------------------------------
+
+def test_leading_ros2_is_optional_and_blank_lines_print_nothing(cli):
+    assert ok(cli, "topic list").lines == ok(cli, "ros2 topic list").lines
+    assert cli.run("   ").lines == [] and not cli.run("").error
+    assert ok(cli, "ros2").lines[0].startswith("usage: ros2")
+    assert ok(cli, "ros2 --help").lines[0].startswith("usage: ros2")
+    assert ok(cli, "ros2 topic pub -h").lines[0].startswith("usage: ros2 topic pub")
+
+
+ERRORS = [
+    ("ros2 topik list", "ros2: unknown command 'topik' (did you mean 'topic'?)"),
+    ("ros2 foo", "ros2: unknown command 'foo' (available: action, interface, node, param, service, topic)"),
+    ("ros2 run turtlesim turtlesim_node", "ros2: 'run' is not available in turtletui"),
+    ("ros2 topic", "ros2 topic: missing verb (one of: echo, find, hz, info, list, pub, type)"),
+    ("ros2 topic lst", "ros2 topic: unknown verb 'lst' (did you mean 'list'?)"),
+    ("ros2 topic echo 'abc", "ros2: could not split the command line (no closing quotation)"),
+    ("ros2 topic echo", "ros2 topic echo: missing argument TOPIC (usage: ros2 topic echo"),
+    ("ros2 topic echo /turtle1/pos",
+     "ros2 topic echo: topic '/turtle1/pos' does not appear to be published yet (did you mean /turtle1/pose?)"),
+    ("ros2 topic echo /turtle1/pose geometry_msgs/msg/Twist",
+     "ros2 topic echo: topic '/turtle1/pose' has type turtlesim/msg/Pose, not geometry_msgs/msg/Twist"),
+    ("ros2 topic echo /turtle1/pose --field q", "ros2 topic echo: invalid field 'q' of turtlesim/msg/Pose"),
+    ("ros2 topic echo /turtle1/pose --onc", "ros2 topic echo: unrecognized option '--onc' (did you mean --once?)"),
+    ("ros2 topic hz /turtle1/poze", "ros2 topic hz: topic '/turtle1/poze' does not appear to be published yet"),
+    ("ros2 topic hz /turtle1/pose -w x", "ros2 topic hz: option -w: invalid value 'x'"),
+    ("ros2 topic info /nope", "ros2 topic info: topic '/nope' does not exist"),
+    ("ros2 topic list extra", "ros2 topic list: unrecognized argument 'extra'"),
+    ("ros2 topic pub /turtle1/cmd_vel geometry_msgs/msg/Twist 'linear: {x: 2.0'",
+     "ros2 topic pub: could not parse message 'linear: {x: 2.0' (unbalanced braces)"),
+    ("ros2 topic pub /turtle1/cmd_vel geometry_msgs/msg/Twist '{linear: [x: 2.0}'",
+     "ros2 topic pub: could not parse message '{linear: [x: 2.0}' (unbalanced brackets)"),
+    ("ros2 topic pub /turtle1/cmd_vel geometry_msgs/msg/Twist \"{linear: {x: 'a}}\"",
+     "ros2 topic pub: could not parse message '{linear: {x: 'a}}' (unclosed quote)"),
+    ("ros2 topic pub /turtle1/cmd_vel geometry_msgs/msg/Twist '{linear: {x: fast}}'",
+     "ros2 topic pub: failed to populate field: geometry_msgs/msg/Twist: field 'linear.x' must be a float, got str 'fast'"),
+    ("ros2 topic pub /turtle1/cmd_vel geometry_msgs/msg/Twist '{linar: {x: 1}}'",
+     "ros2 topic pub: failed to populate field: geometry_msgs/msg/Twist: unknown field 'linar'"),
+    ("ros2 topic pub /turtle1/cmd_vel geometry_msgs/msg/Twist '[1, 2]'",
+     "ros2 topic pub: the message must be a YAML dictionary"),
+    ("ros2 topic pub /turtle1/cmd_vel geometry_msgs/msg/Twst '{}'",
+     "ros2 topic pub: unknown interface type 'geometry_msgs/msg/Twst'; did you mean geometry_msgs/msg/Twist"),
+    ("ros2 topic pub /turtle1/cmd_vel turtlesim/srv/Spawn '{}'",
+     "ros2 topic pub: 'turtlesim/srv/Spawn' is a service type, not a message type"),
+    ("ros2 topic pub /turtle1/cmd_vel turtlesim/msg/Pose '{}'",
+     "ros2 topic pub: topic '/turtle1/cmd_vel' has type geometry_msgs/msg/Twist, not turtlesim/msg/Pose"),
+    ("ros2 topic pub -r 0 /turtle1/cmd_vel geometry_msgs/msg/Twist '{}'",
+     "ros2 topic pub: the rate must be a positive number of Hz, got 0"),
+    ("ros2 topic pub /turtle1/cmd_vel", "ros2 topic pub: missing argument TYPE"),
+    ("ros2 service call /spwn turtlesim/srv/Spawn '{}'",
+     "ros2 service call: service '/spwn' is not available (did you mean /spawn?)"),
+    ("ros2 service call /spawn turtlesim/srv/Kill '{}'",
+     "ros2 service call: service '/spawn' has type turtlesim/srv/Spawn, not turtlesim/srv/Kill"),
+    ("ros2 service call /spawn turtlesim/srv/Spawn '{x: 1, x: 2}'",
+     "ros2 service call: could not parse request '{x: 1, x: 2}' (field 'x' is given twice)"),
+    ("ros2 service call /spawn turtlesim/srv/Spawn '{name: [1}'",
+     "ros2 service call: could not parse request '{name: [1}' (unbalanced brackets)"),
+    ("ros2 service type /spwan", "ros2 service type: service '/spwan' does not exist (did you mean /spawn?)"),
+    ("ros2 param get /turtlsim background_r", "ros2 param get: node '/turtlsim' not found (did you mean /turtlesim?)"),
+    ("ros2 param get /turtlesim background", "Parameter not set. (did you mean background_"),
+    ("ros2 param set /turtlesim background_r 300",
+     "Setting parameter failed: parameter 'background_r' must be an integer in 0..255, got 300"),
+    ("ros2 param set /turtlesim background_r", "ros2 param set: missing argument VALUE"),
+    ("ros2 param set /turtlesim speed 1", "Setting parameter failed: parameter 'speed' is not declared by /turtlesim"),
+    ("ros2 action send_goal /turtle1/rotate turtlesim/action/RotateAbsolute '{theta: 1}'",
+     "ros2 action send_goal: action '/turtle1/rotate' is not available (did you mean /turtle1/rotate_absolute?)"),
+    ("ros2 action send_goal /turtle1/rotate_absolute turtlesim/action/RotateAbsolute '{heading: 1}'",
+     "ros2 action send_goal: failed to populate field: turtlesim/action/RotateAbsolute_Goal: unknown field 'heading'"),
+    ("ros2 action send_goal /turtle1/rotate_absolute turtlesim/action/RotateAbsolute",
+     "ros2 action send_goal: missing argument YAML"),
+    ("ros2 action info /nope", "ros2 action info: action '/nope' does not exist"),
+    ("ros2 interface show geometry_msgs/msg/Twst",
+     "ros2 interface show: unknown interface type 'geometry_msgs/msg/Twst'; did you mean geometry_msgs/msg/Twist"),
+    ("ros2 interface show foo/Bar",
+     "ros2 interface show: unknown interface type 'foo/Bar' (see 'ros2 interface list' for the"),
+    ("ros2 interface package turtlesimm",
+     "ros2 interface package: unknown package 'turtlesimm' (did you mean turtlesim?)"),
+    ("ros2 node info /turtlesm", "ros2 node info: node '/turtlesm' not found (did you mean /turtlesim?)"),
+    ("ros2 param dump /turtlesim > turtlesim.yaml",
+     "ros2: shell operators such as '>' are not supported here"),
+]
+
+
+@pytest.mark.parametrize(("line", "expected"), ERRORS, ids=[line for line, _ in ERRORS])
+def test_errors_are_one_clear_line(sim, cli, line, expected):
+    result = cli.run(line)
+    assert result.error and result.stream is None
+    assert len(result.lines) == 1 and "\n" not in result.lines[0]
+    assert result.lines[0].startswith(expected), result.lines[0]
+    assert "Traceback" not in result.lines[0]
+    assert hidden_nodes(sim) == [] and cli.streams == []
+
+
+@pytest.mark.parametrize("line", [
+    "ros2 topic pub", "ros2 topic pub --rate", "ros2 topic pub -r -1", "ros2 topic pub a b c d e",
+    "ros2 param set / / /", "ros2 topic echo /", "ros2 service call", "ros2 service call /spawn '{{{'",
+    "ros2 action send_goal / / /", "ros2 topic pub /x '' ''", "ros2 interface show ''",
+    "ros2 topic echo /turtle1/pose --field x.y", "ros2 node info ''", "ros2 param get '' ''",
+    "ros2 topic pub /t std_msgs/msg/String '{data: \"\\q\"}'", "ros2 -- --", "ros2 topic --once",
+])
+def test_no_command_raises(cli, line):
+    result = cli.run(line)
+    assert isinstance(result, CommandResult)
+    assert all(isinstance(text, str) for text in result.lines)
+    assert not any("internal error" in text for text in result.lines), result.lines
+    if result.error:
+        assert len(result.lines) == 1
+
+
+def test_close_all_removes_every_hidden_node(sim, cli):
+    ok(cli, "ros2 topic echo /turtle1/pose")
+    ok(cli, "ros2 topic hz /turtle1/pose")
+    ok(cli, "ros2 topic pub /turtle1/cmd_vel geometry_msgs/msg/Twist '{}'")
+    assert len(cli.streams) == 3 and len(hidden_nodes(sim)) == 3
+    cli.close_all()
+    assert cli.streams == [] and hidden_nodes(sim) == []
+    assert ok(cli, "ros2 topic info /turtle1/pose").lines[2] == "Subscription count: 0"
+    step(sim, 1.5)  # nothing of theirs is left to run
+
+
+# -- the YAML of arguments and of echo -------------------------------------------------
+
+@pytest.mark.parametrize(("text", "value"), [
+    ("{linear: {x: 2.0, y: 0.0, z: 0.0}, angular: {x: 0.0, y: 0.0, z: 1.8}}",
+     {"linear": {"x": 2.0, "y": 0.0, "z": 0.0}, "angular": {"x": 0.0, "y": 0.0, "z": 1.8}}),
+    ("{x: 1, y: 1, theta: 0, name: ''}", {"x": 1, "y": 1, "theta": 0, "name": ""}),
+    ("linear: {x: 2.0}", {"linear": {"x": 2.0}}),
+    ("x: 1, y: -2.5", {"x": 1, "y": -2.5}),
+    ("{}", {}),
+    ("", None),
+    ("150", 150),
+    ("-3", -3),
+    ("1.5e3", 1500.0),
+    ("0x1F", 31),
+    ("true", True),
+    ("False", False),
+    ("on", True),
+    ("~", None),
+    ("hello world", "hello world"),
+    ("'quoted: string'", "quoted: string"),
+    ("\"tab\\there\"", "tab\there"),
+    ("'it''s'", "it's"),
+    ("[1, 2.5, abc, [], {}]", [1, 2.5, "abc", [], {}]),
+    ("{off: 1, 'on': 2}", {"off": 1, "on": 2}),
+    ("{a: , b: 2}", {"a": None, "b": 2}),
+    ("{a b, c}", {"a b": None, "c": None}),
+    ("[x: 1, {y: 2}]", [{"x": 1}, {"y": 2}]),
+    ("{name: turtle 2}  # a comment", {"name": "turtle 2"}),
+    ("{a: .inf, b: -.inf}", {"a": math.inf, "b": -math.inf}),
+    ("{path: /turtle1/pose, t: 12:30}", {"path": "/turtle1/pose", "t": "12:30"}),
+])
+def test_parse_yaml(text, value):
+    assert parse_yaml(text) == value
+
+
+@pytest.mark.parametrize(("text", "reason"), [
+    ("{a: 1", "unbalanced braces"),
+    ("{a: 1}}", "unbalanced braces"),
+    ("a: {b: 1", "unbalanced braces"),
+    ("[1, 2", "unbalanced brackets"),
+    ("{a: [1}", "unbalanced brackets"),
+    ("{a: 'x}", "unclosed quote"),
+    ("{a: 1 b: 2}", "expected ',' or '}', found ':'"),
+    ("{a: 1, a: 2}", "field 'a' is given twice"),
+    ("{a: \"\\q\"}", "unknown escape"),
+    ("{,}", "unexpected ','"),
+])
+def test_parse_yaml_errors(text, reason):
+    with pytest.raises(YamlError, match=re.escape(reason)):
+        parse_yaml(text)
+
+
+def test_yaml_lines_as_pyyaml_dumps_them():
+    assert yaml_lines({
+        "a": 1.0, "b": 1e17, "c": True, "d": "", "e": "plain", "f": "yes", "g": "12",
+        "h": "a: b", "i": [1, 2], "j": [], "k": {}, "l": [{"x": 1, "y": 2}],
+        "m": {"n": {"o": 0.1}}, "p": "it's", "q": math.nan, "r": -math.inf,
+    }) == [
+        "a: 1.0", "b: 1.0e+17", "c: true", "d: ''", "e: plain", "f: 'yes'", "g: '12'",
+        "h: 'a: b'", "i:", "- 1", "- 2", "j: []", "k: {}", "l:", "- x: 1", "  y: 2",
+        "m:", "  n:", "    o: 0.1", "p: it's", "q: .nan", "r: -.inf",
+    ]
+    assert yaml_lines({}) == ["{}"]
+    assert yaml_lines([[1, 2], [3]]) == ["- - 1", "  - 2", "- - 3"]
+
+
+# -- hygiene ---------------------------------------------------------------------------
+
+def test_the_interpreter_imports_no_front_end():
+    code = ("import sys, turtletui.tui.ros2cli; "
+            "print(sorted(m for m in ('textual', 'typer', 'yaml') if m in sys.modules))")
+    env = dict(os.environ)
+    env["PYTHONPATH"] = os.pathsep.join(p for p in (str(PACKAGE_ROOT), env.get("PYTHONPATH")) if p)
+    proc = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True,
+                          timeout=60, stdin=subprocess.DEVNULL)
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout.strip() == "[]"

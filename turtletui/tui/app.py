@@ -1,0 +1,267 @@
+"""The Textual app: watch, drive and debug the turtle in any terminal."""
+
+from __future__ import annotations
+
+import time
+from collections import deque
+from collections.abc import Sequence
+from pathlib import Path
+
+from textual.app import App, ComposeResult
+from textual.binding import Binding
+from textual.containers import Horizontal
+from textual.css.query import NoMatches
+from textual.widgets import ContentSwitcher, DataTable, Footer, Input, Static
+
+from turtletui.graph.introspection import snapshot
+from turtletui.runtime.loader import ControllerSpec
+from turtletui.tui.ros2cli import Ros2Cli
+from turtletui.tui.session import LiveSession
+from turtletui.tui.widgets.arena import ArenaView
+from turtletui.tui.widgets.panels import (
+    ConsolePanel,
+    GraphPanel,
+    LessonPanel,
+    LogPanel,
+    TopicsPanel,
+)
+
+TICK_SECONDS = 0.016
+"""The simulation advances every 16 ms of wall time, like turtlesim's timer."""
+
+FRAME_SECONDS = 1 / 30
+"""Screen updates at most 30 times a second, and only when something changed."""
+
+RELOAD_SECONDS = 0.5
+"""How often controller files are checked for changes."""
+
+PANELS = ("log", "topics", "graph", "lesson", "console")
+
+
+class TurtleApp(App):
+    """turtlesim, rqt_console, rqt_graph and the ros2 command line in one screen."""
+
+    CSS_PATH = "app.tcss"
+    TITLE = "turtletui"
+    BINDINGS = [
+        Binding("space", "pause", "Pause"),
+        Binding("n", "step", "Step"),
+        Binding("plus,equals_sign", "faster", "Faster"),
+        Binding("minus", "slower", "Slower"),
+        Binding("R", "reset", "Reset"),
+        Binding("C", "clear", "Clear"),
+        Binding("S", "restart", "Restart node"),
+        Binding("1", "panel('log')", "Log"),
+        Binding("2", "panel('topics')", "Topics"),
+        Binding("3", "panel('graph')", "Graph"),
+        Binding("4", "panel('lesson')", "Lesson"),
+        Binding("5", "panel('console')", "Console", show=False),
+        Binding("colon,slash", "command_line", "ros2 command"),
+        Binding("up", "drive(1, 0)", "Forward", show=False),
+        Binding("down", "drive(-1, 0)", "Back", show=False),
+        Binding("left", "drive(0, 1)", "Left", show=False),
+        Binding("right", "drive(0, -1)", "Right", show=False),
+        *(Binding(key, f"rotate('{key}')", f"Rotate {key}", show=False) for key in "gtredcvb"),
+        Binding("f", "cancel_rotation", "Cancel rotation", show=False),
+        Binding("escape", "focus_arena", "Back to the arena", show=False),
+        Binding("q", "quit", "Quit"),
+    ]
+
+    def __init__(
+        self,
+        controllers: Sequence[ControllerSpec] = (),
+        *,
+        lesson: Path | None = None,
+        ascii: bool = False,
+        ros_args: Sequence[str] = (),
+        seed: int = 0,
+        overlays: Sequence[tuple[float, float, float, float]] = (),
+        clock: object = time.monotonic,
+    ) -> None:
+        super().__init__()
+        self._controllers = list(controllers)
+        self._lesson = lesson
+        self._ascii = ascii
+        self._ros_args = list(ros_args)
+        self._seed = seed
+        self._overlays = tuple(overlays)
+        self._clock = clock
+        self.session: LiveSession | None = None
+        self._log_seen = 0
+        self._last_frame = 0.0
+        self._last_reload = 0.0
+        self._streams: list = []
+        self._echo = None
+        self._last_tick: float | None = None
+        self.tick_gaps: deque[float] = deque(maxlen=4096)
+        """Wall seconds between the latest ticks: how steady the loop is."""
+
+    # -- layout --------------------------------------------------------------
+    def compose(self) -> ComposeResult:
+        yield Static(id="status")
+        with Horizontal(id="main"):
+            yield ArenaView(None, ascii=self._ascii, overlays=self._overlays, id="arena")
+            with ContentSwitcher(initial="log", id="side"):
+                yield LogPanel(id="log")
+                yield TopicsPanel(id="topics")
+                yield GraphPanel(id="graph")
+                yield LessonPanel(self._lesson_text(), id="lesson")
+                yield ConsolePanel(id="console", max_lines=500, wrap=False)
+        yield Input(placeholder="ros2 topic list   (Enter runs it, Esc returns to the arena)", id="command")
+        yield Footer()
+
+    def _lesson_text(self) -> str:
+        if self._lesson is None:
+            return "No lesson is open. Start one with `turtletui run --lesson FILE`."
+        try:
+            return self._lesson.read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError) as err:
+            return f"**Cannot read the lesson {self._lesson}:** {err}"
+
+    def on_mount(self) -> None:
+        self.session = LiveSession(self._controllers, ros_args=self._ros_args, seed=self._seed)
+        self.cli = Ros2Cli(self.session.sim)
+        arena = self.query_one(ArenaView)
+        arena.world = self.session.sim.world
+        arena.focus()
+        self.session.advance(self._clock())
+        self.set_interval(TICK_SECONDS, self._tick)
+        self._render_frame()
+
+    def on_unmount(self) -> None:
+        for stream in self._streams:
+            stream.close()
+        if self.session is not None:
+            self.session.close()
+
+    # -- the loop ---------------------------------------------------------------
+    def _tick(self) -> None:
+        session = self.session
+        now = self._clock()
+        if self._last_tick is not None:
+            self.tick_gaps.append(now - self._last_tick)
+        self._last_tick = now
+        session.advance(now)
+        for stream in list(self._streams):
+            lines = stream.poll()
+            if lines:
+                if stream is self._echo:
+                    self.query_one(TopicsPanel).echo(lines)
+                else:
+                    self.query_one(ConsolePanel).show(lines)
+            if stream.done:
+                self._streams.remove(stream)
+        if now - self._last_reload >= RELOAD_SECONDS:
+            self._last_reload = now
+            session.check_for_changes()
+        if now - self._last_frame >= FRAME_SECONDS:
+            self._last_frame = now
+            self._render_frame()
+
+    def _render_frame(self) -> None:
+        session = self.session
+        try:
+            arena = self.query_one(ArenaView)
+        except NoMatches:
+            return  # shutting down: the screen is gone, the timer not yet
+        arena.refresh_frame()
+        if session.log_count != self._log_seen:
+            new = min(session.log_count - self._log_seen, len(session.logs))
+            self._log_seen = session.log_count
+            self.query_one(LogPanel).add(list(session.logs)[-new:])
+        side = self.query_one(ContentSwitcher).current
+        if side in ("topics", "graph"):
+            graph = snapshot(session.sim.graph)
+            if side == "topics":
+                self.query_one(TopicsPanel).update_topics(graph)
+            else:
+                self.query_one(GraphPanel).update_graph(graph)
+        self.query_one("#status", Static).update(self._status())
+
+    def _status(self) -> str:
+        session = self.session
+        state = "paused" if session.paused else "running"
+        controllers = "; ".join(
+            f"{slot.spec.name}: {slot.status}" + (f" ({slot.detail})" if slot.status == "failed" else "")
+            for slot in session.slots
+        )
+        return f" t = {session.t:8.3f} s   x{session.speed:g}   {state}   {controllers or 'no controller'}"
+
+    # -- actions -------------------------------------------------------------------
+    def action_pause(self) -> None:
+        self.session.toggle_pause()
+        self._render_frame()
+
+    def action_step(self) -> None:
+        self.session.step()
+        self._render_frame()
+
+    def action_faster(self) -> None:
+        self.session.faster()
+        self._render_frame()
+
+    def action_slower(self) -> None:
+        self.session.slower()
+        self._render_frame()
+
+    def action_reset(self) -> None:
+        self.session.reset()
+
+    def action_clear(self) -> None:
+        self.session.clear()
+
+    def action_restart(self) -> None:
+        self.session.restart_controllers()
+
+    def action_drive(self, linear: int, angular: int) -> None:
+        self.session.teleop.drive(float(linear), float(angular))
+
+    def action_rotate(self, key: str) -> None:
+        self.session.teleop.rotate(key)
+
+    def action_cancel_rotation(self) -> None:
+        self.session.teleop.cancel()
+
+    def action_panel(self, name: str) -> None:
+        switcher = self.query_one(ContentSwitcher)
+        switcher.display = not (switcher.display and switcher.current == name)
+        switcher.current = name
+        self._render_frame()
+
+    def action_command_line(self) -> None:
+        self.query_one("#command", Input).focus()
+
+    def action_focus_arena(self) -> None:
+        self.query_one(ArenaView).focus()
+
+    # -- the ros2 command line -------------------------------------------------------
+    def on_input_submitted(self, event: Input.Submitted) -> None:
+        if event.input.id != "command":
+            return
+        line = event.value.strip()
+        event.input.value = ""
+        if not line:
+            return
+        console = self.query_one(ConsolePanel)
+        switcher = self.query_one(ContentSwitcher)
+        switcher.display = True
+        switcher.current = "console"
+        console.command(line)
+        result = self.cli.run(line)
+        console.show(result.lines, error=result.error)
+        if result.stream is not None:
+            self._streams.append(result.stream)
+
+    def on_data_table_row_selected(self, event: DataTable.RowSelected) -> None:
+        topic = self.query_one(TopicsPanel).selected_topic()
+        if topic is None:
+            return
+        if self._echo is not None:
+            self._echo.close()
+            if self._echo in self._streams:
+                self._streams.remove(self._echo)
+        result = self.cli.run(f"ros2 topic echo {topic}")
+        self.query_one(TopicsPanel).echo([f"--- echo {topic} ---", *result.lines])
+        self._echo = result.stream
+        if result.stream is not None:
+            self._streams.append(result.stream)

@@ -1,0 +1,257 @@
+"""What the app shows and drives, without Textual: a live simulation in real
+time, its sandboxed controllers, teleop, and the controls (pause, step,
+speed, reset, clear, restart, hot reload). The app calls ``advance()`` from
+its 16 ms timer and reads the rest as plain data.
+"""
+
+from __future__ import annotations
+
+import os
+from collections import deque
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from turtletui.graph.logs import ERROR, INFO, LogRecord
+from turtletui.interfaces.geometry_msgs import Twist
+from turtletui.interfaces.std_srvs import Empty
+from turtletui.interfaces.turtlesim import RotateAbsolute
+from turtletui.runtime.loader import ControllerError, ControllerSpec, check_source
+from turtletui.runtime.sandbox import Limits, SandboxHost
+from turtletui.runtime.simulation import Simulation
+from turtletui.sim import DT
+
+SPEEDS = (0.25, 0.5, 1.0, 2.0, 4.0, 8.0)
+"""Simulation speeds the app offers, in simulated seconds per wall second."""
+
+MAX_CATCH_UP = 0.25
+"""Wall seconds of simulation at most per advance: after a stall (a
+suspended laptop, a slow terminal) the world does not race to catch up."""
+
+TELEOP_LINEAR = 2.0
+TELEOP_ANGULAR = 2.0
+"""turtle_teleop_key's scale_linear and scale_angular parameters."""
+
+TELEOP_HEADINGS = {
+    "g": 0.0,
+    "t": 0.7854,
+    "r": 1.5708,
+    "e": 2.3562,
+    "d": 3.1416,
+    "c": -2.3562,
+    "v": -1.5708,
+    "b": -0.7854,
+}
+"""turtle_teleop_key's rotate_absolute goals, as it sends them (rad)."""
+
+_OWNER = "app"
+
+
+@dataclass
+class ControllerSlot:
+    """One controller the app runs, and the file it watches for changes."""
+
+    spec: ControllerSpec
+    host: SandboxHost | None = None
+    mtime: float | None = None
+    status: str = "starting"
+    """starting, running, stopped (ended normally) or failed."""
+    detail: str = ""
+
+
+@dataclass
+class Teleop:
+    """turtle_teleop_key as a node of the app: arrows publish a Twist each,
+    g/t/r/e/d/c/v/b send rotate_absolute goals, f cancels."""
+
+    sim: Simulation
+    turtle: str = "turtle1"
+    goal: Any = None
+    node: Any = field(init=False)
+
+    def __post_init__(self) -> None:
+        self.node = self.sim.graph.add_node("teleop_turtle", "", _OWNER)
+        self._publisher = self.sim.graph.add_publisher(self.node, f"/{self.turtle}/cmd_vel", Twist, 1)
+        self.sim.graph.add_action_client(self.node, f"/{self.turtle}/rotate_absolute", RotateAbsolute)
+
+    def drive(self, linear: float = 0.0, angular: float = 0.0) -> None:
+        msg = Twist()
+        msg.linear.x = linear * TELEOP_LINEAR
+        msg.angular.z = angular * TELEOP_ANGULAR
+        self.sim.graph.publish(self._publisher.topic, msg)
+
+    def rotate(self, key: str) -> None:
+        self.sim.graph.send_goal(
+            f"/{self.turtle}/rotate_absolute",
+            RotateAbsolute.Goal(theta=TELEOP_HEADINGS[key]),
+            _OWNER,
+            self._accepted,
+            lambda feedback: None,
+            self._finished,
+        )
+
+    def cancel(self) -> None:
+        if self.goal is not None:
+            self.sim.graph.cancel_goal(self.goal)
+
+    def _accepted(self, handle: Any) -> None:
+        self.goal = handle
+
+    def _finished(self, status: str, result: Any) -> None:
+        self.goal = None
+        self.sim.graph.log("teleop_turtle", INFO, f"Rotation goal {status}, turned {result.delta:.4f} rad")
+
+
+class LiveSession:
+    """A real-time simulation with its controllers, for the app."""
+
+    def __init__(
+        self,
+        controllers: Sequence[ControllerSpec] = (),
+        *,
+        ros_args: Sequence[str] = (),
+        seed: int = 0,
+        limits: Limits | None = None,
+        log_capacity: int = 2000,
+    ) -> None:
+        self.logs: deque[LogRecord] = deque(maxlen=log_capacity)
+        """The latest log lines (bounded, so memory stays flat)."""
+        self.log_count = 0
+        """Log lines seen since the start (the app compares it to know what is new)."""
+        self.sim = Simulation(realtime=True, paced=False, log_sinks=[self._on_log])
+        self.teleop = Teleop(self.sim)
+        self.paused = False
+        self.speed = 1.0
+        self._ros_args = list(ros_args)
+        if self._ros_args and self._ros_args[0] != "--ros-args":
+            self._ros_args.insert(0, "--ros-args")
+        self._seed = seed
+        self._limits = limits or Limits(start_timeout=3.0)
+        self._target_ns = 0
+        self._last_wall: float | None = None
+        self.slots = [ControllerSlot(spec) for spec in controllers]
+        for slot in self.slots:
+            self._start(slot)
+
+    # -- time ---------------------------------------------------------------
+    @property
+    def t(self) -> float:
+        return self.sim.t
+
+    def advance(self, now: float) -> None:
+        """Run the simulation up to wall time ``now`` (time.monotonic())."""
+        last, self._last_wall = self._last_wall, now
+        if last is None or self.paused:
+            return
+        elapsed = min(max(now - last, 0.0), MAX_CATCH_UP)
+        self._target_ns += round(elapsed * self.speed * 1e9)
+        self.sim.run_until(self._target_ns)
+        self._watch_controllers()
+
+    def toggle_pause(self) -> bool:
+        self.paused = not self.paused
+        return self.paused
+
+    def step(self) -> None:
+        """One 16 ms step (pauses first)."""
+        self.paused = True
+        self._target_ns = self.sim.graph.now_ns + round(DT * 1e9)
+        self.sim.run_until(self._target_ns)
+        self._watch_controllers()
+
+    def faster(self) -> float:
+        self.speed = next((s for s in SPEEDS if s > self.speed), SPEEDS[-1])
+        return self.speed
+
+    def slower(self) -> float:
+        self.speed = next((s for s in reversed(SPEEDS) if s < self.speed), SPEEDS[0])
+        return self.speed
+
+    # -- turtlesim's services -------------------------------------------------
+    def reset(self) -> None:
+        """Call /reset, as `ros2 service call /reset std_srvs/srv/Empty` would."""
+        self.sim.graph.call("/reset", Empty.Request(), lambda response: None, _OWNER)
+
+    def clear(self) -> None:
+        self.sim.graph.call("/clear", Empty.Request(), lambda response: None, _OWNER)
+
+    # -- controllers --------------------------------------------------------------
+    def restart_controllers(self) -> None:
+        for slot in self.slots:
+            self._stop(slot)
+            self._log(INFO, f"restarting {slot.spec.label}")
+            self._start(slot)
+
+    def check_for_changes(self) -> list[str]:
+        """Reload controllers whose file changed; returns what was reloaded.
+        A file that no longer compiles is reported and the running one kept."""
+        reloaded = []
+        for slot in self.slots:
+            path = slot.spec.path
+            if path is None:
+                continue
+            mtime = _mtime(path)
+            if mtime is None or mtime == slot.mtime:
+                continue
+            slot.mtime = mtime
+            try:
+                check_source(path)
+            except ControllerError as err:
+                self._log(ERROR, f"{err} (the previous version keeps running)")
+                continue
+            self._stop(slot)
+            self._log(INFO, f"{path.name} changed: reloading its node")
+            self._start(slot)
+            reloaded.append(slot.spec.label)
+        return reloaded
+
+    def close(self) -> None:
+        for slot in self.slots:
+            self._stop(slot)
+
+    def _start(self, slot: ControllerSlot) -> None:
+        if slot.spec.path is not None:
+            slot.mtime = _mtime(slot.spec.path)
+        try:
+            slot.host = SandboxHost.start(
+                self.sim, slot.spec, ros_args=self._ros_args, seed=self._seed, limits=self._limits
+            )
+        except ControllerError as err:
+            slot.host, slot.status, slot.detail = None, "failed", str(err)
+            self._log(ERROR, str(err))
+            return
+        slot.status, slot.detail = "running", ""
+        self._watch_controllers()
+
+    def _stop(self, slot: ControllerSlot) -> None:
+        if slot.host is not None:
+            slot.host.close()
+            slot.host = None
+
+    def _watch_controllers(self) -> None:
+        for slot in self.slots:
+            host = slot.host
+            if host is None or not host.finished:
+                continue
+            slot.host = None
+            if host.crash is not None:
+                slot.status, slot.detail = "failed", host.crash.summary()
+            else:
+                slot.status, slot.detail = "stopped", "its main() returned"
+
+    # -- logs -------------------------------------------------------------------------
+    def _on_log(self, record: LogRecord) -> None:
+        self.logs.append(record)
+        self.log_count += 1
+
+    def _log(self, level: int, msg: str) -> None:
+        self.sim.graph.log("turtletui", level, msg)
+
+
+def _mtime(path: Path) -> float | None:
+    try:
+        return os.stat(path).st_mtime
+    except OSError:
+        return None
+

@@ -1,0 +1,1 @@
+"""Textual widgets of the turtletui app (``arena.ArenaView``: the turtlesim window)."""
