@@ -176,3 +176,18 @@ async def test_a_hung_controller_leaves_the_app_responsive(tmp_path: Path) -> No
         assert app.session.paused
         assert "did not answer within" in app.session.slots[0].detail
         assert "was stopped" in log_text(app)
+
+
+@pilot_test
+async def test_the_command_palette_offers_the_controls() -> None:
+    app = TurtleApp()
+    async with app.run_test(size=SIZE) as pilot:
+        titles = [command.title for command in app.get_system_commands(app.screen)]
+        for title in ("Pause / resume", "Step", "Reset turtlesim", "Restart the controller", "Show the graph panel"):
+            assert title in titles
+        commands = {c.title: c.callback for c in app.get_system_commands(app.screen)}
+        commands["Pause / resume"]()
+        before = app.session.t
+        commands["Step"]()
+        await pilot.pause()
+        assert app.session.paused and app.session.t == pytest.approx(before + 0.016, abs=1e-9)

@@ -4,13 +4,15 @@ from __future__ import annotations
 
 import time
 from collections import deque
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
+from functools import partial
 from pathlib import Path
 
-from textual.app import App, ComposeResult
+from textual.app import App, ComposeResult, SystemCommand
 from textual.binding import Binding
 from textual.containers import Horizontal
 from textual.css.query import NoMatches
+from textual.screen import Screen
 from textual.widgets import ContentSwitcher, DataTable, Footer, Input, Static
 
 from turtletui.graph.introspection import snapshot
@@ -107,7 +109,9 @@ class TurtleApp(App):
                 yield GraphPanel(id="graph")
                 yield LessonPanel(self._lesson_text(), id="lesson")
                 yield ConsolePanel(id="console", max_lines=500, wrap=False)
-        yield Input(placeholder="ros2 topic list   (Enter runs it, Esc returns to the arena)", id="command")
+        yield Input(
+            placeholder="ros2 topic list   (Enter runs it, Esc returns to the arena)", compact=True, id="command"
+        )
         yield Footer()
 
     def _lesson_text(self) -> str:
@@ -187,6 +191,26 @@ class TurtleApp(App):
         )
         return f" t = {session.t:8.3f} s   x{session.speed:g}   {state}   {controllers or 'no controller'}"
 
+    def get_system_commands(self, screen: Screen) -> Iterable[SystemCommand]:
+        """The command palette (ctrl+p) offers every control the keys do."""
+        yield from super().get_system_commands(screen)
+        commands = [
+            ("Pause / resume", "Stop or restart simulated time (space)", self.action_pause),
+            ("Step", "Advance one 16 ms step (n)", self.action_step),
+            ("Faster", "Double the simulation speed, up to x8 (+)", self.action_faster),
+            ("Slower", "Halve the simulation speed, down to x0.25 (-)", self.action_slower),
+            ("Reset turtlesim", "Call /reset: one turtle1 at the centre, drawing cleared (R)", self.action_reset),
+            ("Clear the drawing", "Call /clear (C)", self.action_clear),
+            ("Restart the controller", "Stop and start the controller nodes again (S)", self.action_restart),
+            ("ros2 command line", "Type ros2 commands against the simulation (:)", self.action_command_line),
+        ]
+        commands += [
+            (f"Show the {name} panel", f"Toggle the {name} panel ({key})", partial(self.action_panel, name))
+            for key, name in enumerate(PANELS, start=1)
+        ]
+        for title, help_text, callback in commands:
+            yield SystemCommand(title, help_text, callback)
+
     # -- actions -------------------------------------------------------------------
     def action_pause(self) -> None:
         self.session.toggle_pause()
@@ -229,9 +253,12 @@ class TurtleApp(App):
         self._render_frame()
 
     def action_command_line(self) -> None:
-        self.query_one("#command", Input).focus()
+        command = self.query_one("#command", Input)
+        command.add_class("open")
+        command.focus()
 
     def action_focus_arena(self) -> None:
+        self.query_one("#command", Input).remove_class("open")
         self.query_one(ArenaView).focus()
 
     # -- the ros2 command line -------------------------------------------------------

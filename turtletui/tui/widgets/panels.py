@@ -30,9 +30,10 @@ class LogPanel(Vertical):
                 [(name, level) for level, name in sorted(LEVEL_NAMES.items())],
                 value=10,
                 allow_blank=False,
+                compact=True,
                 id="log-level",
             )
-            yield Input(placeholder="node filter", id="log-node")
+            yield Input(placeholder="node filter", compact=True, id="log-node")
         yield RichLog(id="log-lines", max_lines=MAX_LOG_LINES, wrap=False, auto_scroll=True)
 
     def on_mount(self) -> None:
