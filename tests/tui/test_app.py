@@ -191,3 +191,40 @@ async def test_the_command_palette_offers_the_controls() -> None:
         commands["Step"]()
         await pilot.pause()
         assert app.session.paused and app.session.t == pytest.approx(before + 0.016, abs=1e-9)
+
+
+@pilot_test
+async def test_a_broken_file_is_reported_and_runs_once_fixed(tmp_path: Path) -> None:
+    path = tmp_path / "broken.py"
+    path.write_text("import rclpy\ndef main(:\n")
+    app = TurtleApp([ControllerSpec("broken", path=path)])
+    async with app.run_test(size=(80, 24)) as pilot:
+        await wait_for(pilot, lambda: "SyntaxError" in log_text(app))
+        assert f"{path}:2" in log_text(app)
+        assert app.session.slots[0].status == "failed"
+        time.sleep(0.01)
+        path.write_text(textwrap.dedent("""
+            import rclpy
+            from rclpy.node import Node
+
+
+            def main():
+                rclpy.init()
+                node = Node("fixed")
+                node.get_logger().info("fixed and running")
+                rclpy.spin(node)
+        """))
+        await wait_for(pilot, lambda: "fixed and running" in log_text(app))
+        assert app.session.slots[0].status == "running"
+
+
+@pilot_test
+async def test_a_tiny_terminal_gets_a_message_not_a_crash() -> None:
+    app = TurtleApp()
+    async with app.run_test(size=(40, 12)) as pilot:
+        await pilot.pause(0.2)
+        arena = app.query_one("#arena")
+        # Narrow: the side panel gives way, and the arena says what it needs.
+        assert not app.query_one(ContentSwitcher).display
+        text = " ".join(" ".join(arena.render_line(y).text.split()) for y in range(arena.size.height))
+        assert "Terminal too small: need at least 24x12 for the arena" in " ".join(text.split())

@@ -39,6 +39,9 @@ RELOAD_SECONDS = 0.5
 
 PANELS = ("log", "topics", "graph", "lesson", "console")
 
+NARROW = 60
+"""Columns below which the side panel gives way to the arena."""
+
 
 class TurtleApp(App):
     """turtlesim, rqt_console, rqt_graph and the ros2 command line in one screen."""
@@ -95,6 +98,7 @@ class TurtleApp(App):
         self._streams: list = []
         self._echo = None
         self._last_tick: float | None = None
+        self._side_open = True
         self.tick_gaps: deque[float] = deque(maxlen=4096)
         """Wall seconds between the latest ticks: how steady the loop is."""
 
@@ -248,9 +252,18 @@ class TurtleApp(App):
 
     def action_panel(self, name: str) -> None:
         switcher = self.query_one(ContentSwitcher)
-        switcher.display = not (switcher.display and switcher.current == name)
+        self._side_open = not (switcher.display and switcher.current == name)
         switcher.current = name
+        self._layout_side()
         self._render_frame()
+
+    def on_resize(self) -> None:
+        self._layout_side()
+
+    def _layout_side(self) -> None:
+        # Below NARROW columns the arena gets the whole width: a panel opened
+        # there would leave neither readable.
+        self.query_one(ContentSwitcher).display = self._side_open and self.size.width >= NARROW
 
     def action_command_line(self) -> None:
         command = self.query_one("#command", Input)
@@ -270,9 +283,9 @@ class TurtleApp(App):
         if not line:
             return
         console = self.query_one(ConsolePanel)
-        switcher = self.query_one(ContentSwitcher)
-        switcher.display = True
-        switcher.current = "console"
+        self.query_one(ContentSwitcher).current = "console"
+        self._side_open = True
+        self._layout_side()
         console.command(line)
         result = self.cli.run(line)
         console.show(result.lines, error=result.error)
