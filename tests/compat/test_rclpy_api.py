@@ -900,78 +900,49 @@ def test_the_turtle_stops_at_once_when_its_controller_crashes(tmp_path):
     assert turtle.distance == pytest.approx(0.9, abs=0.05)
 
 
-def test_the_turtle_stops_when_the_controller_crashes_in_another_callback(tmp_path):
-    path = write(
-        tmp_path,
-        "crasher_other.py",
-        """
-        import rclpy
-        from geometry_msgs.msg import Twist
-        from rclpy.node import Node
+CRASHER = """
+import rclpy
+from geometry_msgs.msg import Twist
+from rclpy.node import Node
 
 
-        class Crasher(Node):
-            def __init__(self):
-                super().__init__("crasher_other")
-                self.pub = self.create_publisher(Twist, "/turtle1/cmd_vel", 10)
-                self.create_timer(0.1, self.drive)
-                self.create_timer(1.05, self.explode)
+class Crasher(Node):
+    def __init__(self):
+        super().__init__("crasher")
+        self.pub = self.create_publisher(Twist, "/turtle1/cmd_vel", 10)
+        self.create_timer(0.1, self.drive)
+        self.create_timer(1.05, self.explode)
 
-            def drive(self):
-                msg = Twist()
-                msg.linear.x = 1.0
-                self.pub.publish(msg)
+    def drive(self):
+        msg = Twist()
+        msg.linear.x = 1.0
+        self.pub.publish(msg)
 
-            def explode(self):
-                raise KeyError("gone")
-        """,
-    )
-    result = run([path], duration=3.0, sandbox=False, keep_poses=True)
-    assert [c.message for c in result.crashes] == ["KeyError: 'gone'"]
-    after = {(x, y, theta) for t, x, y, theta in result.poses["turtle1"] if t > 1.05}
-    assert len(after) == 1
-    assert result.turtles["turtle1"].distance == pytest.approx(0.944, abs=0.02)
+    def explode(self):
+        raise KeyError("gone")
+"""
 
+# The course's Part 6 main() destroys the node in `finally:`, before the
+# runtime learns of the crash; the turtle must stop all the same.
+MAIN_WITH_FINALLY = """
 
-def test_the_turtle_stops_when_a_main_with_finally_destroy_node_crashes(tmp_path):
-    # The course's Part 6 main() destroys the node in `finally:`; a crash must still stop the turtle.
-    path = write(
-        tmp_path,
-        "crasher_finally.py",
-        """
-        import rclpy
-        from geometry_msgs.msg import Twist
-        from rclpy.node import Node
-
-
-        class Crasher(Node):
-            def __init__(self):
-                super().__init__("crasher_finally")
-                self.pub = self.create_publisher(Twist, "/turtle1/cmd_vel", 10)
-                self.create_timer(0.1, self.drive)
-                self.create_timer(1.05, self.explode)
-
-            def drive(self):
-                msg = Twist()
-                msg.linear.x = 1.0
-                self.pub.publish(msg)
-
-            def explode(self):
-                raise KeyError("gone")
+def main():
+    rclpy.init()
+    node = Crasher()
+    try:
+        rclpy.spin(node)
+    except KeyboardInterrupt:
+        pass
+    finally:
+        node.destroy_node()
+        rclpy.shutdown()
+"""
 
 
-        def main():
-            rclpy.init()
-            node = Crasher()
-            try:
-                rclpy.spin(node)
-            except KeyboardInterrupt:
-                pass
-            finally:
-                node.destroy_node()
-                rclpy.shutdown()
-        """,
-    )
+@pytest.mark.parametrize("main", ["", MAIN_WITH_FINALLY], ids=["node-class-only", "main-with-finally"])
+def test_the_turtle_stops_when_the_controller_crashes_in_another_callback(tmp_path, main):
+    path = tmp_path / "crasher.py"
+    path.write_text(CRASHER + main)
     result = run([path], duration=3.0, sandbox=False, keep_poses=True)
     assert [c.message for c in result.crashes] == ["KeyError: 'gone'"]
     after = {(x, y, theta) for t, x, y, theta in result.poses["turtle1"] if t > 1.05}
