@@ -825,7 +825,7 @@ def test_qos_profile_without_depth_is_refused():
 # -- crashes --------------------------------------------------------------------------------------------------
 
 
-CRASHER = """
+DRIVE_THEN_CRASH = """
 import rclpy
 from geometry_msgs.msg import Twist
 from rclpy.node import Node
@@ -942,7 +942,7 @@ def main():
 @pytest.mark.parametrize("main", ["", MAIN_WITH_FINALLY], ids=["node-class-only", "main-with-finally"])
 def test_the_turtle_stops_when_the_controller_crashes_in_another_callback(tmp_path, main):
     path = tmp_path / "crasher.py"
-    path.write_text(CRASHER + main)
+    path.write_text(DRIVE_THEN_CRASH + main)
     result = run([path], duration=3.0, sandbox=False, keep_poses=True)
     assert [c.message for c in result.crashes] == ["KeyError: 'gone'"]
     after = {(x, y, theta) for t, x, y, theta in result.poses["turtle1"] if t > 1.05}
