@@ -825,7 +825,7 @@ def test_qos_profile_without_depth_is_refused():
 # -- crashes --------------------------------------------------------------------------------------------------
 
 
-DRIVE_THEN_CRASH = """
+CRASHER = """
 import rclpy
 from geometry_msgs.msg import Twist
 from rclpy.node import Node
@@ -900,7 +900,7 @@ def test_the_turtle_stops_at_once_when_its_controller_crashes(tmp_path):
     assert turtle.distance == pytest.approx(0.9, abs=0.05)
 
 
-CRASHER = """
+DRIVE_THEN_CRASH = """
 import rclpy
 from geometry_msgs.msg import Twist
 from rclpy.node import Node
