@@ -30,7 +30,8 @@ def pilot_test(scenario):
 
 
 def log_text(app: TurtleApp, selector: str = "#log-lines") -> str:
-    return "\n".join(line.text for line in app.query_one(selector, RichLog).lines)
+    """What a panel shows, with wrapped lines joined again."""
+    return "".join(line.text for line in app.query_one(selector, RichLog).lines)
 
 
 async def wait_for(pilot, condition, timeout: float = 5.0) -> None:
@@ -46,7 +47,7 @@ async def test_the_default_app_runs_part6_and_shows_its_log() -> None:
     async with app.run_test(size=SIZE) as pilot:
         await wait_for(pilot, lambda: app.session.t > 0.5)
         await wait_for(pilot, lambda: "Collision Avoidance Mode" in log_text(app))
-        assert "[turtlesim]: Starting turtlesim with node name /turtlesim" in log_text(app)
+        assert "[turtlesim] Starting turtlesim with node name /turtlesim" in log_text(app)
         assert app.session.slots[0].status == "running"
         assert app.session.sim.world.turtles["turtle1"].distance > 1.0
 

@@ -51,11 +51,11 @@ class TurtleApp(App):
     BINDINGS = [
         Binding("space", "pause", "Pause"),
         Binding("n", "step", "Step"),
-        Binding("plus,equals_sign", "faster", "Faster"),
-        Binding("minus", "slower", "Slower"),
-        Binding("R", "reset", "Reset"),
-        Binding("C", "clear", "Clear"),
-        Binding("S", "restart", "Restart node"),
+        Binding("plus,equals_sign", "faster", "Faster", show=False),
+        Binding("minus", "slower", "Slower", show=False),
+        Binding("R", "reset", "Reset", show=False),
+        Binding("C", "clear", "Clear", show=False),
+        Binding("S", "restart", "Restart node", show=False),
         Binding("1", "panel('log')", "Log"),
         Binding("2", "panel('topics')", "Topics"),
         Binding("3", "panel('graph')", "Graph"),
@@ -99,6 +99,7 @@ class TurtleApp(App):
         self._echo = None
         self._last_tick: float | None = None
         self._side_open = True
+        self._shown_status = ""
         self.tick_gaps: deque[float] = deque(maxlen=4096)
         """Wall seconds between the latest ticks: how steady the loop is."""
 
@@ -116,7 +117,7 @@ class TurtleApp(App):
         yield Input(
             placeholder="ros2 topic list   (Enter runs it, Esc returns to the arena)", compact=True, id="command"
         )
-        yield Footer()
+        yield Footer(compact=True)
 
     def _lesson_text(self) -> str:
         if self._lesson is None:
@@ -184,7 +185,11 @@ class TurtleApp(App):
                 self.query_one(TopicsPanel).update_topics(graph)
             else:
                 self.query_one(GraphPanel).update_graph(graph)
-        self.query_one("#status", Static).update(self._status())
+        status = self._status()
+        if status != self._shown_status:
+            self._shown_status = status
+            # One line of fixed size: no need for Textual to lay out the screen again.
+            self.query_one("#status", Static).update(status, layout=False)
 
     def _status(self) -> str:
         session = self.session

@@ -17,8 +17,14 @@ MAX_LOG_LINES = 1000
 
 
 def format_record(record: LogRecord) -> Text:
-    """A log line as ROS prints it, coloured by level."""
-    return Text(record.format(), style=LEVEL_STYLES.get(record.level, ""))
+    """A log line for a narrow panel: level, simulated time, node, message
+    (ROS's full console line, with its 20-digit stamp, would leave no room
+    for the message), coloured by level."""
+    line = Text(f"{record.level_name:<5} {record.t:8.3f} ", style="dim")
+    line.append(f"[{record.node}] ", style="bold")
+    line.append(record.msg)
+    line.stylize(LEVEL_STYLES.get(record.level, ""))
+    return line
 
 
 class LogPanel(Vertical):
@@ -34,7 +40,7 @@ class LogPanel(Vertical):
                 id="log-level",
             )
             yield Input(placeholder="node filter", compact=True, id="log-node")
-        yield RichLog(id="log-lines", max_lines=MAX_LOG_LINES, wrap=False, auto_scroll=True)
+        yield RichLog(id="log-lines", max_lines=MAX_LOG_LINES, wrap=True, auto_scroll=True)
 
     def on_mount(self) -> None:
         self._records: list[LogRecord] = []
