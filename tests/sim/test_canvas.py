@@ -61,3 +61,17 @@ def test_clear_and_background_colour():
 def test_pixels_are_read_only():
     canvas = PenCanvas()
     assert not canvas.pixels.flags.writeable
+
+
+def test_changed_since_bounds_what_was_drawn():
+    canvas = PenCanvas()
+    start = canvas.version
+    assert canvas.changed_since(start) is None
+    canvas.draw_segment(2.0, 5.0, 3.0, 5.0, RED, 3)
+    r0, r1, c0, c1 = canvas.changed_since(start)
+    row = to_pixel(2.0, 5.0)[1]
+    assert (r0, r1) == (row - 1, row + 1)
+    assert c0 == to_pixel(2.0, 5.0)[0] - 1 and c1 == to_pixel(3.0, 5.0)[0] + 1
+    assert canvas.changed_since(canvas.version) is None
+    canvas.clear()
+    assert canvas.changed_since(start) == (0, 499, 0, 499)

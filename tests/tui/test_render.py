@@ -509,3 +509,24 @@ def test_a_new_world_is_never_mistaken_for_the_old_one():
         lines = renderer.frame(world, 80, 24)
         assert pixel_colour(renderer, lines, 5.0, 5.0) == colour
         del world
+
+
+def test_incremental_downsample_matches_a_full_one() -> None:
+    import numpy as np
+
+    from turtletui.sim import World
+    from turtletui.tui.render import downsample_packed
+
+    world = World()
+    world.step()
+    canvas = world.canvas
+    version = canvas.version
+    image = downsample_packed(canvas.packed, canvas.background, 94)
+    for i in range(200):
+        world.command_velocity("turtle1", 2.0, 0.0, 1.0 if i < 120 else -2.0)
+        world.step()
+        if i % 7 == 0:
+            box = canvas.changed_since(version)
+            image = downsample_packed(canvas.packed, canvas.background, 94, image, box)
+            version = canvas.version
+            assert np.array_equal(image, downsample_packed(canvas.packed, canvas.background, 94))

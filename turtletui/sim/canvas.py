@@ -9,12 +9,15 @@ Coordinates follow turtlesim: pixel = metres * 45 with the y axis flipped
 from __future__ import annotations
 
 from array import array
+from collections import deque
 
 import numpy as np
 
 from turtletui.sim.constants import BACKGROUND, METER_PX, PIXELS
 
 _FLUSH_AT = 4096
+_CHANGES_KEPT = 256
+"""Recent changes remembered for changed_since (older asks get the whole image)."""
 _LAST_PX = PIXELS - 1
 
 
@@ -46,7 +49,37 @@ class PenCanvas:
         self.background = background
         self.version = 0
         """Increases whenever the image changes; renderers cache on it."""
+        self._changes: deque[tuple[int, tuple[int, int, int, int]]] = deque(maxlen=_CHANGES_KEPT)
         self.clear(background)
+
+    @property
+    def packed(self) -> np.ndarray:
+        """The image as (500, 500) little-endian uint32 (r | g << 8 | b << 16). Read only."""
+        if self._pending:
+            self._flush()
+        view = self._packed.view()
+        view.flags.writeable = False
+        return view
+
+    def changed_since(self, version: int) -> tuple[int, int, int, int] | None:
+        """The pixel rows and columns (r0, r1, c0, c1, inclusive) that changed
+        after ``version``, so a renderer can redo just that part; the whole
+        image if that is too long ago; None if nothing changed."""
+        if self._pending:
+            self._flush()
+        if version >= self.version:
+            return None
+        if not self._changes or self._changes[0][0] > version + 1:
+            return (0, _LAST_PX, 0, _LAST_PX)
+        boxes = [box for v, box in self._changes if v > version]
+        if not boxes:
+            return None
+        return (
+            min(b[0] for b in boxes),
+            max(b[1] for b in boxes),
+            min(b[2] for b in boxes),
+            max(b[3] for b in boxes),
+        )
 
     @property
     def pixels(self) -> np.ndarray:
@@ -62,6 +95,7 @@ class PenCanvas:
         del self._pending[:]
         self._packed[:, :] = _pack(self.background)
         self.version += 1
+        self._changes.append((self.version, (0, _LAST_PX, 0, _LAST_PX)))
 
     def draw_segment(
         self,
@@ -140,4 +174,7 @@ class PenCanvas:
         index = np.where(major, along_px + across_px * PIXELS, along_px * PIXELS + across_px)
         # Row-major order of the (sample, step) grid keeps later segments over
         # earlier ones: numpy assigns repeated indices in order.
-        self._packed.ravel()[index.ravel()] = np.repeat(colors[seg], steps.shape[1])
+        flat = index.ravel()
+        self._packed.ravel()[flat] = np.repeat(colors[seg], steps.shape[1])
+        rows, cols = np.divmod(flat, PIXELS)
+        self._changes.append((self.version, (int(rows.min()), int(rows.max()), int(cols.min()), int(cols.max()))))

@@ -34,6 +34,10 @@ TICK_SECONDS = 0.016
 FRAME_SECONDS = 1 / 30
 """Screen updates at most 30 times a second, and only when something changed."""
 
+PANEL_SECONDS = 0.2
+"""Text panels and the status line update 5 times a second: each update makes
+Textual re-render the panel, and the log scrolls on every line a node logs."""
+
 RELOAD_SECONDS = 0.5
 """How often controller files are checked for changes."""
 
@@ -94,6 +98,7 @@ class TurtleApp(App):
         self.session: LiveSession | None = None
         self._log_seen = 0
         self._last_frame = 0.0
+        self._last_panels = 0.0
         self._last_reload = 0.0
         self._streams: list = []
         self._echo = None
@@ -165,15 +170,18 @@ class TurtleApp(App):
             session.check_for_changes()
         if now - self._last_frame >= FRAME_SECONDS:
             self._last_frame = now
-            self._render_frame()
+            self._render_frame(panels=now - self._last_panels >= PANEL_SECONDS)
 
-    def _render_frame(self) -> None:
+    def _render_frame(self, panels: bool = True) -> None:
         session = self.session
         try:
             arena = self.query_one(ArenaView)
         except NoMatches:
             return  # shutting down: the screen is gone, the timer not yet
         arena.refresh_frame()
+        if not panels:
+            return
+        self._last_panels = self._clock()
         if session.log_count != self._log_seen:
             new = min(session.log_count - self._log_seen, len(session.logs))
             self._log_seen = session.log_count

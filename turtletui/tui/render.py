@@ -158,6 +158,35 @@ def downsample(pixels: np.ndarray, background: tuple[int, int, int], size: int) 
     return key ^ background_bits
 
 
+def downsample_packed(
+    packed: np.ndarray,
+    background: tuple[int, int, int],
+    size: int,
+    image: np.ndarray | None = None,
+    box: tuple[int, int, int, int] | None = None,
+) -> np.ndarray:
+    """downsample() from the canvas's packed uint32 image. Given the previous
+    ``image`` and the ``box`` of pixels changed since (canvas.changed_since),
+    only the blocks over that box are computed again."""
+    background_bits = np.uint32(_pack(background))
+    edges = np.arange(size) * PIXELS // size
+    if image is None or box is None:
+        key = packed ^ background_bits
+        key = np.maximum.reduceat(key, edges, axis=0)
+        return np.maximum.reduceat(key, edges, axis=1) ^ background_bits
+    r0, r1, c0, c1 = box
+    b_r0, b_r1 = np.searchsorted(edges, [r0, r1], side="right") - 1
+    b_c0, b_c1 = np.searchsorted(edges, [c0, c1], side="right") - 1
+    rows_end = edges[b_r1 + 1] if b_r1 + 1 < size else PIXELS
+    cols_end = edges[b_c1 + 1] if b_c1 + 1 < size else PIXELS
+    key = packed[edges[b_r0] : rows_end, edges[b_c0] : cols_end] ^ background_bits
+    key = np.maximum.reduceat(key, edges[b_r0 : b_r1 + 1] - edges[b_r0], axis=0)
+    key = np.maximum.reduceat(key, edges[b_c0 : b_c1 + 1] - edges[b_c0], axis=1)
+    image = image.copy()
+    image[b_r0 : b_r1 + 1, b_c0 : b_c1 + 1] = key ^ background_bits
+    return image
+
+
 def _pack(rgb: tuple[int, int, int]) -> int:
     return rgb[0] | rgb[1] << 8 | rgb[2] << 16
 
@@ -269,7 +298,7 @@ class ArenaRenderer:
         if layout is None:
             return self._publish(("small", width, height), *_too_small(width, height))
         canvas = world.canvas
-        pixels = canvas.pixels  # flushes queued segments, which bumps the version
+        packed = canvas.packed  # flushes queued segments, which bumps the version
         # The canvas itself, not its id: a new World's canvas could reuse a freed id.
         image_key = (canvas, canvas.version, canvas.background, layout.size)
         turtles = self._place_turtles(world, layout)
@@ -278,7 +307,13 @@ class ArenaRenderer:
             self.changed_lines = []
             return self.lines
         if image_key != self._image_key:
-            self._image = downsample(pixels, canvas.background, layout.size)
+            previous = self._image_key
+            if previous is not None and previous[0] is canvas and previous[2:] == image_key[2:]:
+                # Same canvas, size and background: redo only what changed.
+                box = canvas.changed_since(previous[1])
+                self._image = downsample_packed(packed, canvas.background, layout.size, self._image, box)
+            else:
+                self._image = downsample_packed(packed, canvas.background, layout.size)
             self._image_key = image_key
         scene_key = (image_key, overlays)
         if scene_key != self._scene_key:
