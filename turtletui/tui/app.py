@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import gc
 import time
 from collections import deque
 from collections.abc import Iterable, Sequence
@@ -45,6 +46,14 @@ PANELS = ("log", "topics", "graph", "lesson", "console")
 
 NARROW = 60
 """Columns below which the side panel gives way to the arena."""
+
+
+def _freeze_startup_heap() -> None:
+    """Move everything alive after start-up (Textual, Rich, numpy, our modules)
+    out of the garbage collector's reach: its full collections then scan only
+    what the run allocates, and stop pausing the 16 ms loop for 25-50 ms."""
+    gc.collect()
+    gc.freeze()
 
 
 class TurtleApp(App):
@@ -141,6 +150,7 @@ class TurtleApp(App):
         self.session.advance(self._clock())
         self.set_interval(TICK_SECONDS, self._tick)
         self._render_frame()
+        self.set_timer(1.0, _freeze_startup_heap)
 
     def on_unmount(self) -> None:
         for stream in self._streams:
