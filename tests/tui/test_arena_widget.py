@@ -170,12 +170,12 @@ async def test_strips_come_from_the_cache():
         assert view.render_line(0).cell_length == 80
 
 
-def test_snapshot_colour(snap_compare):
-    assert snap_compare(
-        ArenaApp(drawn_world(), overlays=[(2.0, 2.0, 9.0, 9.0)]), terminal_size=(80, 24)
-    )
+@pytest.mark.parametrize("size", [(80, 24), (160, 50)], ids=["80x24", "wide"])
+def test_snapshot_colour(snap_compare, size):
+    assert snap_compare(ArenaApp(drawn_world(), overlays=[(2.0, 2.0, 9.0, 9.0)]), terminal_size=size)
 
 
-def test_snapshot_ascii(snap_compare):
+@pytest.mark.parametrize("size", [(80, 24), (160, 50)], ids=["80x24", "wide"])
+def test_snapshot_ascii(snap_compare, size):
     app = ArenaApp(drawn_world(), ascii=True, overlays=[(2.0, 2.0, 9.0, 9.0)])
-    assert snap_compare(app, terminal_size=(80, 24))
+    assert snap_compare(app, terminal_size=size)
