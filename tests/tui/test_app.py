@@ -229,3 +229,16 @@ async def test_a_tiny_terminal_gets_a_message_not_a_crash() -> None:
         assert not app.query_one(ContentSwitcher).display
         text = " ".join(" ".join(arena.render_line(y).text.split()) for y in range(arena.size.height))
         assert "Terminal too small: need at least 24x12 for the arena" in " ".join(text.split())
+
+
+@pilot_test
+async def test_the_lesson_pane_shows_the_lesson_without_its_front_matter() -> None:
+    from turtletui.lessons.loader import find_lesson
+
+    lesson = find_lesson("part6-closed-loop")
+    app = TurtleApp(lesson=lesson.path)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("4")
+        source = app.query_one("#lesson").source
+        assert source == lesson.body
+        assert "+++" not in source and "The loop" in source

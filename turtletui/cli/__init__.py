@@ -10,7 +10,7 @@ import sys
 
 import typer
 
-from turtletui.cli import plugins_cmd, run_cmd
+from turtletui.cli import lessons_cmd, plugins_cmd, run_cmd
 
 app = typer.Typer(
     name="turtletui",
@@ -22,6 +22,9 @@ app = typer.Typer(
 )
 app.command("run", context_settings={"allow_extra_args": False})(run_cmd.run)
 app.command("plugins")(plugins_cmd.plugins)
+app.command("lessons")(lessons_cmd.lessons)
+app.command("lesson")(lessons_cmd.lesson)
+app.command("new")(lessons_cmd.new)
 
 
 @app.callback()

@@ -29,7 +29,7 @@ def run(
     ),
     quiet: bool = typer.Option(False, "--quiet", "-q", help="Print only the summary line."),
     plugin: list[Path] = typer.Option(None, "--plugin", help="Load a plugin file or folder (repeatable)."),
-    lesson: Path = typer.Option(None, "--lesson", help="Lesson file to open in the app (Markdown)."),
+    lesson: str = typer.Option(None, "--lesson", help="Lesson to open in the app: an id (see turtletui lessons) or a file."),
     ascii_only: bool = typer.Option(False, "--ascii", help="Draw with plain ASCII and no colour."),
 ) -> None:
     """Run rclpy controller files against the simulated turtlesim.
@@ -95,10 +95,10 @@ PART6_SAFE_BOX = (2.0, 2.0, 9.0, 9.0)
 
 
 def _run_app(
-    controllers: list[str] | None, plugins: list[Path] | None, lesson: Path | None, ascii_only: bool, seed: int
+    controllers: list[str] | None, plugins: list[Path] | None, lesson: str | None, ascii_only: bool, seed: int
 ) -> None:
     """The Textual app (imported only here: headless runs never load Textual)."""
-    from turtletui.plugins.bundled import lessons_dir
+    from turtletui.lessons.loader import LessonError, find_lesson
     from turtletui.runtime.loader import ControllerError
     from turtletui.runtime.resolve import resolve_controllers
 
@@ -106,15 +106,17 @@ def _run_app(
     if not controllers:
         controllers = ["part6_wall_avoider"]
         overlays = (PART6_SAFE_BOX,)
-        folder = lessons_dir()
-        if lesson is None and folder is not None:
-            lesson = folder / "part6_closed_loop.md"
-    if lesson is not None and not lesson.is_file():
-        fail(f"--lesson {lesson}: no such lesson file")
+        lesson = lesson or "part6-closed-loop"
+    lesson_path = None
+    if lesson is not None:
+        try:
+            lesson_path = find_lesson(lesson, plugins=plugins or ()).path
+        except LessonError as err:
+            fail(f"--lesson: {err}")
     try:
         specs = resolve_controllers(controllers, plugins=plugins or ())
     except ControllerError as err:
         fail(str(err))
     from turtletui.tui.app import TurtleApp
 
-    TurtleApp(specs, lesson=lesson, ascii=ascii_only, ros_args=ROS_ARGS, seed=seed, overlays=overlays).run()
+    TurtleApp(specs, lesson=lesson_path, ascii=ascii_only, ros_args=ROS_ARGS, seed=seed, overlays=overlays).run()

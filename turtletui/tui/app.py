@@ -135,11 +135,13 @@ class TurtleApp(App):
 
     def _lesson_text(self) -> str:
         if self._lesson is None:
-            return "No lesson is open. Start one with `turtletui run --lesson FILE`."
+            return "No lesson is open. Start one with `turtletui run --lesson ID` (see `turtletui lessons`)."
+        from turtletui.lessons.loader import LessonError, load_lesson
+
         try:
-            return self._lesson.read_text(encoding="utf-8")
-        except (OSError, UnicodeDecodeError) as err:
-            return f"**Cannot read the lesson {self._lesson}:** {err}"
+            return load_lesson(self._lesson).body
+        except LessonError as err:
+            return f"**This lesson cannot be shown:** {err}"
 
     def on_mount(self) -> None:
         self.session = LiveSession(self._controllers, ros_args=self._ros_args, seed=self._seed)

@@ -1,0 +1,323 @@
+"""Lesson files: the format's loader, its one-line errors, and discovery."""
+
+from __future__ import annotations
+
+import textwrap
+from pathlib import Path
+
+import pytest
+
+from turtletui.lessons.loader import LessonError, discover_lessons, find_lesson, load_lesson
+from turtletui.plugins.bundled import lessons_dir
+
+ROOT = Path(__file__).resolve().parents[2]
+PART6 = ROOT / "lessons" / "part6_closed_loop.md"
+
+GOOD_FRONT = """\
+id = "demo-lesson"
+title = "A demo"
+part = 2
+"""
+
+
+def write(folder: Path, name: str, front: str, body: str = "# Body\n\nText.\n") -> Path:
+    path = folder / name
+    path.write_text(f"+++\n{textwrap.dedent(front)}+++\n{body}", encoding="utf-8")
+    return path
+
+
+def error_of(path: Path) -> str:
+    with pytest.raises(LessonError) as info:
+        load_lesson(path)
+    message = str(info.value)
+    assert "\n" not in message
+    return message
+
+
+# -- the Part 6 lesson ----------------------------------------------------------------
+
+
+def test_the_part6_lesson_loads():
+    lesson = load_lesson(PART6)
+    assert lesson.id == "part6-closed-loop"
+    assert lesson.part == 6
+    assert lesson.title == "Closed-loop control: never hit the wall"
+    assert lesson.reference == "part6_wall_avoider"
+    assert lesson.world == "empty"
+    assert lesson.path == PART6
+    assert lesson.body.startswith("# Part 6 - Closed-loop control")
+    assert "+++" not in lesson.body
+    assert lesson.starter_path == PART6.parent / "part6_starter.py"
+    assert lesson.starter_path.is_file()
+    assert lesson.checks == ()
+    centre, random_starts = lesson.scenarios
+    assert (centre.name, centre.duration, centre.hidden, centre.seeds) == (
+        "centre",
+        60.0,
+        False,
+        (0,),
+    )
+    assert centre.start == pytest.approx({"x": 5.544445, "y": 5.544445, "theta": 0.0})
+    assert random_starts.name == "random starts"
+    assert random_starts.hidden is True
+    assert random_starts.start == "random"
+    assert len(random_starts.seeds) > 1
+
+
+def test_the_run_command_default_lesson_file_is_still_there():
+    assert lessons_dir() is not None
+    assert (lessons_dir() / "part6_closed_loop.md").is_file()
+
+
+def test_the_part6_starter_compiles_and_publishes_a_zero_twist():
+    source = (ROOT / "lessons" / "part6_starter.py").read_text(encoding="utf-8")
+    compile(source, "part6_starter.py", "exec")
+    assert "def pose_callback" in source
+    assert "TODO" in source
+    assert "self.cmd_vel_publisher_.publish(cmd)" in source
+
+
+def test_a_full_lesson_loads_with_defaults_and_checks(tmp_path):
+    (tmp_path / "start.py").write_text("print('hi')\n")
+    path = write(
+        tmp_path,
+        "full.md",
+        """\
+        id = "full"
+        title = "Full"
+        objectives = ["one", "two"]
+        starter = "start.py"
+
+        [[scenarios]]
+        name = "a"
+
+        [[checks]]
+        name = "no_wall_hits"
+        weight = 2
+        feedback = "Hit a wall"
+        thresholds = {max = 0}
+        """,
+    )
+    lesson = load_lesson(path)
+    assert lesson.part is None
+    assert lesson.objectives == ("one", "two")
+    assert lesson.world == "empty"
+    assert lesson.reference is None
+    assert lesson.starter_path == tmp_path / "start.py"
+    (scenario,) = lesson.scenarios
+    assert (scenario.duration, scenario.seed, scenario.hidden) == (60.0, 0, False)
+    assert scenario.start == {"x": 5.544445, "y": 5.544445, "theta": 0.0}
+    (check,) = lesson.checks
+    assert (check.name, check.weight, check.feedback, check.thresholds) == (
+        "no_wall_hits",
+        2.0,
+        "Hit a wall",
+        {"max": 0},
+    )
+
+
+# -- one-line errors naming file, line and field -----------------------------------------
+
+
+def test_no_front_matter(tmp_path):
+    path = tmp_path / "x.md"
+    path.write_text("# Just Markdown\n")
+    assert error_of(path) == f"{path}:1: no +++ front matter block"
+
+
+def test_unclosed_front_matter(tmp_path):
+    path = tmp_path / "x.md"
+    path.write_text('+++\nid = "x"\n# no closing line\n')
+    assert error_of(path).startswith(f"{path}:1: the +++ front matter block is never closed")
+
+
+def test_invalid_toml_gives_the_file_line(tmp_path):
+    path = write(tmp_path, "x.md", 'id = "x"\ntitle = "T"\npart = \n')
+    message = error_of(path)
+    assert message.startswith(f"{path}:4: invalid TOML: ")  # front matter line 3 is file line 4
+    assert "column" in message
+
+
+def test_unknown_field_suggests_the_right_one(tmp_path):
+    path = write(tmp_path, "x.md", 'id = "x"\n\ntittle = "T"\n')
+    assert error_of(path) == f"{path}:4: unknown field 'tittle' (did you mean 'title'?)"
+
+
+def test_unknown_field_without_a_close_match(tmp_path):
+    path = write(tmp_path, "x.md", GOOD_FRONT + "colour = 3\n")
+    assert error_of(path) == f"{path}:5: unknown field 'colour'"
+
+
+def test_wrong_type_for_part(tmp_path):
+    path = write(tmp_path, "x.md", 'id = "x"\ntitle = "T"\npart = "six"\n')
+    assert error_of(path) == f"{path}:4: field 'part' must be an integer or omitted, got 'six'"
+
+
+def test_a_boolean_is_not_a_part_number(tmp_path):
+    path = write(tmp_path, "x.md", 'id = "x"\ntitle = "T"\npart = true\n')
+    assert error_of(path) == f"{path}:4: field 'part' must be an integer or omitted, got True"
+
+
+def test_objectives_must_be_strings(tmp_path):
+    path = write(tmp_path, "x.md", GOOD_FRONT + "objectives = [1, 2]\n")
+    assert error_of(path).startswith(f"{path}:5: field 'objectives' must be a list of strings")
+
+
+def test_missing_title(tmp_path):
+    path = write(tmp_path, "x.md", 'id = "x"\n')
+    assert error_of(path) == f"{path}:1: missing field 'title'"
+
+
+@pytest.mark.parametrize("bad_id", ["Part6", "part 6", "-x", "part_6", ""])
+def test_bad_id_format(tmp_path, bad_id):
+    path = write(tmp_path, "x.md", f'title = "T"\nid = "{bad_id}"\n')
+    message = error_of(path)
+    assert message.startswith(f"{path}:3: field 'id' must ")
+
+
+def test_scenario_field_errors_name_their_index_and_line(tmp_path):
+    path = write(
+        tmp_path,
+        "x.md",
+        GOOD_FRONT
+        + """
+[[scenarios]]
+name = "one"
+
+[[scenarios]]
+name = "two"
+duration = -5
+""",
+    )
+    assert error_of(path) == f"{path}:11: scenarios[1].duration must be a positive number, got -5"
+
+
+@pytest.mark.parametrize(
+    ("lines", "expected"),
+    [
+        ('name = "s"\nseed = 1.5', "scenarios[0].seed must be an integer, got 1.5"),
+        ('name = "s"\nhidden = "yes"', "scenarios[0].hidden must be true or false, got 'yes'"),
+        ('name = "s"\nstart = {x = 1, y = "a"}', "scenarios[0].start y must be a number, got 'a'"),
+        ('name = "s"\nstart = {x = 1}', "scenarios[0].start is missing 'y'"),
+        ('name = "s"\nstart = {x = 1, y = 2, z = 3}', "scenarios[0].start has unknown field 'z'"),
+        (
+            'name = "s"\ndurration = 3',
+            "scenarios[0]: unknown field 'durration' (did you mean 'duration'?)",
+        ),
+        (
+            'name = "s"\nseeds = []',
+            "scenarios[0].seeds must be a non-empty list of integers, got []",
+        ),
+        ("seed = 1\nduration = 2", "scenarios[0]: missing field 'name'"),
+    ],
+)
+def test_scenario_errors(tmp_path, lines, expected):
+    path = write(tmp_path, "x.md", GOOD_FRONT + "\n[[scenarios]]\n" + lines + "\n")
+    line = 6 if "missing field" in expected else 8
+    assert error_of(path) == f"{path}:{line}: {expected}"
+
+
+def test_duplicate_scenario_names(tmp_path):
+    path = write(
+        tmp_path, "x.md", GOOD_FRONT + '[[scenarios]]\nname = "a"\n[[scenarios]]\nname = "a"\n'
+    )
+    assert error_of(path) == f"{path}:8: scenarios[1].name 'a' is already used by scenarios[0]"
+
+
+def test_check_field_errors(tmp_path):
+    path = write(
+        tmp_path,
+        "x.md",
+        GOOD_FRONT + '[[checks]]\nname = "c"\nweight = -1\n[[checks]]\nname = "d"\n',
+    )
+    assert error_of(path) == f"{path}:7: checks[0].weight must be a number >= 0, got -1"
+    path = write(tmp_path, "y.md", GOOD_FRONT + '[[checks]]\nname = "c"\nthresholds = 3\n')
+    assert error_of(path) == f"{path}:7: checks[0].thresholds must be a table, got 3"
+
+
+def test_a_missing_starter_file(tmp_path):
+    path = write(tmp_path, "x.md", GOOD_FRONT + 'starter = "nope.py"\n')
+    assert error_of(path).startswith(
+        f"{path}:5: starter file 'nope.py' not found next to the lesson"
+    )
+
+
+def test_a_missing_lesson_file(tmp_path):
+    assert error_of(tmp_path / "gone.md") == f"{tmp_path / 'gone.md'}: no such lesson file"
+
+
+def test_paths_below_the_working_directory_are_shown_relative(tmp_path, monkeypatch):
+    (tmp_path / "lessons").mkdir()
+    path = write(tmp_path / "lessons", "x.md", 'id = "x"\ntitle = "T"\npart = "six"\n')
+    monkeypatch.chdir(tmp_path)
+    assert error_of(path).startswith("lessons/x.md:4: field 'part'")
+
+
+# -- discovery --------------------------------------------------------------------------
+
+
+def test_discovery_finds_the_bundled_lesson():
+    assert "part6-closed-loop" in [lesson.id for lesson in discover_lessons()]
+
+
+def test_discovery_from_an_extra_folder(tmp_path):
+    write(tmp_path, "b.md", 'id = "zeta"\ntitle = "Z"\n')
+    write(tmp_path, "a.md", 'id = "alpha"\ntitle = "A"\npart = 1\n')
+    (tmp_path / "README.md").write_text("# Not a lesson\n")
+    (tmp_path / "notes.txt").write_text("not markdown")
+    ids = [lesson.id for lesson in discover_lessons([tmp_path])]
+    assert ids.index("alpha") < ids.index("part6-closed-loop") < ids.index("zeta")
+    assert len(ids) == 3
+
+
+def test_discovery_through_a_plugin(tmp_path):
+    folder = tmp_path / "more"
+    folder.mkdir()
+    write(folder, "p.md", 'id = "from-plugin"\ntitle = "P"\n')
+    plugin = tmp_path / "my_plugin.py"
+    plugin.write_text(
+        "from pathlib import Path\n"
+        "from turtletui.plugins import hookimpl\n\n"
+        "@hookimpl\n"
+        "def turtletui_register_lessons(register):\n"
+        "    register(Path(__file__).parent / 'more')\n"
+    )
+    ids = [lesson.id for lesson in discover_lessons(plugins=[plugin])]
+    assert "from-plugin" in ids
+    assert "from-plugin" not in [lesson.id for lesson in discover_lessons()]
+
+
+def test_duplicate_ids_name_both_files(tmp_path):
+    first = write(tmp_path, "a.md", 'title = "A"\nid = "same"\n')
+    second = write(tmp_path, "b.md", 'id = "same"\ntitle = "B"\n')
+    with pytest.raises(LessonError) as info:
+        discover_lessons([tmp_path])
+    assert str(info.value) == f"{second}:2: lesson id 'same' is already used by {first}:3"
+
+
+def test_a_bundled_id_cannot_be_reused(tmp_path):
+    write(tmp_path, "copy.md", 'id = "part6-closed-loop"\ntitle = "Copy"\n')
+    with pytest.raises(LessonError, match="lesson id 'part6-closed-loop' is already used by"):
+        discover_lessons([tmp_path])
+
+
+def test_a_missing_extra_folder(tmp_path):
+    with pytest.raises(LessonError, match="no such lesson file or folder"):
+        discover_lessons([tmp_path / "nope"])
+
+
+def test_find_by_id_and_by_path(tmp_path):
+    assert find_lesson("part6-closed-loop").path.resolve() == PART6.resolve()
+    path = write(tmp_path, "mine.md", 'id = "mine"\ntitle = "M"\n')
+    assert find_lesson(str(path)).id == "mine"
+    assert find_lesson("mine", [tmp_path]).id == "mine"
+
+
+def test_an_unknown_id_lists_the_known_ones(monkeypatch):
+    monkeypatch.setenv("TURTLETUI_DISABLE_PLUGIN_AUTOLOAD", "1")
+    with pytest.raises(LessonError) as info:
+        find_lesson("part6-closed-lop")
+    assert str(info.value) == (
+        "no lesson 'part6-closed-lop' (did you mean 'part6-closed-loop'?); "
+        "known lessons: part6-closed-loop"
+    )

@@ -1,0 +1,130 @@
+"""``turtletui lessons``, ``turtletui lesson ID`` and ``turtletui new --lesson ID FILE``.
+
+turtletui.lessons is imported inside the commands, so ``turtletui --help`` stays cheap.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import typer
+
+from turtletui.cli.errors import fail
+
+_FOLDER_HELP = "Also look for lessons in this folder (every *.md but README.md; repeatable)."
+_PLUGIN_HELP = "Also load this plugin file, or every .py in this folder (repeatable)."
+
+
+def lessons(
+    as_json: bool = typer.Option(
+        False, "--json", help="Print a JSON list of objects, one per lesson."
+    ),
+    folder: list[Path] = typer.Option(None, "--folder", metavar="DIR", help=_FOLDER_HELP),
+    plugin: list[Path] = typer.Option(None, "--plugin", metavar="PATH", help=_PLUGIN_HELP),
+) -> None:
+    """List the lessons turtletui found (bundled, from plugins, from --folder)."""
+    from turtletui.lessons.loader import LessonError, discover_lessons
+
+    try:
+        found = discover_lessons(folder or (), plugin or ())
+    except LessonError as err:
+        fail(str(err))
+    if as_json:
+        import json
+
+        rows = [
+            {
+                "id": lesson.id,
+                "title": lesson.title,
+                "part": lesson.part,
+                "path": str(lesson.path),
+                "objectives": list(lesson.objectives),
+                "starter": None if lesson.starter_path is None else str(lesson.starter_path),
+                "reference": lesson.reference,
+                "world": lesson.world,
+                "scenarios": [s.name for s in lesson.scenarios],
+            }
+            for lesson in found
+        ]
+        print(json.dumps(rows, indent=2))
+        return
+    if not found:
+        print("No lessons found.")
+        return
+    id_width = max(len("ID"), *(len(lesson.id) for lesson in found))
+    print(f"{'ID':<{id_width}}  PART  TITLE")
+    for lesson in found:
+        part = "-" if lesson.part is None else str(lesson.part)
+        print(f"{lesson.id:<{id_width}}  {part:>4}  {lesson.title}")
+
+
+def lesson(
+    lesson_id: str = typer.Argument(
+        ..., metavar="ID", help="A lesson id (see turtletui lessons) or a lesson file."
+    ),
+    folder: list[Path] = typer.Option(None, "--folder", metavar="DIR", help=_FOLDER_HELP),
+    plugin: list[Path] = typer.Option(None, "--plugin", metavar="PATH", help=_PLUGIN_HELP),
+) -> None:
+    """Show a lesson in the terminal."""
+    from turtletui.lessons.loader import LessonError, find_lesson
+
+    try:
+        found = find_lesson(lesson_id, folder or (), plugin or ())
+    except LessonError as err:
+        fail(str(err))
+    heading = found.title if found.part is None else f"Part {found.part}: {found.title}"
+    objectives = "".join(f"- {line}\n" for line in found.objectives)
+    starter = (
+        f"\nStart from the skeleton: `turtletui new --lesson {found.id} FILE.py`\n"
+        if found.starter
+        else ""
+    )
+    try:
+        from rich.console import Console
+        from rich.markdown import Markdown
+    except ImportError:  # rich comes with Textual, but the lesson is plain text too
+        print(heading)
+        print("=" * len(heading))
+        if objectives:
+            print(f"\nYou will:\n{objectives}", end="")
+        print(starter)
+        print(found.body)
+        return
+    console = Console()
+    console.print(heading, style="bold", markup=False, highlight=False)
+    if objectives:
+        console.print(Markdown(f"You will:\n\n{objectives}"))
+    if starter:
+        console.print(Markdown(starter))
+    console.print()
+    console.print(Markdown(found.body))
+
+
+def new(
+    file: Path = typer.Argument(..., metavar="FILE", help="Where to write the starter code."),
+    lesson_id: str = typer.Option(
+        ..., "--lesson", metavar="ID", help="The lesson whose starter to write."
+    ),
+    force: bool = typer.Option(False, "--force", help="Overwrite FILE if it exists."),
+    folder: list[Path] = typer.Option(None, "--folder", metavar="DIR", help=_FOLDER_HELP),
+    plugin: list[Path] = typer.Option(None, "--plugin", metavar="PATH", help=_PLUGIN_HELP),
+) -> None:
+    """Write a lesson's starter file to FILE, ready to edit and run."""
+    from turtletui.lessons.loader import LessonError, find_lesson
+
+    try:
+        found = find_lesson(lesson_id, folder or (), plugin or ())
+    except LessonError as err:
+        fail(str(err))
+    source = found.starter_path
+    if source is None:
+        fail(f"lesson {found.id!r} has no starter file")
+    if file.exists() and not force:
+        fail(f"{file} already exists; use --force to overwrite it")
+    if file.is_dir():
+        fail(f"{file} is a folder; name the file to write")
+    try:
+        file.write_bytes(source.read_bytes())
+    except OSError as err:
+        fail(f"cannot write {file}: {' '.join(str(err).split())}")
+    print(f"Wrote {file} (starter of lesson {found.id}). Run it: turtletui run {file}")

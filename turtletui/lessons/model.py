@@ -1,0 +1,70 @@
+"""A lesson as data: frozen dataclasses built by :mod:`turtletui.lessons.loader`."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+DEFAULT_START: dict[str, float] = {"x": 5.544445, "y": 5.544445, "theta": 0.0}
+"""Where turtlesim spawns turtle1 (the centre of the 11.09 m arena), facing east."""
+
+
+@dataclass(frozen=True)
+class Scenario:
+    """One run a lesson is tried in: where the turtle starts, for how long, with which seed."""
+
+    name: str
+    start: dict[str, float] | str = field(default_factory=lambda: dict(DEFAULT_START))
+    """``x``, ``y`` (metres) and ``theta`` (radians) of turtle1 at the start, or
+    ``"random"``: a start pose drawn from each run's seed by the scenario runner."""
+    duration: float = 60.0
+    """Simulated seconds."""
+    seeds: tuple[int, ...] = (0,)
+    """The scenario is run once per seed."""
+    hidden: bool = False
+    """Hidden scenarios are graded but not shown to the student beforehand."""
+    world: str | None = None
+    """A registered world's name; None means the lesson's world."""
+
+    @property
+    def seed(self) -> int:
+        """The first (usually the only) seed."""
+        return self.seeds[0]
+
+
+@dataclass(frozen=True)
+class CheckSpec:
+    """A check a lesson asks for, stored as data (the checks engine interprets it)."""
+
+    name: str
+    weight: float = 1.0
+    feedback: str = ""
+    thresholds: dict[str, Any] = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class Lesson:
+    """A lesson file, parsed and validated."""
+
+    id: str
+    title: str
+    path: Path
+    """The lesson's Markdown file."""
+    body: str
+    """The Markdown after the front matter block."""
+    part: int | None = None
+    """Course part number; None for lessons beyond the series."""
+    objectives: tuple[str, ...] = ()
+    starter: str | None = None
+    """File name of the starter code, relative to the lesson file."""
+    reference: str | None = None
+    """Name of a registered controller that solves the lesson."""
+    world: str = "empty"
+    scenarios: tuple[Scenario, ...] = ()
+    checks: tuple[CheckSpec, ...] = ()
+
+    @property
+    def starter_path(self) -> Path | None:
+        """The starter file next to the lesson, or None when the lesson has none."""
+        return None if self.starter is None else self.path.parent / self.starter
