@@ -54,7 +54,10 @@ def test_lessons_json_has_the_fields():
     (part6,) = [row for row in rows if row["id"] == "part6-closed-loop"]
     assert part6["title"] == "Closed-loop control: never hit the wall"
     assert part6["part"] == 6
-    assert Path(part6["path"]).resolve() == (ROOT / "lessons" / "part6_closed_loop.md").resolve()
+    # The bundled copy: the repository's lessons/ in a checkout, the package's when installed.
+    from turtletui.plugins.bundled import lessons_dir
+
+    assert Path(part6["path"]).resolve() == (lessons_dir() / "part6_closed_loop.md").resolve()
 
 
 def test_lessons_folder_adds_lessons_and_part_is_null_when_absent(tmp_path):

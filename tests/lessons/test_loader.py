@@ -307,7 +307,8 @@ def test_a_missing_extra_folder(tmp_path):
 
 
 def test_find_by_id_and_by_path(tmp_path):
-    assert find_lesson("part6-closed-loop").path.resolve() == PART6.resolve()
+    bundled = lessons_dir() / "part6_closed_loop.md"  # the package's copy when installed
+    assert find_lesson("part6-closed-loop").path.resolve() == bundled.resolve()
     path = write(tmp_path, "mine.md", 'id = "mine"\ntitle = "M"\n')
     assert find_lesson(str(path)).id == "mine"
     assert find_lesson("mine", [tmp_path]).id == "mine"
