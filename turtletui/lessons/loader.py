@@ -286,25 +286,31 @@ class _Validator:
 
     # scenarios and checks
 
-    def _scenario(self, i: int, item: dict[str, Any]) -> Scenario:
-        where = f"scenarios[{i}]"
-        section = self._section("scenarios", i)
+    def _named_table(
+        self, kind: str, i: int, item: dict[str, Any], fields: Sequence[str]
+    ) -> tuple[Any, str]:
+        """Check one [[kind]] table's keys and its required name; returns an
+        error maker for its fields (``bad(field, message)``) and the name."""
+        where = f"{kind}[{i}]"
+        section = self._section(kind, i)
 
         def bad(field: str, message: str) -> LessonError:
             return self._error(f"{where}.{field} {message}", field, section)
 
         for key in item:
-            if key not in SCENARIO_FIELDS:
+            if key not in fields:
                 raise self._error(
-                    f"{where}: unknown field {key!r}{_did_you_mean(key, SCENARIO_FIELDS)}",
-                    key,
-                    section,
+                    f"{where}: unknown field {key!r}{_did_you_mean(key, fields)}", key, section
                 )
         if "name" not in item:
             raise self._error(f"{where}: missing field 'name'", None, section)
         name = item["name"]
         if not isinstance(name, str) or not name.strip():
             raise bad("name", f"must be a non-empty string, got {_show(name)}")
+        return bad, name
+
+    def _scenario(self, i: int, item: dict[str, Any]) -> Scenario:
+        bad, name = self._named_table("scenarios", i, item, SCENARIO_FIELDS)
         start = self._start(item.get("start", dict(DEFAULT_START)), bad)
         duration = item.get("duration", 60.0)
         if not _is_number(duration) or not duration > 0:
@@ -359,24 +365,7 @@ class _Validator:
         return pose
 
     def _check(self, i: int, item: dict[str, Any]) -> CheckSpec:
-        where = f"checks[{i}]"
-        section = self._section("checks", i)
-
-        def bad(field: str, message: str) -> LessonError:
-            return self._error(f"{where}.{field} {message}", field, section)
-
-        for key in item:
-            if key not in CHECK_FIELDS:
-                raise self._error(
-                    f"{where}: unknown field {key!r}{_did_you_mean(key, CHECK_FIELDS)}",
-                    key,
-                    section,
-                )
-        if "name" not in item:
-            raise self._error(f"{where}: missing field 'name'", None, section)
-        name = item["name"]
-        if not isinstance(name, str) or not name.strip():
-            raise bad("name", f"must be a non-empty string, got {_show(name)}")
+        bad, name = self._named_table("checks", i, item, CHECK_FIELDS)
         weight = item.get("weight", 1.0)
         if not _is_number(weight) or weight < 0:
             raise bad("weight", f"must be a number >= 0, got {_show(weight)}")
