@@ -9,13 +9,15 @@ listed in ALLOWED with the reason; an entry that no longer matches a difference 
 
 from __future__ import annotations
 
-import enum
-import importlib
 import inspect
 import json
 from pathlib import Path
 
 import pytest
+
+# The same description of a signature as the one the JSON was made with, so
+# the two sides of every comparison cannot drift apart.
+from make_rclpy_surface import params_of, resolve  # noqa: E402
 
 from turtletui import compat
 
@@ -34,39 +36,6 @@ def shim() -> None:
     import rclpy
 
     assert rclpy.__file__.startswith(compat.SHIM_PATH), rclpy.__file__
-
-
-def resolve(dotted: str) -> object:
-    """Import the longest module prefix of ``dotted`` and getattr the rest."""
-    parts = dotted.split(".")
-    for cut in range(len(parts), 0, -1):
-        try:
-            obj = importlib.import_module(".".join(parts[:cut]))
-        except ImportError:
-            continue
-        for name in parts[cut:]:
-            obj = getattr(obj, name)
-        return obj
-    raise ImportError(dotted)
-
-
-def default_repr(value: object) -> str | None:
-    if value is None or isinstance(value, (bool, int, float, str)) and not isinstance(value, enum.Enum):
-        return repr(value)
-    if isinstance(value, enum.Enum):
-        return f"{type(value).__name__}.{value.name}"
-    return None
-
-
-def params_of(signature: inspect.Signature, drop_first: bool) -> list[dict]:
-    params = list(signature.parameters.values())[1 if drop_first else 0 :]
-    out = []
-    for p in params:
-        entry: dict = {"name": p.name, "kind": p.kind.name, "has_default": p.default is not p.empty}
-        if p.default is not p.empty:
-            entry["default"] = default_repr(p.default)
-        out.append(entry)
-    return out
 
 
 def ours(path: str, kind: str) -> dict | None:
