@@ -718,3 +718,11 @@ def test_from_values_names_what_is_wrong(values, message) -> None:
 
     with pytest.raises(I.InterfaceError, match=re.escape(message)):
         from_values(Twist, values)
+
+
+def test_from_values_refuses_a_service_class_like_from_dict() -> None:
+    from turtletui.interfaces import from_dict, from_values
+
+    for build, data in ((from_dict, {}), (from_values, [])):
+        with pytest.raises(I.InterfaceError, match="turtlesim/srv/SetPen is not a message type"):
+            build("turtlesim/srv/SetPen", data)

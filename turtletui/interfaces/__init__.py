@@ -406,11 +406,7 @@ def from_dict(cls: type | str, data: Any) -> Message:
     fields take ints 0-255. NaN / infinity pass through unchanged (the
     caller decides about non-finite values).
     """
-    target = get_interface(cls)
-    if not issubclass(target, Message):
-        raise InterfaceError(f'{target._TYPE_NAME} is not a message type; use its '
-                             f'Request/Response (or Goal/Result/Feedback) class',
-                             type_name=target._TYPE_NAME)
+    target = _message_class(cls)
     root = target._TYPE_NAME
     if data.__class__ is not dict:
         raise InterfaceError(f'{root}: message data must be a dict, got {_describe(data)}',
@@ -419,6 +415,16 @@ def from_dict(cls: type | str, data: Any) -> Message:
         return _from_dict(target, data)
     except _Bad as bad:
         raise _interface_error(root, bad) from None
+
+
+def _message_class(cls: type | str) -> type:
+    """The message class named by ``cls``; a service or action is an error."""
+    target = get_interface(cls)
+    if not issubclass(target, Message):
+        raise InterfaceError(f'{target._TYPE_NAME} is not a message type; use its '
+                             f'Request/Response (or Goal/Result/Feedback) class',
+                             type_name=target._TYPE_NAME)
+    return target
 
 
 def _interface_error(root: str, bad: _Bad) -> InterfaceError:
@@ -522,7 +528,7 @@ def _from_values(cls: type, values: list) -> Message:
 def from_values(cls: type | str, values: Any) -> Message:
     """Build a message from its field values in field order (see to_values),
     validating everything exactly as from_dict does."""
-    target = get_interface(cls)
+    target = _message_class(cls)
     root = target._TYPE_NAME
     if values.__class__ is not list:
         raise InterfaceError(f'{root}: message values must be a list, got {_describe(values)}',
