@@ -58,6 +58,16 @@ def lessons(
         print(f"{lesson.id:<{id_width}}  {part:>4}  {lesson.title}")
 
 
+def _find(lesson_id: str, folder: list[Path] | None, plugin: list[Path] | None):
+    """The lesson named by id or path, or a one-line error and exit 2."""
+    from turtletui.lessons.loader import LessonError, find_lesson
+
+    try:
+        return find_lesson(lesson_id, folder or (), plugin or ())
+    except LessonError as err:
+        fail(str(err))
+
+
 def lesson(
     lesson_id: str = typer.Argument(
         ..., metavar="ID", help="A lesson id (see turtletui lessons) or a lesson file."
@@ -66,12 +76,7 @@ def lesson(
     plugin: list[Path] = typer.Option(None, "--plugin", metavar="PATH", help=_PLUGIN_HELP),
 ) -> None:
     """Show a lesson in the terminal."""
-    from turtletui.lessons.loader import LessonError, find_lesson
-
-    try:
-        found = find_lesson(lesson_id, folder or (), plugin or ())
-    except LessonError as err:
-        fail(str(err))
+    found = _find(lesson_id, folder, plugin)
     heading = found.title if found.part is None else f"Part {found.part}: {found.title}"
     objectives = "".join(f"- {line}\n" for line in found.objectives)
     starter = (
@@ -110,12 +115,7 @@ def new(
     plugin: list[Path] = typer.Option(None, "--plugin", metavar="PATH", help=_PLUGIN_HELP),
 ) -> None:
     """Write a lesson's starter file to FILE, ready to edit and run."""
-    from turtletui.lessons.loader import LessonError, find_lesson
-
-    try:
-        found = find_lesson(lesson_id, folder or (), plugin or ())
-    except LessonError as err:
-        fail(str(err))
+    found = _find(lesson_id, folder, plugin)
     source = found.starter_path
     if source is None:
         fail(f"lesson {found.id!r} has no starter file")
