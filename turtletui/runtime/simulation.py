@@ -86,11 +86,6 @@ class Simulation:
         for warning in dangling_endpoints(self.graph):
             self.graph.log("turtletui", WARN, warning)
 
-    def set_speed(self, speed: float) -> None:
-        """Change the real-time speed factor without a jump in time."""
-        self._wall_origin = None
-        self.speed = speed
-
     def pump(
         self,
         own: str | None,
