@@ -10,6 +10,7 @@ This module must not import numpy or Textual: start-up time counts.
 
 from __future__ import annotations
 
+import errno
 import itertools
 import json
 import os
@@ -286,6 +287,14 @@ class ChildHost(CallbackTracking):
         return self.running
 
 
+def _out_of_memory(exc: BaseException) -> bool:
+    """An error that is the memory limit showing through: mmap refused (ENOMEM),
+    e.g. importing an extension module with too little address space left."""
+    if isinstance(exc, OSError) and exc.errno == errno.ENOMEM:
+        return True
+    return isinstance(exc, ImportError) and "failed to map segment" in str(exc)
+
+
 def _apply_limits(limits: dict[str, int]) -> None:
     import resource
 
@@ -404,7 +413,8 @@ def main() -> None:
         crash = {"kind": "memory", "message": f"MemoryError: ran out of its memory limit{within}", "frames": frames}
     except BaseException as exc:  # noqa: BLE001 - controller code may raise anything
         message = f"{type(exc).__name__}: {exc}" if str(exc) else type(exc).__name__
-        crash = {"kind": "exception", "message": message, "frames": user_frames(exc.__traceback__, spec.path)}
+        kind = "memory" if _out_of_memory(exc) else "exception"
+        crash = {"kind": kind, "message": message, "frames": user_frames(exc.__traceback__, spec.path)}
     try:
         sys.stdout.flush()
         sys.stderr.flush()
