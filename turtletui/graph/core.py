@@ -220,7 +220,11 @@ class Graph:
         self.log_sinks: list[Callable[[LogRecord], None]] = []
         self.taps: list[Callable[[str, Any], None]] = []
         """Observers of everything: ``tap(kind, payload)`` with kind "topic"
-        (topic, msg), "service" (name, request, response) or "log" (record)."""
+        (topic, msg), "service" (name, request, response), "goal" (action name,
+        goal) or "log" (record); a tap ignores kinds it does not know."""
+        self.record_everything = False
+        """Whether a tap wants messages nobody subscribes to (turtlesim then
+        publishes its colour sensor anyway): set while a run is recorded."""
         self.ready: deque[tuple[str, Callable[[], None]]] = deque()
         """Callbacks to run, each with the owner it runs for, in arrival order."""
         self._type_name = type_name
@@ -463,6 +467,9 @@ class Graph:
         server = self.action_servers.get(name)
         if server is None:
             return
+        if self.taps:
+            for tap in self.taps:
+                tap("goal", (name, goal))
         self._goal_ids += 1
         ready = self.ready
         handle = GoalHandle(

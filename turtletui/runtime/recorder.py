@@ -34,11 +34,17 @@ class Recorder:
     ``path`` as JSON Lines; the file appears complete or not at all.
 
     ``earlier_logs`` are log lines the graph wrote before the recorder was
-    attached (turtlesim's start lines); they are written first.
+    attached (turtlesim's start lines); they are written first, after the
+    ``header`` line (``{"recording": 1, ...header}``) if one is given: where
+    the run started, for ``turtletui replay``.
     """
 
     def __init__(
-        self, graph: Graph, path: str | os.PathLike[str], earlier_logs: Iterable[LogRecord] = ()
+        self,
+        graph: Graph,
+        path: str | os.PathLike[str],
+        earlier_logs: Iterable[LogRecord] = (),
+        header: dict[str, Any] | None = None,
     ) -> None:
         self.path = Path(path)
         if self.path.is_dir():
@@ -49,9 +55,12 @@ class Recorder:
         except OSError as err:
             raise OSError(f"{path}: cannot write the record ({err.strerror})") from None
         self._graph = graph
+        if header is not None:
+            self._write({"recording": 1, **header})
         for record in earlier_logs:
             self._write(_log_event(round(record.t, 9), record))
         graph.taps.append(self._tap)
+        graph.record_everything = True
 
     def _tap(self, kind: str, payload: Any) -> None:
         t = round(self._graph.now_ns / 1e9, 9)
@@ -61,8 +70,13 @@ class Recorder:
         elif kind == "service":
             name, request, response = payload
             event = {"t": t, "service": name, "request": to_dict(request), "response": to_dict(response)}
-        else:
+        elif kind == "goal":
+            name, goal = payload
+            event = {"t": t, "action": name, "goal": to_dict(goal)}
+        elif kind == "log":
             event = _log_event(t, payload)
+        else:
+            return
         self._write(event)
 
     def _write(self, event: dict[str, Any]) -> None:
@@ -76,6 +90,7 @@ class Recorder:
         """Finish the file (rename into place) or drop it; no temporary file is left."""
         if self._tap in self._graph.taps:
             self._graph.taps.remove(self._tap)
+            self._graph.record_everything = False
         try:
             self._file.close()
             if keep:
