@@ -11,6 +11,7 @@ setup(
         *find_namespace_packages(include=["turtletui", "turtletui.*"], exclude=["*.__pycache__"]),
         "turtletui.reference",
         "turtletui.lessons_data",
+        "turtletui.lessons_data.worlds",  # world files (lessons/worlds/*.toml)
     ],
     package_dir={"turtletui.reference": "plugins/reference", "turtletui.lessons_data": "lessons"},
 )

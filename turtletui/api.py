@@ -25,6 +25,7 @@ from turtletui.runtime.simulation import Simulation
 
 if TYPE_CHECKING:
     from turtletui.runtime.sandbox import Limits
+    from turtletui.sim import World
 
 _F32X3 = struct.Struct("<3f")
 """A pose's x, y, theta as turtlesim publishes them (float32)."""
@@ -101,6 +102,7 @@ def run(
     keep_calls: bool = True,
     setup: Callable[[Simulation], None] | None = None,
     limits: Limits | None = None,
+    world: World | None = None,
 ) -> RunResult:
     """Run controllers for ``duration`` simulated seconds and summarise the run.
 
@@ -109,7 +111,8 @@ def run(
     section (``["-p", "goal_x:=3.0"]``) given to every controller. Raises
     ControllerError or RosArgsError (one-line messages) for bad input.
     ``limits`` (turtletui.runtime.sandbox.Limits) bounds what sandboxed
-    controllers may use; the defaults when None.
+    controllers may use; the defaults when None. ``world`` is a fresh World
+    to run in (turtlesim's empty arena when None).
     """
     if not (duration > 0 and duration < 1e7):
         raise ValueError(f"duration must be a positive number of seconds, got {duration}")
@@ -125,7 +128,7 @@ def run(
             check_source(spec.path)
     logs: list[LogRecord] = []
     sinks = [logs.append] if on_log is None else [logs.append, on_log]
-    sim = Simulation(realtime=realtime, log_sinks=sinks)
+    sim = Simulation(world=world, realtime=realtime, log_sinks=sinks)
     if setup is not None:
         setup(sim)
     calls: list[tuple[float, str, Any, Any]] = []

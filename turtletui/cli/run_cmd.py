@@ -4,10 +4,14 @@ from __future__ import annotations
 
 import sys
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import typer
 
 from turtletui.cli.errors import fail
+
+if TYPE_CHECKING:
+    from turtletui.worlds import WorldSpec
 
 ROS_ARGS: list[str] = []
 """The ``--ros-args`` section of the command line, cut off before Typer parses."""
@@ -31,6 +35,12 @@ def run(
     plugin: list[Path] = typer.Option(None, "--plugin", help="Load a plugin file or folder (repeatable)."),
     lesson: str = typer.Option(None, "--lesson", help="Lesson to open in the app: an id (see turtletui lessons) or a file."),
     ascii_only: bool = typer.Option(False, "--ascii", help="Draw with plain ASCII and no colour."),
+    world: str = typer.Option(
+        None,
+        "--world",
+        help="World to run in: a registered name (see turtletui plugins) or a .toml world file."
+        " Default: the lesson's world in the app, else turtlesim's empty arena.",
+    ),
 ) -> None:
     """Run rclpy controller files against the simulated turtlesim.
 
@@ -42,7 +52,7 @@ def run(
                 "no terminal to draw the app in; run headless instead: "
                 "turtletui run FILE.py --headless --duration 60"
             )
-        _run_app(controllers, plugin, lesson, ascii_only, seed)
+        _run_app(controllers, plugin, lesson, ascii_only, seed, world)
         return
     from turtletui.api import run as run_controllers
     from turtletui.compat.ros_args import RosArgsError
@@ -55,6 +65,7 @@ def run(
         fail(str(err))
     if not duration > 0:
         fail(f"--duration must be a positive number of seconds, got {duration}")
+    sim_world = None if world is None else _resolve_world(world, plugin).build(seed)
 
     def print_log(record) -> None:
         if not quiet:
@@ -71,6 +82,7 @@ def run(
             record=record,
             on_log=print_log,
             keep_calls=False,
+            world=sim_world,
         )
     except (ControllerError, RosArgsError, ValueError) as err:
         fail(str(err))
@@ -94,8 +106,23 @@ PART6_SAFE_BOX = (2.0, 2.0, 9.0, 9.0)
 """The Part 6 controller's safe zone (x, y from and to, metres), drawn on the arena."""
 
 
+def _resolve_world(name: str, plugins: list[Path] | None, what: str = "--world") -> WorldSpec:
+    """The WorldSpec ``--world`` (or a lesson) names; a clean exit if there is none."""
+    from turtletui.worlds import WorldError, resolve_world
+
+    try:
+        return resolve_world(name, plugins=plugins or ())
+    except WorldError as err:
+        fail(f"{what}: {err}")
+
+
 def _run_app(
-    controllers: list[str] | None, plugins: list[Path] | None, lesson: str | None, ascii_only: bool, seed: int
+    controllers: list[str] | None,
+    plugins: list[Path] | None,
+    lesson: str | None,
+    ascii_only: bool,
+    seed: int,
+    world: str | None = None,
 ) -> None:
     """The Textual app (imported only here: headless runs never load Textual)."""
     from turtletui.lessons.loader import LessonError, find_lesson
@@ -110,13 +137,26 @@ def _run_app(
     lesson_path = None
     if lesson is not None:
         try:
-            lesson_path = find_lesson(lesson, plugins=plugins or ()).path
+            found = find_lesson(lesson, plugins=plugins or ())
         except LessonError as err:
             fail(f"--lesson: {err}")
+        lesson_path = found.path
+    what = "--world"
+    if lesson is not None and world is None and found.world != "empty":
+        world, what = found.world, f"lesson {found.id}: world"
+    world_spec = None if world is None else _resolve_world(world, plugins, what)
     try:
         specs = resolve_controllers(controllers, plugins=plugins or ())
     except ControllerError as err:
         fail(str(err))
     from turtletui.tui.app import TurtleApp
 
-    TurtleApp(specs, lesson=lesson_path, ascii=ascii_only, ros_args=ROS_ARGS, seed=seed, overlays=overlays).run()
+    TurtleApp(
+        specs,
+        lesson=lesson_path,
+        ascii=ascii_only,
+        ros_args=ROS_ARGS,
+        seed=seed,
+        overlays=overlays,
+        world=world_spec,
+    ).run()

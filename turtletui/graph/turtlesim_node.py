@@ -3,11 +3,15 @@
 from __future__ import annotations
 
 import struct
+from array import array
 from typing import Any
 
 from turtletui.graph.core import NS_PER_S, GoalHandle, Graph, Publisher, Subscription
 from turtletui.graph.logs import ERROR, INFO, WARN
+from turtletui.interfaces.builtin_interfaces import Time
 from turtletui.interfaces.geometry_msgs import Twist
+from turtletui.interfaces.sensor_msgs import LaserScan
+from turtletui.interfaces.std_msgs import Header
 from turtletui.interfaces.std_srvs import Empty
 from turtletui.interfaces.turtlesim import (
     Color,
@@ -22,6 +26,7 @@ from turtletui.interfaces.turtlesim import (
 from turtletui.sim import (
     DT,
     Killed,
+    ObstacleHit,
     RotationFeedback,
     RotationFinished,
     SimError,
@@ -30,6 +35,7 @@ from turtletui.sim import (
     Warning_,
     World,
 )
+from turtletui.sim.obstacles import RayCaster
 
 QOS_DEPTH = 7
 """turtlesim's topics: keep last 7, reliable (qos.hpp)."""
@@ -42,26 +48,35 @@ _PARAMETERS = ("background_r", "background_g", "background_b", "holonomic")
 
 def _float32(*values: float) -> tuple[float, ...]:
     """Round to float32 as the Pose message does on the wire."""
+    packer = _F32 if len(values) == 5 else struct.Struct(f"{len(values)}f")
     try:
-        return _F32.unpack(_F32.pack(*values))
+        return packer.unpack(packer.pack(*values))
     except OverflowError:
         big = 3.4028234663852886e38
-        return _F32.unpack(_F32.pack(*(min(max(v, -big), big) for v in values)))
+        return packer.unpack(packer.pack(*(min(max(v, -big), big) for v in values)))
 
 
 class _TurtleEndpoints:
-    __slots__ = ("pose", "color", "cmd_vel", "services", "action")
+    __slots__ = ("pose", "color", "scan", "cmd_vel", "services", "action")
 
     def __init__(self) -> None:
         self.pose: Publisher | None = None
         self.color: Publisher | None = None
+        self.scan: Publisher | None = None
         self.cmd_vel: Subscription | None = None
         self.services: list[str] = []
         self.action: str | None = None
 
 
 class TurtlesimNode:
-    """Adapts the physics onto the graph exactly where ROS 2 turtlesim puts it."""
+    """Adapts the physics onto the graph exactly where ROS 2 turtlesim puts it.
+
+    When the world has a LiDAR (not in turtlesim), every turtle also publishes
+    sensor_msgs/LaserScan on ``/<name>/scan`` in frame ``<name>``, on the
+    ticks the LiDAR's rate gives; the rays are cast only for turtles whose
+    scan someone receives (a subscription or a tap), while the noise is drawn
+    for every turtle, so a subscription joining late cannot change the values.
+    """
 
     NAME = "turtlesim"
 
@@ -71,6 +86,10 @@ class TurtlesimNode:
         self.world = world if world is not None else World(spawn_turtle1=False)
         self._turtles: dict[str, _TurtleEndpoints] = {}
         self._goals: dict[int, GoalHandle] = {}
+        lidar = self.world.lidar
+        self._scan_period = lidar.period_ticks(DT) if lidar is not None else 0
+        self._scan_angles = lidar.angles() if lidar is not None else None
+        self._caster = RayCaster(self.world.obstacles) if lidar is not None else None
         bg = self.world.background
         self.node.parameters.update(
             background_r=bg[0], background_g=bg[1], background_b=bg[2], holonomic=self.world.holonomic
@@ -84,8 +103,11 @@ class TurtlesimNode:
         self.timer = graph.add_timer(node, round(DT * NS_PER_S), self._update)
         if not self.world.turtles:
             self.world.reset()
-        else:
-            for name in self.world.turtles:
+        # A world built with turtles still holds their Spawned events: handling
+        # those adds the endpoints (and logs the spawn, as turtlesim does).
+        pending = {event.turtle for event in self.world.events if isinstance(event, Spawned)}
+        for name in self.world.turtles:
+            if name not in pending:
                 self._add_turtle(name)
         self._handle_events()
 
@@ -101,7 +123,7 @@ class TurtlesimNode:
                 sense = True
                 break
         else:
-            sense = bool(graph.taps)
+            sense = graph.record_everything
         if not world.step(sense_color=sense):
             return
         if world.events:
@@ -119,6 +141,49 @@ class TurtlesimNode:
             publish(ends.pose.topic, trusted_pose(*fields))
             if sense:
                 publish(ends.color.topic, Color._trusted(*turtle.color))
+        if self._scan_period and world.ticks % self._scan_period == 0:
+            self._publish_scans()
+
+    def _publish_scans(self) -> None:
+        world, graph = self.world, self.graph
+        lidar = world.lidar
+        order = world._order
+        noise = None
+        if lidar.noise_std > 0.0:
+            noise = world.rng.normal(0.0, lidar.noise_std, (len(order), lidar.samples))
+        sec, nanosec = divmod(graph.stamp_ns, NS_PER_S)
+        angle_min, angle_max, increment, scan_time, range_min, range_max = _float32(
+            lidar.angle_min,
+            lidar.last_angle,
+            lidar.angle_increment,
+            self._scan_period * DT,
+            lidar.range_min,
+            lidar.range_max,
+        )
+        for i, turtle in enumerate(order):
+            topic = self._turtles[turtle.name].scan.topic
+            if not (topic.subscriptions or graph.taps):
+                continue
+            ranges = lidar.scan(
+                self._caster,
+                turtle.x,
+                turtle.y,
+                turtle.theta,
+                None if noise is None else noise[i],
+                self._scan_angles,
+            )
+            msg = LaserScan(
+                header=Header(stamp=Time(sec=sec, nanosec=nanosec), frame_id=turtle.name),
+                angle_min=angle_min,
+                angle_max=angle_max,
+                angle_increment=increment,
+                time_increment=0.0,
+                scan_time=scan_time,
+                range_min=range_min,
+                range_max=range_max,
+                ranges=array("f", ranges.tobytes()),
+            )
+            graph.publish(topic, msg)
 
     # -- parameters -----------------------------------------------------------
     def set_parameter(self, name: str, value: Any) -> str | None:
@@ -186,6 +251,8 @@ class TurtlesimNode:
         ends = _TurtleEndpoints()
         ends.pose = graph.add_publisher(node, f"/{name}/pose", Pose, QOS_DEPTH)
         ends.color = graph.add_publisher(node, f"/{name}/color_sensor", Color, QOS_DEPTH)
+        if world.lidar is not None:
+            ends.scan = graph.add_publisher(node, f"/{name}/scan", LaserScan, QOS_DEPTH)
 
         def on_cmd_vel(msg: Twist) -> None:
             if name in world.turtles:
@@ -217,7 +284,7 @@ class TurtlesimNode:
         ends = self._turtles.pop(name, None)
         if ends is None:
             return
-        for endpoint in (ends.pose, ends.color, ends.cmd_vel):
+        for endpoint in (ends.pose, ends.color, ends.scan, ends.cmd_vel):
             if endpoint is not None:
                 self.graph.remove_endpoint(endpoint)
         for service in ends.services:
@@ -240,6 +307,8 @@ class TurtlesimNode:
         for event in self.world.take_events():
             if isinstance(event, WallHit):
                 self._log(WARN, f"Oh no! I hit the wall! (Clamping from [x={event.x:f}, y={event.y:f}])")
+            elif isinstance(event, ObstacleHit):
+                self._log(WARN, f"Oh no! I hit an obstacle! (Blocked at [x={event.x:f}, y={event.y:f}])")
             elif isinstance(event, RotationFeedback):
                 handle = self._goals.get(id(event.goal))
                 if handle is not None:

@@ -1,13 +1,14 @@
-"""The built-in plugin: the course's reference controllers and bundled lessons.
+"""The built-in plugin: the course's reference controllers, bundled lessons
+and worlds.
 
-Worlds and checks arrive with issue 4.
+Checks arrive with issue 4.
 """
 
 from __future__ import annotations
 
 from turtletui.plugins import hookimpl
 from turtletui.plugins.bundled import lessons_dir, reference_dir
-from turtletui.plugins.hookspecs import RegisterController, RegisterLesson
+from turtletui.plugins.hookspecs import RegisterController, RegisterLesson, RegisterWorld
 
 REFERENCE_CONTROLLERS: tuple[tuple[str, str, str], ...] = (
     (
@@ -47,3 +48,26 @@ def turtletui_register_lessons(register: RegisterLesson) -> None:
     folder = lessons_dir()
     if folder is not None:
         register(folder)
+
+
+BUNDLED_WORLDS: tuple[tuple[str, str, str], ...] = (
+    (
+        "lidar-course",
+        "lidar_course.toml",
+        "Circles and boxes to roam among, with a 360-degree LiDAR on /<turtle>/scan",
+    ),
+)
+"""(world name, file in lessons/worlds, description)."""
+
+
+@hookimpl
+def turtletui_register_worlds(register: RegisterWorld) -> None:
+    # Factories return what turtletui.worlds reads (here a file's path): this
+    # layer is below turtletui.worlds and must not import it. "empty" is
+    # built into turtletui.worlds itself.
+    folder = lessons_dir()
+    if folder is None:
+        return
+    for name, filename, description in BUNDLED_WORLDS:
+        path = folder / "worlds" / filename
+        register(name, lambda path=path: path, description)

@@ -22,12 +22,14 @@ from turtletui.sim.events import (
     Cleared,
     Event,
     Killed,
+    ObstacleHit,
     RotationFeedback,
     RotationFinished,
     Spawned,
     WallHit,
     Warning_,
 )
+from turtletui.sim.obstacles import Box, Circle, Lidar, Obstacle
 from turtletui.sim.turtle import RotationGoal, Turtle
 from turtletui.sim.world import SimError, World
 
@@ -41,9 +43,14 @@ __all__ = [
     "PEN_COLOR",
     "PEN_WIDTH",
     "PIXELS",
+    "Box",
+    "Circle",
     "Cleared",
     "Event",
     "Killed",
+    "Lidar",
+    "Obstacle",
+    "ObstacleHit",
     "PenCanvas",
     "RotationFeedback",
     "RotationFinished",

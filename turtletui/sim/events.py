@@ -28,6 +28,15 @@ class WallHit(Event):
 
 
 @dataclass(frozen=True, slots=True)
+class ObstacleHit(Event):
+    """A turtle's step ran into an obstacle; x, y is where it was stopped (the surface)."""
+
+    turtle: str
+    x: float
+    y: float
+
+
+@dataclass(frozen=True, slots=True)
 class Spawned(Event):
     """A turtle appeared (spawn service, or turtle1 at start and reset)."""
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 from turtletui.sim.constants import (
@@ -14,7 +15,8 @@ from turtletui.sim.constants import (
     ROTATE_TOLERANCE,
     normalize_angle,
 )
-from turtletui.sim.events import Event, RotationFeedback, RotationFinished, WallHit
+from turtletui.sim.events import Event, ObstacleHit, RotationFeedback, RotationFinished, WallHit
+from turtletui.sim.obstacles import Obstacle, first_entry
 
 _cos = math.cos
 _PI = math.pi
@@ -62,15 +64,22 @@ class Turtle:
     wall_hits: int = 0
     """Times the turtle ran into a wall (a stay against the wall counts once)."""
     touching_wall: bool = False
+    obstacle_hits: int = 0
+    """Times the turtle ran into an obstacle (pushing against one counts once)."""
+    touching_obstacle: bool = False
     color: tuple[int, int, int] = (0, 0, 0)
     """Last colour sensed under the turtle (set by World.step when asked)."""
 
-    def update(self, now: float, dt: float, events: list[Event]) -> None:
+    def update(
+        self, now: float, dt: float, events: list[Event], obstacles: Sequence[Obstacle] = ()
+    ) -> None:
         """Advance this turtle by ``dt`` seconds at simulated time ``now``.
 
         Follows turtlesim's order after the queued teleports (``apply_teleports``,
         called first by World.step): rotate_absolute goal, command timeout,
-        semi-implicit heading update, move, clamp. Pose publishing and the
+        semi-implicit heading update, move, clamp. With ``obstacles`` (not in
+        turtlesim) a move that would enter one stops where it meets the
+        surface, before the clamp at the walls. Pose publishing and the
         step's pen segment happen in the caller, as in turtlesim: the colour
         sensor reads the image before this step's line is drawn.
         """
@@ -88,6 +97,8 @@ class Turtle:
         s = _sin(theta)
         x = self.x + (c * vx - s * vy) * dt
         y = self.y + (s * vx + c * vy) * dt
+        if obstacles:
+            x, y = self._block(x, y, obstacles, events)
         if x < 0.0 or x > ARENA_SIZE or y < 0.0 or y > ARENA_SIZE:
             events.append(WallHit(self.name, x, y))
             if not self.touching_wall:
@@ -99,6 +110,19 @@ class Turtle:
             self.touching_wall = False
         self.x = x
         self.y = y
+
+    def _block(
+        self, x: float, y: float, obstacles: Sequence[Obstacle], events: list[Event]
+    ) -> tuple[float, float]:
+        stop = first_entry(obstacles, self.x, self.y, x - self.x, y - self.y)
+        if stop is None:
+            self.touching_obstacle = False
+            return x, y
+        events.append(ObstacleHit(self.name, stop[0], stop[1]))
+        if not self.touching_obstacle:
+            self.touching_obstacle = True
+            self.obstacle_hits += 1
+        return stop
 
     def apply_teleports(self, draw) -> None:
         """Apply queued teleports in order, drawing each jump when the pen is on."""

@@ -5,6 +5,9 @@ from __future__ import annotations
 import math
 import re
 import struct
+from collections.abc import Iterable
+
+import numpy as np
 
 from turtletui.sim.canvas import PenCanvas
 from turtletui.sim.constants import BACKGROUND, CENTER, DT
@@ -16,6 +19,7 @@ from turtletui.sim.events import (
     Spawned,
     Warning_,
 )
+from turtletui.sim.obstacles import Box, Circle, Lidar, Obstacle
 from turtletui.sim.turtle import RotationGoal, Turtle
 
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*\Z")
@@ -34,6 +38,11 @@ class World:
     ``step()`` advances time by ``DT``; every other method is a request that
     takes effect as turtlesim's service callbacks do. Whatever turtlesim would
     log is appended to ``events``, which the owner drains with ``take_events``.
+
+    Beyond turtlesim, a world may hold ``obstacles`` (circles and boxes that
+    block turtles as the walls do, see turtletui.sim.obstacles) and a
+    ``lidar`` every turtle carries; ``seed`` seeds the LiDAR's noise.
+    Without them the world is exactly turtlesim's.
     """
 
     def __init__(
@@ -42,9 +51,21 @@ class World:
         holonomic: bool = False,
         background: tuple[int, int, int] = BACKGROUND,
         spawn_turtle1: bool = True,
+        obstacles: Iterable[Obstacle] = (),
+        lidar: Lidar | None = None,
+        seed: int = 0,
     ) -> None:
         self.holonomic = holonomic
         """Whether linear.y of a velocity command moves the turtle sideways."""
+        self.obstacles: tuple[Obstacle, ...] = tuple(obstacles)
+        """Circles and boxes turtles cannot enter (fixed for the world's life)."""
+        for obstacle in self.obstacles:
+            if not isinstance(obstacle, (Circle, Box)):
+                raise TypeError(f"an obstacle must be a Circle or a Box, got {type(obstacle).__name__}")
+        self.lidar = lidar
+        """The LiDAR on every turtle, or None for none (turtlesim)."""
+        self.seed = seed
+        self._rng: np.random.Generator | None = None
         self.canvas = PenCanvas(background)
         self.turtles: dict[str, Turtle] = {}
         self.ticks = 0
@@ -63,6 +84,13 @@ class World:
     @property
     def background(self) -> tuple[int, int, int]:
         return self.canvas.background
+
+    @property
+    def rng(self) -> np.random.Generator:
+        """The world's random generator (the LiDAR's noise), seeded with ``seed``."""
+        if self._rng is None:
+            self._rng = np.random.default_rng(self.seed)
+        return self._rng
 
     def take_events(self) -> list[Event]:
         """Return and forget the events reported since the last call."""
@@ -86,13 +114,14 @@ class World:
         events = self.events
         canvas = self.canvas
         draw = canvas.draw_segment
+        obstacles = self.obstacles
         for turtle in self._order:
             if turtle.teleports:
                 # turtlesim takes old_pos for the step's segment after teleports.
                 turtle.apply_teleports(draw)
             old_x = turtle.x
             old_y = turtle.y
-            turtle.update(now, DT, events)
+            turtle.update(now, DT, events, obstacles)
             x = turtle.x
             y = turtle.y
             moved = x != old_x or y != old_y

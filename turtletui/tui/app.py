@@ -17,6 +17,7 @@ from textual.screen import Screen
 from textual.widgets import ContentSwitcher, DataTable, Footer, Input, Static
 
 from turtletui.graph.introspection import snapshot
+from turtletui.graph.logs import ERROR
 from turtletui.runtime.loader import ControllerSpec
 from turtletui.tui.ros2cli import Ros2Cli
 from turtletui.tui.session import LiveSession
@@ -28,6 +29,7 @@ from turtletui.tui.widgets.panels import (
     LogPanel,
     TopicsPanel,
 )
+from turtletui.worlds import WorldError, WorldSpec, resolve_world
 
 TICK_SECONDS = 0.016
 """The simulation advances every 16 ms of wall time, like turtlesim's timer."""
@@ -95,6 +97,7 @@ class TurtleApp(App):
         seed: int = 0,
         overlays: Sequence[tuple[float, float, float, float]] = (),
         clock: object = time.monotonic,
+        world: WorldSpec | None = None,
     ) -> None:
         super().__init__()
         self._controllers = list(controllers)
@@ -104,6 +107,8 @@ class TurtleApp(App):
         self._seed = seed
         self._overlays = tuple(overlays)
         self._clock = clock
+        self._world = world
+        """The world to run in; None: the lesson's world, else the empty arena."""
         self.session: LiveSession | None = None
         self._log_seen = 0
         self._last_frame = 0.0
@@ -143,8 +148,28 @@ class TurtleApp(App):
         except LessonError as err:
             return f"**This lesson cannot be shown:** {err}"
 
+    def _lesson_world(self) -> tuple[WorldSpec | None, str | None]:
+        """(the lesson's world, or None for the empty arena; a problem to log)."""
+        if self._lesson is None:
+            return None, None
+        from turtletui.lessons.loader import LessonError, load_lesson
+
+        try:
+            name = load_lesson(self._lesson).world
+        except LessonError:
+            return None, None  # the lesson pane says what is wrong with it
+        if name == "empty":
+            return None, None
+        try:
+            return resolve_world(name), None
+        except WorldError as err:
+            return None, f"{err}: running in the empty arena"
+
     def on_mount(self) -> None:
-        self.session = LiveSession(self._controllers, ros_args=self._ros_args, seed=self._seed)
+        world, problem = (self._world, None) if self._world is not None else self._lesson_world()
+        self.session = LiveSession(self._controllers, ros_args=self._ros_args, seed=self._seed, world=world)
+        if problem is not None:
+            self.session.sim.graph.log("turtletui", ERROR, problem)
         self.cli = Ros2Cli(self.session.sim)
         arena = self.query_one(ArenaView)
         arena.world = self.session.sim.world

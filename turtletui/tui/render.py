@@ -37,9 +37,10 @@ from rich.style import Style
 
 from turtletui.sim.canvas import to_pixel
 from turtletui.sim.constants import METER_PX, PIXELS
+from turtletui.sim.obstacles import Circle
 
 if TYPE_CHECKING:
-    from turtletui.sim import World
+    from turtletui.sim import Obstacle, World
 
 MIN_WIDTH = 24
 """Fewest cells across that show the arena with its scale."""
@@ -51,6 +52,8 @@ TOO_SMALL = f"Terminal too small: need at least {MIN_WIDTH}x{MIN_HEIGHT} for the
 METRES = 11
 """Whole metres on the scale: 0 .. 11 (the arena is 11.09 m a side)."""
 
+OBSTACLE_COLOR = (52, 52, 68)
+"""Fill colour of obstacles (dark slate: apart from the blue floor and the trails)."""
 OVERLAY_COLOR = (255, 140, 0)
 """Default colour of an overlay rectangle's dotted outline (orange)."""
 BORDER_COLOR = (150, 150, 160)
@@ -229,7 +232,7 @@ class _Scene(NamedTuple):
     cells: np.ndarray
     """(N / 2, N) uint64 cell values: upper << 32 | lower (colour mode)."""
     chars: np.ndarray
-    """(N / 2, N) uint8 ASCII codes: ' ', '#' trail, '.' overlay (ASCII mode)."""
+    """(N / 2, N) uint8 ASCII codes: ' ', '#' trail or obstacle, '.' overlay (ASCII mode)."""
 
 
 class _Bounded(OrderedDict):
@@ -302,7 +305,7 @@ class ArenaRenderer:
         # The canvas itself, not its id: a new World's canvas could reuse a freed id.
         image_key = (canvas, canvas.version, canvas.background, layout.size)
         turtles = self._place_turtles(world, layout)
-        frame_key = (layout, ascii, overlays, image_key, turtles)
+        frame_key = (layout, ascii, overlays, world.obstacles, image_key, turtles)
         if frame_key == self._frame_key:
             self.changed_lines = []
             return self.lines
@@ -315,9 +318,10 @@ class ArenaRenderer:
             else:
                 self._image = downsample_packed(packed, canvas.background, layout.size)
             self._image_key = image_key
-        scene_key = (image_key, overlays)
+        obstacles = world.obstacles
+        scene_key = (image_key, overlays, obstacles)
         if scene_key != self._scene_key:
-            self._scene = _scene(self._image, canvas.background, layout, overlays)
+            self._scene = _scene(self._image, canvas.background, layout, overlays, obstacles)
             self._scene_key = scene_key
         lines, keys = self._compose(layout, ascii, turtles)
         self._frame_key = frame_key
@@ -396,11 +400,40 @@ class ArenaRenderer:
         return lines, keys
 
 
-def _scene(image: np.ndarray, background, layout: Layout, overlays) -> _Scene:
+@lru_cache(maxsize=8)
+def obstacle_mask(size: int, obstacles: tuple[Obstacle, ...]) -> np.ndarray:
+    """(size, size) bool: the arena pixels showing an obstacle. Like a trail,
+    a block shows an obstacle if any pen-image pixel in it lies inside one (and
+    the pixel under an obstacle's centre always does, so none vanishes). Read only."""
+    pen = np.zeros((PIXELS, PIXELS), dtype=bool)
+    # World coordinates of the pen-image pixels' centres (row 0 at the top).
+    xs = (np.arange(PIXELS) / METER_PX)[None, :]
+    ys = ((PIXELS - 1 - np.arange(PIXELS)) / METER_PX)[:, None]
+    for obstacle in obstacles:
+        if isinstance(obstacle, Circle):
+            pen |= (xs - obstacle.cx) ** 2 + (ys - obstacle.cy) ** 2 <= obstacle.r**2
+            centre = (obstacle.cx, obstacle.cy)
+        else:
+            pen |= (obstacle.x0 <= xs) & (xs <= obstacle.x1) & (obstacle.y0 <= ys) & (ys <= obstacle.y1)
+            centre = ((obstacle.x0 + obstacle.x1) / 2, (obstacle.y0 + obstacle.y1) / 2)
+        col, row = to_pixel(*centre)
+        pen[row, col] = True
+    edges = np.arange(size) * PIXELS // size
+    mask = np.maximum.reduceat(pen.view(np.uint8), edges, axis=0)
+    mask = np.maximum.reduceat(mask, edges, axis=1).astype(bool)
+    mask.flags.writeable = False
+    return mask
+
+
+def _scene(image: np.ndarray, background, layout: Layout, overlays, obstacles=()) -> _Scene:
     size = layout.size
     trail = image != _pack(background)
-    if overlays:
+    solid = obstacle_mask(size, tuple(obstacles))
+    if obstacles:
         image = image.copy()
+        image[solid] = _pack(OBSTACLE_COLOR)
+    if overlays:
+        image = image.copy() if not obstacles else image
         outline = np.zeros(image.shape, dtype=bool)
         for overlay in overlays:
             c0, r0 = layout.cell_of(overlay.x0, overlay.y0)
@@ -425,7 +458,7 @@ def _scene(image: np.ndarray, background, layout: Layout, overlays) -> _Scene:
     chars = np.full((size // 2, size), ord(" "), dtype=np.uint8)
     # In ASCII a cell holds one character: the trail wins over the outline.
     chars[outline[0::2] | outline[1::2]] = ord(".")
-    chars[trail[0::2] | trail[1::2]] = ord("#")
+    chars[trail[0::2] | trail[1::2] | solid[0::2] | solid[1::2]] = ord("#")
     return _Scene(image, cells, chars)
 
 

@@ -21,6 +21,7 @@ from turtletui.runtime.loader import ControllerError, ControllerSpec, check_sour
 from turtletui.runtime.sandbox import Limits, SandboxHost
 from turtletui.runtime.simulation import Simulation
 from turtletui.sim import DT
+from turtletui.worlds import WorldSpec
 
 SPEEDS = (0.25, 0.5, 1.0, 2.0, 4.0, 8.0)
 """Simulation speeds the app offers, in simulated seconds per wall second."""
@@ -114,12 +115,16 @@ class LiveSession:
         seed: int = 0,
         limits: Limits | None = None,
         log_capacity: int = 2000,
+        world: WorldSpec | None = None,
     ) -> None:
         self.logs: deque[LogRecord] = deque(maxlen=log_capacity)
         """The latest log lines (bounded, so memory stays flat)."""
         self.log_count = 0
         """Log lines seen since the start (the app compares it to know what is new)."""
-        self.sim = Simulation(realtime=True, paced=False, log_sinks=[self._on_log])
+        self.world_spec = world
+        """The world the simulation runs in (obstacles, LiDAR); None: turtlesim's empty arena."""
+        built = None if world is None else world.build(seed)
+        self.sim = Simulation(world=built, realtime=True, paced=False, log_sinks=[self._on_log])
         self.teleop = Teleop(self.sim)
         self.paused = False
         self.speed = 1.0

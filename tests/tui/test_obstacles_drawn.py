@@ -1,0 +1,116 @@
+"""Obstacles in the app: drawn by the renderer, and the world the live session runs."""
+
+from __future__ import annotations
+
+import asyncio
+import textwrap
+
+import pytest
+from rich.segment import Segment
+
+from turtletui.sim import BACKGROUND, Box, Circle, World
+from turtletui.tui.app import TurtleApp
+from turtletui.tui.render import OBSTACLE_COLOR, ArenaRenderer
+from turtletui.tui.session import LiveSession
+from turtletui.worlds import WorldSpec
+
+BOX = Box(1.0, 1.0, 4.0, 3.0)
+"""Bottom left: arena x 1..4 m, y 1..3 m."""
+DOT = Circle(9.0, 9.0, 0.2)
+"""Smaller than a cell of a small arena."""
+
+
+def colours(line: list[Segment]) -> set[tuple[int, int, int]]:
+    shown = set()
+    for segment in line:
+        if segment.style is None:
+            continue
+        for colour in (segment.style.color, segment.style.bgcolor):
+            if colour is not None:
+                shown.add(colour.triplet)
+    return shown
+
+
+def arena_rows(renderer: ArenaRenderer, lines: list) -> list:
+    layout = renderer.layout
+    return lines[layout.top : layout.top + layout.rows]
+
+
+def test_obstacles_are_filled_in_their_own_colour():
+    renderer = ArenaRenderer()
+    plain = arena_rows(renderer, renderer.frame(World(spawn_turtle1=False), 80, 30))
+    assert not any(OBSTACLE_COLOR in colours(line) for line in plain)
+    world = World(spawn_turtle1=False, obstacles=[BOX, DOT])
+    rows = arena_rows(renderer, renderer.frame(world, 80, 30))
+    with_obstacle = [i for i, line in enumerate(rows) if OBSTACLE_COLOR in colours(line)]
+    layout = renderer.layout
+    top_box = layout.cell_of(2.5, 2.9)[1] // 2
+    bottom_box = layout.cell_of(2.5, 1.1)[1] // 2
+    dot = layout.cell_of(9.0, 9.0)[1] // 2
+    box_lines = [i for i in with_obstacle if i > dot + 1]
+    assert box_lines == list(range(top_box, bottom_box + 1))
+    assert dot in with_obstacle and len(with_obstacle) - len(box_lines) <= 2  # 0.4 m: 2 pixels at most
+    assert all(BACKGROUND in colours(line) for line in rows)
+
+
+def test_obstacles_are_hashes_in_ascii():
+    renderer = ArenaRenderer()
+    world = World(spawn_turtle1=False, obstacles=[BOX])
+    lines = renderer.frame(world, 80, 30, ascii=True)
+    layout = renderer.layout
+    col0, row = layout.cell_of(1.05, 2.0)
+    col1, _ = layout.cell_of(3.95, 2.0)
+    text = "".join(segment.text for segment in lines[layout.top + row // 2])
+    start = layout.left
+    assert set(text[start + col0 : start + col1 + 1]) == {"#"}
+    assert text[start + col1 + 2] == " " and text[start + col0 - 2] == " "
+    empty = renderer.frame(World(spawn_turtle1=False), 80, 30, ascii=True)
+    assert "#" not in "".join(segment.text for line in empty for segment in line)
+
+
+def test_the_live_session_runs_in_the_world_it_is_given():
+    spec = WorldSpec("boxed", obstacles=[BOX])
+    session = LiveSession(world=spec, seed=4)
+    try:
+        world = session.sim.world
+        assert world.obstacles == (BOX,) and world.seed == 4
+        assert "turtle1" in world.turtles
+    finally:
+        session.close()
+    plain = LiveSession()
+    try:
+        assert plain.sim.world.obstacles == ()
+    finally:
+        plain.close()
+
+
+@pytest.mark.parametrize("world", ["lidar-course", "moon"])
+def test_the_app_runs_the_lessons_world(tmp_path, monkeypatch, world):
+    monkeypatch.setenv("TURTLETUI_DISABLE_PLUGIN_AUTOLOAD", "1")
+    lesson = tmp_path / "lesson.md"
+    lesson.write_text(
+        textwrap.dedent(
+            f"""\
+            +++
+            id = "roam"
+            title = "Roam"
+            world = "{world}"
+            +++
+            # Roam
+            """
+        ),
+        encoding="utf-8",
+    )
+
+    async def scenario() -> None:
+        app = TurtleApp(lesson=lesson)
+        async with app.run_test(size=(100, 36)) as pilot:
+            await pilot.pause(0.05)
+            sim = app.session.sim
+            if world == "moon":
+                assert sim.world.obstacles == ()
+                assert any("unknown world 'moon'" in record.msg for record in app.session.logs)
+            else:
+                assert len(sim.world.obstacles) > 4 and "/turtle1/scan" in sim.graph.topics
+
+    asyncio.run(scenario())
