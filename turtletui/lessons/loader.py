@@ -40,9 +40,9 @@ LESSON_FIELDS = (
     "scenarios",
     "checks",
 )
-SCENARIO_FIELDS = ("name", "start", "duration", "seed", "seeds", "hidden", "world")
+SCENARIO_FIELDS = ("name", "start", "duration", "seed", "seeds", "hidden", "world", "ros_args")
 START_FIELDS = ("x", "y", "theta")
-CHECK_FIELDS = ("name", "weight", "feedback", "thresholds")
+CHECK_FIELDS = ("name", "label", "weight", "feedback", "thresholds", "scenarios")
 
 
 class LessonError(ValueError):
@@ -240,8 +240,22 @@ class _Validator:
                 )
             seen[scenario.name] = i
         checks = tuple(
-            self._check(i, item) for i, item in enumerate(self._tables(data, "checks", top))
+            self._check(i, item, seen) for i, item in enumerate(self._tables(data, "checks", top))
         )
+        # a check may repeat (other thresholds per scenario), but results name
+        # each by its label and scenario: those pairs must be unique
+        every = set(seen)
+        judged: dict[tuple[str, str], int] = {}
+        for i, check in enumerate(checks):
+            for scenario in check.scenarios or every:
+                other = judged.setdefault((check.title, scenario), i)
+                if other != i:
+                    raise self._error(
+                        f"checks[{i}] judges scenario {scenario!r} under the name {check.title!r} like"
+                        f" checks[{other}]: give one of them a label",
+                        "name",
+                        self._section("checks", i),
+                    )
         return Lesson(
             id=lesson_id,
             title=title,
@@ -334,6 +348,9 @@ class _Validator:
         world = item.get("world")
         if world is not None and (not isinstance(world, str) or not world.strip()):
             raise bad("world", f"must be a non-empty string or omitted, got {_show(world)}")
+        ros_args = item.get("ros_args", [])
+        if not isinstance(ros_args, list) or not all(isinstance(a, str) for a in ros_args):
+            raise bad("ros_args", f'must be a list of strings like ["-p", "speed:=2.0"], got {_show(ros_args)}')
         return Scenario(
             name=name,
             start=start,
@@ -341,6 +358,7 @@ class _Validator:
             seeds=seeds,
             hidden=hidden,
             world=world,
+            ros_args=tuple(ros_args),
         )
 
     def _start(self, value: Any, bad: Any) -> dict[str, float] | str:
@@ -364,7 +382,7 @@ class _Validator:
             pose[key] = float(number)
         return pose
 
-    def _check(self, i: int, item: dict[str, Any]) -> CheckSpec:
+    def _check(self, i: int, item: dict[str, Any], scenario_names: dict[str, int]) -> CheckSpec:
         bad, name = self._named_table("checks", i, item, CHECK_FIELDS)
         weight = item.get("weight", 1.0)
         if not _is_number(weight) or weight < 0:
@@ -375,8 +393,26 @@ class _Validator:
         thresholds = item.get("thresholds", {})
         if not isinstance(thresholds, dict):
             raise bad("thresholds", f"must be a table, got {_show(thresholds)}")
+        scenarios = item.get("scenarios", [])
+        if not isinstance(scenarios, list) or not all(isinstance(n, str) for n in scenarios):
+            raise bad("scenarios", f"must be a list of scenario names, got {_show(scenarios)}")
+        for scenario in scenarios:
+            if scenario not in scenario_names:
+                raise bad(
+                    "scenarios",
+                    f"names no scenario {scenario!r}{_did_you_mean(scenario, list(scenario_names))}",
+                )
+        label = item.get("label", "")
+        if not isinstance(label, str):
+            raise bad("label", f"must be a string, got {_show(label)}")
         return CheckSpec(
-            name=name, weight=float(weight), feedback=feedback, thresholds=dict(thresholds)
+            name=name,
+            label=label.strip(),
+            weight=float(weight),
+            feedback=feedback,
+            thresholds=dict(thresholds),
+            scenarios=tuple(scenarios),
+            line=self._file_line(self._section("checks", i)[0]),
         )
 
 

@@ -26,6 +26,8 @@ class Scenario:
     """Hidden scenarios are graded but not shown to the student beforehand."""
     world: str | None = None
     """A registered world's name; None means the lesson's world."""
+    ros_args: tuple[str, ...] = ()
+    """Arguments after ``--ros-args`` given to the controller (``-p speed:=2.0``)."""
 
     @property
     def seed(self) -> int:
@@ -40,7 +42,18 @@ class CheckSpec:
     name: str
     weight: float = 1.0
     feedback: str = ""
+    label: str = ""
+    """How results name it; the check's name when empty. Unique within a lesson."""
     thresholds: dict[str, Any] = field(default_factory=dict)
+    scenarios: tuple[str, ...] = ()
+    """Names of the scenarios it judges; empty means every scenario."""
+    line: int = 0
+    """Line of its ``[[checks]]`` table in the lesson file (for error messages)."""
+
+    @property
+    def title(self) -> str:
+        """The label, or the check's name."""
+        return self.label or self.name
 
 
 @dataclass(frozen=True)
