@@ -10,7 +10,7 @@ import sys
 
 import typer
 
-from turtletui.cli import lessons_cmd, plugins_cmd, run_cmd
+from turtletui.cli import autograder_cmd, grade_cmd, lessons_cmd, plugins_cmd, replay_cmd, run_cmd
 
 app = typer.Typer(
     name="turtletui",
@@ -25,6 +25,10 @@ app.command("plugins")(plugins_cmd.plugins)
 app.command("lessons")(lessons_cmd.lessons)
 app.command("lesson")(lessons_cmd.lesson)
 app.command("new")(lessons_cmd.new)
+app.command("grade")(grade_cmd.grade)
+app.command("checks")(grade_cmd.checks)
+app.command("replay")(replay_cmd.replay)
+app.add_typer(autograder_cmd.app, name="autograder")
 
 
 @app.callback()

@@ -52,6 +52,9 @@ class Limits:
     """Lines of print() output kept; the rest is dropped with a notice."""
     log_lines: int = 20_000
     """Log records (get_logger()) kept per run; the rest is dropped with a notice."""
+    run_as: tuple[int, int] | None = None
+    """(uid, gid) the child runs as, with no supplementary groups: a grader
+    running as root drops the student's code to an unprivileged user."""
 
 
 _CRASH_KINDS = frozenset({"exception", "exit", "memory", "load", "cpu", "timeout", "killed"})
@@ -162,6 +165,7 @@ class SandboxHost:
             start_new_session=True,
             cwd=cwd,
             env=env,
+            **self._credentials(),
         )
         os.close(to_child_r)
         os.close(from_child_w)
@@ -173,6 +177,12 @@ class SandboxHost:
         os.set_blocking(from_child_r, False)  # polled briefly, then select (wire.spin_read)
         self._stdout = self.proc.stdout.fileno()
         os.set_blocking(self._stdout, False)
+
+    def _credentials(self) -> dict[str, Any]:
+        if self.limits.run_as is None:
+            return {}
+        uid, gid = self.limits.run_as
+        return {"user": uid, "group": gid, "extra_groups": []}
 
     def close(self) -> CrashReport | None:
         """End the child (asking it first), kill what it left behind, report."""

@@ -1,0 +1,308 @@
+"""Grading a class (turtletui.grading.batch, `turtletui grade`): what counts as a
+submission, parallel runs that give the same report as serial ones, results
+kept as each student finishes and reused by a rerun, recordings of failed
+scenarios, hidden scenarios, and a batch stopped by Ctrl-C or SIGKILL."""
+
+from __future__ import annotations
+
+import json
+import signal
+import time
+from pathlib import Path
+
+from tests.grading.conftest import (
+    CRASH_WITH_POSE,
+    HIDDEN_NAME,
+    HIDDEN_START,
+    HONEST,
+    MAX_SCORE,
+    WALL_HITTER,
+    grade_cli,
+    grade_subprocess,
+    make_class,
+    sleeper,
+    stored_results,
+    wait_until_gone,
+)
+from turtletui.grading.batch import ResultStore, grade_submissions, store_key
+from turtletui.grading.engine import prepare
+from turtletui.grading.reports import render_report
+from turtletui.grading.submissions import find_submissions
+from turtletui.lessons.loader import load_lesson
+
+
+def plan_of(lesson: Path):
+    return prepare(load_lesson(lesson))
+
+
+def comparable(report) -> dict:
+    """A report's JSON without what may differ between two gradings of the same
+    work: wall times, and where the recordings went."""
+    data = json.loads(render_report(report, "json"))
+    for sub in data["submissions"]:
+        sub.pop("execution_time")
+    return data
+
+
+# -- what a submission is ------------------------------------------------------------
+
+
+def test_a_submission_is_a_file_a_student_folder_or_a_class_of_folders(tmp_path: Path, lesson: Path):
+    solo = tmp_path / "solo.py"
+    solo.write_text(HONEST)
+    student = tmp_path / "bea"
+    student.mkdir()
+    (student / "helpers.py").write_text("SPEED = 5.0\n")
+    (student / "my_node.py").write_text(HONEST)
+    klass = make_class(tmp_path / "class", {"carl": HONEST, "dora": WALL_HITTER})
+
+    found = find_submissions([solo, student, klass])
+    assert [(s.student, s.controller.name if s.controller else None, s.error) for s in found] == [
+        ("solo", "solo.py", None),
+        ("bea", "my_node.py", None),  # the one file with a main()
+        ("carl", "controller.py", None),
+        ("dora", "controller.py", None),
+    ]
+
+    result = grade_cli(
+        solo, student, klass, "--lesson", lesson, "--results", tmp_path / "res", "--format", "json",
+        "--same-user", "-j", "2",
+    )
+    assert result.exit_code == 0, result.stderr
+    report = json.loads(result.stdout)
+    scores = {s["student"]: s["score"] for s in report["submissions"]}
+    assert scores == {"solo": MAX_SCORE, "bea": MAX_SCORE, "carl": MAX_SCORE, "dora": 1.0}
+    assert [s["submission"] for s in report["submissions"]] == [
+        str(solo), str(student), str(klass / "carl"), str(klass / "dora")
+    ]
+
+
+# -- parallel and deterministic -----------------------------------------------------------
+
+
+def test_jobs_2_gives_exactly_the_report_of_jobs_1(tmp_path: Path, lesson: Path):
+    klass = make_class(
+        tmp_path / "class", {"ann": HONEST, "ben": WALL_HITTER, "cat": CRASH_WITH_POSE, "dan": HONEST}
+    )
+    plan = plan_of(lesson)
+    subs = find_submissions([klass])
+    serial = grade_submissions(plan, subs, jobs=1, store=ResultStore(tmp_path / "one", store_key(plan)))
+    parallel = grade_submissions(plan, subs, jobs=2, store=ResultStore(tmp_path / "two", store_key(plan)))
+    assert comparable(parallel) == comparable(serial)
+    assert [s.score for s in serial.submissions] == [MAX_SCORE, 1.0, 0.0, MAX_SCORE]
+    # the same failed scenario is recorded by both, under each store's folder
+    assert [[Path(r).relative_to(tmp_path / "one") for r in s.recordings] for s in serial.submissions] == [
+        [Path(r).relative_to(tmp_path / "two") for r in s.recordings] for s in parallel.submissions
+    ]
+    # and a third grading of the same work (no store) scores the same again
+    again = grade_submissions(plan, subs, jobs=2)
+    assert comparable(again) == comparable(serial)
+
+
+# -- results kept, reused, regraded ------------------------------------------------------
+
+
+def without_times(json_report: str) -> dict:
+    data = json.loads(json_report)
+    for sub in data["submissions"]:
+        sub.pop("execution_time")
+    return data
+
+
+def progress_of(stderr: str) -> dict[str, str]:
+    """Student -> their progress line's status, from ``[i/n] student: status`` lines."""
+    lines = [line for line in stderr.splitlines() if line.startswith("[")]
+    return dict(line.split("] ", 1)[1].split(": ", 1) for line in lines)
+
+
+def test_a_rerun_keeps_results_regrades_changes_and_force_regrades_all(tmp_path: Path, lesson: Path):
+    klass = make_class(tmp_path / "class", {"ann": sleeper(0.6), "ben": WALL_HITTER})
+    results = tmp_path / "results"
+    args = (klass, "--lesson", lesson, "--results", results, "--same-user", "-j", "2", "--format", "csv")
+
+    started = time.monotonic()
+    first = grade_cli(*args)
+    first_seconds = time.monotonic() - started
+    assert first.exit_code == 0, first.stderr
+    assert all("kept" not in status for status in progress_of(first.stderr).values())
+    assert sorted(stored_results(results)) == ["ann", "ben"]
+
+    # nothing changed: both kept, nothing run, the same report
+    started = time.monotonic()
+    second = grade_cli(*args)
+    second_seconds = time.monotonic() - started
+    assert second.exit_code == 0, second.stderr
+    assert progress_of(second.stderr) == {
+        "ann": "3/3 (kept from an earlier run)",
+        "ben": "1/3 (kept from an earlier run)",
+    }
+    assert second.stdout == first.stdout
+    assert second_seconds < min(1.0, first_seconds / 2), (first_seconds, second_seconds)
+
+    # ann's file changed (even by a comment): only ann is graded again
+    (klass / "ann" / "controller.py").write_text(sleeper(0.6) + "# fixed a typo\n")
+    third = grade_cli(*args)
+    status = progress_of(third.stderr)
+    assert "kept" not in status["ann"] and status["ann"].startswith("3/3 in ")
+    assert status["ben"] == "1/3 (kept from an earlier run)"
+
+    # --force grades everyone again
+    forced = grade_cli(*args, "--force")
+    assert forced.exit_code == 0, forced.stderr
+    assert all("kept" not in s for s in progress_of(forced.stderr).values())
+    assert forced.stdout == first.stdout
+
+
+def test_a_damaged_result_file_is_graded_again_not_trusted(tmp_path: Path, lesson: Path):
+    klass = make_class(tmp_path / "class", {"ann": HONEST, "ben": WALL_HITTER})
+    results = tmp_path / "results"
+    args = (klass, "--lesson", lesson, "--results", results, "--same-user", "-j", "1", "--format", "json")
+    first = grade_cli(*args)
+    assert first.exit_code == 0, first.stderr
+
+    stored = results / "ben.json"
+    text = stored.read_text()
+    # a forged full score in a file cut short (as a crash mid-write would leave it)
+    stored.write_text(text.replace('"score": 1.0', '"score": 3.0')[: len(text) // 2])
+    second = grade_cli(*args)
+    assert second.exit_code == 0, second.stderr
+    status = progress_of(second.stderr)
+    assert status["ann"].endswith("(kept from an earlier run)")
+    assert status["ben"].startswith("1/3 in ")
+    assert without_times(second.stdout) == without_times(first.stdout)
+    assert stored_results(results)["ben"]["score"] == 1.0  # whole and right again
+
+
+def test_a_result_for_other_code_or_another_lesson_is_not_reused(tmp_path: Path, lesson: Path):
+    klass = make_class(tmp_path / "class", {"ann": HONEST})
+    results = tmp_path / "results"
+    plan = plan_of(lesson)
+    subs = find_submissions([klass])
+    store = ResultStore(results, store_key(plan))
+    grade_submissions(plan, subs, store=store, jobs=1)
+    assert store.load(subs[0]) is not None
+
+    # the same student file under a changed lesson: its key differs
+    lesson.write_text(lesson.read_text().replace("weight = 2.0", "weight = 4.0"))
+    changed = plan_of(lesson)
+    reused = []
+    report = grade_submissions(
+        changed, subs, store=ResultStore(results, store_key(changed)), jobs=1,
+        on_result=lambda result, kept: reused.append(kept),
+    )
+    assert reused == [False]
+    assert report.submissions[0].score == report.max_score == 5.0
+
+
+# -- recordings and hidden scenarios -----------------------------------------------------
+
+
+def test_a_failed_visible_scenario_is_recorded_and_a_hidden_one_is_not(tmp_path: Path, lesson: Path):
+    klass = make_class(tmp_path / "class", {"ann": HONEST, "ben": WALL_HITTER})
+    plan = plan_of(lesson)
+    store = ResultStore(tmp_path / "results", store_key(plan))
+    report = grade_submissions(plan, find_submissions([klass]), store=store, jobs=1)
+    ann, ben = report.submissions
+    assert ann.recordings == []  # nothing failed: nothing to watch
+    failed = {t.scenario for t in ben.tests if not t.passed}
+    assert failed == {"centre", "hidden 1"}  # it fails the hidden run too...
+    assert ben.recordings == [str(store.recordings("ben") / "centre.jsonl")]  # ...which is not recorded
+    recorded = sorted(p.name for p in (tmp_path / "results" / "recordings").rglob("*") if p.is_file())
+    assert recorded == ["centre.jsonl"]
+    header = json.loads(Path(ben.recordings[0]).read_text().splitlines()[0])
+    assert header["scenario"] == "centre" and header["start"] == [5.5, 5.5, 0.0]
+    # the stored result lists the recording for the student to replay
+    assert stored_results(tmp_path / "results")["ben"]["recordings"] == ben.recordings
+
+
+def test_hidden_scenarios_are_run_but_not_described_in_any_format(tmp_path: Path, lesson: Path):
+    klass = make_class(tmp_path / "class", {"ann": HONEST, "ben": WALL_HITTER, "cat": CRASH_WITH_POSE})
+    plan = plan_of(lesson)
+    report = grade_submissions(plan, find_submissions([klass]), jobs=1)
+    for sub in report.submissions:
+        hidden = [t for t in sub.tests if t.hidden]
+        assert [t.name for t in hidden] == ["wall_hits [hidden 1]", "no_crash [hidden 1]"]
+    # they count: ben fails the hidden run too and loses its points
+    ben = report.submissions[1]
+    assert [t.score for t in ben.tests if t.hidden] == [0.0, 0.5]
+    cat_hidden = [t for t in report.submissions[2].tests if t.hidden]
+    assert not any(t.passed for t in cat_hidden)
+    # cat's exception message carries the pose it was given: the visible run's
+    # feedback shows it, the hidden run's must not
+    visible_crash = next(t for t in report.submissions[2].tests if t.name == "no_crash [centre]")
+    assert "x=5.5000" in visible_crash.output
+    secrets = [HIDDEN_NAME, *(f"{v:.4f}" for v in HIDDEN_START), *(f"{v:g}" for v in HIDDEN_START)]
+    for fmt in ("json", "junit", "csv", "table"):
+        text = render_report(report, fmt)
+        leaked = [s for s in secrets if s in text]
+        assert not leaked, (fmt, leaked)
+    for sub in report.submissions:
+        for test in sub.tests:
+            if test.hidden:
+                assert not any(s in test.output for s in secrets), test.output
+
+
+# -- interrupted batches ------------------------------------------------------------------
+
+
+def wait_for_first_result(results: Path, proc, seconds: float = 30.0) -> None:
+    deadline = time.monotonic() + seconds
+    while not list(results.glob("*.json")):
+        assert proc.poll() is None, proc.communicate()
+        assert time.monotonic() < deadline, "no result file appeared"
+        time.sleep(0.02)
+
+
+def slow_class(root: Path) -> Path:
+    """Six students, each about 1 s to grade: time to stop the batch midway."""
+    return make_class(root, {f"s{i}": sleeper(0.4) for i in range(6)})
+
+
+def test_ctrl_c_keeps_finished_results_and_a_rerun_resumes(tmp_path: Path, lesson: Path):
+    klass = slow_class(tmp_path / "class")
+    results = tmp_path / "results"
+    args = (klass, "--lesson", lesson, "--results", results, "--same-user", "-j", "1", "--format", "csv")
+    proc = grade_subprocess(*args)
+    wait_for_first_result(results, proc)
+    proc.send_signal(signal.SIGINT)
+    out, err = proc.communicate(timeout=20)
+    assert proc.returncode == 130, err
+    assert "Traceback" not in err
+    assert err.rstrip().endswith("interrupted: finished results are kept; run the same command to resume")
+    kept = stored_results(results)  # every file there parses whole
+    assert 1 <= len(kept) < 6, kept.keys()
+    assert all(r["score"] == 3.0 for r in kept.values())
+    assert not [p for p in tmp_path.rglob("*") if p.name.endswith(".tmp")]
+    assert wait_until_gone([klass]) == []
+
+    rerun = grade_subprocess(*args)
+    out, err = rerun.communicate(timeout=60)
+    assert rerun.returncode == 0, err
+    status = progress_of(err)
+    assert sorted(status) == [f"s{i}" for i in range(6)]
+    assert {s for s, line in status.items() if line.endswith("(kept from an earlier run)")} == set(kept)
+    assert len(out.splitlines()) == 7  # the csv: a header and one row per student
+    assert sorted(stored_results(results)) == sorted(status)
+
+
+def test_a_killed_grader_leaves_finished_results_and_no_student_processes(tmp_path: Path, lesson: Path):
+    klass = slow_class(tmp_path / "class")
+    results = tmp_path / "results"
+    args = (klass, "--lesson", lesson, "--results", results, "--same-user", "-j", "2", "--format", "csv")
+    proc = grade_subprocess(*args)
+    wait_for_first_result(results, proc)
+    proc.send_signal(signal.SIGKILL)
+    proc.communicate(timeout=20)
+    assert proc.returncode == -signal.SIGKILL
+    kept = stored_results(results)
+    assert 1 <= len(kept) < 6 and all(r["score"] == 3.0 for r in kept.values())
+    # the sandboxes of the runs it was doing notice their parent is gone and end
+    assert wait_until_gone([klass], seconds=10) == []
+
+    rerun = grade_subprocess(*args)
+    out, err = rerun.communicate(timeout=60)
+    assert rerun.returncode == 0, err
+    status = progress_of(err)
+    assert {s for s, line in status.items() if line.endswith("(kept from an earlier run)")} == set(kept)
+    assert sorted(stored_results(results)) == [f"s{i}" for i in range(6)]
+    assert wait_until_gone([klass]) == []

@@ -1,0 +1,179 @@
+"""The built-in checks on hand-made traces: what passes, what fails, what they say."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from turtletui.grading.checks import BUILTIN_CHECKS, fit_circle
+from turtletui.grading.trace import POSE_COLUMNS, ServiceCall, Trace
+from turtletui.graph.logs import INFO, LogRecord
+from turtletui.runtime.report import CrashReport
+
+
+def poses(points, dt=0.016, colour=(179, 184, 255), speed=1.0):
+    rows = []
+    for i, (x, y, *rest) in enumerate(points):
+        theta = rest[0] if rest else 0.0
+        rgb = rest[1] if len(rest) > 1 else colour
+        rows.append((i * dt, x, y, theta, speed, *rgb, 0.0))
+    return np.array(rows, dtype=float).reshape(-1, len(POSE_COLUMNS))
+
+
+def trace(points=((5.5, 5.5),), **fields):
+    data = {"poses": {"turtle1": poses(points)}}
+    data.update(fields)
+    return Trace(scenario="s", seed=0, duration=10.0, start=(5.5, 5.5, 0.0), sim_time=10.0, **data)
+
+
+def judge(name, t, **thresholds):
+    return BUILTIN_CHECKS[name].judge(t, thresholds)
+
+
+def test_wall_hits_default_to_none_allowed():
+    assert judge("wall_hits", trace(wall_hits={"turtle1": 0})).passed
+    verdict = judge("wall_hits", trace(wall_hits={"turtle1": 2}))
+    assert not verdict.passed and "2" in verdict.measured
+    assert judge("wall_hits", trace(wall_hits={"turtle1": 2}), max=3).passed
+
+
+def test_min_clearance_measures_the_closest_wall():
+    t = trace([(5.0, 5.0), (0.4, 5.0), (5.0, 10.5)])
+    verdict = judge("min_clearance", t, min=0.5)
+    assert not verdict.passed and "0.40 m" in verdict.measured
+    assert judge("min_clearance", t, min=0.3).passed
+
+
+def test_coverage_counts_cells_visited():
+    line = [(0.5 + i, 0.5) for i in range(11)]  # 11 of the 121 one-metre cells
+    verdict = judge("coverage", trace(line), min=0.1)
+    assert not verdict.passed and "0.09" in verdict.measured
+
+
+def test_mean_speed_and_distance():
+    t = trace([(1.0 + 0.016 * i, 5.0) for i in range(101)])  # 1 m/s for 1.6 s
+    assert judge("mean_speed", t, min=0.9, max=1.1).passed
+    assert not judge("mean_speed", t, min=1.5).passed
+    assert judge("distance", t, min=1.59, max=1.61).passed
+
+
+def test_commands_per_pose_tells_closed_from_open_loop():
+    t = trace([(5.0, 5.0)] * 100, commands={"turtle1": np.zeros((98, 4))})
+    assert judge("commands_per_pose", t, min=0.9).passed
+    t = trace([(5.0, 5.0)] * 100, commands={"turtle1": np.zeros((2, 4))})
+    assert not judge("commands_per_pose", t, min=0.9).passed
+
+
+def test_fit_circle_recovers_centre_and_radius():
+    angles = np.linspace(0, 2 * math.pi, 200)
+    cx, cy, r, rms = fit_circle(3 + 2 * np.cos(angles), 4 + 2 * np.sin(angles))
+    assert (round(cx, 6), round(cy, 6), round(r, 6)) == (3.0, 4.0, 2.0)
+    assert rms < 1e-9
+
+
+def test_circle_check_wants_round_laps_of_the_right_size():
+    angles = np.linspace(0, 2.2 * math.pi, 400)
+    circle = [(5 + 2 * math.cos(a), 5 + 2 * math.sin(a)) for a in angles]
+    assert judge("circle", trace(circle), min_radius=1.5, max_radius=2.5).passed
+    verdict = judge("circle", trace(circle), min_radius=3.0, max_radius=4.0)
+    assert not verdict.passed and "radius 2.00 m" in verdict.measured
+    straight = [(1 + 0.02 * i, 5.0) for i in range(300)]
+    assert not judge("circle", trace(straight)).passed
+
+
+def test_time_to_goal_and_final_error():
+    path = [(1 + 0.1 * i, 1.0) for i in range(51)]  # reaches x = 6 after 50 poses
+    t = trace(path)
+    verdict = judge("time_to_goal", t, goal=[5.0, 1.0], tolerance=0.05, max=1.0)
+    assert verdict.passed and "0.64 s" in verdict.measured
+    assert not judge("time_to_goal", t, goal=[5.0, 3.0]).passed
+    assert judge("final_error", t, goal=[6.0, 1.0], max=0.01).passed
+    assert not judge("final_error", t, goal=[5.0, 1.0], max=0.5).passed
+
+
+def test_heading_error_wraps_around_pi():
+    t = trace([(5.0, 5.0, math.pi - 0.01)])
+    assert judge("heading_error", t, theta=-math.pi + 0.01, max=0.05).passed
+    assert not judge("heading_error", t, theta=0.0, max=0.05).passed
+
+
+def test_pen_colour_by_side_and_calls_per_side_change():
+    red, green = (255, 0, 0), (0, 255, 0)
+    path = [(x, 5.0, 0.0, red if x > 5.5 else green) for x in np.linspace(2, 9, 100)]
+    path += list(reversed(path))
+    calls = [ServiceCall(0.0, "/turtle1/set_pen", None, None)] * 3
+    t = trace(path, service_calls=calls)
+    assert judge("pen_colour_by_side", t).passed
+    assert judge("pen_colour_by_side", t, right=[255, 0, 0], left=[0, 255, 0]).passed
+    assert not judge("pen_colour_by_side", t, right=[0, 0, 255]).passed
+    verdict = judge("calls_per_side_change", t)
+    assert verdict.passed and "3 calls" in verdict.measured and "2 crossings" in verdict.measured
+    flood = trace(path, service_calls=[ServiceCall(0.0, "/turtle1/set_pen", None, None)] * 200)
+    assert not judge("calls_per_side_change", flood).passed
+    same = trace([(x, 5.0, 0.0, red) for x in np.linspace(2, 9, 100)])
+    verdict = judge("pen_colour_by_side", same)
+    assert not verdict.passed and "same colour" in verdict.measured
+
+
+def log(msg, node="my_node", t=0.0):
+    return LogRecord(0, t, INFO, node, msg)
+
+
+def test_log_lines_count_and_rate_ignore_the_simulators_own_lines():
+    logs = [log(f"x: {i}") for i in range(20)] + [log("Oh no! I hit the wall!", node="turtlesim")]
+    t = trace(logs=logs)
+    assert judge("log_lines", t, pattern="x", min=20, max=20).passed
+    assert not judge("log_lines", t, pattern="wall", min=1).passed
+    assert judge("log_lines", t, min_rate=1.9).passed  # 20 lines in 10 s
+    assert not judge("log_lines", t, min_rate=5).passed
+
+
+def test_log_counter_wants_steps_of_one():
+    assert judge("log_counter", trace(logs=[log(f"Hello {i}") for i in range(5)])).passed
+    verdict = judge("log_counter", trace(logs=[log(f"Hello {i}") for i in (0, 1, 1, 2)]))
+    assert not verdict.passed and "from 1 to 1" in verdict.measured
+    assert not judge("log_counter", trace(logs=[log("Hello")] * 5)).passed
+
+
+def test_no_crash_quotes_the_crash():
+    crash = CrashReport("me", 1.5, "exception", "ZeroDivisionError: division by zero")
+    verdict = judge("no_crash", trace(crashes=[crash]))
+    assert not verdict.passed and "ZeroDivisionError" in verdict.measured
+    assert judge("no_crash", trace()).passed
+
+
+@pytest.mark.parametrize(
+    ("name", "thresholds", "problem"),
+    [
+        ("wall_hits", {"maxx": 0}, "takes no threshold 'maxx'"),
+        ("min_clearance", {}, "needs the threshold 'min'"),
+        ("log_lines", {"pattern": "("}, "not a valid regular expression"),
+        ("pen_colour_by_side", {"right": [300, 0, 0]}, "integers 0..255"),
+        ("final_error", {"goal": [1, "a"], "max": 1}, "[x, y]"),
+        ("wall_hits", {"max": True}, "must be a number"),
+    ],
+)
+def test_bad_thresholds_are_named(name, thresholds, problem):
+    assert problem in BUILTIN_CHECKS[name].problem(thresholds)
+
+
+def test_every_builtin_check_is_described():
+    for check in BUILTIN_CHECKS.values():
+        assert check.description and check.params is not None
+
+
+def test_the_lessons_readme_documents_every_builtin_check():
+    from pathlib import Path
+
+    text = (Path(__file__).parents[2] / "lessons" / "README.md").read_text(encoding="utf-8")
+    assert [name for name in BUILTIN_CHECKS if f"`{name}`" not in text] == []
+
+
+def test_min_clearance_counts_obstacles_too():
+    from turtletui.sim.obstacles import Box, Circle
+
+    t = trace([(5.0, 5.0), (6.0, 5.0)], obstacles=(Circle(8.0, 5.0, 1.5), Box(5.0, 6.0, 6.0, 7.0)))
+    verdict = judge("min_clearance", t, min=0.6)
+    assert not verdict.passed and "0.50 m" in verdict.measured  # circle at 6.5, 0.5 m from x = 6

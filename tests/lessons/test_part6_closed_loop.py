@@ -1,0 +1,49 @@
+"""Part 6: the reference passes every check; wrong solutions fail the right ones."""
+
+from __future__ import annotations
+
+from tests.lessons.conftest import SOLUTIONS, failed_checks, feedback_of
+
+LESSON = "part6-closed-loop"
+HERE = SOLUTIONS / "part6"
+
+
+def test_the_reference_scores_full_marks(grade):
+    result = grade(LESSON, "part6_wall_avoider")
+    assert failed_checks(result) == set()
+    assert result.score == result.max_score == 10.0
+
+
+def test_other_numbers_that_keep_off_the_walls_pass_too(grade):
+    result = grade(LESSON, HERE / "fast_turn_tight_box.py")
+    assert result.score == result.max_score
+
+
+def test_the_slow_turn_passes_the_centre_start_but_hits_a_wall_from_others(grade):
+    result = grade(LESSON, HERE / "slow_turn.py")
+    hits = {t.scenario: t.passed for t in result.tests if t.check == "wall_hits"}
+    assert hits["centre"] is True
+    assert hits["corner"] is False
+    assert failed_checks(result) == {"wall_hits"}
+    assert any("turning radius" in text for text in feedback_of(result, "wall_hits"))
+    assert 0 < result.score < result.max_score
+
+
+def test_an_open_loop_timer_fails_the_closed_loop_check(grade):
+    result = grade(LESSON, HERE / "open_loop_timer.py")
+    assert "commands_per_pose" in failed_checks(result)
+    assert any("pose callback" in text for text in feedback_of(result, "commands_per_pose"))
+
+
+def test_a_crash_near_the_wall_fails_no_crash_with_the_students_line(grade):
+    result = grade(LESSON, HERE / "crashes_near_wall.py")
+    assert "no_crash" in failed_checks(result)
+    crash = feedback_of(result, "no_crash")[0]
+    assert "NameError" in crash and "crashes_near_wall.py" in crash
+
+
+def test_hidden_scenarios_are_graded_but_not_described(grade):
+    result = grade(LESSON, HERE / "slow_turn.py")
+    hidden = [t for t in result.tests if t.hidden]
+    assert hidden and all(t.scenario.startswith("hidden ") for t in hidden)
+    assert not any("101" in t.name or "seed" in t.name for t in hidden)

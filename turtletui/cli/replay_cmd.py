@@ -1,0 +1,70 @@
+"""``turtletui replay RECORDING``: watch a recorded run again (a failed grading
+scenario, or a ``turtletui run --record`` file), in the app or headless."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import typer
+
+from turtletui.cli.errors import fail
+
+
+def replay(
+    recording: Path = typer.Argument(..., metavar="RECORDING", help="A .jsonl recording."),
+    headless: bool = typer.Option(False, "--headless", help="Print the replayed log instead of opening the app."),
+    quiet: bool = typer.Option(False, "--quiet", "-q", help="Headless: print only the summary line."),
+    ascii_only: bool = typer.Option(False, "--ascii", help="Draw with plain ASCII and no colour."),
+) -> None:
+    """Play a recorded run: the turtle drives the recorded path again."""
+    from turtletui.runtime.replay import RecordingError, read_recording
+
+    try:
+        found = read_recording(recording)
+    except RecordingError as err:
+        fail(str(err))
+    if not headless and (not sys.stdout.isatty() or not sys.stdin.isatty()):
+        fail(f"no terminal to draw the app in; replay headless instead: turtletui replay {recording} --headless")
+    header = found.header
+    if header:
+        start = ", ".join(f"{v:.3f}" for v in found.start or ())
+        where = f"lesson {header.get('lesson')}, scenario {header.get('scenario')}" if "lesson" in header else ""
+        sys.stderr.write(f"replaying {recording} ({where}; start {start}; {found.duration:g} s)\n")
+    world = _world(header.get("world"))
+    if not headless:
+        from turtletui.tui.app import TurtleApp
+
+        TurtleApp([], ascii=ascii_only, seed=int(header.get("seed", 0)), world=world, replay=found).run()
+        return
+    from turtletui.api import run
+    from turtletui.runtime.replay import install_replay
+
+    def print_log(record) -> None:
+        if not quiet:
+            sys.stdout.write(record.format() + "\n")
+
+    try:
+        result = run(
+            [],
+            duration=found.duration,
+            seed=int(header.get("seed", 0)),
+            setup=lambda sim: install_replay(sim, found),
+            on_log=print_log,
+            keep_calls=False,
+            world=None if world is None else world.build(int(header.get("seed", 0))),
+        )
+    except BrokenPipeError:
+        raise
+    sys.stdout.write(result.summary() + "\n")
+
+
+def _world(name: str | None):
+    if name in (None, "empty"):
+        return None
+    from turtletui.worlds import WorldError, resolve_world
+
+    try:
+        return resolve_world(name)
+    except WorldError as err:
+        fail(f"{name}: {err}")

@@ -1,0 +1,1 @@
+"""Grading: run a lesson's scenarios, judge its checks, report the scores."""

@@ -1,0 +1,398 @@
+"""Grade many submissions: in parallel, each result saved the moment it is
+known, so that an interrupted batch resumes where it stopped.
+
+Every scenario run of every submission is one task; ``jobs`` worker processes
+take tasks (so one submission's scenarios spread over the cores too). A
+submission's result is assembled when its last run finishes and written to the
+:class:`ResultStore` atomically. A rerun reuses a stored result when the
+student's files, the lesson and turtletui are the same (``force`` regrades).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import multiprocessing
+import os
+import signal
+import sys
+import time
+from collections.abc import Callable, Sequence
+from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
+from concurrent.futures.process import BrokenProcessPool
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from turtletui.grading.engine import (
+    GradingPlan,
+    RunOutcome,
+    assemble,
+    failed_run,
+    grade_run,
+    prepare,
+)
+from turtletui.grading.results import GradeReport, SubmissionResult
+from turtletui.grading.submissions import Submission
+from turtletui.lessons.loader import load_lesson
+from turtletui.runtime.loader import ControllerError, ControllerSpec, check_source
+from turtletui.runtime.sandbox import Limits
+
+STORE_VERSION = 1
+
+
+class ResultStore:
+    """One JSON file per student in a folder only the grader can read."""
+
+    def __init__(self, folder: Path, key: str) -> None:
+        self.folder = folder
+        self.key = key
+        """Identifies the lesson and turtletui version the results belong to."""
+        try:
+            folder.mkdir(parents=True, exist_ok=True, mode=0o700)
+            probe = folder / f".probe.{os.getpid()}"
+            probe.write_text("")
+            probe.unlink()
+        except OSError as err:
+            raise OSError(f"{folder}: cannot write results there ({err.strerror or err})") from None
+        self._kept: dict[Path, bytes] = {}
+        """The bytes of every file this store wrote or reused, for :meth:`restore`."""
+
+    def path(self, student: str) -> Path:
+        return self.folder / f"{_safe(student)}.json"
+
+    def recordings(self, student: str) -> Path:
+        return self.folder / "recordings" / _safe(student)
+
+    def load(self, submission: Submission) -> SubmissionResult | None:
+        """The stored result of the same files under the same lesson, or None."""
+        path = self.path(submission.student)
+        try:
+            raw = path.read_bytes()
+            data = json.loads(raw.decode("utf-8"))
+            if data.get("store") != STORE_VERSION or data.get("key") != self.key:
+                return None
+            if data.get("fingerprint") != submission.fingerprint():
+                return None
+            result = SubmissionResult.from_dict(data["result"])
+        except (OSError, ValueError, KeyError, TypeError):
+            return None  # missing or damaged: grade again
+        self._kept[path] = raw
+        return result
+
+    def save(self, submission: Submission, result: SubmissionResult) -> None:
+        """Write the result atomically: the file is complete or absent."""
+        data = {
+            "store": STORE_VERSION,
+            "key": self.key,
+            "fingerprint": submission.fingerprint(),
+            "result": result.as_dict(),
+        }
+        target = self.path(submission.student)
+        payload = json.dumps(data, indent=1).encode("utf-8")
+        self._write(target, payload)
+        self._kept[target] = payload
+
+    def restore(self) -> None:
+        """Put back every result file this store wrote or reused that is not as
+        it left it: student code running as the grader's own user (--same-user,
+        or a grader that is not root) can write in the folder. Called once no
+        student code runs any more."""
+        for target, payload in self._kept.items():
+            try:
+                if target.read_bytes() == payload:
+                    continue
+            except OSError:
+                pass
+            self._write(target, payload)
+
+    @staticmethod
+    def _write(target: Path, payload: bytes) -> None:
+        tmp = target.with_name(f".{target.name}.{os.getpid()}.tmp")
+        try:
+            with open(tmp, "wb") as file:
+                file.write(payload)
+                file.flush()
+                os.fsync(file.fileno())
+            os.replace(tmp, target)
+        finally:
+            tmp.unlink(missing_ok=True)
+
+
+def _safe(name: str) -> str:
+    """A file name for a student: their name, or a cleaned one with a hash of the
+    name (so that "a b" and "a_b" get files of their own)."""
+    safe = "".join(c if c.isalnum() or c in "-_." else "_" for c in name).lstrip(".") or "student"
+    if safe == name:
+        return safe
+    return f"{safe}-{hashlib.sha256(name.encode()).hexdigest()[:8]}"
+
+
+def store_key(plan: GradingPlan) -> str:
+    """What a stored result depends on besides the student's files."""
+    from turtletui import __version__
+
+    digest = hashlib.sha256(plan.lesson.path.read_bytes())
+    digest.update(__version__.encode())
+    return f"{plan.lesson.id}:{digest.hexdigest()[:16]}"
+
+
+@dataclass
+class _Pending:
+    submission: Submission
+    outcomes: list[RunOutcome] = field(default_factory=list)
+    seconds: float = 0.0
+
+
+# -- worker side ------------------------------------------------------------------
+
+_worker_plan: GradingPlan | None = None
+_worker_limits: Limits | None = None
+
+
+_in_task = False
+
+
+class _GraderGone(BaseException):
+    """The grader stopped this worker (or died): end the run, closing its sandbox."""
+
+
+def _on_sigterm(signum: int, frame: Any) -> None:
+    if _in_task:
+        raise _GraderGone  # the run's sandbox is closed on the way out (runner's finally)
+    os._exit(1)
+
+
+def _init_worker(lesson_path: str, plugins: Sequence[str], limits: Limits | None, parent: int | None = None) -> None:
+    global _worker_plan, _worker_limits
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent handles Ctrl-C
+    # A grader killed outright (SIGKILL) must not leave its workers waiting for
+    # tasks forever, holding its output pipes: they get SIGTERM when it dies (Linux).
+    signal.signal(signal.SIGTERM, _on_sigterm)
+    if sys.platform.startswith("linux"):
+        try:
+            import ctypes
+
+            ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGTERM, 0, 0, 0)  # PR_SET_PDEATHSIG
+        except (OSError, AttributeError):
+            pass
+    if parent is not None and os.getppid() != parent:
+        os._exit(1)  # it died before the line above
+    if _worker_plan is None or str(_worker_plan.lesson.path) != lesson_path:
+        _worker_plan = prepare(load_lesson(lesson_path), plugins=plugins)
+    _worker_limits = limits
+
+
+def _run_task(student: str, controller: str, run_index: int, recordings: str | None) -> tuple[str, RunOutcome, float]:
+    global _in_task
+    assert _worker_plan is not None
+    started = time.perf_counter()
+    _in_task = True
+    try:
+        outcome = grade_run(
+            _worker_plan,
+            run_index,
+            [ControllerSpec(name=Path(controller).stem, path=Path(controller))],
+            limits=_worker_limits,
+            recordings=Path(recordings) if recordings else None,
+        )
+    except _GraderGone:
+        os._exit(1)
+    finally:
+        _in_task = False
+    return student, outcome, time.perf_counter() - started
+
+
+# -- parent side ------------------------------------------------------------------
+
+
+def grade_submissions(
+    plan: GradingPlan,
+    submissions: Sequence[Submission],
+    *,
+    store: ResultStore | None = None,
+    jobs: int = 1,
+    force: bool = False,
+    limits: Limits | None = None,
+    plugins: Sequence[str | Path] = (),
+    on_result: Callable[[SubmissionResult, bool], None] | None = None,
+    workdir: Callable[[Submission], Submission] | None = None,
+) -> GradeReport:
+    """Grade every submission (reusing stored results unless ``force``).
+
+    ``on_result(result, reused)`` is called as each submission's result is known.
+    ``workdir`` may map a submission to a private copy to run (see integrity).
+    KeyboardInterrupt propagates after the workers are stopped; every result
+    finished before it is already saved.
+    """
+    results: dict[str, SubmissionResult] = {}
+    pending: dict[str, _Pending] = {}
+    for sub in submissions:
+        reused = None if force or store is None else store.load(sub)
+        if reused is not None:
+            results[sub.student] = reused
+            if on_result:
+                on_result(reused, True)
+            continue
+        error = sub.error
+        if error is None:
+            assert sub.controller is not None
+            try:
+                check_source(sub.controller)
+            except ControllerError as err:
+                error = str(err)
+        if error is not None:
+            result = SubmissionResult(
+                submission=str(sub.path), student=sub.student, max_score=round(plan.max_score, 6), error=error
+            )
+            _finish(store, sub, result, results, on_result)
+            continue
+        pending[sub.student] = _Pending(workdir(sub) if workdir else sub)
+
+    def done(student: str, outcome: RunOutcome, seconds: float) -> None:
+        item = pending[student]
+        item.outcomes.append(outcome)
+        item.seconds += seconds
+        if len(item.outcomes) == len(plan.runs):
+            original = next(s for s in submissions if s.student == student)
+            result = assemble(
+                plan, item.outcomes, submission=str(original.path), student=student, seconds=item.seconds
+            )
+            _finish(store, original, result, results, on_result)
+
+    tasks = [
+        (
+            student,
+            str(item.submission.controller),
+            index,
+            str(store.recordings(student)) if store is not None else None,
+        )
+        for student, item in pending.items()
+        for index in range(len(plan.runs))
+    ]
+    try:
+        if jobs <= 1 or len(tasks) <= 1:
+            global _worker_plan, _worker_limits
+            _worker_plan, _worker_limits = plan, limits
+            for task in tasks:
+                done(*_run_task(*task))
+        else:
+            _run_parallel(plan, tasks, jobs, limits, plugins, done)
+    finally:
+        if store is not None:
+            store.restore()
+    order = {s.student: i for i, s in enumerate(submissions)}
+    ordered = sorted(results.values(), key=lambda r: order[r.student])
+    return GradeReport(lesson=plan.lesson.id, submissions=ordered, max_score=round(plan.max_score, 6))
+
+
+def _finish(
+    store: ResultStore | None,
+    sub: Submission,
+    result: SubmissionResult,
+    results: dict[str, SubmissionResult],
+    on_result: Callable[[SubmissionResult, bool], None] | None,
+) -> None:
+    if store is not None:
+        store.save(sub, result)
+    results[sub.student] = result
+    if on_result:
+        on_result(result, False)
+
+
+def _run_parallel(
+    plan: GradingPlan,
+    tasks: list[tuple[Any, ...]],
+    jobs: int,
+    limits: Limits | None,
+    plugins: Sequence[str | Path],
+    done: Callable[[str, RunOutcome, float], None],
+) -> None:
+    # a few tasks queued per worker: results come back in order of the
+    # submissions, so early students are saved early
+    queue = list(reversed(tasks))
+    while queue:
+        # A controller may kill the worker running it (its parent): that breaks
+        # the pool. The runs under way then are run again one at a time, alone,
+        # so that only the one that kills its worker again is failed for it.
+        for task in _run_pool(plan, queue, jobs, limits, plugins, done):
+            if _run_pool(plan, [task], 1, limits, plugins, done):
+                lost = failed_run(plan, task[2], "not judged: the process grading this run was killed (by the controller?)")
+                done(task[0], lost, 0.0)
+
+
+def _run_pool(
+    plan: GradingPlan,
+    queue: list[tuple[Any, ...]],
+    jobs: int,
+    limits: Limits | None,
+    plugins: Sequence[str | Path],
+    done: Callable[[str, RunOutcome, float], None],
+) -> list[tuple[Any, ...]]:
+    """Run the tasks of ``queue`` (taken from its end) in a pool of workers.
+    Returns the tasks that were under way when a worker died (the pool is
+    broken then, and the tasks not started yet stay in ``queue``)."""
+    global _worker_plan
+    # fork: workers start at once with the plan already prepared
+    methods = multiprocessing.get_all_start_methods()
+    context = multiprocessing.get_context("fork" if "fork" in methods else "spawn")
+    _worker_plan = plan
+    executor = ProcessPoolExecutor(
+        max_workers=min(jobs, len(queue)),
+        mp_context=context,
+        initializer=_init_worker,
+        initargs=(str(plan.lesson.path), [str(p) for p in plugins], limits, os.getpid()),
+    )
+    lost: list[tuple[Any, ...]] = []
+    try:
+        running: dict[Future, tuple[Any, ...]] = {}
+        broken = False
+        while (queue or running) and not broken:
+            while queue and len(running) < 2 * jobs:
+                task = queue.pop()
+                try:
+                    running[executor.submit(_run_task, *task)] = task
+                except BrokenProcessPool:
+                    queue.append(task)
+                    broken = True
+                    break
+            finished, _ = wait(running, return_when=FIRST_COMPLETED)
+            for future in finished:
+                task = running.pop(future)
+                try:
+                    answer = future.result()
+                except BrokenProcessPool:
+                    lost.append(task)
+                    broken = True
+                    continue
+                done(*answer)
+            if broken:  # a broken pool fails every task under way at once
+                for future in wait(running).done:
+                    task = running.pop(future)
+                    if isinstance(future.exception(), BrokenProcessPool):
+                        lost.append(task)
+                    else:
+                        done(*future.result())
+    except KeyboardInterrupt:
+        # The workers got the Ctrl-C too: their runs stop like an interrupted
+        # `turtletui run`, closing their sandboxes. A second Ctrl-C kills them.
+        try:
+            executor.shutdown(wait=True, cancel_futures=True)
+        except KeyboardInterrupt:
+            _stop_workers(executor)
+        raise
+    except BaseException:
+        _stop_workers(executor)
+        raise
+    if lost:
+        _stop_workers(executor)
+    else:
+        executor.shutdown(wait=True)
+    return lost
+
+
+def _stop_workers(executor: ProcessPoolExecutor) -> None:
+    processes = getattr(executor, "_processes", None) or {}
+    for process in list(processes.values()):
+        process.terminate()
+    executor.shutdown(wait=True, cancel_futures=True)

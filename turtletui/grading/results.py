@@ -1,0 +1,77 @@
+"""What grading produces: plain data that every report format is written from.
+
+One :class:`TestResult` per check and scenario run ("no_wall_hits [centre]"),
+gathered per student in a :class:`SubmissionResult`, and per lesson in a
+:class:`GradeReport`. Scores are points: a check of weight W judged over N
+scenario runs is N tests of W / N points each.
+"""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass, field
+from typing import Any
+
+PASSED = "passed"
+FAILED = "failed"
+
+
+@dataclass(frozen=True)
+class TestResult:
+    """One check judged on one scenario run."""
+
+    __test__ = False  # not a pytest test class
+
+    name: str
+    """``check [scenario]``, e.g. ``no_wall_hits [random starts, seed 3]``."""
+    check: str
+    scenario: str
+    """The scenario's label; ``hidden N`` for a hidden scenario."""
+    score: float
+    max_score: float
+    status: str
+    """:data:`PASSED` or :data:`FAILED`."""
+    output: str
+    """Feedback for the student: what was measured and, on failure, the lesson's hint."""
+    hidden: bool = False
+
+    @property
+    def passed(self) -> bool:
+        return self.status == PASSED
+
+
+@dataclass
+class SubmissionResult:
+    """One student's result for one lesson."""
+
+    submission: str
+    """The submission's path as given on the command line (file or folder)."""
+    student: str
+    """The student's identifier: the file's stem or the folder's name."""
+    score: float = 0.0
+    max_score: float = 0.0
+    tests: list[TestResult] = field(default_factory=list)
+    error: str | None = None
+    """Why the submission could not be graded (no controller, ...): score 0."""
+    execution_time: float = 0.0
+    """Wall seconds grading took."""
+    recordings: list[str] = field(default_factory=list)
+    """Recordings of failed scenario runs (``turtletui replay`` plays them)."""
+
+    def as_dict(self) -> dict[str, Any]:
+        return asdict(self)
+
+    @classmethod
+    def from_dict(cls, data: dict[str, Any]) -> SubmissionResult:
+        fields = dict(data)
+        fields["tests"] = [TestResult(**test) for test in data.get("tests", [])]
+        return cls(**fields)
+
+
+@dataclass
+class GradeReport:
+    """Every submission graded against one lesson."""
+
+    lesson: str
+    submissions: list[SubmissionResult] = field(default_factory=list)
+    max_score: float = 0.0
+    """The lesson's total points (the same for every submission)."""

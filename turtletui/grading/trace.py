@@ -1,0 +1,167 @@
+"""What the grader keeps of a run: the trusted simulation's own record of it.
+
+A :class:`TraceCollector` taps the graph of the grader's simulation while a
+scenario runs; :meth:`TraceCollector.finish` returns a :class:`Trace`, the
+input of every check. Nothing in it comes from the controller's process
+except what the controller published and called, as on a real robot.
+"""
+
+from __future__ import annotations
+
+import struct
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from turtletui.graph.logs import LogRecord
+from turtletui.runtime.report import CrashReport
+from turtletui.runtime.simulation import Simulation
+from turtletui.sim.constants import ARENA_SIZE
+
+_F32X3 = struct.Struct("<3f")
+
+POSE_COLUMNS = ("t", "x", "y", "theta", "speed", "r", "g", "b", "pen_off")
+"""Columns of :attr:`Trace.poses` arrays, one row per pose turtlesim published."""
+
+
+@dataclass(frozen=True)
+class ServiceCall:
+    """A call some node made and the answer it got."""
+
+    t: float
+    service: str
+    request: Any
+    response: Any
+
+
+@dataclass(frozen=True)
+class GoalSent:
+    """An action goal a node sent."""
+
+    t: float
+    action: str
+    goal: Any
+
+
+@dataclass
+class Trace:
+    """Everything the checks judge, from one scenario run."""
+
+    scenario: str
+    seed: int
+    duration: float
+    """Simulated seconds the run was asked to last."""
+    start: tuple[float, float, float]
+    """turtle1's start pose (x, y, theta)."""
+    poses: dict[str, np.ndarray] = field(default_factory=dict)
+    """Per turtle, an (n, 9) float array of :data:`POSE_COLUMNS`."""
+    commands: dict[str, np.ndarray] = field(default_factory=dict)
+    """Per turtle, an (n, 4) array of (t, linear.x, linear.y, angular.z) of every
+    Twist a controller published on its cmd_vel."""
+    service_calls: list[ServiceCall] = field(default_factory=list)
+    goals: list[GoalSent] = field(default_factory=list)
+    logs: list[LogRecord] = field(default_factory=list)
+    crashes: list[CrashReport] = field(default_factory=list)
+    wall_hits: dict[str, int] = field(default_factory=dict)
+    obstacle_hits: dict[str, int] = field(default_factory=dict)
+    spawned: list[str] = field(default_factory=list)
+    """Turtles a /spawn call created, in order."""
+    killed: list[str] = field(default_factory=list)
+    """Turtles a /kill call removed, in order (failed calls are not kills)."""
+    obstacles: tuple[Any, ...] = ()
+    """The world's obstacles (turtletui.sim.obstacles shapes)."""
+    arena_size: float = ARENA_SIZE
+    sim_time: float = 0.0
+    """Simulated seconds the run actually lasted."""
+
+    def pose_array(self, turtle: str = "turtle1") -> np.ndarray:
+        """The turtle's pose rows; an empty (0, 9) array when it never moved."""
+        return self.poses.get(turtle, np.empty((0, len(POSE_COLUMNS))))
+
+    def command_array(self, turtle: str = "turtle1") -> np.ndarray:
+        return self.commands.get(turtle, np.empty((0, 4)))
+
+
+class TraceCollector:
+    """Taps a simulation's graph and builds the :class:`Trace` of the run."""
+
+    def __init__(self, sim: Simulation, *, scenario: str, seed: int, duration: float) -> None:
+        self.sim = sim
+        self._poses: dict[str, list[tuple[float, ...]]] = {}
+        self._commands: dict[str, list[tuple[float, float, float, float]]] = {}
+        self._calls: list[ServiceCall] = []
+        self._goals: list[GoalSent] = []
+        self._alive = set(sim.world.turtles)
+        self._spawned: list[str] = []
+        self._killed: list[str] = []
+        start = sim.world.turtles.get("turtle1")
+        self._start = (start.x, start.y, start.theta) if start else (0.0, 0.0, 0.0)
+        self._meta = (scenario, seed, duration)
+        sim.graph.taps.append(self._tap)
+
+    def _tap(self, kind: str, payload: Any) -> None:
+        if kind == "topic":
+            topic, msg = payload
+            name = topic.name
+            if name.endswith("/pose"):
+                self._pose(name[1:-5], msg)
+            elif name.endswith("/cmd_vel"):
+                turtle = name[1:-8]
+                self._commands.setdefault(turtle, []).append(
+                    (self.sim.t, msg.linear.x, msg.linear.y, msg.angular.z)
+                )
+        elif kind == "service":
+            name, request, response = payload
+            self._calls.append(ServiceCall(self.sim.t, name, request, response))
+            # answered after the request took effect: a kill that worked leaves
+            # no turtle of that name, a spawn that worked answers its name
+            if name == "/kill" and request.name in self._alive and request.name not in self.sim.world.turtles:
+                self._alive.discard(request.name)
+                self._killed.append(request.name)
+            elif name == "/spawn" and response.name:
+                self._alive.add(response.name)
+                self._spawned.append(response.name)
+        elif kind == "goal":
+            name, goal = payload
+            self._goals.append(GoalSent(self.sim.t, name, goal))
+
+    def _pose(self, name: str, msg: Any) -> None:
+        turtle = self.sim.world.turtles.get(name)
+        # Only what the simulator publishes: a controller may publish a Pose
+        # there too (as in ROS), but the trajectory judged is the turtle's own.
+        if turtle is None or (msg.x, msg.y, msg.theta) != _F32X3.unpack(
+            _F32X3.pack(turtle.x, turtle.y, turtle.theta)
+        ):
+            return
+        r, g, b = turtle.pen_color
+        self._poses.setdefault(name, []).append(
+            (self.sim.t, turtle.x, turtle.y, turtle.theta, msg.linear_velocity, r, g, b, 0.0 if turtle.pen_on else 1.0)
+        )
+
+    def finish(self, *, logs: list[LogRecord], crashes: list[CrashReport]) -> Trace:
+        """Stop tapping and return the trace."""
+        sim = self.sim
+        if self._tap in sim.graph.taps:
+            sim.graph.taps.remove(self._tap)
+        scenario, seed, duration = self._meta
+        width = len(POSE_COLUMNS)
+        turtles = sim.world.turtles
+        return Trace(
+            scenario=scenario,
+            seed=seed,
+            duration=duration,
+            start=self._start,
+            poses={k: np.array(v, dtype=float).reshape(-1, width) for k, v in self._poses.items()},
+            commands={k: np.array(v, dtype=float).reshape(-1, 4) for k, v in self._commands.items()},
+            service_calls=self._calls,
+            goals=self._goals,
+            logs=list(logs),
+            crashes=list(crashes),
+            wall_hits={name: t.wall_hits for name, t in turtles.items()},
+            obstacle_hits={name: getattr(t, "obstacle_hits", 0) for name, t in turtles.items()},
+            spawned=self._spawned,
+            killed=self._killed,
+            obstacles=tuple(getattr(sim.world, "obstacles", ()) or ()),
+            sim_time=sim.t,
+        )
