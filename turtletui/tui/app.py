@@ -3,11 +3,13 @@
 from __future__ import annotations
 
 import gc
+import tempfile
 import time
 from collections import deque
 from collections.abc import Iterable, Sequence
 from functools import partial
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from textual.app import App, ComposeResult, SystemCommand
 from textual.binding import Binding
@@ -17,8 +19,9 @@ from textual.screen import Screen
 from textual.widgets import ContentSwitcher, DataTable, Footer, Input, Static
 
 from turtletui.graph.introspection import snapshot
-from turtletui.graph.logs import ERROR
+from turtletui.graph.logs import ERROR, INFO
 from turtletui.runtime.loader import ControllerSpec
+from turtletui.tui import lesson_checks
 from turtletui.tui.ros2cli import Ros2Cli
 from turtletui.tui.session import LiveSession
 from turtletui.tui.widgets.arena import ArenaView
@@ -30,6 +33,9 @@ from turtletui.tui.widgets.panels import (
     TopicsPanel,
 )
 from turtletui.worlds import WorldError, WorldSpec, resolve_world
+
+if TYPE_CHECKING:
+    from turtletui.runtime.replay import Recording
 
 TICK_SECONDS = 0.016
 """The simulation advances every 16 ms of wall time, like turtlesim's timer."""
@@ -77,6 +83,7 @@ class TurtleApp(App):
         Binding("4", "panel('lesson')", "Lesson"),
         Binding("5", "panel('console')", "Console", show=False),
         Binding("colon,slash", "command_line", "ros2 command"),
+        Binding("k", "check_lesson", "Check"),
         Binding("up", "drive(1, 0)", "Forward", show=False),
         Binding("down", "drive(-1, 0)", "Back", show=False),
         Binding("left", "drive(0, 1)", "Left", show=False),
@@ -98,8 +105,12 @@ class TurtleApp(App):
         overlays: Sequence[tuple[float, float, float, float]] = (),
         clock: object = time.monotonic,
         world: WorldSpec | None = None,
+        replay: Recording | None = None,
     ) -> None:
         super().__init__()
+        self._replay = replay
+        """A recorded run to play instead of controllers (turtletui replay)."""
+        self._checks_dir: tempfile.TemporaryDirectory | None = None
         self._controllers = list(controllers)
         self._lesson = lesson
         self._ascii = ascii
@@ -170,6 +181,10 @@ class TurtleApp(App):
         self.session = LiveSession(self._controllers, ros_args=self._ros_args, seed=self._seed, world=world)
         if problem is not None:
             self.session.sim.graph.log("turtletui", ERROR, problem)
+        if self._replay is not None:
+            from turtletui.runtime.replay import install_replay
+
+            install_replay(self.session.sim, self._replay)
         self.cli = Ros2Cli(self.session.sim)
         arena = self.query_one(ArenaView)
         arena.world = self.session.sim.world
@@ -182,6 +197,8 @@ class TurtleApp(App):
     def on_unmount(self) -> None:
         for stream in self._streams:
             stream.close()
+        if self._checks_dir is not None:
+            self._checks_dir.cleanup()
         if self.session is not None:
             self.session.close()
 
@@ -193,6 +210,9 @@ class TurtleApp(App):
             self.tick_gaps.append(now - self._last_tick)
         self._last_tick = now
         session.advance(now)
+        if self._replay is not None and not session.paused and session.t >= self._replay.duration:
+            session.toggle_pause()  # the recording is over: hold its last frame
+            session.sim.graph.log("turtletui", INFO, "replay finished: space resumes the simulation")
         for stream in list(self._streams):
             lines = stream.poll()
             if lines:
@@ -314,6 +334,37 @@ class TurtleApp(App):
         # Below NARROW columns the arena gets the whole width: a panel opened
         # there would leave neither readable.
         self.query_one(ContentSwitcher).display = self._side_open and self.size.width >= NARROW
+
+    def action_check_lesson(self) -> None:
+        """Grade the running controller file against the open lesson, in another
+        process, and show the result at the top of the lesson pane."""
+        switcher = self.query_one(ContentSwitcher)
+        switcher.current = "lesson"
+        self._side_open = True
+        self._layout_side()
+        panel = self.query_one(LessonPanel)
+        files = [s.path for s in self._controllers if s.path is not None]
+        if self._lesson is None or not files:
+            missing = "no lesson is open (turtletui run FILE --lesson ID)" if self._lesson is None else (
+                "the controller is not a file"
+            )
+            panel.update(f"## Your checks\n\n**Nothing to check:** {missing}.\n\n" + self._lesson_text())
+            return
+        panel.update(lesson_checks.RUNNING + "\n" + self._lesson_text())
+        self.run_worker(self._check(files[0]), exclusive=True, group="checks")
+
+    async def _check(self, controller: Path) -> None:
+        import asyncio
+
+        if self._checks_dir is None:
+            self._checks_dir = tempfile.TemporaryDirectory(prefix="turtletui-checks-")
+        command = lesson_checks.grade_command(controller, self._lesson, Path(self._checks_dir.name))
+        process = await asyncio.create_subprocess_exec(
+            *command, stdout=asyncio.subprocess.PIPE, stderr=asyncio.subprocess.PIPE
+        )
+        stdout, stderr = await process.communicate()
+        text = lesson_checks.describe(stdout.decode(errors="replace"), stderr.decode(errors="replace"), process.returncode)
+        self.query_one(LessonPanel).update(text + "\n" + self._lesson_text())
 
     def action_command_line(self) -> None:
         command = self.query_one("#command", Input)

@@ -1,0 +1,139 @@
+"""The app's check key and replays: the lesson's checks run on the controller
+being watched, and a recorded run plays in the arena."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from tests.tui.test_app import SIZE, pilot_test, wait_for
+from turtletui.runtime.loader import ControllerSpec
+from turtletui.tui.app import TurtleApp
+from turtletui.tui.lesson_checks import describe
+
+LESSON = """\
++++
+id = "drive-a-bit"
+title = "Drive a bit"
+
+[[scenarios]]
+name = "centre"
+duration = 2.0
+
+[[checks]]
+name = "distance"
+thresholds = {min = 1.0}
+feedback = "Publish a forward speed."
+
+[[checks]]
+name = "no_crash"
++++
+# Drive a bit
+
+Make the turtle move.
+"""
+
+NODE = """\
+import rclpy
+from rclpy.node import Node
+from geometry_msgs.msg import Twist
+
+
+class Mover(Node):
+    def __init__(self):
+        super().__init__("mover")
+        self.pub = self.create_publisher(Twist, "/turtle1/cmd_vel", 10)
+        self.create_timer(0.1, self.send)
+
+    def send(self):
+        cmd = Twist()
+        cmd.linear.x = {speed}
+        self.pub.publish(cmd)
+
+
+def main():
+    rclpy.init()
+    rclpy.spin(Mover())
+"""
+
+
+def report(tests, **extra) -> str:
+    submission = {"score": 1.0, "max_score": 2.0, "error": None, "tests": tests, "recordings": [], **extra}
+    return json.dumps({"lesson": "x", "submissions": [submission]})
+
+
+def test_describe_groups_failures_by_check_with_the_first_feedback():
+    tests = [
+        {"check": "wall_hits", "scenario": "a", "status": "passed", "output": "wall hits: 0"},
+        {"check": "wall_hits", "scenario": "b", "status": "failed", "output": "wall hits: 2\nTurn earlier."},
+        {"check": "no_crash", "scenario": "a", "status": "passed", "output": ""},
+    ]
+    text = describe(report(tests, recordings=["r/b.jsonl"]), "", 0)
+    assert "**Score: 1 / 2**" in text
+    assert "- ✗ `wall_hits`: failed in 1 of 2 runs (b)" in text
+    assert "  > Turn earlier." in text
+    assert "- ✓ `no_crash`: passed in all 1 runs" in text
+    assert "turtletui replay r/b.jsonl" in text
+
+
+def test_describe_says_why_the_checks_could_not_run():
+    text = describe("", "turtletui: error: lessons/x.md:3: check 'nope' is not a registered check\n", 2)
+    assert "**The checks could not run:** lessons/x.md:3: check 'nope' is not a registered check" in text
+    assert "not readable" in describe("{", "", 0)
+
+
+@pilot_test
+async def test_the_check_key_grades_the_running_file_and_shows_the_result(tmp_path: Path) -> None:
+    lesson = tmp_path / "drive.md"
+    lesson.write_text(LESSON)
+    node = tmp_path / "mover.py"
+    node.write_text(NODE.replace("{speed}", "0.0"))
+    app = TurtleApp([ControllerSpec(name="mover", path=node)], lesson=lesson)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("k")
+        panel = app.query_one("#lesson")
+        assert app.query_one("#side").current == "lesson"
+        await wait_for(pilot, lambda: "Score:" in panel.source or "could not" in panel.source, timeout=30)
+        assert "**Score: 1 / 2**" in panel.source
+        assert "✗ `distance`" in panel.source and "Publish a forward speed." in panel.source
+        assert "Make the turtle move." in panel.source  # the lesson is still there below
+        # the student fixes the file and checks again: a new result, not the kept one
+        node.write_text(NODE.replace("{speed}", "1.0"))
+        await pilot.press("k")
+        await wait_for(pilot, lambda: "**Score: 2 / 2**" in panel.source, timeout=30)
+
+
+@pilot_test
+async def test_checking_without_a_lesson_says_how_to_open_one() -> None:
+    app = TurtleApp([])
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("k")
+        assert "no lesson is open" in app.query_one("#lesson").source
+
+
+@pilot_test
+async def test_a_recording_replays_in_the_arena(tmp_path: Path) -> None:
+    from turtletui.api import run
+    from turtletui.runtime.replay import read_recording
+
+    node = tmp_path / "mover.py"
+    node.write_text(NODE.replace("{speed}", "1.5"))
+    record = tmp_path / "run.jsonl"
+    recorded = run([node], duration=2.0, record=record)
+    app = TurtleApp([], replay=read_recording(record))
+    async with app.run_test(size=SIZE) as pilot:
+        await wait_for(pilot, lambda: app.session.paused, timeout=10)
+        turtle = app.session.sim.world.turtles["turtle1"]
+        # the recording's end holds its last frame: where the recorded turtle ended,
+        # give or take the ticks of one 16 ms frame of the app
+        assert app.session.t >= 2.0
+        assert abs(turtle.x - recorded.turtles["turtle1"].x) < 0.05
+        assert turtle.distance > 2.0
+        assert "replaying run.jsonl" in "".join(r.msg for r in app.session.logs)
+
+
+def test_the_check_key_is_in_the_footer():
+    bindings = {b.key: b for b in TurtleApp.BINDINGS}
+    assert bindings["k"].action == "check_lesson" and bindings["k"].show
+
+
