@@ -38,6 +38,11 @@ REFERENCE_CONTROLLERS = {
     "part5_pose_subscriber": "pose_subscriber.py",
     "part6_wall_avoider": "turtle_controller.py",
     "part7_pen_color": "turtle_controller_pen.py",
+    "go_to_goal": "go_to_goal.py",
+    "rotate_action_client": "rotate_action_client.py",
+    "parameters_wall_avoider": "parameters_wall_avoider.py",
+    "turtle_chaser": "turtle_chaser.py",
+    "lidar_obstacle_avoider": "lidar_obstacle_avoider.py",
 }
 
 
@@ -150,8 +155,9 @@ def test_lessons_dir_is_the_top_level_lessons_folder_when_present():
         assert folder.is_dir()
 
 
-def test_builtin_registers_no_worlds_or_checks_yet(pm):
-    assert collect_worlds(pm) == {}
+def test_builtin_registers_the_bundled_worlds_and_no_plugin_checks(pm):
+    # the built-in checks belong to the grading engine, not to a plugin
+    assert "lidar-course" in collect_worlds(pm)
     assert collect_checks(pm) == {}
 
 
@@ -522,13 +528,13 @@ def test_describe_plugins_lists_sources_counts_and_names(pm, temporary_plugin):
     at = lines.index("turtletui.plugins.builtin (builtin)")
     assert lines[at : at + 2] == [
         "turtletui.plugins.builtin (builtin)",
-        "  controllers (5): " + ", ".join(sorted(REFERENCE_CONTROLLERS)),
+        f"  controllers ({len(REFERENCE_CONTROLLERS)}): " + ", ".join(REFERENCE_CONTROLLERS),
     ]
     assert lines[-2:] == ["nothing (registered directly)", "  registers nothing"]
     infos = plugin_infos(pm)
     assert [info.name for info in infos] == [*BUILTIN_PLUGINS, "nothing"]
     by_name = {info.name: info for info in infos}
-    assert by_name["turtletui.plugins.builtin"].as_dict()["controllers"] == sorted(
+    assert by_name["turtletui.plugins.builtin"].as_dict()["controllers"] == list(
         REFERENCE_CONTROLLERS
     )
 
@@ -565,7 +571,7 @@ def test_cli_plugins_json(cli_app, tmp_path, forget_modules):
         f"file {plugin.resolve()}"
     ]
     by_name = {item["name"]: item for item in data}
-    assert by_name["turtletui.plugins.builtin"]["controllers"] == sorted(REFERENCE_CONTROLLERS)
+    assert by_name["turtletui.plugins.builtin"]["controllers"] == list(REFERENCE_CONTROLLERS)
     assert data[-1] == {
         "name": str(plugin.resolve()),
         "source": f"file {plugin.resolve()}",

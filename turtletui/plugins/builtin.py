@@ -32,6 +32,27 @@ REFERENCE_CONTROLLERS: tuple[tuple[str, str, str], ...] = (
         "turtle_controller_pen.py",
         "Part 7: the wall avoider, changing pen colour through a service",
     ),
+    ("go_to_goal", "go_to_goal.py", "Drives turtle1 to (goal_x, goal_y) with a P controller and stops"),
+    (
+        "rotate_action_client",
+        "rotate_action_client.py",
+        "Turns turtle1 north, west, south, east with rotate_absolute action goals",
+    ),
+    (
+        "parameters_wall_avoider",
+        "parameters_wall_avoider.py",
+        "The Part 6 wall avoider with its speeds, turn rate and box as node parameters",
+    ),
+    (
+        "turtle_chaser",
+        "turtle_chaser.py",
+        "Spawns turtles, chases each with turtle1 and kills it when caught",
+    ),
+    (
+        "lidar_obstacle_avoider",
+        "lidar_obstacle_avoider.py",
+        "Reads the front of /turtle1/scan and turns toward the more open side",
+    ),
 )
 """(controller name, file in the reference folder, description)."""
 

@@ -1,0 +1,25 @@
+"""Wrong: subscribes to /turtle/pose (no 1). Nobody publishes there, so the
+callback never runs; no error either."""
+import rclpy
+from rclpy.node import Node
+from turtlesim.msg import Pose
+
+
+class PoseSubscriberNode(Node):
+    def __init__(self):
+        super().__init__("pose_subscriber")
+        self.pose_subscriber_ = self.create_subscription(Pose, "/turtle/pose", self.pose_callback, 10)
+
+    def pose_callback(self, msg: Pose):
+        self.get_logger().info("(" + str(msg.x) + ", " + str(msg.y) + ")")
+
+
+def main(args=None):
+    rclpy.init(args=args)
+    node = PoseSubscriberNode()
+    rclpy.spin(node)
+    rclpy.shutdown()
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,86 @@
+"""Wrong: ignores the name /spawn answers and counts the spawned turtles
+itself, from 1: the first "catch" kills turtle1 - the chaser.
+"""
+import math
+import random
+from functools import partial
+
+import rclpy
+from rclpy.node import Node
+from geometry_msgs.msg import Twist
+from turtlesim.msg import Pose
+from turtlesim.srv import Kill, Spawn
+
+
+class TurtleChaserNode(Node):
+    def __init__(self):
+        super().__init__("turtle_chaser")
+        self.declare_parameter("seed", 0)
+        self.declare_parameter("catch_distance", 0.5)
+        # a seeded generator: the same targets on every run with the same seed
+        self.random_ = random.Random(self.get_parameter("seed").value)
+        self.catch_distance_ = self.get_parameter("catch_distance").value
+        self.target_ = None  # (name, x, y) of the turtle being chased
+        self.count_ = 0
+        self.cmd_vel_publisher_ = self.create_publisher(Twist, "/turtle1/cmd_vel", 10)
+        self.pose_subscriber_ = self.create_subscription(Pose, "/turtle1/pose", self.pose_callback, 10)
+        self.spawn_client_ = self.create_client(Spawn, "/spawn")
+        self.kill_client_ = self.create_client(Kill, "/kill")
+        while not self.spawn_client_.wait_for_service(1.0):
+            self.get_logger().warn("Waiting for the /spawn service...")
+        self.spawn_target()
+
+    def spawn_target(self):
+        request = Spawn.Request()
+        request.x = self.random_.uniform(1.0, 10.0)
+        request.y = self.random_.uniform(1.0, 10.0)
+        request.theta = self.random_.uniform(-math.pi, math.pi)
+        request.name = ""  # turtlesim picks the next free turtleN
+        future = self.spawn_client_.call_async(request)
+        future.add_done_callback(partial(self.callback_spawn, x=request.x, y=request.y))
+
+    def callback_spawn(self, future, x, y):
+        name = future.result().name
+        if name:
+            self.count_ += 1
+            self.target_ = (f"turtle{self.count_}", x, y)  # counts from 1: but turtle1 is us
+            self.get_logger().info(f"Spawned {name} at ({x:.2f}, {y:.2f})")
+
+    def pose_callback(self, pose: Pose):
+        cmd = Twist()
+        if self.target_ is not None:
+            name, x, y = self.target_
+            dx = x - pose.x
+            dy = y - pose.y
+            distance = math.sqrt(dx * dx + dy * dy)
+            if distance < self.catch_distance_:
+                self.target_ = None
+                self.kill_turtle(name)
+            else:
+                angle_to_target = math.atan2(dy, dx)
+                error = math.atan2(math.sin(angle_to_target - pose.theta), math.cos(angle_to_target - pose.theta))
+                cmd.angular.z = 6.0 * error
+                if abs(error) < math.pi / 4:
+                    cmd.linear.x = min(2.0 * distance, 4.0)
+        self.cmd_vel_publisher_.publish(cmd)
+
+    def kill_turtle(self, name):
+        request = Kill.Request()
+        request.name = name
+        future = self.kill_client_.call_async(request)
+        future.add_done_callback(partial(self.callback_kill, name=name))
+
+    def callback_kill(self, future, name):
+        self.get_logger().info(f"Caught {name}!")
+        self.spawn_target()
+
+
+def main(args=None):
+    rclpy.init(args=args)
+    node = TurtleChaserNode()
+    rclpy.spin(node)
+    rclpy.shutdown()
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,49 @@
+"""Actions: the reference passes every check; wrong solutions fail the right ones."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from tests.lessons.conftest import SOLUTIONS, failed_checks, feedback_of
+
+LESSON = "actions-rotate"
+HERE = SOLUTIONS / "actions_rotate"
+STARTER = Path(__file__).parents[2] / "lessons" / "actions_rotate_starter.py"
+
+
+def test_the_reference_scores_full_marks(grade):
+    result = grade(LESSON, "rotate_action_client")
+    assert failed_checks(result) == set()
+    assert result.score == result.max_score == 10.0
+
+
+def test_waiting_in_main_with_spin_until_future_complete_passes_too(grade):
+    result = grade(LESSON, HERE / "send_goal_in_main.py")
+    assert result.score == result.max_score
+
+
+def test_goals_sent_all_at_once_replace_each_other(grade):
+    result = grade(LESSON, HERE / "fire_and_forget.py")
+    assert {"goals_reached", "headings_faced"} <= failed_checks(result)
+    assert "goals_sent" not in failed_checks(result)
+    assert any("result callback" in text for text in feedback_of(result, "goals_reached"))
+    assert any("1 of 4 goals reached" in text for text in feedback_of(result, "goals_reached"))
+
+
+def test_a_timer_that_does_not_wait_for_results_fails_goals_reached(grade):
+    result = grade(LESSON, HERE / "timer_no_wait.py")
+    assert "goals_reached" in failed_checks(result)
+    assert any("not all at once or from a timer" in text for text in feedback_of(result, "goals_reached"))
+
+
+def test_headings_in_degrees_wait_properly_but_face_the_wrong_ways(grade):
+    result = grade(LESSON, HERE / "degrees.py")
+    assert failed_checks(result) == {"headings_faced"}
+    text = feedback_of(result, "headings_faced")[0]
+    assert "never stopped facing 1.57 rad" in text and "radians" in text
+
+
+def test_the_starter_runs_and_sends_one_goal(grade):
+    result = grade(LESSON, STARTER)
+    assert "no_crash" not in failed_checks(result)
+    assert "goals_sent" in failed_checks(result)

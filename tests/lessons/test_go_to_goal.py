@@ -1,0 +1,72 @@
+"""Go to goal: the reference passes every check; wrong solutions fail the right ones."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from tests.lessons.conftest import SOLUTIONS
+
+LESSON = "go-to-goal"
+HERE = SOLUTIONS / "go_to_goal"
+STARTER = Path(__file__).parents[2] / "lessons" / "go_to_goal_starter.py"
+
+
+def check_of(test) -> str:
+    """The check's name (a labelled check is shown as 'name: label')."""
+    return test.check.split(":")[0]
+
+
+def failed(result) -> dict[str, set[str]]:
+    """Check name -> scenarios where it failed."""
+    out: dict[str, set[str]] = {}
+    for test in result.tests:
+        if not test.passed:
+            out.setdefault(check_of(test), set()).add(test.scenario)
+    return out
+
+
+def feedback(result, check: str) -> str:
+    return "\n".join(t.output for t in result.tests if check_of(t) == check and not t.passed)
+
+
+def test_the_reference_scores_full_marks(grade):
+    result = grade(LESSON, "go_to_goal")
+    assert failed(result) == {}
+    assert result.score == result.max_score == 10.0
+
+
+def test_turning_first_and_other_gains_pass_too(grade):
+    result = grade(LESSON, HERE / "drive_then_turn.py")
+    assert result.score == result.max_score
+
+
+def test_atan_instead_of_atan2_misses_goals_to_the_left(grade):
+    result = grade(LESSON, HERE / "atan_not_atan2.py")
+    failures = failed(result)
+    assert "goal to the left" in failures["time_to_goal"]
+    assert "default goal" not in failures["time_to_goal"]  # up and right: atan is right there
+    assert "math.atan2(dy, dx)" in feedback(result, "time_to_goal")
+    # straight below the turtle, dy / dx divides by zero
+    assert failures["no_crash"] == {"goal behind"}
+    assert "ZeroDivisionError" in feedback(result, "no_crash")
+
+
+def test_no_tolerance_reaches_the_goal_but_circles_it(grade):
+    result = grade(LESSON, HERE / "no_tolerance.py")
+    failures = failed(result)
+    assert set(failures) == {"final_error"}
+    assert "tolerance" in feedback(result, "final_error")
+    assert 0 < result.score < result.max_score
+
+
+def test_a_huge_linear_gain_runs_into_the_wall(grade):
+    result = grade(LESSON, HERE / "high_gain.py")
+    assert "wall_hits" in failed(result)
+    assert "linear gain is too high" in feedback(result, "wall_hits")
+
+
+def test_the_starter_runs_but_goes_nowhere(grade):
+    result = grade(LESSON, STARTER)
+    failures = failed(result)
+    assert "no_crash" not in failures and "wall_hits" not in failures
+    assert set(failures) == {"time_to_goal", "final_error"}

@@ -1,0 +1,101 @@
+"""LiDAR obstacle avoidance: the reference passes every check; wrong solutions fail the right ones."""
+
+from __future__ import annotations
+
+import dataclasses
+from pathlib import Path
+
+from tests.lessons.conftest import SOLUTIONS, failed_checks, feedback_of
+from turtletui.grading.engine import grade_controllers
+from turtletui.grading.engine import random_start as random_start_pose
+from turtletui.runtime.resolve import resolve_controllers
+
+LESSON = "lidar-obstacles"
+HERE = SOLUTIONS / "lidar_obstacles"
+STARTER = Path(__file__).parents[2] / "lessons" / "lidar_obstacles_starter.py"
+
+
+def failed(result) -> dict[str, set[str]]:
+    """Check name -> scenarios where it failed."""
+    out: dict[str, set[str]] = {}
+    for test in result.tests:
+        if not test.passed:
+            out.setdefault(test.check, set()).add(test.scenario)
+    return out
+
+
+def test_the_reference_scores_full_marks(grade):
+    result = grade(LESSON, "lidar_obstacle_avoider")
+    assert failed_checks(result) == set()
+    assert result.score == result.max_score == 10.0
+
+
+def test_a_narrower_sector_and_other_numbers_pass_too(grade):
+    result = grade(LESSON, HERE / "narrow_sector_slow.py")
+    assert failed_checks(result) == set()
+    assert result.score == result.max_score
+
+
+def test_every_start_is_clear_of_the_obstacles(grade):
+    # random starts are drawn 2 m from the walls, not from the obstacles: the
+    # lesson's seeds were chosen so the turtle starts in the open
+    from turtletui.sim.obstacles import nearest_distance
+
+    plan = grade.plan(LESSON)
+    obstacles = plan.worlds["lidar-course"](0).obstacles
+    for run in plan.runs:
+        if run.scenario.start == "random":
+            assert run.start == random_start_pose(run.seed)
+        assert nearest_distance(obstacles, run.start[0], run.start[1]) >= 0.6, run.label
+
+
+def test_the_part6_wall_avoider_drives_into_the_box_east_of_the_centre(grade):
+    # It answers every pose, 62.5 times a second, which makes its sandboxed
+    # runs slow: two visible scenarios show the mistake.
+    plan = grade.plan(LESSON)
+    runs = tuple(r for r in plan.runs if r.label in {"centre", "facing a box"})
+    specs = resolve_controllers([HERE / "part6_unchanged.py"])
+    result = grade_controllers(dataclasses.replace(plan, runs=runs), specs)
+    assert failed(result)["obstacle_hits"] == {"centre", "facing a box"}
+    assert "steers by the pose alone" in feedback_of(result, "obstacle_hits")[0]
+    assert "wall_hits" not in failed_checks(result)  # inside Part 6's safe box, it is the box it hits
+
+
+def test_the_middle_of_ranges_is_behind_the_turtle(grade):
+    result = grade(LESSON, HERE / "front_is_the_middle.py")
+    failures = failed(result)
+    assert {"centre", "facing a box", "under the pillar"} <= failures["obstacle_hits"]
+    assert "no_crash" not in failures
+    text = feedback_of(result, "obstacle_hits")[0]
+    assert "ranges[0] is straight ahead" in text and "middle of the list looks behind" in text
+
+
+def test_stopping_in_front_of_an_obstacle_without_turning_fails_distance_only(grade):
+    result = grade(LESSON, HERE / "stops_when_blocked.py")
+    assert failed_checks(result) == {"distance"}
+    assert len(failed(result)["distance"]) == len(grade.plan(LESSON).runs)  # in every run
+    assert "turn toward the more open side" in feedback_of(result, "distance")[0]
+    assert result.score == 8.0
+
+
+def test_reading_inf_as_zero_spins_in_place(grade):
+    result = grade(LESSON, HERE / "inf_as_zero.py")
+    assert failed_checks(result) == {"distance"}
+    text = feedback_of(result, "distance")[0]
+    assert "distance driven: 0 m" in text
+    assert "inf means nothing within range_max" in text
+
+
+def test_one_beam_misses_no_obstacle_but_scrapes_past_them(grade):
+    result = grade(LESSON, HERE / "one_beam.py")
+    assert failed_checks(result) == {"min_clearance"}
+    assert "watch a sector of beams" in feedback_of(result, "min_clearance")[0]
+    assert 0 < result.score < result.max_score
+
+
+def test_the_starter_runs_and_logs_but_drives_blind(grade):
+    result = grade(LESSON, STARTER)
+    failures = failed(result)
+    assert "no_crash" not in failures
+    assert "obstacle_hits" in failures
+    assert 0 < result.score < result.max_score

@@ -1,0 +1,63 @@
+"""Parameters: the reference passes every check; wrong solutions fail the right ones."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from tests.lessons.conftest import SOLUTIONS
+
+LESSON = "parameters"
+HERE = SOLUTIONS / "parameters"
+STARTER = Path(__file__).parents[2] / "lessons" / "parameters_starter.py"
+
+
+def check_of(test) -> str:
+    """The check's name (a labelled check is shown as 'name: label')."""
+    return test.check.split(":")[0]
+
+
+def failed(result) -> dict[str, set[str]]:
+    """Check name -> scenarios where it failed."""
+    out: dict[str, set[str]] = {}
+    for test in result.tests:
+        if not test.passed:
+            out.setdefault(check_of(test), set()).add(test.scenario)
+    return out
+
+
+def feedback(result, check: str) -> str:
+    return "\n".join(t.output for t in result.tests if check_of(t) == check and not t.passed)
+
+
+def test_the_reference_scores_full_marks(grade):
+    result = grade(LESSON, "parameters_wall_avoider")
+    assert failed(result) == {}
+    assert result.score == result.max_score == 10.0
+
+
+def test_reading_the_parameters_once_in_init_passes_too(grade):
+    result = grade(LESSON, HERE / "read_once_in_init.py")
+    assert result.score == result.max_score
+
+
+def test_declared_but_ignored_parameters_change_nothing(grade):
+    result = grade(LESSON, HERE / "ignores_parameters.py")
+    failures = failed(result)
+    assert failures["mean_speed"] == {"slow"}
+    assert "small box" in failures["min_clearance"] and "tight turns" in failures["min_clearance"]
+    assert "no_crash" not in failures and "wall_hits" not in failures
+    assert 'self.get_parameter("speed").value' in feedback(result, "mean_speed")
+
+
+def test_an_integer_default_refuses_a_float_override(grade):
+    result = grade(LESSON, HERE / "integer_default.py")
+    failures = failed(result)
+    assert failures["no_crash"] == {"slow"}
+    text = feedback(result, "no_crash")
+    assert "InvalidParameterTypeException" in text and "declare it with 5.0" in text
+
+
+def test_the_starter_runs_with_speed_done_and_the_rest_to_do(grade):
+    result = grade(LESSON, STARTER)
+    failures = failed(result)
+    assert set(failures) == {"min_clearance"}

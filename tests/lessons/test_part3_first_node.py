@@ -1,0 +1,52 @@
+"""Part 3: the reference passes every check; wrong solutions fail the right ones."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from tests.lessons.conftest import SOLUTIONS, failed_checks, feedback_of
+
+LESSON = "part3-first-node"
+HERE = SOLUTIONS / "part3"
+STARTER = Path(__file__).parents[2] / "lessons" / "part3_starter.py"
+
+
+def test_the_reference_scores_full_marks(grade):
+    result = grade(LESSON, "part3_first_node")
+    assert failed_checks(result) == set()
+    assert result.score == result.max_score == 10.0
+
+
+def test_another_period_start_and_wording_pass_too(grade):
+    result = grade(LESSON, HERE / "fast_timer_other_words.py")
+    assert result.score == result.max_score
+
+
+def test_a_counter_never_incremented_fails_the_counter_check(grade):
+    result = grade(LESSON, HERE / "counter_never_incremented.py")
+    assert failed_checks(result) == {"log_counter"}
+    (text,) = feedback_of(result, "log_counter")
+    assert "went from 0 to 0" in text
+    assert "self.counter_ += 1" in text
+
+
+def test_a_local_counter_fails_the_counter_check_and_is_told_why(grade):
+    result = grade(LESSON, HERE / "local_counter.py")
+    assert failed_checks(result) == {"log_counter"}
+    (text,) = feedback_of(result, "log_counter")
+    assert "went from 1 to 1" in text
+    assert "A local variable set to 0 inside the callback" in text
+
+
+def test_logging_once_from_init_fails_the_timer_check(grade):
+    result = grade(LESSON, HERE / "logs_once_from_init.py")
+    assert "log_lines" in failed_checks(result)
+    (text,) = feedback_of(result, "log_lines")
+    assert "Log from the timer callback, not from __init__" in text
+    assert "no_crash" not in failed_checks(result)
+
+
+def test_the_starter_runs_without_crashing_and_scores_only_that(grade):
+    result = grade(LESSON, STARTER)
+    assert failed_checks(result) == {"log_lines", "log_counter"}
+    assert result.score == 2.0

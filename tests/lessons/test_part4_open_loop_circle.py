@@ -1,0 +1,61 @@
+"""Part 4: the reference passes every check; wrong solutions fail the right ones."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from tests.lessons.conftest import SOLUTIONS, failed_checks, feedback_of
+
+LESSON = "part4-open-loop-circle"
+HERE = SOLUTIONS / "part4"
+STARTER = Path(__file__).parents[2] / "lessons" / "part4_starter.py"
+
+
+def test_the_reference_scores_full_marks(grade):
+    result = grade(LESSON, "part4_draw_circle")
+    assert failed_checks(result) == set()
+    assert result.score == result.max_score == 10.0
+
+
+def test_a_smaller_clockwise_circle_published_faster_passes_too(grade):
+    result = grade(LESSON, HERE / "small_clockwise_circle.py")
+    assert result.score == result.max_score
+
+
+def test_publishing_once_fails_the_keep_moving_check(grade):
+    result = grade(LESSON, HERE / "publish_once.py")
+    assert {"time_moving", "circle"} <= failed_checks(result)
+    text = feedback_of(result, "time_moving")[0]
+    assert "1 s after the last velocity command" in text
+    assert "moving 6% of the run" in text
+
+
+def test_a_timer_slower_than_the_command_timeout_fails_only_the_keep_moving_check(grade):
+    result = grade(LESSON, HERE / "slow_timer.py")
+    assert failed_checks(result) == {"time_moving"}
+    assert "period is well under 1 s" in feedback_of(result, "time_moving")[0]
+
+
+def test_linear_only_drives_straight_into_the_wall(grade):
+    result = grade(LESSON, HERE / "linear_only.py")
+    assert failed_checks(result) == {"circle", "wall_hits"}
+    assert "radius is linear.x / angular.z" in feedback_of(result, "circle")[0]
+
+
+def test_a_circle_too_big_for_the_arena_hits_the_wall(grade):
+    result = grade(LESSON, HERE / "too_big.py")
+    assert "wall_hits" in failed_checks(result)
+    assert "keep linear.x / angular.z under about 2.5 m" in feedback_of(result, "wall_hits")[0]
+
+
+def test_the_hidden_start_is_graded_but_not_named(grade):
+    result = grade(LESSON, "part4_draw_circle")
+    hidden = [t for t in result.tests if t.hidden]
+    assert hidden and all(t.scenario == "hidden 1" for t in hidden)
+    assert not any("west" in t.name for t in hidden)
+
+
+def test_the_starter_runs_without_crashing(grade):
+    result = grade(LESSON, STARTER)
+    assert "no_crash" not in failed_checks(result)
+    assert "time_moving" in failed_checks(result)

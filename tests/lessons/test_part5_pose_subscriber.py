@@ -1,0 +1,61 @@
+"""Part 5: the reference passes every check; wrong solutions fail the right ones."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from tests.lessons.conftest import SOLUTIONS, failed_checks
+
+LESSON = "part5-pose-subscriber"
+HERE = SOLUTIONS / "part5"
+STARTER = Path(__file__).parents[2] / "lessons" / "part5_starter.py"
+
+RATE = "turtlesim publishes the pose 62.5 times a second"
+POSITION = "Log the pose's position"
+
+
+def failed_outputs(result) -> list[str]:
+    return [test.output for test in result.tests if not test.passed]
+
+
+def test_the_reference_scores_full_marks(grade):
+    result = grade(LESSON, "part5_pose_subscriber")
+    assert failed_checks(result) == set()
+    assert result.score == result.max_score == 10.0
+
+
+def test_another_format_and_node_name_pass_too(grade):
+    result = grade(LESSON, HERE / "formatted_pose.py")
+    assert result.score == result.max_score
+
+
+def test_a_misspelt_topic_logs_nothing_and_is_told_to_check_the_name(grade):
+    result = grade(LESSON, HERE / "misspelt_topic.py")
+    assert failed_checks(result) == {"logs_every_pose", "logs_the_position", "logs_the_message_not_constants"}
+    outputs = failed_outputs(result)
+    assert any("log lines: 0" in text and "ros2 topic list -t" in text for text in outputs)
+    assert result.score == 2.0
+
+
+def test_logging_every_100th_pose_fails_the_rate_but_not_the_content(grade):
+    result = grade(LESSON, HERE / "every_100th_pose.py")
+    outputs = failed_outputs(result)
+    assert failed_checks(result) == {"logs_every_pose"}
+    assert outputs and all(RATE in text and "not every Nth time" in text for text in outputs)
+    assert result.score == 6.0
+
+
+def test_logging_without_the_position_fails_the_content_checks(grade):
+    result = grade(LESSON, HERE / "logs_no_position.py")
+    outputs = failed_outputs(result)
+    assert failed_checks(result) == {"logs_the_position", "logs_the_message_not_constants"}
+    assert len(outputs) == 2
+    assert any(POSITION in text for text in outputs)
+    assert any("not fixed numbers" in text for text in outputs)
+    assert result.score == 6.0
+
+
+def test_the_starter_runs_without_crashing(grade):
+    result = grade(LESSON, STARTER)
+    assert "no_crash" not in failed_checks(result)
+    assert result.score == 2.0

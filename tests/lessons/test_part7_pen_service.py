@@ -1,0 +1,65 @@
+"""Part 7: the reference passes every check; wrong solutions fail the right ones."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from tests.lessons.conftest import SOLUTIONS, failed_checks, feedback_of
+
+LESSON = "part7-pen-service"
+HERE = SOLUTIONS / "part7"
+STARTER = Path(__file__).parents[2] / "lessons" / "part7_starter.py"
+
+ONLY_ON_CHANGE = "only when the turtle changes side"
+TWO_COLOURS = "one colour right of x = 5.5 and another colour left of it"
+
+
+def test_the_reference_scores_full_marks(grade):
+    result = grade(LESSON, "part7_pen_color")
+    assert failed_checks(result) == set()
+    assert result.score == result.max_score == 10.0
+
+
+def test_other_colours_and_another_way_to_remember_the_side_pass_too(grade):
+    result = grade(LESSON, HERE / "side_attribute_blue_yellow.py")
+    assert result.score == result.max_score
+
+
+def test_calling_from_every_pose_fails_the_calls_check_only(grade):
+    result = grade(LESSON, HERE / "calls_every_pose.py")
+    assert failed_checks(result) == {"calls_per_side_change"}
+    text = feedback_of(result, "calls_per_side_change")[0]
+    assert ONLY_ON_CHANGE in text and "62.5 calls a second" in text
+
+
+def test_forgetting_to_store_the_side_floods_the_service_and_keeps_one_colour(grade):
+    result = grade(LESSON, HERE / "forgets_previous_x.py")
+    assert failed_checks(result) == {"calls_per_side_change", "pen_colour_by_side"}
+    assert "the same colour on both sides" in feedback_of(result, "pen_colour_by_side")[0]
+
+
+def test_the_same_colour_on_both_sides_fails_the_colour_check_only(grade):
+    result = grade(LESSON, HERE / "same_colour_both_sides.py")
+    assert failed_checks(result) == {"pen_colour_by_side"}
+    text = feedback_of(result, "pen_colour_by_side")[0]
+    assert TWO_COLOURS in text and "use two different colours" in text
+
+
+def test_a_request_never_sent_fails_both_and_is_told_about_call_async(grade):
+    result = grade(LESSON, HERE / "never_sends_the_request.py")
+    assert failed_checks(result) == {"calls_per_side_change", "pen_colour_by_side"}
+    text = feedback_of(result, "calls_per_side_change")[0]
+    assert "0 calls of /turtle1/set_pen" in text and "client.call_async(request)" in text
+
+
+def test_hidden_starts_are_graded_but_not_described(grade):
+    result = grade(LESSON, "part7_pen_color")
+    hidden = [t for t in result.tests if t.hidden]
+    assert {t.scenario for t in hidden} == {"hidden 1", "hidden 2"}
+    assert not any("west" in t.name for t in hidden)
+
+
+def test_the_starter_runs_without_crashing(grade):
+    result = grade(LESSON, STARTER)
+    assert "no_crash" not in failed_checks(result)
+    assert {"calls_per_side_change", "pen_colour_by_side"} <= failed_checks(result)

@@ -1,0 +1,50 @@
+"""Several turtles: the reference passes every check; wrong solutions fail the right ones."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from tests.lessons.conftest import SOLUTIONS, failed_checks, feedback_of
+
+LESSON = "several-turtles"
+HERE = SOLUTIONS / "several_turtles"
+STARTER = Path(__file__).parents[2] / "lessons" / "several_turtles_starter.py"
+
+
+def test_the_reference_scores_full_marks(grade):
+    result = grade(LESSON, "turtle_chaser")
+    assert failed_checks(result) == set()
+    assert result.score == result.max_score == 10.0
+
+
+def test_named_targets_chased_by_their_pose_topic_pass_too(grade):
+    result = grade(LESSON, HERE / "named_targets.py")
+    assert result.score == result.max_score
+
+
+def test_never_killing_leaves_the_caught_turtles_in_the_arena(grade):
+    result = grade(LESSON, HERE / "never_kills.py")
+    assert {"turtles_killed", "turtles_caught"} <= failed_checks(result)
+    assert "turtles_spawned" not in failed_checks(result)
+    assert any("Call /kill" in text for text in feedback_of(result, "turtles_killed"))
+
+
+def test_killing_turtle2_every_time_catches_one_turtle(grade):
+    result = grade(LESSON, HERE / "kills_turtle2_always.py")
+    # a /kill of a turtle that is not there is no kill
+    assert failed_checks(result) == {"turtles_caught", "turtles_killed"}
+    shown = [t.output for t in result.tests if t.check == "turtles_caught" and not t.hidden]
+    assert any("kills of turtles that did not exist" in text for text in shown)
+    assert any("by the name /spawn answered" in text for text in shown)
+
+
+def test_counting_names_from_one_kills_the_chaser(grade):
+    result = grade(LESSON, HERE / "kills_itself.py")
+    assert "turtles_caught" in failed_checks(result)
+    assert any("killed the chaser turtle1 itself" in text for text in feedback_of(result, "turtles_caught"))
+
+
+def test_the_starter_runs_and_spawns_one_turtle(grade):
+    result = grade(LESSON, STARTER)
+    assert "no_crash" not in failed_checks(result)
+    assert "turtles_caught" in failed_checks(result)
