@@ -169,7 +169,7 @@ def test_json_output_has_the_documented_shape(klass: Path, lesson: Path, tmp_pat
     assert set(report) == {"lesson", "max_score", "submissions"}
     assert (report["lesson"], report["max_score"]) == ("tiny-walls", MAX_SCORE)
     for sub in report["submissions"]:
-        assert set(sub) == {"submission", "student", "score", "max_score", "error", "execution_time", "tests"}
+        assert set(sub) == {"submission", "student", "score", "max_score", "error", "execution_time", "tests", "recordings"}
         assert sub["max_score"] == MAX_SCORE and sub["error"] is None and sub["execution_time"] > 0
         assert sum(t["score"] for t in sub["tests"]) == pytest.approx(sub["score"])
         for test in sub["tests"]:

@@ -41,6 +41,7 @@ def comparable(report) -> dict:
     data = json.loads(render_report(report, "json"))
     for sub in data["submissions"]:
         sub.pop("execution_time")
+        sub.pop("recordings")
     return data
 
 
@@ -106,6 +107,7 @@ def without_times(json_report: str) -> dict:
     data = json.loads(json_report)
     for sub in data["submissions"]:
         sub.pop("execution_time")
+        sub.pop("recordings")
     return data
 
 

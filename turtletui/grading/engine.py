@@ -198,8 +198,24 @@ def run_scenario(
     limits: Limits | None = None,
     record: str | Path | None = None,
 ) -> Trace:
-    """Run one scenario in the grader's own simulation and return its trace.
-    Raises KeyboardInterrupt if Ctrl-C cut the run short."""
+    """Run one scenario in the grader's own simulation and return its trace
+    (and write its recording to ``record``). Raises KeyboardInterrupt if
+    Ctrl-C cut the run short."""
+    trace, recorder = _run_recorded(plan, run, controllers, limits, record)
+    if recorder is not None:
+        recorder.close(keep=True)
+    return trace
+
+
+def _run_recorded(
+    plan: GradingPlan,
+    run: ScenarioRun,
+    controllers: Sequence[ControllerSpec],
+    limits: Limits | None,
+    record: str | Path | None,
+) -> tuple[Trace, Recorder | None]:
+    """The run's trace and, with ``record``, its recording in memory: the
+    caller closes it, keeping the file or not."""
     from turtletui.api import run as run_controllers
 
     scenario = run.scenario
@@ -219,7 +235,7 @@ def run_scenario(
                 "start": list(run.start),
                 "ros_args": list(scenario.ros_args),
             }
-            recorder.append(Recorder(sim.graph, record, earlier_logs=list(start_logs), header=header))
+            recorder.append(Recorder(sim.graph, record, start_logs, header, buffered=True))
         place_turtle(sim, run.start, run.label)
         collector.append(TraceCollector(sim, scenario=run.label, seed=run.seed, duration=scenario.duration))
 
@@ -235,12 +251,13 @@ def run_scenario(
             world=plan.worlds[world_name](run.seed),
             on_log=start_logs.append if record is not None else None,
         )
-    finally:
+        if result.interrupted:
+            raise KeyboardInterrupt
+    except BaseException:
         for item in recorder:
-            item.close(keep=True)
-    if result.interrupted:
-        raise KeyboardInterrupt
-    return collector[0].finish(logs=result.logs, crashes=result.crashes)
+            item.close(keep=False)
+        raise
+    return collector[0].finish(logs=result.logs, crashes=result.crashes), (recorder[0] if recorder else None)
 
 
 def judge(check: Check, trace: Trace, thresholds: dict[str, Any]) -> Verdict:
@@ -278,12 +295,15 @@ def grade_run(
 ) -> RunOutcome:
     """Run one scenario of the plan and judge every check that applies to it.
 
-    With ``recordings`` (a folder), a visible run that failed a check is run again
-    (the simulation is deterministic) and recorded there as ``<label>.jsonl``
-    for ``turtletui replay``.
+    With ``recordings`` (a folder), a visible run that failed a check leaves
+    its recording there as ``<label>.jsonl`` for ``turtletui replay``.
     """
     run = plan.runs[run_index]
-    trace = run_scenario(plan, run, controllers, limits=limits)
+    # hidden runs are not recorded: a recording would show where they start
+    path = None if recordings is None or run.hidden else recordings / f"{_file_name(run.label)}.jsonl"
+    if path is not None:
+        recordings.mkdir(parents=True, exist_ok=True)
+    trace, recorder = _run_recorded(plan, run, controllers, limits, path)
 
     def verdict_of(check: Check, thresholds: dict[str, Any]) -> Verdict:
         if trace.crashes and check.name != "no_crash":
@@ -293,14 +313,10 @@ def grade_run(
         return judge(check, trace, thresholds)
 
     tests = _judge_run(plan, run, verdict_of)
-    recording = None
-    # hidden runs are not recorded: a recording would show where they start
-    if recordings is not None and not run.hidden and not all(test.passed for _, test in tests):
-        recordings.mkdir(parents=True, exist_ok=True)
-        path = recordings / f"{_file_name(run.label)}.jsonl"
-        run_scenario(plan, run, controllers, limits=limits, record=path)
-        recording = str(path)
-    return RunOutcome(run_index, tests, recording)
+    failed = not all(test.passed for _, test in tests)
+    if recorder is not None:
+        recorder.close(keep=failed)
+    return RunOutcome(run_index, tests, str(path) if recorder is not None and failed else None)
 
 
 def _judge_run(

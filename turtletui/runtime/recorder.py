@@ -37,6 +37,10 @@ class Recorder:
     attached (turtlesim's start lines); they are written first, after the
     ``header`` line (``{"recording": 1, ...header}``) if one is given: where
     the run started, for ``turtletui replay``.
+
+    ``buffered`` keeps the events in memory and writes them only when the
+    recording is kept (grading records every run, keeps the failed ones);
+    it also leaves out turtlesim's colour sensor when nothing subscribes to it.
     """
 
     def __init__(
@@ -45,39 +49,39 @@ class Recorder:
         path: str | os.PathLike[str],
         earlier_logs: Iterable[LogRecord] = (),
         header: dict[str, Any] | None = None,
+        *,
+        buffered: bool = False,
     ) -> None:
         self.path = Path(path)
         if self.path.is_dir():
             raise OSError(f"{path}: cannot write the record (is a folder; name a file such as run.jsonl)")
         self._tmp = self.path.with_name(f".{self.path.name}.{os.getpid()}.tmp")
-        try:
-            self._file = open(self._tmp, "w", encoding="utf-8")  # noqa: SIM115
-        except OSError as err:
-            raise OSError(f"{path}: cannot write the record ({err.strerror})") from None
+        self._file = None if buffered else self._open()
+        self._buffer: list[tuple[float, str, Any]] | None = [] if buffered else None
         self._graph = graph
-        if header is not None:
+        self._header = header
+        if header is not None and not buffered:
             self._write({"recording": 1, **header})
         for record in earlier_logs:
-            self._write(_log_event(round(record.t, 9), record))
+            self._tap("log", record, round(record.t, 9))
         graph.taps.append(self._tap)
-        graph.record_everything = True
+        graph.record_everything = not buffered
 
-    def _tap(self, kind: str, payload: Any) -> None:
-        t = round(self._graph.now_ns / 1e9, 9)
-        if kind == "topic":
-            topic, msg = payload
-            event = {"t": t, "topic": topic.name, "type": topic.type_name, "msg": to_dict(msg)}
-        elif kind == "service":
-            name, request, response = payload
-            event = {"t": t, "service": name, "request": to_dict(request), "response": to_dict(response)}
-        elif kind == "goal":
-            name, goal = payload
-            event = {"t": t, "action": name, "goal": to_dict(goal)}
-        elif kind == "log":
-            event = _log_event(t, payload)
-        else:
+    def _open(self) -> Any:
+        try:
+            return open(self._tmp, "w", encoding="utf-8")  # noqa: SIM115
+        except OSError as err:
+            raise OSError(f"{self.path}: cannot write the record ({err.strerror})") from None
+
+    def _tap(self, kind: str, payload: Any, t: float | None = None) -> None:
+        if t is None:
+            t = round(self._graph.now_ns / 1e9, 9)
+        if self._buffer is not None:
+            self._buffer.append((t, kind, payload))  # messages are not changed after they are sent
             return
-        self._write(event)
+        event = _event(t, kind, payload)
+        if event is not None:
+            self._write(event)
 
     def _write(self, event: dict[str, Any]) -> None:
         try:
@@ -92,10 +96,37 @@ class Recorder:
             self._graph.taps.remove(self._tap)
             self._graph.record_everything = False
         try:
-            self._file.close()
-            if keep:
-                os.replace(self._tmp, self.path)
+            if self._buffer is not None and keep:
+                self._file = self._open()
+                if self._header is not None:
+                    self._write({"recording": 1, **self._header})
+                for t, kind, payload in self._buffer:
+                    event = _event(t, kind, payload)
+                    if event is not None:
+                        self._write(event)
+            self._buffer = None
+            if self._file is not None:
+                self._file.close()
+                if keep:
+                    os.replace(self._tmp, self.path)
         except OSError as err:
             raise OSError(f"{self.path}: cannot write the record ({err.strerror})") from None
         finally:
             self._tmp.unlink(missing_ok=True)
+
+
+def _event(t: float, kind: str, payload: Any) -> dict[str, Any] | None:
+    """The JSON object of one tapped event; None for kinds a record leaves out."""
+    if kind == "topic":
+        topic, msg = payload
+        return {"t": t, "topic": topic.name, "type": topic.type_name, "msg": to_dict(msg)}
+    if kind == "service":
+        name, request, response = payload
+        return {"t": t, "service": name, "request": to_dict(request), "response": to_dict(response)}
+    if kind == "goal":
+        name, goal = payload
+        return {"t": t, "action": name, "goal": to_dict(goal)}
+    if kind == "log":
+        return _log_event(t, payload)
+    return None
+
