@@ -36,7 +36,9 @@ def grade(
         metavar="DIR",
         help="Keep each student's result and recordings here (default: turtletui-grades/LESSON).",
     ),
-    jobs: int = typer.Option(0, "--jobs", "-j", min=0, help="Runs in parallel (default: the number of CPUs)."),
+    jobs: int = typer.Option(
+        0, "--jobs", "-j", min=0, help="Scenario runs in parallel (default: one per CPU)."
+    ),
     force: bool = typer.Option(False, "--force", help="Regrade submissions whose results are kept."),
     fail_under: float = typer.Option(
         None, "--fail-under", metavar="SCORE", help="Exit 1 if any submission scores fewer points."
@@ -79,7 +81,7 @@ def grade(
 
 
 def _grade(submissions, lesson_id, fmt, results, jobs, force, folders, plugins, quiet, same_user):
-    from turtletui.grading.batch import ResultStore, grade_submissions, store_key
+    from turtletui.grading.batch import ResultStore, default_jobs, grade_submissions, store_key
     from turtletui.grading.engine import prepare
     from turtletui.grading.integrity import PrivateCopies, check_runtime_readable, unprivileged_ids
     from turtletui.grading.reports import SINGLE_SUBMISSION_FORMATS
@@ -122,7 +124,7 @@ def _grade(submissions, lesson_id, fmt, results, jobs, force, folders, plugins, 
             plan,
             found,
             store=store,
-            jobs=jobs or os.cpu_count() or 1,
+            jobs=jobs or default_jobs(),
             force=force,
             limits=limits,
             plugins=plugins,

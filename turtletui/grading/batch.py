@@ -35,6 +35,7 @@ from turtletui.grading.engine import (
 from turtletui.grading.results import GradeReport, SubmissionResult
 from turtletui.grading.submissions import Submission
 from turtletui.lessons.loader import load_lesson
+from turtletui.runtime import wire
 from turtletui.runtime.loader import ControllerError, ControllerSpec, check_source
 from turtletui.runtime.sandbox import Limits
 
@@ -163,7 +164,17 @@ def _on_sigterm(signum: int, frame: Any) -> None:
     os._exit(1)
 
 
-def _init_worker(lesson_path: str, plugins: Sequence[str], limits: Limits | None, parent: int | None = None) -> None:
+def default_jobs() -> int:
+    """Runs side by side by default: one per CPU."""
+    try:
+        return len(os.sched_getaffinity(0))
+    except (AttributeError, OSError):
+        return os.cpu_count() or 1
+
+
+def _init_worker(
+    lesson_path: str, plugins: Sequence[str], limits: Limits | None, parent: int | None = None, spin: bool = True
+) -> None:
     global _worker_plan, _worker_limits
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent handles Ctrl-C
     # A grader killed outright (SIGKILL) must not leave its workers waiting for
@@ -178,6 +189,11 @@ def _init_worker(lesson_path: str, plugins: Sequence[str], limits: Limits | None
             pass
     if parent is not None and os.getppid() != parent:
         os._exit(1)  # it died before the line above
+    if not spin:
+        # More runs than pairs of CPUs: a reader polling for its child's answer
+        # would take the CPU that child needs (the children read the variable too).
+        wire.SPIN_SECONDS = 0.0
+        os.environ[wire.SPIN_ENV] = "0"
     if _worker_plan is None or str(_worker_plan.lesson.path) != lesson_path:
         _worker_plan = prepare(load_lesson(lesson_path), plugins=plugins)
     _worker_limits = limits
@@ -341,7 +357,9 @@ def _run_pool(
         max_workers=min(jobs, len(queue)),
         mp_context=context,
         initializer=_init_worker,
-        initargs=(str(plan.lesson.path), [str(p) for p in plugins], limits, os.getpid()),
+        # a lockstep run keeps two CPUs busy (simulator and controller): polling
+        # for answers pays only while every run has two to itself
+        initargs=(str(plan.lesson.path), [str(p) for p in plugins], limits, os.getpid(), 2 * jobs <= default_jobs()),
     )
     lost: list[tuple[Any, ...]] = []
     try:

@@ -19,7 +19,17 @@ MAX_REPLY_BYTES = 8 * 1024 * 1024
 """Largest answer the parent accepts from a child in one exchange."""
 
 
+SPIN_ENV = "TURTLETUI_SPIN_SECONDS"
+"""Overrides the default below (grading sets 0 when its runs share the CPUs)."""
+
+
 def _spin_default() -> float:
+    override = os.environ.get(SPIN_ENV)
+    if override:
+        try:
+            return max(0.0, float(override))
+        except ValueError:
+            pass
     try:
         cpus = len(os.sched_getaffinity(0))
     except (AttributeError, OSError):
@@ -32,7 +42,7 @@ SPIN_SECONDS = _spin_default()
 kernel. Lockstep exchanges are short; with two or more CPUs a brief poll saves
 the cross-CPU wake-up of a sleeping reader (tens of microseconds per exchange on
 virtual machines). Zero on a single CPU, where polling would only steal time
-from the side being waited for."""
+from the side being waited for, nor when several runs share the CPUs."""
 
 
 def spin_read(fd: int, size: int, spin: float) -> bytes | None:
