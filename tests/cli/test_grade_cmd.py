@@ -13,8 +13,7 @@ import pwd
 from pathlib import Path
 
 import pytest
-
-from tests.grading.conftest import (
+from support.grading import (
     HONEST,
     MAX_SCORE,
     SYNTAX_ERROR,
@@ -25,6 +24,7 @@ from tests.grading.conftest import (
     stored_results,
     write_lesson,
 )
+
 from turtletui.grading.integrity import IntegrityError, check_runtime_readable
 
 

@@ -9,9 +9,9 @@ import re
 from pathlib import Path
 
 import pytest
+from support.grading import WALL_HITTER, grade_cli, make_class, one_line_error, write_lesson
 from typer.testing import CliRunner
 
-from tests.grading.conftest import WALL_HITTER, grade_cli, make_class, one_line_error, write_lesson
 from turtletui.api import run
 from turtletui.cli import app
 from turtletui.runtime.replay import install_replay, read_recording

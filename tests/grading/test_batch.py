@@ -10,7 +10,7 @@ import signal
 import time
 from pathlib import Path
 
-from tests.grading.conftest import (
+from support.grading import (
     CRASH_WITH_POSE,
     HIDDEN_NAME,
     HIDDEN_START,
@@ -24,6 +24,7 @@ from tests.grading.conftest import (
     stored_results,
     wait_until_gone,
 )
+
 from turtletui.grading.batch import ResultStore, grade_submissions, store_key
 from turtletui.grading.engine import prepare
 from turtletui.grading.reports import render_report

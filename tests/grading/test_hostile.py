@@ -11,13 +11,14 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from tests.grading.conftest import (
+from support.grading import (
     HONEST,
     grade_cli,
     make_class,
     stored_results,
     wait_until_gone,
 )
+
 from turtletui.grading.batch import ResultStore, grade_submissions, store_key
 from turtletui.grading.engine import prepare
 from turtletui.grading.reports import render_report

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from tests.lessons.conftest import SOLUTIONS
+from support.lessons import SOLUTIONS
 
 LESSON = "go-to-goal"
 HERE = SOLUTIONS / "go_to_goal"

@@ -5,7 +5,8 @@ from __future__ import annotations
 import dataclasses
 from pathlib import Path
 
-from tests.lessons.conftest import SOLUTIONS, failed_checks, feedback_of
+from support.lessons import SOLUTIONS, failed_checks, feedback_of
+
 from turtletui.grading.engine import grade_controllers
 from turtletui.grading.engine import random_start as random_start_pose
 from turtletui.runtime.resolve import resolve_controllers

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from tests.lessons.conftest import SOLUTIONS
+from support.lessons import SOLUTIONS
 
 LESSON = "parameters"
 HERE = SOLUTIONS / "parameters"

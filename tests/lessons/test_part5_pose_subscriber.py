@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from tests.lessons.conftest import SOLUTIONS, failed_checks
+from support.lessons import SOLUTIONS, failed_checks
 
 LESSON = "part5-pose-subscriber"
 HERE = SOLUTIONS / "part5"

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from tests.lessons.conftest import SOLUTIONS, failed_checks, feedback_of
+from support.lessons import SOLUTIONS, failed_checks, feedback_of
 
 LESSON = "part6-closed-loop"
 HERE = SOLUTIONS / "part6"

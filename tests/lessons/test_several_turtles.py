@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from tests.lessons.conftest import SOLUTIONS, failed_checks, feedback_of
+from support.lessons import SOLUTIONS, failed_checks, feedback_of
 
 LESSON = "several-turtles"
 HERE = SOLUTIONS / "several_turtles"

@@ -3,42 +3,17 @@ ros2 command line, teleop, hot reload, and a misbehaving controller."""
 
 from __future__ import annotations
 
-import asyncio
-import functools
 import textwrap
 import time
 from pathlib import Path
 
 import pytest
-from textual.widgets import ContentSwitcher, Input, RichLog
+from support.pilot import SIZE, log_text, pilot_test, wait_for
+from textual.widgets import ContentSwitcher, Input
 
 from turtletui.runtime.loader import ControllerSpec
 from turtletui.runtime.resolve import resolve_controllers
 from turtletui.tui.app import TurtleApp
-
-SIZE = (120, 40)
-
-
-def pilot_test(scenario):
-    """Run an async Pilot scenario as a plain test (no async plugin needed)."""
-
-    @functools.wraps(scenario)
-    def test(*args, **kwargs) -> None:
-        asyncio.run(scenario(*args, **kwargs))
-
-    return test
-
-
-def log_text(app: TurtleApp, selector: str = "#log-lines") -> str:
-    """What a panel shows, with wrapped lines joined again."""
-    return "".join(line.text for line in app.query_one(selector, RichLog).lines)
-
-
-async def wait_for(pilot, condition, timeout: float = 5.0) -> None:
-    deadline = time.monotonic() + timeout
-    while not condition():
-        assert time.monotonic() < deadline, "timed out waiting for the app"
-        await pilot.pause(0.05)
 
 
 @pilot_test

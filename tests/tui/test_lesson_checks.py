@@ -6,7 +6,8 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from tests.tui.test_app import SIZE, pilot_test, wait_for
+from support.pilot import SIZE, pilot_test, wait_for
+
 from turtletui.runtime.loader import ControllerSpec
 from turtletui.tui.app import TurtleApp
 from turtletui.tui.lesson_checks import describe

@@ -1,0 +1,43 @@
+"""Grade controllers against the bundled lessons, each (lesson, controller) once per session
+(tests/lessons/conftest.py makes a Grader the ``grade`` fixture)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from turtletui.grading.engine import GradingPlan, grade_controllers, prepare
+from turtletui.grading.results import SubmissionResult
+from turtletui.lessons.loader import find_lesson
+from turtletui.runtime.resolve import resolve_controllers
+
+SOLUTIONS = Path(__file__).parents[1] / "lessons" / "solutions"
+"""Wrong (and alternative right) solutions, one folder per lesson."""
+
+
+class Grader:
+    """Grades each (lesson, controller) once: several tests read the same result."""
+
+    def __init__(self) -> None:
+        self._plans: dict[str, GradingPlan] = {}
+        self._results: dict[tuple[str, str], SubmissionResult] = {}
+
+    def plan(self, lesson_id: str) -> GradingPlan:
+        if lesson_id not in self._plans:
+            self._plans[lesson_id] = prepare(find_lesson(lesson_id))
+        return self._plans[lesson_id]
+
+    def __call__(self, lesson_id: str, controller: str | Path) -> SubmissionResult:
+        """Grade a registered controller name (the reference) or a file (sandboxed)."""
+        key = (lesson_id, str(controller))
+        if key not in self._results:
+            specs = resolve_controllers([controller])
+            self._results[key] = grade_controllers(self.plan(lesson_id), specs)
+        return self._results[key]
+
+
+def failed_checks(result: SubmissionResult) -> set[str]:
+    return {test.check for test in result.tests if not test.passed}
+
+
+def feedback_of(result: SubmissionResult, check: str) -> list[str]:
+    return [test.output for test in result.tests if test.check == check and not test.passed]
