@@ -66,6 +66,31 @@ def test_cli_help_and_headless_runs_never_import_textual():
     assert imported_after(code, ["textual"]) == []
 
 
+def test_grading_a_class_never_imports_textual(tmp_path):
+    student = tmp_path / "class" / "ann"
+    student.mkdir(parents=True)
+    (student / "controller.py").write_text(PART6.read_text())
+    lesson = tmp_path / "one.md"
+    lesson.write_text(
+        '+++\nid = "one"\ntitle = "One"\n[[scenarios]]\nname = "s"\nduration = 1.0\n'
+        '[[checks]]\nname = "no_crash"\n+++\n# One\n'
+    )
+    code = f"""
+        import contextlib, io, sys
+        import turtletui.cli
+
+        sys.argv = ["turtletui", "grade", {str(student.parent)!r}, "--lesson", {str(lesson)!r},
+                    "--results", {str(tmp_path / "results")!r}, "--same-user", "--quiet"]
+        with contextlib.redirect_stdout(io.StringIO()) as out:
+            try:
+                turtletui.cli.main()
+            except SystemExit as exc:
+                assert exc.code in (None, 0), exc.code
+        assert "1/1" in out.getvalue(), out.getvalue()
+    """
+    assert imported_after(code, ["textual"]) == []
+
+
 @pytest.mark.parametrize("module", CORE)
 def test_core_imports_no_front_end(module):
     assert imported_after(f"import {module}", FRONT_ENDS) == []
