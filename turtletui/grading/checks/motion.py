@@ -1,0 +1,202 @@
+"""Checks of how the turtle moves: coverage, speed, distance, time moving,
+commands per pose, circles, goals and headings."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+
+from turtletui.grading.checks.base import (
+    MINMAX,
+    TURTLE,
+    Verdict,
+    bounds,
+    check,
+    measured,
+    turtle_of,
+)
+from turtletui.grading.trace import Trace
+
+
+@check(
+    "coverage",
+    "Fraction of the arena's cells (1 m squares by default) the turtle drove through.",
+    {**MINMAX, **TURTLE, "cell": "number"},
+)
+def coverage(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    poses = trace.pose_array(turtle_of(th))
+    cell = float(th.get("cell", 1.0))
+    cells = max(1, int(trace.arena_size // cell))  # the last sliver joins the last cell
+    if poses.size == 0:
+        return Verdict(False, "the turtle never published a pose")
+    ix = np.clip((poses[:, 1] / cell).astype(int), 0, cells - 1)
+    iy = np.clip((poses[:, 2] / cell).astype(int), 0, cells - 1)
+    visited = len(set(zip(ix.tolist(), iy.tolist(), strict=True)))
+    return measured("arena covered:", bounds(visited / (cells * cells), th))
+
+
+def _distance(poses: np.ndarray) -> float:
+    if len(poses) < 2:
+        return 0.0
+    return float(np.hypot(np.diff(poses[:, 1]), np.diff(poses[:, 2])).sum())
+
+
+@check("mean_speed", "Mean forward speed over the run, in m/s.", {**MINMAX, **TURTLE})
+def mean_speed(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    poses = trace.pose_array(turtle_of(th))
+    if len(poses) < 2:
+        return Verdict(False, "the turtle never moved")
+    speed = _distance(poses) / (poses[-1, 0] - poses[0, 0])
+    return measured("mean speed:", bounds(speed, th, " m/s"))
+
+
+@check("distance", "Metres the turtle drove.", {**MINMAX, **TURTLE})
+def distance(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    return measured("distance driven:", bounds(_distance(trace.pose_array(turtle_of(th))), th, " m"))
+
+
+@check(
+    "time_moving",
+    "Fraction of the run the turtle was moving (driving or turning), thresholds min and max "
+    "(0..1): turtlesim stops a turtle 1 s after its last velocity command.",
+    {**MINMAX, **TURTLE},
+)
+def time_moving(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    poses = trace.pose_array(turtle_of(th))
+    if len(poses) < 2:
+        return Verdict(False, "the turtle never published a pose")
+    # the pose's linear_velocity stays up while a wall holds the turtle back:
+    # that is still a driving turtle; a turn in place shows in theta
+    turning = np.abs(np.diff(np.unwrap(poses[:, 3]))) > 1e-6
+    moving = (poses[1:, 4] > 1e-6) | turning
+    share = float(moving.mean())
+    verdict = bounds(share, th)
+    wanted = []
+    if "min" in th:
+        wanted.append(f">= {th['min']:.0%}")
+    if "max" in th:
+        wanted.append(f"<= {th['max']:.0%}")
+    need = f" (needs {' and '.join(wanted)})" if wanted else ""
+    return Verdict(verdict.passed, f"moving {share:.0%} of the run{need}")
+
+
+@check(
+    "commands_per_pose",
+    "Velocity commands published per pose received: about 1 for a closed loop driven by the pose callback.",
+    {**MINMAX, **TURTLE},
+)
+def commands_per_pose(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    turtle = turtle_of(th)
+    poses = len(trace.pose_array(turtle))
+    if poses == 0:
+        return Verdict(False, "the turtle never published a pose")
+    ratio = len(trace.command_array(turtle)) / poses
+    return measured("commands per pose:", bounds(ratio, th))
+
+
+def fit_circle(x: np.ndarray, y: np.ndarray) -> tuple[float, float, float, float]:
+    """Least-squares circle through the points (Kasa's method): cx, cy, radius
+    and the RMS distance of the points from that circle."""
+    a = np.column_stack([x, y, np.ones_like(x)])
+    b = x * x + y * y
+    (p, q, c), *_ = np.linalg.lstsq(a, b, rcond=None)
+    cx, cy = p / 2.0, q / 2.0
+    radius = math.sqrt(max(c + cx * cx + cy * cy, 0.0))
+    rms = float(np.sqrt(np.mean((np.hypot(x - cx, y - cy) - radius) ** 2)))
+    return float(cx), float(cy), radius, rms
+
+
+@check(
+    "circle",
+    "The trajectory is a circle: radius between min_radius and max_radius, RMS error at most "
+    "max_error metres, at least min_laps laps; optionally its centre near `centre`.",
+    {
+        **TURTLE,
+        "min_radius": "number",
+        "max_radius": "number",
+        "max_error": "number",
+        "min_laps": "number",
+        "centre": "point",
+        "centre_tolerance": "number",
+    },
+)
+def circle(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    poses = trace.pose_array(turtle_of(th))
+    moving = poses[poses[:, 4] > 1e-6] if len(poses) else poses
+    if len(moving) < 10:
+        return Verdict(False, "the turtle barely moved: no circle to fit")
+    x, y = moving[:, 1], moving[:, 2]
+    cx, cy, radius, rms = fit_circle(x, y)
+    angles = np.unwrap(np.arctan2(y - cy, x - cx))
+    laps = abs(angles[-1] - angles[0]) / (2 * math.pi)
+    problems = []
+    if radius < th.get("min_radius", 0.0) or radius > th.get("max_radius", math.inf):
+        problems.append(f"radius {radius:.2f} m outside {th.get('min_radius', 0)}..{th.get('max_radius', 'any')} m")
+    if rms > th.get("max_error", 0.05):
+        problems.append(f"not round: points stray {rms:.2f} m from the best circle (max {th.get('max_error', 0.05)} m)")
+    if laps < th.get("min_laps", 1.0):
+        problems.append(f"only {laps:.2f} laps (needs {th.get('min_laps', 1.0)})")
+    if "centre" in th:
+        want_x, want_y = th["centre"]
+        off = math.hypot(cx - want_x, cy - want_y)
+        if off > th.get("centre_tolerance", 0.2):
+            problems.append(f"centre ({cx:.2f}, {cy:.2f}) is {off:.2f} m from ({want_x}, {want_y})")
+    if radius > 2 * trace.arena_size:
+        return Verdict(False, "the path is (nearly) straight: no circle")
+    measured = f"circle of radius {radius:.2f} m around ({cx:.2f}, {cy:.2f}), {laps:.1f} laps, RMS error {rms:.3f} m"
+    return Verdict(not problems, measured + (": " + "; ".join(problems) if problems else ""))
+
+
+_GOAL = {**TURTLE, "goal": "point", "tolerance": "number"}
+
+
+def _goal_distances(trace: Trace, th: Mapping[str, Any]) -> tuple[np.ndarray, np.ndarray]:
+    poses = trace.pose_array(turtle_of(th))
+    gx, gy = th["goal"]
+    return poses[:, 0], np.hypot(poses[:, 1] - gx, poses[:, 2] - gy)
+
+
+@check(
+    "time_to_goal",
+    "Simulated seconds until the turtle is within `tolerance` metres of `goal` (threshold max).",
+    {**_GOAL, "max": "number"},
+    required=("goal",),
+)
+def time_to_goal(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    times, dists = _goal_distances(trace, th)
+    tolerance = th.get("tolerance", 0.1)
+    inside = np.nonzero(dists <= tolerance)[0]
+    if inside.size == 0:
+        closest = f"{dists.min():.2f} m" if dists.size else "never moved"
+        return Verdict(False, f"never came within {tolerance} m of the goal (closest {closest})")
+    return measured("reached the goal after", bounds(float(times[inside[0]]), th, " s"))
+
+
+@check(
+    "final_error",
+    "Distance from `goal` at the end of the run, in metres (threshold max).",
+    {**_GOAL, "max": "number"},
+    required=("goal", "max"),
+)
+def final_error(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    _, dists = _goal_distances(trace, th)
+    if dists.size == 0:
+        return Verdict(False, "the turtle never published a pose")
+    return measured("distance from the goal at the end:", bounds(float(dists[-1]), th, " m"))
+
+
+@check(
+    "heading_error",
+    "Angle between the turtle's final heading and `theta` (radians), threshold max.",
+    {**TURTLE, "theta": "number", "max": "number"},
+    required=("theta", "max"),
+)
+def heading_error(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    poses = trace.pose_array(turtle_of(th))
+    if poses.size == 0:
+        return Verdict(False, "the turtle never published a pose")
+    error = abs(math.remainder(poses[-1, 3] - th["theta"], math.tau))
+    return measured("final heading error:", bounds(error, th, " rad"))

@@ -1,0 +1,65 @@
+"""Checks of safety: crashes, wall and obstacle hits, clearance."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+
+from turtletui.grading.checks.base import (
+    MINMAX,
+    TURTLE,
+    Verdict,
+    bounds,
+    check,
+    measured,
+    turtle_of,
+)
+from turtletui.grading.trace import Trace
+
+
+@check("no_crash", "The controller ran the whole scenario without crashing or being stopped.", {})
+def no_crash(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    if not trace.crashes:
+        return Verdict(True, "ran to the end without crashing")
+    return Verdict(False, "; ".join(c.summary() for c in trace.crashes))
+
+
+@check("wall_hits", "Times a turtle ran into a wall (default: at most 0).", {**MINMAX, **TURTLE})
+def wall_hits(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    hits = trace.wall_hits.get(turtle_of(th), 0)
+    return measured("wall hits:", bounds(hits, th, default_max=0))
+
+
+@check("obstacle_hits", "Times a turtle ran into an obstacle (default: at most 0).", {**MINMAX, **TURTLE})
+def obstacle_hits(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    hits = trace.obstacle_hits.get(turtle_of(th), 0)
+    return measured("obstacle hits:", bounds(hits, th, default_max=0))
+
+
+def clearances(trace: Trace, turtle: str = "turtle1") -> np.ndarray:
+    """Distance from the turtle to the nearest wall or obstacle at every pose."""
+    poses = trace.pose_array(turtle)
+    x, y = poses[:, 1], poses[:, 2]
+    size = trace.arena_size
+    gap = np.minimum(np.minimum(x, size - x), np.minimum(y, size - y))
+    if trace.obstacles:
+        from turtletui.sim.obstacles import nearest_distance
+
+        to_obstacles = [nearest_distance(trace.obstacles, px, py) for px, py in zip(x.tolist(), y.tolist(), strict=True)]
+        gap = np.minimum(gap, np.array(to_obstacles))
+    return gap
+
+
+@check(
+    "min_clearance",
+    "Closest the turtle came to a wall or an obstacle, in metres (threshold min).",
+    {**MINMAX, **TURTLE},
+    required=("min",),
+)
+def min_clearance(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    gaps = clearances(trace, turtle_of(th))
+    if gaps.size == 0:
+        return Verdict(False, "the turtle never published a pose")
+    return measured("closest to a wall or obstacle:", bounds(float(gaps.min()), th, " m"))

@@ -1,0 +1,220 @@
+"""Checks of what a controller asks of turtlesim: service calls, pen colours,
+action goals, spawned, killed and caught turtles."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+
+from turtletui.grading.checks.base import (
+    MINMAX,
+    TURTLE,
+    Verdict,
+    bounds,
+    check,
+    measured,
+    number_text,
+    turtle_of,
+)
+from turtletui.grading.trace import Trace
+
+
+@check(
+    "service_calls",
+    "Number of calls of `service` (e.g. /turtle1/set_pen), thresholds min and max.",
+    {**MINMAX, "service": "text"},
+    required=("service",),
+)
+def service_calls(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    count = sum(1 for call in trace.service_calls if call.service == th["service"])
+    return measured(f"calls of {th['service']}:", bounds(count, th))
+
+
+def _side_changes(x: np.ndarray, split: float) -> int:
+    sides = x > split
+    return int(np.count_nonzero(sides[1:] != sides[:-1]))
+
+
+@check(
+    "calls_per_side_change",
+    "Calls of `service` per crossing of the line x = `split_x`: a node that calls only when "
+    "the side changes makes about one (threshold max, default 1).",
+    {**MINMAX, **TURTLE, "service": "text", "split_x": "number"},
+)
+def calls_per_side_change(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    service = th.get("service", "/turtle1/set_pen")
+    poses = trace.pose_array(turtle_of(th))
+    changes = _side_changes(poses[:, 1], th.get("split_x", 5.5)) if len(poses) else 0
+    calls = sum(1 for call in trace.service_calls if call.service == service)
+    # the first side is set once at the start, so one call more than crossings is fine
+    ratio = calls / (changes + 1)
+    verdict = bounds(ratio, th, default_max=1.0)
+    return Verdict(
+        verdict.passed and calls > 0,
+        f"{calls} calls of {service} for {changes} crossings of x = {th.get('split_x', 5.5)}:"
+        f" {verdict.measured} per side change",
+    )
+
+
+@check(
+    "pen_colour_by_side",
+    "The pen draws one colour right of x = `split_x` and another left of it (`right` and "
+    "`left` optionally name them); `min` is the fraction of poses that must agree (default 0.95).",
+    {**TURTLE, "split_x": "number", "margin": "number", "right": "colour", "left": "colour", "min": "number"},
+)
+def pen_colour_by_side(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    poses = trace.pose_array(turtle_of(th))
+    split = th.get("split_x", 5.5)
+    margin = th.get("margin", 0.3)  # a service answer takes a moment near the line
+    need = th.get("min", 0.95)
+    colours = poses[:, 5:8].astype(int) if len(poses) else np.empty((0, 3), int)
+    found: dict[str, tuple[int, int, int]] = {}
+    shares: dict[str, float] = {}
+    for side, mask in (("right", poses[:, 1] > split + margin), ("left", poses[:, 1] < split - margin)):
+        side_colours = [tuple(c) for c in colours[mask].tolist()] if len(poses) else []
+        if not side_colours:
+            return Verdict(False, f"the turtle never drove on the {side} side of x = {split}")
+        wanted = tuple(th[side]) if side in th else max(set(side_colours), key=side_colours.count)
+        found[side] = wanted
+        shares[side] = side_colours.count(wanted) / len(side_colours)
+    passed = all(share >= need for share in shares.values()) and found["right"] != found["left"]
+    detail = ", ".join(f"{side} {found[side]} on {shares[side]:.0%} of poses" for side in ("right", "left"))
+    if found["right"] == found["left"]:
+        detail += ": the same colour on both sides"
+    return Verdict(passed, f"pen colour {detail} (needs {need:.0%})")
+
+
+@check(
+    "goals_sent",
+    "Number of goals sent to `action` (default /turtle1/rotate_absolute), thresholds min and max.",
+    {**MINMAX, "action": "text"},
+)
+def goals_sent(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    action = th.get("action", "/turtle1/rotate_absolute")
+    count = sum(1 for goal in trace.goals if goal.action == action)
+    return measured(f"goals sent to {action}:", bounds(count, th))
+
+
+@check("turtles_spawned", "Turtles spawned during the run, thresholds min and max.", MINMAX)
+def turtles_spawned(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    return measured("turtles spawned:", bounds(len(trace.spawned), th))
+
+
+@check("turtles_killed", "Turtles killed through /kill during the run, thresholds min and max.", MINMAX)
+def turtles_killed(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    return measured("turtles killed:", bounds(len(trace.killed), th))
+
+
+def _angle_error(theta: np.ndarray | float, target: float) -> np.ndarray:
+    """Absolute angle between headings and ``target``, in [0, pi] (wrapped)."""
+    return np.abs(np.remainder(np.asarray(theta) - target + math.pi, math.tau) - math.pi)
+
+
+@check(
+    "goals_reached",
+    "Share of the goals sent to `action` (default /turtle1/rotate_absolute) whose heading the "
+    "turtle reached, within `tolerance` radians (default 0.05), before the next goal replaced "
+    "it (threshold min, default 1).",
+    {**MINMAX, "action": "text", "tolerance": "number"},
+)
+def goals_reached(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    action = th.get("action", "/turtle1/rotate_absolute")
+    turtle = action.strip("/").split("/")[0]
+    tolerance = th.get("tolerance", 0.05)
+    goals = [goal for goal in trace.goals if goal.action == action]
+    if not goals:
+        return Verdict(False, f"no goals sent to {action}")
+    poses = trace.pose_array(turtle)
+    reached = 0
+    for i, goal in enumerate(goals):
+        start = goal.t
+        end = goals[i + 1].t if i + 1 < len(goals) else math.inf
+        if end <= start:  # replaced at once: turtlesim aborts it before it starts
+            continue
+        window = poses[(poses[:, 0] >= start) & (poses[:, 0] <= end)] if len(poses) else poses
+        if len(window) and _angle_error(window[:, 3], float(goal.goal.theta)).min() <= tolerance:
+            reached += 1
+    share = reached / len(goals)
+    verdict = bounds(share, {"min": th.get("min", 1.0), "max": th.get("max")})
+    return Verdict(verdict.passed, f"{reached} of {len(goals)} goals reached: {verdict.measured}")
+
+
+@check(
+    "headings_faced",
+    "The turtle stopped facing each of `headings` (radians, in this order) within `tolerance` "
+    "radians (default 0.05); stopped means it did not turn or move between two poses.",
+    {**TURTLE, "headings": "numbers", "tolerance": "number"},
+    required=("headings",),
+)
+def headings_faced(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    headings = th["headings"]
+    tolerance = th.get("tolerance", 0.05)
+    poses = trace.pose_array(turtle_of(th))
+    if len(poses) < 2:
+        return Verdict(False, "the turtle never published a pose")
+    still = (np.abs(np.diff(poses[:, 3])) < 1e-6) & (poses[1:, 4] < 1e-6)
+    stops = poses[1:][still][:, 3]
+    # the headings it stopped at, once per stop (a long stop is many poses)
+    stopped: list[float] = []
+    for theta in stops.tolist():
+        if not stopped or _angle_error(theta, stopped[-1]) > tolerance:
+            stopped.append(theta)
+    shown = ", ".join(f"{h:.2f}" for h in stopped[:8]) + (", ..." if len(stopped) > 8 else "")
+    position = 0
+    for heading in headings:
+        while position < len(stopped) and _angle_error(stopped[position], heading) > tolerance:
+            position += 1
+        if position == len(stopped):
+            where = f"stopped at {shown} rad" if stopped else "never stopped"
+            return Verdict(False, f"never stopped facing {heading:.2f} rad after the headings before it ({where})")
+        position += 1
+    wanted = ", ".join(f"{h:.2f}" for h in headings)
+    return Verdict(True, f"stopped facing {wanted} rad in this order (stopped at {shown} rad)")
+
+
+@check(
+    "turtles_caught",
+    "Turtles killed through /kill while the chasing `turtle` (default turtle1) was within "
+    "`radius` metres of them (default 1.0); a kill of a turtle that does not exist or is far "
+    "away does not count (thresholds min and max).",
+    {**MINMAX, **TURTLE, "radius": "number"},
+)
+def turtles_caught(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    chaser = turtle_of(th)
+    radius = th.get("radius", 1.0)
+    hunter = trace.pose_array(chaser)
+    caught = missing = far = 0
+    notes = []
+    killed_at: dict[str, float] = {}
+    for call in trace.service_calls:
+        if call.service != "/kill":
+            continue
+        name = call.request.name
+        if name == chaser:
+            notes.append(f"killed the chaser {chaser} itself")
+            continue
+        target = trace.pose_array(name)
+        before = target[target[:, 0] <= call.t] if len(target) else target
+        # alive: it published a pose in the last few ticks and was not killed since
+        if (
+            len(before) == 0
+            or call.t - before[-1, 0] > 0.05
+            or killed_at.get(name, -math.inf) >= before[-1, 0]
+        ):
+            missing += 1
+            continue
+        killed_at[name] = call.t
+        near = hunter[hunter[:, 0] <= call.t] if len(hunter) else hunter
+        if len(near) and math.hypot(near[-1, 1] - before[-1, 1], near[-1, 2] - before[-1, 2]) <= radius:
+            caught += 1
+        else:
+            far += 1
+    if missing:
+        notes.append(f"{missing} kills of turtles that did not exist")
+    if far:
+        notes.append(f"{far} turtles killed from more than {number_text(radius)} m away")
+    verdict = measured("turtles caught:", bounds(caught, th))
+    return Verdict(verdict.passed, verdict.measured + ("; " + "; ".join(notes) if notes else ""))
