@@ -71,6 +71,8 @@ class Check:
 
 
 def kind_problem(kind: str, value: Any) -> str | None:
+    """Why ``value`` is not a threshold of ``kind`` ("number", "integer", "text",
+    "pattern", "numbers", "point", "colour"), or None."""
     number = isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
     if kind == "number":
         return None if number else "must be a number"
