@@ -379,7 +379,7 @@ def test_params_of_other_nodes_and_setters(sim, cli):
     refused = cli.run("ros2 param set /my_node speed 3.0")
     assert refused.error and refused.lines[0].startswith("Setting parameter failed:")
     seen = []
-    cli.param_setters["/my_node"] = lambda name, value: seen.append((name, value))
+    node.parameter_setter = lambda name, value: seen.append((name, value))
     assert ok(cli, "ros2 param set /my_node speed 3").lines == ["Set parameter successful"]
     assert seen == [("speed", 3)]
 

@@ -309,6 +309,7 @@ class Node:
         self._graph = host.graph
         self._record = host.graph.add_node(node_name, namespace, host.owner)
         self._record.remaps = remaps
+        self._record.parameter_setter = self._set_from_outside
         self._parameters: dict[str, Parameter] = {}
         self._descriptors: dict[str, ParameterDescriptor] = {}
         self._on_set: list[Callable] = []
@@ -630,6 +631,14 @@ class Node:
     def set_parameters(self, parameter_list: list[Parameter]) -> list[SetParametersResult]:
         """Set parameters one by one; each gets its own result."""
         return [self._set_parameters([parameter]) for parameter in parameter_list]
+
+    def _set_from_outside(self, name: str, value: Any) -> str | None:
+        """``ros2 param set``: why the node refused, or None."""
+        try:
+            result = self.set_parameters([Parameter(name, value=value)])[0]
+        except (ParameterNotDeclaredException, InvalidParameterTypeException) as err:
+            return str(err)
+        return None if result.successful else (result.reason or "the node refused it")
 
     def set_parameters_atomically(self, parameter_list: list[Parameter]) -> SetParametersResult:
         return self._set_parameters(parameter_list)

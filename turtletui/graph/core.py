@@ -41,6 +41,9 @@ class NodeRecord:
     parameters: dict[str, Any] = field(default_factory=dict)
     remaps: dict[str, str] = field(default_factory=dict)
     alive: bool = True
+    parameter_setter: Callable[[str, Any], str | None] | None = field(default=None, repr=False)
+    """How ``ros2 param set`` reaches the node: ``setter(name, value)`` returns
+    why it refused, or None; None when nothing outside the node can set them."""
 
     @property
     def fqn(self) -> str:

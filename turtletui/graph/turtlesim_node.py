@@ -83,6 +83,7 @@ class TurtlesimNode:
     def __init__(self, graph: Graph, world: World | None = None) -> None:
         self.graph = graph
         self.node = graph.add_node(self.NAME, owner="sim")
+        self.node.parameter_setter = self.set_parameter
         self.world = world if world is not None else World(spawn_turtle1=False)
         self._turtles: dict[str, _TurtleEndpoints] = {}
         self._goals: dict[int, GoalHandle] = {}

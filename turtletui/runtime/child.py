@@ -21,7 +21,7 @@ from collections.abc import Callable
 from typing import Any
 
 from turtletui.graph.core import Graph, NodeRecord, Publisher, Subscription, Topic
-from turtletui.graph.logs import LogRecord
+from turtletui.graph.logs import WARN, LogRecord
 from turtletui.interfaces import get_interface, interface_name, to_values, trusted_from_values
 from turtletui.runtime import wire
 from turtletui.runtime.host import CallbackTracking
@@ -201,11 +201,23 @@ class ChildGraph(Graph):
                 self.out["resp"].append([req_id, to_values(response)])
 
             ready.append((OWNER, lambda s=service, q=request, r=respond: s.handler(q, r)))
+        for node_id, name, value in message.get("params", ()):
+            node = next((n for n in self.nodes if getattr(n, "wire_id", None) == node_id), None)
+            if node is not None and node.parameter_setter is not None:
+                ready.append((OWNER, lambda n=node, k=name, v=value: self._set_parameter(n, k, v)))
         if "services" in message:
             self.remote_services = set(message["services"])
         if "actions" in message:
             self.remote_actions = set(message["actions"])
             self.remote_action_types = {name: get_interface(t) for name, t in message["action_types"].items()}
+
+
+    def _set_parameter(self, node: NodeRecord, name: str, value: Any) -> None:
+        """``ros2 param set`` from the app; the parent checked the name and type,
+        the node's own on-set callbacks may still refuse."""
+        reason = node.parameter_setter(name, value)
+        if reason:
+            self.log(node.name, WARN, f"Setting parameter {name} failed: {reason}")
 
 
 class ChildHost(CallbackTracking):

@@ -82,6 +82,7 @@ class SandboxHost:
         self._responses: list = []
         self._goal_events: list = []
         self._requests: list = []
+        self._params: list = []
         self._poll = False
         self._instant = -1
         self._rounds = 0
@@ -246,7 +247,7 @@ class SandboxHost:
             return False
         if self._awaiting is not None:
             return True  # real time: see whether the answer has come
-        if self._inbox or self._responses or self._goal_events or self._requests:
+        if self._inbox or self._responses or self._goal_events or self._requests or self._params:
             return True
         if self._poll:
             return True
@@ -275,6 +276,8 @@ class SandboxHost:
             message["goals"], self._goal_events = self._goal_events, []
         if self._requests:
             message["requests"], self._requests = self._requests, []
+        if self._params:
+            message["params"], self._params = self._params, []
         graph = self.graph
         keys = graph.services.keys(), graph.action_servers.keys()
         known = self._known_keys
@@ -583,6 +586,23 @@ class SandboxHost:
                 self._terminate()
             raise _Stop
 
+    def _set_parameter(self, node: NodeRecord, wire_id: int, name: str, value: Any) -> str | None:
+        """``ros2 param set`` on a sandboxed node: refused here if ROS would refuse
+        the type, else sent with the next exchange (the node's own on-set
+        callbacks may still refuse it, and its log then says why)."""
+        if self.finished:
+            return f"{node.fqn} is not running"
+        from turtletui.compat.node import InvalidParameterTypeException
+        from turtletui.compat.parameter import Parameter, type_matches
+
+        if name in node.parameters:
+            expected = Parameter.Type.from_parameter_value(node.parameters[name])
+            if expected is not Parameter.Type.NOT_SET and not type_matches(expected, value):
+                # what the node would answer (unless it declared dynamic typing)
+                return str(InvalidParameterTypeException(Parameter(name, value=value), expected))
+        self._params.append([wire_id, name, value])
+        return None
+
     def _goal_accepted(self, goal_id: int, handle: Any) -> None:
         self._goals[goal_id] = handle
         self._goal_events.append([goal_id, "accepted", None])
@@ -592,7 +612,11 @@ class SandboxHost:
         kind = decl[0]
         if kind == "node":
             _, wire_id, name, namespace = decl
-            self._nodes[wire_id] = graph.add_node(str(name), str(namespace), self.owner)
+            node = graph.add_node(str(name), str(namespace), self.owner)
+            node.parameter_setter = lambda key, value, node=node, wire_id=wire_id: self._set_parameter(
+                node, wire_id, key, value
+            )
+            self._nodes[wire_id] = node
         elif kind == "rmnode":
             node = self._nodes.pop(decl[1], None)
             if node is not None:

@@ -29,9 +29,8 @@ API
 Like the real CLI, every streaming command makes a hidden node
 (``/_ros2cli_1``, ``/_ros2cli_2``, ...) that ``ros2 node list`` does not show
 (``-a`` does). ``cli.streams`` holds the streams still running and
-``cli.close_all()`` stops them. ``cli.param_setters`` maps a node's full name
-to ``setter(name, value) -> reason or None`` for ``ros2 param set``;
-``/turtlesim`` is there from the start, the app may register controllers'.
+``cli.close_all()`` stops them. ``ros2 param set`` goes through the node's
+``parameter_setter`` (turtlesim, in-process and sandboxed controllers have one).
 
 Commands
 --------
@@ -949,10 +948,6 @@ class Ros2Cli:
         self.graph: Graph = sim.graph
         self.streams: list[Stream] = []
         """Streams still running, oldest first."""
-        self.param_setters: dict[str, Callable[[str, Any], str | None]] = {
-            sim.turtlesim.node.fqn: sim.turtlesim.set_parameter,
-        }
-        """Node full name -> ``setter(name, value)`` returning a refusal reason or None."""
         self._hidden = 0
         self._verbs: dict[str, dict[str, tuple[_Verb, Callable[..., CommandResult]]]] = {
             "node": {
@@ -1327,7 +1322,8 @@ class Ros2Cli:
         if isinstance(value, dict):
             value = text
         params = dict(node.parameters)
-        setter = self.param_setters.get(node.name)
+        record = next((n for n in self.graph.nodes if n.fqn == node.name), None)
+        setter = None if record is None else record.parameter_setter
         if name not in params:
             reason = f"parameter '{name}' is not declared by {node.name}{_hint(name, sorted(params))}"
         elif setter is None:
