@@ -25,7 +25,7 @@ _FORMAT_HELP = "table (default), json, junit, gradescope, csv or github."
 
 def grade(
     submissions: list[Path] = typer.Argument(
-        ..., metavar="SUBMISSION...", help="A controller file, a student's folder, or a class folder of them."
+        ..., metavar="SUBMISSION", help="A controller file, a student's folder, or a class folder of them."
     ),
     lesson_id: str = typer.Option(..., "--lesson", metavar="ID", help="The lesson to grade against (id or file)."),
     fmt: str = typer.Option("table", "--format", metavar="FORMAT", help=_FORMAT_HELP),
@@ -37,7 +37,7 @@ def grade(
         help="Keep each student's result and recordings here (default: turtletui-grades/LESSON).",
     ),
     jobs: int = typer.Option(
-        0, "--jobs", "-j", min=0, help="Scenario runs in parallel (default: one per CPU)."
+        0, "--jobs", "-j", min=0, metavar="N", show_default=False, help="Scenario runs in parallel (default: one per CPU)."
     ),
     force: bool = typer.Option(False, "--force", help="Regrade submissions whose results are kept."),
     fail_under: float = typer.Option(
