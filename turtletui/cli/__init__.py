@@ -31,15 +31,23 @@ app.command("replay")(replay_cmd.replay)
 app.add_typer(autograder_cmd.app, name="autograder")
 
 
-@app.callback()
-def _root(
-    version: bool = typer.Option(False, "--version", help="Print the version and exit.", is_eager=True),
-) -> None:
-    if version:
+def _print_version(value: bool) -> None:
+    # An option callback: it runs while the line is parsed, before Click asks
+    # for a command (a check in _root's body came too late: "Missing command").
+    if value:
         from turtletui import __version__
 
         typer.echo(f"turtletui {__version__}")
         raise typer.Exit()
+
+
+@app.callback()
+def _root(
+    version: bool = typer.Option(
+        False, "--version", help="Print the version and exit.", is_eager=True, callback=_print_version
+    ),
+) -> None:
+    """ROS 2's turtlesim in your terminal."""
 
 
 def split_ros_args(argv: list[str]) -> tuple[list[str], list[str]]:
