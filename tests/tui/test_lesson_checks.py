@@ -10,7 +10,7 @@ from support.pilot import SIZE, pilot_test, wait_for
 
 from turtletui.runtime.loader import ControllerSpec
 from turtletui.tui.app import TurtleApp
-from turtletui.tui.lesson_checks import describe
+from turtletui.tui.lesson_checks import describe, results_dir
 
 LESSON = """\
 +++
@@ -72,9 +72,9 @@ def test_describe_groups_failures_by_check_with_the_first_feedback():
     text = describe(report(tests, recordings=["r/b.jsonl"]), "", 0)
     assert "**Score: 1 / 2**" in text
     assert "- ✗ `wall_hits`: failed in 1 of 2 runs (b)" in text
-    assert "  > Turn earlier." in text
+    assert "  > wall hits: 2\n  >\n  > Turn earlier." in text
     assert "- ✓ `no_crash`: passed in all 1 runs" in text
-    assert "turtletui replay r/b.jsonl" in text
+    assert "- `turtletui replay r/b.jsonl`" in text
 
 
 def test_describe_says_why_the_checks_could_not_run():
@@ -83,8 +83,18 @@ def test_describe_says_why_the_checks_could_not_run():
     assert "not readable" in describe("{", "", 0)
 
 
+def test_check_results_are_kept_in_the_users_cache(tmp_path: Path, monkeypatch) -> None:
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "cache"))
+    assert results_dir(Path("/lessons/drive.md")) == tmp_path / "cache" / "turtletui" / "checks" / "drive"
+
+
+def test_the_check_key_grades_the_running_file_and_shows_the_result(tmp_path: Path, monkeypatch) -> None:
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "cache"))  # the grading child writes there
+    _check_key_scenario(tmp_path)
+
+
 @pilot_test
-async def test_the_check_key_grades_the_running_file_and_shows_the_result(tmp_path: Path) -> None:
+async def _check_key_scenario(tmp_path: Path) -> None:
     lesson = tmp_path / "drive.md"
     lesson.write_text(LESSON)
     node = tmp_path / "mover.py"

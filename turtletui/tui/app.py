@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import gc
-import tempfile
 import time
 from collections import deque
 from collections.abc import Iterable, Sequence
@@ -110,7 +109,6 @@ class TurtleApp(App):
         super().__init__()
         self._replay = replay
         """A recorded run to play instead of controllers (turtletui replay)."""
-        self._checks_dir: tempfile.TemporaryDirectory | None = None
         self._controllers = list(controllers)
         self._lesson = lesson
         self._ascii = ascii
@@ -197,8 +195,6 @@ class TurtleApp(App):
     def on_unmount(self) -> None:
         for stream in self._streams:
             stream.close()
-        if self._checks_dir is not None:
-            self._checks_dir.cleanup()
         if self.session is not None:
             self.session.close()
 
@@ -356,9 +352,7 @@ class TurtleApp(App):
     async def _check(self, controller: Path) -> None:
         import asyncio
 
-        if self._checks_dir is None:
-            self._checks_dir = tempfile.TemporaryDirectory(prefix="turtletui-checks-")
-        command = lesson_checks.grade_command(controller, self._lesson, Path(self._checks_dir.name))
+        command = lesson_checks.grade_command(controller, self._lesson, lesson_checks.results_dir(self._lesson))
         process = await asyncio.create_subprocess_exec(
             *command, stdout=asyncio.subprocess.PIPE, stderr=asyncio.subprocess.PIPE
         )

@@ -8,10 +8,23 @@ keeps its 16 ms loop while the scenarios run.
 from __future__ import annotations
 
 import json
+import os
 import sys
 from pathlib import Path
 
 RUNNING = "## Your checks\n\n*Running the lesson's scenarios...*\n"
+
+
+def results_dir(lesson: Path) -> Path:
+    """Where the app keeps check results and recordings: the user's cache, so
+    that ``turtletui replay`` still finds them after the app is closed."""
+    cache = Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache")
+    return cache / "turtletui" / "checks" / lesson.stem
+
+
+def _short(path: str) -> str:
+    home = str(Path.home())
+    return "~" + path[len(home) :] if path.startswith(home + os.sep) else path
 
 
 def grade_command(controller: Path, lesson: Path, results: Path) -> list[str]:
@@ -61,9 +74,10 @@ def describe(stdout: str, stderr: str, returncode: int) -> str:
             continue
         where = ", ".join(t["scenario"] for t in failed)
         lines.append(f"- ✗ `{check}`: failed in {len(failed)} of {len(tests)} runs ({where})")
-        lines += [f"  > {line}" for line in (failed[0].get("output") or "").splitlines()]
+        # each line its own quoted paragraph: Markdown would run them together
+        lines.append("\n  >\n".join(f"  > {line}" for line in (failed[0].get("output") or "").splitlines()))
     if submission.get("recordings"):
         lines += ["", "Watch a failed run again:", ""]
-        lines += [f"    turtletui replay {path}" for path in submission["recordings"]]
+        lines += [f"- `turtletui replay {_short(path)}`" for path in submission["recordings"]]
     lines += ["", "Press `k` to run the checks again after you change your file."]
     return "\n".join(lines) + "\n"
