@@ -138,3 +138,13 @@ def test_new_with_a_lesson_without_starter(tmp_path):
     stderr = one_line_error(invoke("new", "--lesson", "plain", "--folder", str(tmp_path), str(out)))
     assert "lesson 'plain' has no starter file" in stderr
     assert not out.exists()
+
+
+def test_lessons_reports_an_unknown_check_or_world_before_any_grading(tmp_path):
+    check = write_lesson(tmp_path, "c.md", 'id = "c"\ntitle = "C"\n[[checks]]\nname = "wal_hits"\n')
+    stderr = one_line_error(invoke("lessons", "--folder", str(tmp_path)))
+    assert f"{check}:4: check 'wal_hits' is not a registered check (did you mean 'wall_hits'?)" in stderr
+    check.unlink()
+    write_lesson(tmp_path, "w.md", 'id = "w"\ntitle = "W"\nworld = "moon"\n')
+    stderr = one_line_error(invoke("lessons", "--folder", str(tmp_path)))
+    assert "unknown world 'moon'" in stderr

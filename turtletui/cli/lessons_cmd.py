@@ -23,11 +23,16 @@ def lessons(
     plugin: list[Path] = typer.Option(None, "--plugin", metavar="PATH", help=_PLUGIN_HELP),
 ) -> None:
     """List the lessons turtletui found (bundled, from plugins, from --folder)."""
+    from turtletui.grading.engine import GradingError, available_checks, validate
     from turtletui.lessons.loader import LessonError, discover_lessons
 
     try:
         found = discover_lessons(folder or (), plugin or ())
-    except LessonError as err:
+        # a misspelt check or world is found now, not when a class is graded
+        known = available_checks(plugin or ())
+        for item in found:
+            validate(item, plugins=plugin or (), checks=known)
+    except (LessonError, GradingError) as err:
         fail(str(err))
     if as_json:
         import json

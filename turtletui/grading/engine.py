@@ -137,14 +137,27 @@ def prepare(
 ) -> GradingPlan:
     """Check that every check a lesson names exists and takes its thresholds,
     and lay out its scenario runs."""
-    import difflib
-
-    known = available_checks(plugins) if checks is None else checks
     shown = display_path(lesson.path)
     if not lesson.scenarios:
         raise GradingError(f"{shown}: lesson {lesson.id!r} has no [[scenarios]] to grade")
     if not lesson.checks:
         raise GradingError(f"{shown}: lesson {lesson.id!r} has no [[checks]] to grade")
+    resolved, specs = validate(lesson, plugins=plugins, checks=checks)
+    worlds = {name: (lambda seed: None) if spec is None else spec.build for name, spec in specs.items()}
+    runs = scenario_runs(lesson, lambda name: () if specs[name] is None else specs[name].obstacles)
+    return GradingPlan(lesson, resolved, tuple(runs), worlds)
+
+
+def validate(
+    lesson: Lesson, *, plugins: Sequence[str | Path] = (), checks: dict[str, Check] | None = None
+) -> tuple[tuple[tuple[CheckSpec, Check], ...], dict[str, WorldSpec | None]]:
+    """The lesson's checks resolved against the registered ones, and the worlds
+    its scenarios name; GradingError (one line, file:line) for an unknown check,
+    a threshold it does not take, or an unknown world."""
+    import difflib
+
+    known = available_checks(plugins) if checks is None else checks
+    shown = display_path(lesson.path)
     resolved = []
     for spec in lesson.checks:
         where = f"{shown}:{spec.line}" if spec.line else shown
@@ -159,10 +172,8 @@ def prepare(
         if problem:
             raise GradingError(f"{where}: {problem}")
         resolved.append((spec, check))
-    specs = {name: _world_spec(name, plugins, shown) for name in {s.world or lesson.world for s in lesson.scenarios}}
-    worlds = {name: (lambda seed: None) if spec is None else spec.build for name, spec in specs.items()}
-    runs = scenario_runs(lesson, lambda name: () if specs[name] is None else specs[name].obstacles)
-    return GradingPlan(lesson, tuple(resolved), tuple(runs), worlds)
+    names = {s.world or lesson.world for s in lesson.scenarios} | {lesson.world}
+    return tuple(resolved), {name: _world_spec(name, plugins, shown) for name in names}
 
 
 def _world_spec(name: str, plugins: Sequence[str | Path], shown: str) -> WorldSpec | None:
