@@ -8,7 +8,6 @@
 
 from __future__ import annotations
 
-import struct
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
@@ -27,8 +26,6 @@ if TYPE_CHECKING:
     from turtletui.runtime.sandbox import Limits
     from turtletui.sim import World
 
-_F32X3 = struct.Struct("<3f")
-"""A pose's x, y, theta as turtlesim publishes them (float32)."""
 
 
 @dataclass
@@ -140,14 +137,8 @@ def run(
         elif kind == "topic" and keep_poses and payload[0].name.endswith("/pose"):
             topic, msg = payload
             name = topic.name[1:-5]
-            turtle = sim.world.turtles.get(name)
-            # Only what the simulator publishes: a controller may publish a Pose
-            # there too (as in ROS), but the trajectory recorded is the turtle's.
-            if turtle is None or (msg.x, msg.y, msg.theta) != _F32X3.unpack(
-                _F32X3.pack(turtle.x, turtle.y, turtle.theta)
-            ):
-                return
-            poses.setdefault(name, []).append((sim.t, msg.x, msg.y, msg.theta))
+            if sim.turtlesim.published(name, msg):
+                poses.setdefault(name, []).append((sim.t, msg.x, msg.y, msg.theta))
 
     if keep_poses or keep_calls:
         sim.graph.taps.append(tap)

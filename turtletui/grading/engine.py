@@ -190,10 +190,8 @@ def _world_spec(name: str, plugins: Sequence[str | Path], shown: str) -> WorldSp
 
 def place_turtle(sim: Simulation, start: tuple[float, float, float], label: str) -> None:
     """Put turtle1 at a scenario's start before anything has run (nothing drawn)."""
-    import struct
-
+    sim.world.place("turtle1", *start)
     turtle = sim.world.turtles["turtle1"]
-    turtle.x, turtle.y, turtle.theta = struct.unpack("3f", struct.pack("3f", *start))
     sim.graph.log(
         "turtletui",
         INFO,

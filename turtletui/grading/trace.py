@@ -8,7 +8,6 @@ except what the controller published and called, as on a real robot.
 
 from __future__ import annotations
 
-import struct
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -18,8 +17,6 @@ from turtletui.graph.logs import LogRecord
 from turtletui.runtime.report import CrashReport
 from turtletui.runtime.simulation import Simulation
 from turtletui.sim.constants import ARENA_SIZE
-
-_F32X3 = struct.Struct("<3f")
 
 POSE_COLUMNS = ("t", "x", "y", "theta", "speed", "r", "g", "b", "pen_off")
 """Columns of :attr:`Trace.poses` arrays, one row per pose turtlesim published."""
@@ -127,13 +124,9 @@ class TraceCollector:
             self._goals.append(GoalSent(self.sim.t, name, goal))
 
     def _pose(self, name: str, msg: Any) -> None:
-        turtle = self.sim.world.turtles.get(name)
-        # Only what the simulator publishes: a controller may publish a Pose
-        # there too (as in ROS), but the trajectory judged is the turtle's own.
-        if turtle is None or (msg.x, msg.y, msg.theta) != _F32X3.unpack(
-            _F32X3.pack(turtle.x, turtle.y, turtle.theta)
-        ):
+        if not self.sim.turtlesim.published(name, msg):
             return
+        turtle = self.sim.world.turtles[name]
         r, g, b = turtle.pen_color
         self._poses.setdefault(name, []).append(
             (self.sim.t, turtle.x, turtle.y, turtle.theta, msg.linear_velocity, r, g, b, 0.0 if turtle.pen_on else 1.0)

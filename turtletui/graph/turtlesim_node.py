@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import struct
 from array import array
 from typing import Any
@@ -46,9 +47,14 @@ _F32_unpack = _F32.unpack
 _PARAMETERS = ("background_r", "background_g", "background_b", "holonomic")
 
 
+@functools.cache
+def _packer(count: int) -> struct.Struct:
+    return struct.Struct(f"{count}f")
+
+
 def _float32(*values: float) -> tuple[float, ...]:
     """Round to float32 as the Pose message does on the wire."""
-    packer = _F32 if len(values) == 5 else struct.Struct(f"{len(values)}f")
+    packer = _packer(len(values))
     try:
         return packer.unpack(packer.pack(*values))
     except OverflowError:
@@ -185,6 +191,13 @@ class TurtlesimNode:
                 ranges=array("f", ranges.tobytes()),
             )
             graph.publish(topic, msg)
+
+    def published(self, turtle: str, pose: Any) -> bool:
+        """Whether ``pose`` is what this node publishes for ``turtle`` now: a
+        controller may publish a Pose on the same topic, as in ROS, but a
+        trajectory is the turtle's own."""
+        state = self.world.turtles.get(turtle)
+        return state is not None and (pose.x, pose.y, pose.theta) == _float32(state.x, state.y, state.theta)
 
     # -- parameters -----------------------------------------------------------
     def set_parameter(self, name: str, value: Any) -> str | None:

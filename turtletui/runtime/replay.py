@@ -11,7 +11,6 @@ line is a header ``{"recording": 1, "start": [x, y, theta], "seed": ...,
 from __future__ import annotations
 
 import json
-import struct
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -22,7 +21,6 @@ from turtletui.graph.logs import INFO
 from turtletui.interfaces import from_dict, get_interface
 from turtletui.runtime.simulation import Simulation
 
-SIMULATOR_NODES = ("turtlesim",)
 _SIMULATOR_TOPIC_SUFFIXES = ("/pose", "/color_sensor", "/scan")
 
 
@@ -108,8 +106,7 @@ def install_replay(sim: Simulation, recording: Recording) -> None:
     graph: Graph = sim.graph
     start = recording.start
     if start is not None and "turtle1" in sim.world.turtles:
-        turtle = sim.world.turtles["turtle1"]
-        turtle.x, turtle.y, turtle.theta = struct.unpack("3f", struct.pack("3f", *start))
+        sim.world.place("turtle1", *start)
     node = graph.add_node("replay", owner="replay")
     publishers: dict[str, Any] = {}
     graph.log("turtletui", INFO, f"replaying {recording.path.name}: {len(recording.inputs)} recorded inputs")

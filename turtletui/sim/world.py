@@ -167,6 +167,12 @@ class World:
         self.events.append(Spawned(name, turtle.x, turtle.y, turtle.theta))
         return name
 
+    def place(self, name: str, x: float, y: float, theta: float) -> None:
+        """Put a turtle somewhere before time runs (a scenario's start): no line
+        is drawn; float32-rounded as a spawn is."""
+        turtle = self.turtle(name)
+        turtle.x, turtle.y, turtle.theta = _F32.unpack(_F32.pack(x, y, theta))
+
     def kill(self, name: str) -> None:
         """Remove a turtle."""
         turtle = self.turtles.pop(name, None)
