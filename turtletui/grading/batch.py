@@ -32,6 +32,7 @@ from turtletui.grading.engine import (
     grade_run,
     prepare,
 )
+from turtletui.grading.reports import write_text_atomic
 from turtletui.grading.results import GradeReport, SubmissionResult
 from turtletui.grading.submissions import Submission
 from turtletui.lessons.loader import load_lesson
@@ -56,8 +57,8 @@ class ResultStore:
             probe.unlink()
         except OSError as err:
             raise OSError(f"{folder}: cannot write results there ({err.strerror or err})") from None
-        self._kept: dict[Path, bytes] = {}
-        """The bytes of every file this store wrote or reused, for :meth:`restore`."""
+        self._kept: dict[Path, str] = {}
+        """The text of every file this store wrote or reused, for :meth:`restore`."""
 
     def path(self, student: str) -> Path:
         return self.folder / f"{_safe(student)}.json"
@@ -69,8 +70,8 @@ class ResultStore:
         """The stored result of the same files under the same lesson, or None."""
         path = self.path(submission.student)
         try:
-            raw = path.read_bytes()
-            data = json.loads(raw.decode("utf-8"))
+            raw = path.read_text(encoding="utf-8")
+            data = json.loads(raw)
             if data.get("store") != STORE_VERSION or data.get("key") != self.key:
                 return None
             if data.get("fingerprint") != submission.fingerprint():
@@ -90,8 +91,8 @@ class ResultStore:
             "result": result.as_dict(),
         }
         target = self.path(submission.student)
-        payload = json.dumps(data, indent=1).encode("utf-8")
-        self._write(target, payload)
+        payload = json.dumps(data, indent=1)
+        write_text_atomic(target, payload)
         self._kept[target] = payload
 
     def restore(self) -> None:
@@ -101,23 +102,11 @@ class ResultStore:
         student code runs any more."""
         for target, payload in self._kept.items():
             try:
-                if target.read_bytes() == payload:
+                if target.read_text(encoding="utf-8") == payload:
                     continue
-            except OSError:
+            except (OSError, ValueError):
                 pass
-            self._write(target, payload)
-
-    @staticmethod
-    def _write(target: Path, payload: bytes) -> None:
-        tmp = target.with_name(f".{target.name}.{os.getpid()}.tmp")
-        try:
-            with open(tmp, "wb") as file:
-                file.write(payload)
-                file.flush()
-                os.fsync(file.fileno())
-            os.replace(tmp, target)
-        finally:
-            tmp.unlink(missing_ok=True)
+            write_text_atomic(target, payload)
 
 
 def _safe(name: str) -> str:
