@@ -206,25 +206,10 @@ def run_scenario(
     *,
     limits: Limits | None = None,
     record: str | Path | None = None,
-) -> Trace:
-    """Run one scenario in the grader's own simulation and return its trace
-    (and write its recording to ``record``). Raises KeyboardInterrupt if
-    Ctrl-C cut the run short."""
-    trace, recorder = _run_recorded(plan, run, controllers, limits, record)
-    if recorder is not None:
-        recorder.close(keep=True)
-    return trace
-
-
-def _run_recorded(
-    plan: GradingPlan,
-    run: ScenarioRun,
-    controllers: Sequence[ControllerSpec],
-    limits: Limits | None,
-    record: str | Path | None,
 ) -> tuple[Trace, Recorder | None]:
-    """The run's trace and, with ``record``, its recording in memory: the
-    caller closes it, keeping the file or not."""
+    """Run one scenario in the grader's own simulation: its trace and, with
+    ``record``, its recording in memory (the caller closes it, keeping the
+    file or not). Raises KeyboardInterrupt if Ctrl-C cut the run short."""
     from turtletui.api import run as run_controllers
 
     scenario = run.scenario
@@ -312,7 +297,7 @@ def grade_run(
     path = None if recordings is None or run.hidden else recordings / f"{_file_name(run.label)}.jsonl"
     if path is not None:
         recordings.mkdir(parents=True, exist_ok=True)
-    trace, recorder = _run_recorded(plan, run, controllers, limits, path)
+    trace, recorder = run_scenario(plan, run, controllers, limits=limits, record=path)
 
     def verdict_of(check: Check, thresholds: dict[str, Any]) -> Verdict:
         if trace.crashes and check.name != "no_crash":
