@@ -23,6 +23,7 @@ from turtletui.grading.trace import Trace, TraceCollector
 from turtletui.graph.logs import INFO, LogRecord
 from turtletui.lessons.loader import display_path
 from turtletui.lessons.model import CheckSpec, Lesson, Scenario
+from turtletui.messages import did_you_mean
 from turtletui.runtime.loader import ControllerSpec
 from turtletui.runtime.recorder import Recorder
 
@@ -154,8 +155,6 @@ def validate(
     """The lesson's checks resolved against the registered ones, and the worlds
     its scenarios name; GradingError (one line, file:line) for an unknown check,
     a threshold it does not take, or an unknown world."""
-    import difflib
-
     known = available_checks(plugins) if checks is None else checks
     shown = display_path(lesson.path)
     resolved = []
@@ -163,8 +162,7 @@ def validate(
         where = f"{shown}:{spec.line}" if spec.line else shown
         check = known.get(spec.name)
         if check is None:
-            close = difflib.get_close_matches(spec.name, list(known), n=1)
-            hint = f" (did you mean {close[0]!r}?)" if close else ""
+            hint = did_you_mean(spec.name, known)
             raise GradingError(
                 f"{where}: check {spec.name!r} is not a registered check{hint}; known: {', '.join(sorted(known))}"
             )

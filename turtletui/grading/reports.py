@@ -35,6 +35,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from turtletui.grading.results import GradeReport, SubmissionResult, TestResult
+from turtletui.messages import one_line
 
 if TYPE_CHECKING:  # rich is imported only when a table is drawn
     from rich.console import Console
@@ -63,10 +64,6 @@ class ReportError(ValueError):
 
 
 # -- shared helpers -------------------------------------------------------------------
-
-
-def _one_line(text: str) -> str:
-    return " ".join(str(text).split())
 
 
 def _points(value: float) -> float:
@@ -236,7 +233,7 @@ def render_junit(report: GradeReport) -> str:
                 time=f"{sub.execution_time:.3f}",
             )
             error = ET.SubElement(
-                case, "error", message=_xml_text(_one_line(sub.error)), type="SubmissionError"
+                case, "error", message=_xml_text(one_line(sub.error)), type="SubmissionError"
             )
             error.text = _xml_text(sub.error)
             tests, errors = 1, 1
@@ -520,7 +517,7 @@ def write_text_atomic(path: Path, text: str) -> None:
         os.replace(tmp_name, path)
         tmp_name = None
     except OSError as err:
-        reason = err.strerror or _one_line(str(err))
+        reason = err.strerror or one_line(str(err))
         raise ReportError(f"cannot write {path}: {reason}") from err
     finally:
         if tmp_name is not None:

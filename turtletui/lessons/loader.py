@@ -13,7 +13,6 @@ Every problem raises :class:`LessonError` with a one-line message that starts
 
 from __future__ import annotations
 
-import difflib
 import re
 from collections.abc import Iterable, Sequence
 from pathlib import Path
@@ -25,6 +24,7 @@ except ModuleNotFoundError:  # Python 3.10
     import tomli as tomllib
 
 from turtletui.lessons.model import DEFAULT_START, CheckSpec, Lesson, Scenario
+from turtletui.messages import did_you_mean, one_line
 
 FENCE = "+++"
 ID_PATTERN = re.compile(r"[a-z0-9][a-z0-9-]*")
@@ -61,7 +61,7 @@ def load_lesson(path: str | Path) -> Lesson:
     except FileNotFoundError:
         raise LessonError(f"{shown}: no such lesson file") from None
     except (OSError, UnicodeDecodeError) as err:
-        raise LessonError(f"{shown}: cannot read the lesson: {_one_line(err)}") from None
+        raise LessonError(f"{shown}: cannot read the lesson: {one_line(err)}") from None
     front, body = split_front_matter(text, shown)
     try:
         data = tomllib.loads(front)
@@ -110,10 +110,6 @@ def _toml_error(err: Exception, front: str) -> tuple[int, str]:
     return 1, message
 
 
-def _one_line(err: BaseException) -> str:
-    return " ".join(str(err).split())
-
-
 def _show(value: Any) -> str:
     return repr(value)
 
@@ -124,11 +120,6 @@ def _is_number(value: Any) -> bool:
 
 def _is_int(value: Any) -> bool:
     return isinstance(value, int) and not isinstance(value, bool)
-
-
-def _did_you_mean(key: str, known: Sequence[str]) -> str:
-    close = difflib.get_close_matches(key, known, n=1, cutoff=0.6)
-    return f" (did you mean {close[0]!r}?)" if close else ""
 
 
 class _Validator:
@@ -196,7 +187,7 @@ class _Validator:
         for key in data:
             if key not in LESSON_FIELDS:
                 raise self._error(
-                    f"unknown field {key!r}{_did_you_mean(key, LESSON_FIELDS)}", key, top
+                    f"unknown field {key!r}{did_you_mean(key, LESSON_FIELDS)}", key, top
                 )
         lesson_id = self._required_text(data, "id", top)
         if not ID_PATTERN.fullmatch(lesson_id):
@@ -314,7 +305,7 @@ class _Validator:
         for key in item:
             if key not in fields:
                 raise self._error(
-                    f"{where}: unknown field {key!r}{_did_you_mean(key, fields)}", key, section
+                    f"{where}: unknown field {key!r}{did_you_mean(key, fields)}", key, section
                 )
         if "name" not in item:
             raise self._error(f"{where}: missing field 'name'", None, section)
@@ -371,7 +362,7 @@ class _Validator:
             )
         for key in value:
             if key not in START_FIELDS:
-                raise bad("start", f"has unknown field {key!r}{_did_you_mean(key, START_FIELDS)}")
+                raise bad("start", f"has unknown field {key!r}{did_you_mean(key, START_FIELDS)}")
         pose: dict[str, float] = {}
         for key in START_FIELDS:
             number = value.get(key, 0.0 if key == "theta" else None)
@@ -400,7 +391,7 @@ class _Validator:
             if scenario not in scenario_names:
                 raise bad(
                     "scenarios",
-                    f"names no scenario {scenario!r}{_did_you_mean(scenario, list(scenario_names))}",
+                    f"names no scenario {scenario!r}{did_you_mean(scenario, list(scenario_names))}",
                 )
         label = item.get("label", "")
         if not isinstance(label, str):
@@ -495,5 +486,5 @@ def find_lesson(
         if lesson.id == text:
             return lesson
     known = ", ".join(lesson.id for lesson in lessons) or "none"
-    hint = _did_you_mean(text, [lesson.id for lesson in lessons])
+    hint = did_you_mean(text, [lesson.id for lesson in lessons])
     raise LessonError(f"no lesson {text!r}{hint}; known lessons: {known}")

@@ -34,7 +34,6 @@ a dict (:func:`parse_world`). Errors are :class:`WorldError` with one line
 
 from __future__ import annotations
 
-import difflib
 import math
 import re
 from collections.abc import Mapping
@@ -46,6 +45,7 @@ try:
 except ModuleNotFoundError:  # Python 3.10
     import tomli as tomllib
 
+from turtletui.messages import did_you_mean, one_line
 from turtletui.sim import Box, Circle, Lidar
 from turtletui.worlds.spec import WorldError, WorldSpec
 
@@ -63,7 +63,7 @@ def load_world_file(path: str | Path) -> WorldSpec:
     except FileNotFoundError:
         raise WorldError(f"{path}: no such world file") from None
     except (OSError, UnicodeDecodeError) as err:
-        raise WorldError(f"{path}: cannot read the world file: {_one_line(err)}") from None
+        raise WorldError(f"{path}: cannot read the world file: {one_line(err)}") from None
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as err:
@@ -87,13 +87,8 @@ def _toml_error(err: Exception) -> str:
     return f"1: invalid TOML: {message}"
 
 
-def _one_line(err: BaseException) -> str:
-    return " ".join(str(err).split())
 
 
-def _did_you_mean(key: str, known: tuple[str, ...]) -> str:
-    close = difflib.get_close_matches(key, known, n=1, cutoff=0.6)
-    return f" (did you mean {close[0]!r}?)" if close else ""
 
 
 def _is_number(value: Any) -> bool:
@@ -170,7 +165,7 @@ class _Parser:
     def _known(self, data: dict[str, Any], fields: tuple[str, ...], table: str | None, index: int) -> None:
         for key in data:
             if key not in fields:
-                raise self._error(f"unknown field {key!r}{_did_you_mean(key, fields)}", table, index, key)
+                raise self._error(f"unknown field {key!r}{did_you_mean(key, fields)}", table, index, key)
 
     def _text(self, data: dict[str, Any], key: str, default: str) -> str:
         value = data.get(key, default)

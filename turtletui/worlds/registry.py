@@ -10,12 +10,12 @@ file's format.
 
 from __future__ import annotations
 
-import difflib
 import os
 from collections.abc import Sequence
 from dataclasses import replace
 from pathlib import Path
 
+from turtletui.messages import did_you_mean
 from turtletui.plugins.manager import WorldEntry, collect_worlds, get_plugin_manager
 from turtletui.worlds.files import load_world_file, parse_world
 from turtletui.worlds.spec import WorldError, WorldSpec
@@ -54,8 +54,7 @@ def resolve_world(name: str | Path, plugins: Sequence[str | Path] = ()) -> World
         return EMPTY
     if entry is None:
         known = sorted({EMPTY.name, *worlds})
-        close = difflib.get_close_matches(name, known, n=1, cutoff=0.5)
-        hint = f" (did you mean {close[0]!r}?)" if close else ""
+        hint = did_you_mean(name, known, cutoff=0.5)
         raise WorldError(f"unknown world {name!r}{hint}; known: {', '.join(known) or 'none'}")
     return spec_of(entry)
 

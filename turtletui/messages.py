@@ -1,0 +1,17 @@
+"""Pieces of the one-line messages turtletui answers bad input with."""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Iterable
+
+
+def one_line(value: object) -> str:
+    """``value``'s text with every run of whitespace, newlines included, made one space."""
+    return " ".join(str(value).split())
+
+
+def did_you_mean(word: str, known: Iterable[str], cutoff: float = 0.6) -> str:
+    """`` (did you mean 'x'?)`` for the closest of ``known``, or "" when none is close."""
+    close = difflib.get_close_matches(word, list(known), n=1, cutoff=cutoff)
+    return f" (did you mean {close[0]!r}?)" if close else ""
