@@ -155,10 +155,7 @@ def _on_sigterm(signum: int, frame: Any) -> None:
 
 def default_jobs() -> int:
     """Runs side by side by default: one per CPU."""
-    try:
-        return len(os.sched_getaffinity(0))
-    except (AttributeError, OSError):
-        return os.cpu_count() or 1
+    return wire.available_cpus()
 
 
 def _init_worker(

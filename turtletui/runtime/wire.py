@@ -23,6 +23,14 @@ SPIN_ENV = "TURTLETUI_SPIN_SECONDS"
 """Overrides the default below (grading sets 0 when its runs share the CPUs)."""
 
 
+def available_cpus() -> int:
+    """CPUs this process may run on."""
+    try:
+        return len(os.sched_getaffinity(0))
+    except (AttributeError, OSError):
+        return os.cpu_count() or 1
+
+
 def _spin_default() -> float:
     override = os.environ.get(SPIN_ENV)
     if override:
@@ -30,11 +38,7 @@ def _spin_default() -> float:
             return max(0.0, float(override))
         except ValueError:
             pass
-    try:
-        cpus = len(os.sched_getaffinity(0))
-    except (AttributeError, OSError):
-        cpus = os.cpu_count() or 1
-    return 0.0002 if cpus > 1 else 0.0
+    return 0.0002 if available_cpus() > 1 else 0.0
 
 
 SPIN_SECONDS = _spin_default()
