@@ -556,18 +556,20 @@ def test_unbounded_allocation_is_stopped(tmp_path: Path) -> None:
     [
         """
         def misbehave(node):
-            if os.fork() == 0:
-                note("grandchild_pid", os.getpid())
+            pid = os.fork()
+            if pid == 0:
                 time.sleep(60)
                 os._exit(0)
+            note("grandchild_pid", pid)  # the parent: the child may be killed before it could
         """,
         """
         def misbehave(node):
-            if os.fork() == 0:
+            pid = os.fork()
+            if pid == 0:
                 os.setsid()  # leaves the controller's process group
-                note("grandchild_pid", os.getpid())
                 time.sleep(60)
                 os._exit(0)
+            note("grandchild_pid", pid)
             time.sleep(0.2)
         """,
         """
