@@ -506,7 +506,7 @@ def _values_converter(spec: FieldSpec) -> Callable[[Any], Any]:
 def _from_values_plan(cls: type) -> tuple:
     plan = cls.__dict__.get('_FROM_VALUES_PLAN')
     if plan is None:
-        plan = tuple((s.name, s.set, _values_converter(s)) for s in cls._FIELDS)
+        plan = tuple((s.name, _values_converter(s)) for s in cls._FIELDS)
         cls._FROM_VALUES_PLAN = plan
     return plan
 
@@ -515,14 +515,15 @@ def _from_values(cls: type, values: list) -> Message:
     plan = _from_values_plan(cls)
     if len(values) != len(plan):
         raise _Bad(f'a list of {len(plan)} field values', values)
-    msg = cls._make_default()
-    for (name, set_, conv), value in zip(plan, values, strict=True):
+    # every value converted (checked) first, then set without a default built first
+    args = []
+    for (name, conv), value in zip(plan, values, strict=True):
         try:
-            set_(msg, conv(value))
+            args.append(conv(value))
         except _Bad as bad:
             bad.path.insert(0, name)
             raise
-    return msg
+    return cls._trusted(*args)
 
 
 def from_values(cls: type | str, values: Any) -> Message:
