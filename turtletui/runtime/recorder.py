@@ -25,6 +25,10 @@ def _clean(value: Any) -> Any:
     return value
 
 
+def _seconds(t_ns: int) -> float:
+    return round(t_ns / 1e9, 9)
+
+
 def _log_event(t: float, record: LogRecord) -> dict[str, Any]:
     return {"t": t, "log": {"level": record.level_name, "node": record.node, "msg": record.msg}}
 
@@ -57,7 +61,8 @@ class Recorder:
             raise OSError(f"{path}: cannot write the record (is a folder; name a file such as run.jsonl)")
         self._tmp = self.path.with_name(f".{self.path.name}.{os.getpid()}.tmp")
         self._file = None if buffered else self._open()
-        self._buffer: list[tuple[float, str, Any]] | None = [] if buffered else None
+        self._buffer: list[tuple[int | float, str, Any]] | None = [] if buffered else None
+        """(when, kind, payload): when is the graph's time in ns, or seconds for earlier logs."""
         self._graph = graph
         self._header = header
         if header is not None and not buffered:
@@ -74,12 +79,11 @@ class Recorder:
             raise OSError(f"{self.path}: cannot write the record ({err.strerror})") from None
 
     def _tap(self, kind: str, payload: Any, t: float | None = None) -> None:
-        if t is None:
-            t = round(self._graph.now_ns / 1e9, 9)
         if self._buffer is not None:
-            self._buffer.append((t, kind, payload))  # messages are not changed after they are sent
+            # messages are not changed after they are sent; seconds are worked out if kept
+            self._buffer.append((self._graph.now_ns if t is None else t, kind, payload))
             return
-        event = _event(t, kind, payload)
+        event = _event(_seconds(self._graph.now_ns) if t is None else t, kind, payload)
         if event is not None:
             self._write(event)
 
@@ -100,8 +104,8 @@ class Recorder:
                 self._file = self._open()
                 if self._header is not None:
                     self._write({"recording": 1, **self._header})
-                for t, kind, payload in self._buffer:
-                    event = _event(t, kind, payload)
+                for when, kind, payload in self._buffer:
+                    event = _event(_seconds(when) if when.__class__ is int else when, kind, payload)
                     if event is not None:
                         self._write(event)
             self._buffer = None
