@@ -127,19 +127,24 @@ def send_to_child(fd: int, obj: object, deadline: float | None = None) -> None:
 
 class FrameReader:
     """Reads frames from a pipe with few system calls: a frame sent in one write
-    (header and payload) usually arrives in one read. The descriptor is made
-    non-blocking; waiting polls for ``SPIN_SECONDS``, then sleeps in select."""
+    (header and payload) usually arrives in one read. With ``SPIN_SECONDS``
+    the descriptor is made non-blocking and waiting polls that long, then sleeps
+    in select; without, a plain blocking read waits (one system call)."""
 
-    __slots__ = ("fd", "buffer")
+    __slots__ = ("fd", "buffer", "spin")
 
     def __init__(self, fd: int) -> None:
         self.fd = fd
         self.buffer = b""
-        os.set_blocking(fd, False)
+        self.spin = SPIN_SECONDS
+        os.set_blocking(fd, self.spin <= 0)
 
     def _chunk(self, size: int) -> bytes:
         fd = self.fd
-        chunk = spin_read(fd, size, SPIN_SECONDS)
+        if self.spin <= 0:
+            chunk = os.read(fd, size)
+        else:
+            chunk = spin_read(fd, size, self.spin)
         while chunk is None:
             select.select([fd], [], [])
             try:
