@@ -23,6 +23,7 @@ from pathlib import Path
 import pytest
 
 from turtletui.api import RunResult, run
+from turtletui.runtime import forkserver
 from turtletui.runtime.sandbox import Limits
 
 pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="the sandbox needs POSIX processes")
@@ -121,6 +122,17 @@ def assert_gone(pid: int, timeout: float = 2.0) -> None:
         if time.monotonic() > deadline:
             pytest.fail(f"process {pid} is still running after the run ended")
         time.sleep(0.02)
+
+
+@pytest.fixture(autouse=True, params=["fresh", "forked"])
+def _launcher(request):
+    """Every behaviour holds for a child started afresh (turtletui run) and for
+    one forked from its submission's fork server (grading workers)."""
+    if request.param == "fresh":
+        yield
+        return
+    with forkserver.serving():
+        yield
 
 
 @pytest.fixture(autouse=True)

@@ -36,7 +36,7 @@ from turtletui.grading.reports import write_text_atomic
 from turtletui.grading.results import GradeReport, SubmissionResult
 from turtletui.grading.submissions import Submission
 from turtletui.lessons.loader import load_lesson
-from turtletui.runtime import wire
+from turtletui.runtime import forkserver, wire
 from turtletui.runtime.loader import ControllerError, ControllerSpec, check_source
 from turtletui.runtime.sandbox import Limits
 
@@ -181,6 +181,7 @@ def _init_worker(
         wire.SPIN_SECONDS = 0.0
         os.environ[wire.SPIN_ENV] = "0"
         _pin_to_one_cpu(cpus)
+    forkserver.enable()
     if _worker_plan is None or str(_worker_plan.lesson.path) != lesson_path:
         _worker_plan = prepare(load_lesson(lesson_path), plugins=plugins)
     _worker_limits = limits
@@ -296,8 +297,9 @@ def grade_submissions(
         if jobs <= 1 or len(tasks) <= 1:
             global _worker_plan, _worker_limits
             _worker_plan, _worker_limits = plan, limits
-            for task in tasks:
-                done(*_run_task(*task))
+            with forkserver.serving():
+                for task in tasks:
+                    done(*_run_task(*task))
         else:
             _run_parallel(plan, tasks, jobs, limits, plugins, done)
     finally:

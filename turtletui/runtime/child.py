@@ -307,6 +307,15 @@ def _out_of_memory(exc: BaseException) -> bool:
     return isinstance(exc, ImportError) and "failed to map segment" in str(exc)
 
 
+def _address_space() -> int:
+    """Bytes of address space this process uses (Linux; 0 elsewhere)."""
+    try:
+        with open("/proc/self/statm", "rb") as f:
+            return int(f.read().split()[0]) * os.sysconf("SC_PAGE_SIZE")
+    except (OSError, ValueError, IndexError):
+        return 0
+
+
 def _apply_limits(limits: dict[str, int]) -> None:
     import resource
 
@@ -358,8 +367,11 @@ def _wait_to_be_ended(fd_in: int, seconds: float = 10.0) -> None:
             return
 
 
-def main() -> None:
-    config = json.loads(sys.argv[1])
+def main(config: dict[str, Any] | None = None) -> None:
+    """Run the controller ``config`` describes (by default: the JSON in argv[1]),
+    report to the parent and exit."""
+    if config is None:
+        config = json.loads(sys.argv[1])
     fd_in, fd_out = config["fd_in"], config["fd_out"]
     os.set_inheritable(fd_in, False)
     os.set_inheritable(fd_out, False)
@@ -399,6 +411,9 @@ def main() -> None:
     crash = None
     try:
         host.exchange(None)  # start together with the parent's clock
+        memory_limit = config.get("limits", {}).get("memory_bytes")
+        if memory_limit and _address_space() > memory_limit:
+            raise MemoryError  # forked warm: a fresh interpreter would not have started
         if config.get("factory"):
             sys.path[1:1] = [p for p in config.get("sys_path", []) if p]
             factory = resolve_factory(config["factory"])

@@ -25,8 +25,9 @@ from typing import Any
 from turtletui.graph.core import GraphError, NodeRecord
 from turtletui.graph.logs import ERROR, INFO
 from turtletui.interfaces import InterfaceError, from_values, get_interface, to_values
-from turtletui.runtime import wire
+from turtletui.runtime import forkserver, wire
 from turtletui.runtime.loader import ControllerSpec, check_source, factory_reference, import_root
+from turtletui.runtime.processes import TOKEN_VAR, kill_tree
 from turtletui.runtime.report import CrashReport, log_crash, stop_turtles
 from turtletui.runtime.simulation import MAX_ROUNDS_PER_INSTANT, Simulation
 
@@ -98,7 +99,11 @@ class SandboxHost:
         self._log_lines = 0
         self._stdout_open = True
         self._started = False
-        self.proc: subprocess.Popen | None = None
+        self._token = ""
+        self._spare: int | None = None
+        """A process holding the token that is not this child's (its fork server)."""
+        self.proc: Any = None
+        """The child: a subprocess.Popen, or a forkserver.ForkedChild."""
 
     # -- life cycle -----------------------------------------------------------
     @classmethod
@@ -140,34 +145,9 @@ class SandboxHost:
                 "log_lines": self.limits.log_lines,
             },
         }
-        # No -I/-E: they would also drop PYTHONHASHSEED, and a fixed hash seed
-        # keeps the iteration order of the student's sets and dicts of strings
-        # the same in every run. Python's other variables are cleared instead.
-        env = {k: v for k, v in os.environ.items() if not k.startswith("PYTHON")}
-        env.update(
-            OPENBLAS_NUM_THREADS="1",
-            OMP_NUM_THREADS="1",
-            PYTHONUNBUFFERED="1",
-            PYTHONHASHSEED="0",
-            PYTHONNOUSERSITE="1",
-            PYTHONDONTWRITEBYTECODE="1",  # no __pycache__ left in students' folders
-        )
-        # Inherited by whatever the controller starts: found and killed at the end
-        # even if it left the child's session and lost its parent.
-        self._token = f"{os.getpid()}.{id(self):x}.{os.urandom(6).hex()}"
-        env[_TOKEN_VAR] = self._token
         cwd = str(self.spec.path.resolve().parent) if self.spec.path else None
-        self.proc = subprocess.Popen(
-            [sys.executable, "-s", "-c", _BOOTSTRAP.format(root=_PACKAGE_ROOT), json.dumps(config)],
-            stdin=subprocess.DEVNULL,
-            stdout=subprocess.PIPE,
-            stderr=subprocess.STDOUT,
-            pass_fds=(to_child_r, from_child_w),
-            start_new_session=True,
-            cwd=cwd,
-            env=env,
-            **self._credentials(),
-        )
+        fds = (to_child_r, from_child_w)
+        self.proc = self._fork(config, cwd, fds) or self._exec(config, cwd, fds)
         os.close(to_child_r)
         os.close(from_child_w)
         self._to_child = to_child_w
@@ -178,6 +158,43 @@ class SandboxHost:
         os.set_blocking(from_child_r, False)  # polled briefly, then select (wire.spin_read)
         self._stdout = self.proc.stdout.fileno()
         os.set_blocking(self._stdout, False)
+
+    def _exec(self, config: dict[str, Any], cwd: str | None, fds: tuple[int, int]) -> subprocess.Popen:
+        """Start a fresh interpreter for the child."""
+        # Inherited by whatever the controller starts: found and killed at the end
+        # even if it left the child's session and lost its parent.
+        self._token = _new_token()
+        return subprocess.Popen(
+            [sys.executable, "-s", "-c", _BOOTSTRAP.format(root=_PACKAGE_ROOT), json.dumps(config)],
+            stdin=subprocess.DEVNULL,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.STDOUT,
+            pass_fds=fds,
+            start_new_session=True,
+            cwd=cwd,
+            env=_child_environment(self._token),
+            **self._credentials(),
+        )
+
+    def _fork(self, config: dict[str, Any], cwd: str | None, fds: tuple[int, int]) -> Any:
+        """Fork the child from this submission's fork server, if this process
+        uses them (grading workers); None to start it the usual way."""
+        servers = forkserver.servers()
+        if servers is None or self.spec.path is None:
+            return None
+
+        def start() -> forkserver.ForkServer:
+            token = _new_token()
+            return forkserver.ForkServer(_PACKAGE_ROOT, _child_environment(token), token, self._credentials())
+
+        key = (str(self.spec.path.resolve()), self.limits.run_as)
+        forked = servers.spawn(key, start, config, cwd, fds, self.limits.start_timeout)
+        if forked is None:
+            return None
+        child, server = forked
+        # the server's token marks what the child starts; the server lives on
+        self._token, self._spare = server.token, server.proc.pid
+        return child
 
     def _credentials(self) -> dict[str, Any]:
         if self.limits.run_as is None:
@@ -207,9 +224,7 @@ class SandboxHost:
         proc = self.proc
         if proc is None:
             return
-        # Once reaped (poll() saw it die) its pid may be reused: spare the pid, but
-        # not its process group or what carries its token.
-        _kill_tree(proc.pid, f"{_TOKEN_VAR}={self._token}".encode(), reaped=proc.returncode is not None)
+        kill_tree(proc.pid, self._token, reaped=proc.returncode is not None, spare=self._spare)
         try:
             proc.wait(timeout=5)
         except subprocess.TimeoutExpired:
@@ -659,11 +674,32 @@ class SandboxHost:
             graph.set_parameter(self._nodes[node_id], str(name), value, remove=bool(remove))
 
 
+def _new_token() -> str:
+    return f"{os.getpid()}.{os.urandom(8).hex()}"
+
+
+def _child_environment(token: str) -> dict[str, str]:
+    """The environment of a sandbox child (and of a fork server)."""
+    # No -I/-E: they would also drop PYTHONHASHSEED, and a fixed hash seed
+    # keeps the iteration order of the student's sets and dicts of strings
+    # the same in every run. Python's other variables are cleared instead.
+    env = {k: v for k, v in os.environ.items() if not k.startswith("PYTHON")}
+    env.update(
+        OPENBLAS_NUM_THREADS="1",
+        OMP_NUM_THREADS="1",
+        PYTHONUNBUFFERED="1",
+        PYTHONHASHSEED="0",
+        PYTHONNOUSERSITE="1",
+        PYTHONDONTWRITEBYTECODE="1",  # no __pycache__ left in students' folders
+    )
+    env[TOKEN_VAR] = token
+    return env
+
+
 class _Stop(Exception):
     """The child finished or failed during an exchange."""
 
 
-_TOKEN_VAR = "TURTLETUI_SANDBOX"
 _LIVENESS_SECONDS = 0.1
 """How often a parent waiting for an answer checks that the child is still alive."""
 
@@ -677,75 +713,3 @@ def _signal_name(sig: int) -> str:
         return signal.Signals(sig).name
     except ValueError:
         return f"{sig}"
-
-
-def _sandboxed(root: int, token: bytes) -> set[int]:
-    """Processes the child ``root`` started (Linux /proc; empty elsewhere): its
-    descendants, and any process whose environment holds ``token``."""
-    children: dict[int, list[int]] = {}
-    marked: set[int] = set()
-    try:
-        entries = os.listdir("/proc")
-    except OSError:
-        return marked
-    me = os.getpid()
-    for entry in entries:
-        if not entry.isdigit():
-            continue
-        pid = int(entry)
-        try:
-            with open(f"/proc/{entry}/stat", "rb") as f:
-                stat = f.read()
-            ppid = int(stat.rpartition(b")")[2].split()[1])
-        except (OSError, ValueError, IndexError):
-            continue
-        children.setdefault(ppid, []).append(pid)
-        try:
-            with open(f"/proc/{entry}/environ", "rb") as f:
-                if token in f.read().split(b"\0"):
-                    marked.add(pid)
-        except OSError:
-            pass
-    stack = [root, *marked]  # and what the marked ones started (a clean exec's environment)
-    seen = set(stack)
-    while stack:
-        for pid in children.get(stack.pop(), ()):
-            if pid not in seen:
-                seen.add(pid)
-                marked.add(pid)
-                stack.append(pid)
-    marked.discard(me)
-    marked.discard(1)
-    return marked
-
-
-def _signal(pid: int, sig: int, group: bool = False) -> None:
-    try:
-        if group:
-            os.killpg(pid, sig)
-        else:
-            os.kill(pid, sig)
-    except (ProcessLookupError, PermissionError):
-        pass
-
-
-def _kill_tree(pid: int, token: bytes, *, reaped: bool = False) -> None:
-    """Kill the child ``pid``, its process group, and every process it started,
-    also those that left its group or session (frozen first, so that none can
-    fork away while they are looked for)."""
-    _signal(pid, signal.SIGSTOP, group=True)
-    if not reaped:
-        _signal(pid, signal.SIGSTOP)
-    stopped: set[int] = set()
-    for _ in range(8):
-        fresh = _sandboxed(-1 if reaped else pid, token) - stopped
-        if not fresh:
-            break
-        for child in fresh:
-            _signal(child, signal.SIGSTOP)
-        stopped |= fresh
-    _signal(pid, signal.SIGKILL, group=True)
-    if not reaped:
-        _signal(pid, signal.SIGKILL)
-    for child in stopped:
-        _signal(child, signal.SIGKILL)

@@ -1,0 +1,190 @@
+"""Sandboxed children forked from a submission's fork server (as grading
+workers start them) behave as children started afresh; a server serves one
+submission, and nothing it answers can make the grader act on another process.
+(tests/runtime/test_sandbox.py runs every hostile behaviour both ways.)"""
+
+from __future__ import annotations
+
+import os
+import socket
+import textwrap
+import threading
+from pathlib import Path
+
+import pytest
+
+from turtletui.api import run
+from turtletui.runtime import forkserver
+
+NODE = """\
+import os, random, signal
+import rclpy
+from rclpy.node import Node
+from geometry_msgs.msg import Twist
+from turtlesim.msg import Pose
+
+
+def note(name, value):
+    with open(name, "a") as f:
+        f.write(f"{value}\\n")
+
+
+class Driver(Node):
+    def __init__(self):
+        super().__init__("driver")
+        self.pub = self.create_publisher(Twist, "/turtle1/cmd_vel", 10)
+        self.create_subscription(Pose, "/turtle1/pose", self.on_pose, 10)
+        # hash order of strings and the seeded random module steer the turtle
+        self.turns = [len(word) / 5.0 for word in {"left", "right", "around", "back"}]
+        self.n = 0
+
+    def on_pose(self, pose):
+        self.n += 1
+        msg = Twist()
+        msg.linear.x = 1.0 + random.random()
+        msg.angular.z = self.turns[self.n % len(self.turns)]
+        self.pub.publish(msg)
+
+
+def main():
+    note("token", os.environ.get("TURTLETUI_SANDBOX"))
+    note("parent", os.getppid())
+    note("group", os.getpgrp() == os.getpid())
+    note("cwd", os.getcwd())
+    BEFORE
+    rclpy.init()
+    rclpy.spin(Driver())
+"""
+
+
+def controller(folder: Path, before: str = "pass", name: str = "node.py") -> Path:
+    folder.mkdir(parents=True, exist_ok=True)
+    path = folder / name
+    path.write_text(NODE.replace("BEFORE", textwrap.indent(textwrap.dedent(before), "    ").strip()))
+    return path
+
+
+def noted(folder: Path, name: str) -> list[str]:
+    return (folder / name).read_text().split()
+
+
+def test_a_forked_run_is_the_same_run_as_a_fresh_one(tmp_path: Path) -> None:
+    fresh = controller(tmp_path / "fresh")
+    forked = controller(tmp_path / "forked")
+    expected = run([fresh], duration=3.0, seed=5, keep_poses=True)
+    with forkserver.serving():
+        got = run([forked], duration=3.0, seed=5, keep_poses=True)
+        again = run([forked], duration=3.0, seed=5, keep_poses=True)
+    assert got.poses["turtle1"] == expected.poses["turtle1"] == again.poses["turtle1"]
+    assert got.turtles["turtle1"].distance > 3.0
+    for folder in (tmp_path / "fresh", tmp_path / "forked"):
+        assert noted(folder, "parent")[0] == str(os.getpid()), "its parent is the grader"
+        assert set(noted(folder, "group")) == {"True"}, "it leads its own process group"
+        assert noted(folder, "cwd")[0] == str(folder.resolve())
+
+
+def test_the_runs_of_one_submission_share_a_server_and_others_get_their_own(tmp_path: Path) -> None:
+    first, second = controller(tmp_path / "ada"), controller(tmp_path / "bob")
+    with forkserver.serving():
+        run([first], duration=0.5)
+        run([first], duration=0.5)
+        run([second], duration=0.5)
+        run([first], duration=0.5)
+    ada, bob = noted(tmp_path / "ada", "token"), noted(tmp_path / "bob", "token")
+    assert ada[0] == ada[1], "one server for a submission's runs in a row"
+    assert len({ada[0], bob[0], ada[2]}) == 3, "a new server for every other submission"
+    outside = controller(tmp_path / "outside")
+    run([outside], duration=0.5)
+    run([outside], duration=0.5)
+    tokens = noted(tmp_path / "outside", "token")
+    assert tokens[0] != tokens[1] and tokens[0] not in ada + bob
+
+
+def _processes_with(token: str) -> set[int]:
+    found = set()
+    for entry in os.listdir("/proc"):
+        if entry.isdigit():
+            try:
+                with open(f"/proc/{entry}/environ", "rb") as f:
+                    if f"TURTLETUI_SANDBOX={token}".encode() in f.read().split(b"\0"):
+                        found.add(int(entry))
+            except OSError:
+                pass
+    return found
+
+
+def test_the_server_and_everything_it_started_end_with_the_block(tmp_path: Path) -> None:
+    path = controller(tmp_path, before="""
+        if os.fork() == 0:
+            os.setsid()
+            signal.pause()
+    """)
+    with forkserver.serving():
+        run([path], duration=0.5)
+        token = noted(tmp_path, "token")[0]
+        assert _processes_with(token), "the server waits for the submission's next run"
+    assert _processes_with(token) == set()
+
+
+def test_a_controller_that_kills_its_server_only_slows_its_own_later_runs(tmp_path: Path) -> None:
+    killer = controller(tmp_path / "killer", before="""
+        me = os.getpid()
+        for entry in os.listdir("/proc"):
+            if entry.isdigit() and int(entry) != me:
+                try:
+                    with open(f"/proc/{entry}/environ", "rb") as f:
+                        mine = f"TURTLETUI_SANDBOX={os.environ['TURTLETUI_SANDBOX']}".encode()
+                        if mine in f.read().split(b"\\0"):
+                            os.kill(int(entry), signal.SIGKILL)
+                            note("killed", entry)
+                except OSError:
+                    pass
+    """)
+    with forkserver.serving():
+        first = run([killer], duration=1.0)
+        second = run([killer], duration=1.0)
+    assert noted(tmp_path / "killer", "killed"), "it found its server"
+    for result in (first, second):
+        assert result.crashes == [] and result.turtles["turtle1"].distance > 1.0
+    tokens = noted(tmp_path / "killer", "token")
+    assert tokens[0] != tokens[1], "the second run started afresh"
+
+
+class _FakeProcess:
+    def __init__(self, pid: int) -> None:
+        self.pid = pid
+
+    def poll(self) -> None:
+        return None
+
+
+@pytest.mark.parametrize("answer", ["grader", "init", "server", "nonsense", "nothing"])
+def test_a_pid_that_is_not_the_graders_own_new_child_is_refused(answer: str) -> None:
+    """A server a controller tampered with could name any process as the new
+    run child: the grader would signal and kill it at the end of the run."""
+    mine, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_SEQPACKET)
+    server = forkserver.ForkServer.__new__(forkserver.ForkServer)
+    server.sock, server.proc, server.token = mine, _FakeProcess(os.getpid() + 1), "x"
+    reply = {
+        "grader": str(os.getpid()), "init": "1", "server": str(server.proc.pid), "nonsense": "-x", "nothing": "",
+    }[answer].encode()
+
+    def fake_server() -> None:
+        _, fds, _, _ = socket.recv_fds(theirs, 1 << 20, 3)
+        for fd in fds:
+            os.close(fd)
+        theirs.send(reply) if reply else theirs.close()
+
+    thread = threading.Thread(target=fake_server)
+    thread.start()
+    to_child_r, to_child_w = os.pipe()
+    from_child_r, from_child_w = os.pipe()
+    try:
+        assert server.spawn({}, None, (to_child_r, from_child_w), timeout=5.0) is None
+    finally:
+        thread.join()
+        for fd in (to_child_r, to_child_w, from_child_r, from_child_w):
+            os.close(fd)
+        mine.close()
+        if answer != "nothing":
+            theirs.close()

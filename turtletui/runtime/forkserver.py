@@ -1,0 +1,324 @@
+"""Start sandboxed controllers by forking a warm interpreter (Linux).
+
+Starting Python and importing the child runtime costs ~45 ms per run, a sixth
+of a sandboxed 60 s lockstep run. A fork server is an interpreter started
+exactly like a sandbox child (same environment, same user, a session of its
+own) that has done those imports and waits; each request forks a child that
+runs one controller as ``turtletui.runtime.child.main`` does in a fresh process.
+
+Trust: a server serves the runs of one submission only (:class:`ForkServers`
+keys them by controller file and user), so a controller that tampers with it
+(it runs as the same user) changes nothing but its own later runs. The server
+cannot be traced or read by them (not dumpable). The run child is handed over
+to the caller (double fork; the caller is a child subreaper), so it is the
+caller's child as one started by subprocess is: waited for, its parent is the
+caller, and the pid the server reports is accepted only if it is the caller's
+own child. A run that cannot be forked (the server died) starts the usual way.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import socket
+import subprocess
+import sys
+import time
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
+from typing import Any
+
+from turtletui.runtime.processes import kill_tree, reap_zombie_children
+
+_SERVER = (
+    "import sys; sys.path.insert(0, {root!r}); "
+    "from turtletui.runtime.forkserver import serve; serve(int(sys.argv[1]))"
+)
+_real_sleep = time.sleep  # an in-process controller may get a simulated one
+_PR_SET_DUMPABLE = 4
+_PR_SET_CHILD_SUBREAPER = 36
+
+
+def _prctl(option: int, value: int) -> bool:
+    try:
+        import ctypes
+
+        return ctypes.CDLL(None, use_errno=True).prctl(option, value, 0, 0, 0) == 0
+    except (OSError, AttributeError):
+        return False
+
+
+# -- the server process ---------------------------------------------------------
+
+
+def serve(sock_fd: int) -> None:
+    """The server's loop: one request (a JSON config and three descriptors:
+    the child's input, its answers, its output) forks one run child."""
+    # What every run would import: done once, before the first fork.
+    import turtletui.compat  # noqa: F401
+    import turtletui.compat.context  # noqa: F401
+    import turtletui.runtime.loader  # noqa: F401
+    import turtletui.runtime.virtual_time  # noqa: F401
+    from turtletui.runtime import child
+
+    _prctl(_PR_SET_DUMPABLE, 0)  # the runs (same user) cannot trace or read it
+    sock = socket.socket(fileno=sock_fd)
+    while True:
+        try:
+            data, fds, _, _ = socket.recv_fds(sock, 1 << 20, 3)
+        except OSError:
+            return
+        if not data:
+            return  # the caller went away
+        try:
+            request = json.loads(data)
+            pid = _fork(request, fds, sock, child.main) if len(fds) == 3 else 0
+        except (OSError, ValueError):
+            pid = 0
+        finally:
+            for fd in fds:
+                os.close(fd)
+        try:
+            sock.send(str(pid).encode())
+        except OSError:
+            return
+
+
+def _fork(request: dict[str, Any], fds: list[int], sock: socket.socket, main: Any) -> int:
+    """Fork the run child through a middle process that exits at once, so that
+    the child is re-parented to the caller (a subreaper). Its pid, or 0."""
+    report_r, report_w = os.pipe()
+    middle = os.fork()
+    if middle == 0:
+        try:
+            os.close(report_r)
+            pid = os.fork()
+            if pid == 0:
+                os.close(report_w)
+                _run(request, fds, sock, main)
+            os.write(report_w, str(pid).encode())
+        finally:
+            os._exit(0)
+    os.close(report_w)
+    with os.fdopen(report_r, "rb") as report:
+        answer = report.read()
+    os.waitpid(middle, 0)
+    return int(answer or 0)
+
+
+def _run(request: dict[str, Any], fds: list[int], sock: socket.socket, main: Any) -> None:
+    """In the run child: become what subprocess would have started, then run."""
+    code = 1
+    try:
+        sock.close()
+        os.setsid()
+        _prctl(_PR_SET_DUMPABLE, 1)  # an ordinary process again, as if freshly started
+        fd_in, fd_out, output = fds
+        devnull = os.open(os.devnull, os.O_RDONLY)
+        os.dup2(devnull, 0)
+        os.dup2(output, 1)
+        os.dup2(output, 2)
+        for fd in (devnull, output):
+            if fd > 2:
+                os.close(fd)
+        if request.get("cwd"):
+            os.chdir(request["cwd"])
+        config = dict(request["config"], fd_in=fd_in, fd_out=fd_out)
+        sys.argv = ["-c", json.dumps(config)]
+        main(config)
+        code = 0
+    except BaseException:  # noqa: BLE001 - nothing may return into the server's loop
+        pass
+    finally:
+        os._exit(code)
+
+
+# -- the caller's side --------------------------------------------------------------
+
+
+class ForkedChild:
+    """A run child forked by a server, seen like a subprocess.Popen of it."""
+
+    def __init__(self, pid: int, output_fd: int) -> None:
+        self.pid = pid
+        self.returncode: int | None = None
+        self.stdout = os.fdopen(output_fd, "rb", buffering=0)
+
+    def poll(self) -> int | None:
+        if self.returncode is None:
+            try:
+                pid, status = os.waitpid(self.pid, os.WNOHANG)
+            except ChildProcessError:  # reaped elsewhere: its status is lost
+                self.returncode = -9
+                return self.returncode
+            if pid:
+                self.returncode = os.waitstatus_to_exitcode(status)
+        return self.returncode
+
+    def wait(self, timeout: float | None = None) -> int:
+        deadline = None if timeout is None else time.monotonic() + timeout
+        pause = 0.0005
+        while self.poll() is None:
+            if deadline is not None and time.monotonic() >= deadline:
+                raise subprocess.TimeoutExpired(f"sandbox child {self.pid}", timeout or 0.0)
+            _real_sleep(pause)
+            pause = min(pause * 2, 0.01)
+        assert self.returncode is not None
+        return self.returncode
+
+
+class ForkServer:
+    """One warm interpreter and the socket to ask it for run children."""
+
+    def __init__(self, root: str, env: dict[str, str], token: str, credentials: dict[str, Any]) -> None:
+        self.token = token
+        mine, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_SEQPACKET)
+        try:
+            self.proc = subprocess.Popen(
+                [sys.executable, "-s", "-c", _SERVER.format(root=root), str(theirs.fileno())],
+                stdin=subprocess.DEVNULL,
+                stdout=subprocess.DEVNULL,
+                stderr=subprocess.DEVNULL,
+                pass_fds=(theirs.fileno(),),
+                start_new_session=True,
+                env=env,
+                **credentials,
+            )
+        except BaseException:
+            mine.close()
+            raise
+        finally:
+            theirs.close()
+        self.sock = mine
+
+    def spawn(self, config: dict[str, Any], cwd: str | None, fds: tuple[int, int], timeout: float) -> ForkedChild | None:
+        """Fork a run child reading ``fds[0]`` and answering on ``fds[1]``; its
+        output comes from the returned child's ``stdout``. None if the server
+        did not answer with a child of this process within ``timeout``."""
+        output_r, output_w = os.pipe()
+        try:
+            payload = json.dumps({"config": config, "cwd": cwd}).encode()
+            self.sock.settimeout(timeout)
+            socket.send_fds(self.sock, [payload], [*fds, output_w])
+            answer = self.sock.recv(64)
+            pid = int(answer) if answer else 0
+        except (OSError, ValueError):
+            pid = 0
+        finally:
+            os.close(output_w)
+        if pid <= 0 or pid == self.proc.pid or not _is_my_child(pid):
+            os.close(output_r)
+            return None
+        os.set_blocking(output_r, False)
+        return ForkedChild(pid, output_r)
+
+    def alive(self) -> bool:
+        return self.proc.poll() is None
+
+    def close(self) -> None:
+        """Stop the server and whatever it started."""
+        self.sock.close()
+        kill_tree(self.proc.pid, self.token, reaped=self.proc.poll() is not None)
+        try:
+            self.proc.wait(timeout=5)
+        except subprocess.TimeoutExpired:
+            pass
+
+
+def _is_my_child(pid: int) -> bool:
+    try:
+        return os.waitpid(pid, os.WNOHANG) == (0, 0)  # running, and mine to wait for
+    except ChildProcessError:
+        return False
+
+
+class ForkServers:
+    """The fork server of the submission a grading worker runs now: a new
+    controller file (or user) gets a new server and the old one is stopped."""
+
+    def __init__(self) -> None:
+        self._key: tuple[Any, ...] | None = None
+        self._server: ForkServer | None = None
+        self._given_up: set[tuple[Any, ...]] = set()
+        self._child: ForkedChild | None = None
+        _prctl(_PR_SET_CHILD_SUBREAPER, 1)
+
+    def spawn(
+        self, key: tuple[Any, ...], start: Callable[[], ForkServer], config: dict[str, Any], cwd: str | None,
+        fds: tuple[int, int], timeout: float,
+    ) -> tuple[ForkedChild, ForkServer] | None:
+        """A run child forked by ``key``'s server (started with ``start()`` if
+        needed), and that server; None if the run must start the usual way: a
+        run is under way already, or the server failed (then for good)."""
+        if self._child is not None and self._child.returncode is None:
+            return None  # one at a time: a server is stopped when the submission changes
+        if key != self._key:
+            self.close()
+            self._key = key
+        if self._server is not None and not self._server.alive():
+            self._give_up()
+        if key in self._given_up:
+            return None
+        if self._server is None:
+            try:
+                self._server = start()
+            except OSError:
+                self._given_up.add(key)
+                return None
+        child = self._server.spawn(config, cwd, fds, timeout)
+        if child is None:
+            self._give_up()
+            return None
+        self._child = child
+        return child, self._server
+
+    def _give_up(self) -> None:
+        assert self._key is not None
+        self._given_up.add(self._key)
+        if self._server is not None:
+            self._server.close()
+            self._server = None
+
+    def close(self) -> None:
+        """Stop the server and what is left of its runs."""
+        if self._server is not None:
+            self._server.close()
+            self._server = None
+        self._key = None
+        reap_zombie_children()  # the killed orphans of the submission's runs
+
+
+_servers: ForkServers | None = None
+
+
+def enable() -> None:
+    """Start this process's sandboxed children from fork servers from now on
+    (a grading worker: one run at a time, one submission after another)."""
+    global _servers
+    if _servers is None and sys.platform.startswith("linux") and hasattr(socket, "send_fds"):
+        import atexit
+
+        _servers = ForkServers()
+        atexit.register(_servers.close)
+
+
+@contextmanager
+def serving() -> Iterator[None]:
+    """Fork servers for the runs inside the block (one at a time), all stopped
+    at its end; nothing changes if they are in use already."""
+    global _servers
+    if _servers is not None or not sys.platform.startswith("linux") or not hasattr(socket, "send_fds"):
+        yield
+        return
+    _servers = ForkServers()
+    try:
+        yield
+    finally:
+        _servers.close()
+        _servers = None
+        _prctl(_PR_SET_CHILD_SUBREAPER, 0)
+
+
+def servers() -> ForkServers | None:
+    """The fork servers, if in use in this process."""
+    return _servers

@@ -1,0 +1,112 @@
+"""Find and kill every process a sandboxed controller started (Linux /proc).
+
+A sandbox's processes are its descendants and anything whose environment
+holds its token (TOKEN_VAR=token), which whatever it starts inherits: found
+even if they left its session and lost their parent.
+"""
+
+from __future__ import annotations
+
+import os
+import signal
+
+TOKEN_VAR = "TURTLETUI_SANDBOX"
+
+
+def _sandboxed(root: int, token: bytes) -> set[int]:
+    """Processes the child ``root`` started (Linux /proc; empty elsewhere): its
+    descendants, and any process whose environment holds ``token``."""
+    children: dict[int, list[int]] = {}
+    marked: set[int] = set()
+    try:
+        entries = os.listdir("/proc")
+    except OSError:
+        return marked
+    me = os.getpid()
+    for entry in entries:
+        if not entry.isdigit():
+            continue
+        pid = int(entry)
+        try:
+            with open(f"/proc/{entry}/stat", "rb") as f:
+                stat = f.read()
+            ppid = int(stat.rpartition(b")")[2].split()[1])
+        except (OSError, ValueError, IndexError):
+            continue
+        children.setdefault(ppid, []).append(pid)
+        try:
+            with open(f"/proc/{entry}/environ", "rb") as f:
+                if token in f.read().split(b"\0"):
+                    marked.add(pid)
+        except OSError:
+            pass
+    stack = [root, *marked]  # and what the marked ones started (a clean exec's environment)
+    seen = set(stack)
+    while stack:
+        for pid in children.get(stack.pop(), ()):
+            if pid not in seen:
+                seen.add(pid)
+                marked.add(pid)
+                stack.append(pid)
+    marked.discard(me)
+    marked.discard(1)
+    return marked
+
+
+def _signal(pid: int, sig: int, group: bool = False) -> None:
+    try:
+        if group:
+            os.killpg(pid, sig)
+        else:
+            os.kill(pid, sig)
+    except (ProcessLookupError, PermissionError):
+        pass
+
+
+def kill_tree(pid: int, token: str, *, reaped: bool = False, spare: int | None = None) -> None:
+    """Kill the child ``pid``, its process group, and every process it started,
+    also those that left its group or session (frozen first, so that none can
+    fork away while they are looked for). Once reaped, ``pid`` may be another
+    process's: it is spared then, but not its group or what holds the token.
+    ``spare`` is a process holding the token that must live on (a fork server)."""
+    marker = f"{TOKEN_VAR}={token}".encode()
+    _signal(pid, signal.SIGSTOP, group=True)
+    if not reaped:
+        _signal(pid, signal.SIGSTOP)
+    stopped: set[int] = set()
+    for _ in range(8):
+        fresh = _sandboxed(-1 if reaped else pid, marker) - stopped
+        fresh.discard(spare)
+        if not fresh:
+            break
+        for child in fresh:
+            _signal(child, signal.SIGSTOP)
+        stopped |= fresh
+    _signal(pid, signal.SIGKILL, group=True)
+    if not reaped:
+        _signal(pid, signal.SIGKILL)
+    for child in stopped:
+        _signal(child, signal.SIGKILL)
+
+
+def reap_zombie_children() -> None:
+    """Reap this process's children that have died and that nobody waits for:
+    a child subreaper inherits the orphans of what it started and kills them."""
+    me = str(os.getpid()).encode()
+    try:
+        entries = os.listdir("/proc")
+    except OSError:
+        return
+    for entry in entries:
+        if not entry.isdigit():
+            continue
+        try:
+            with open(f"/proc/{entry}/stat", "rb") as f:
+                fields = f.read().rpartition(b")")[2].split()
+        except OSError:
+            continue
+        if len(fields) > 1 and fields[0] == b"Z" and fields[1] == me:
+            try:
+                os.waitpid(int(entry), os.WNOHANG)
+            except ChildProcessError:
+                pass
