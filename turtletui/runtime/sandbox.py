@@ -158,6 +158,9 @@ class SandboxHost:
         os.set_blocking(from_child_r, False)  # polled briefly, then select (wire.spin_read)
         self._stdout = self.proc.stdout.fileno()
         os.set_blocking(self._stdout, False)
+        # asked every exchange whether there is output: cheaper than a read that fails
+        self._stdout_poll = select.poll()
+        self._stdout_poll.register(self._stdout, select.POLLIN)
 
     def _exec(self, config: dict[str, Any], cwd: str | None, fds: tuple[int, int]) -> subprocess.Popen:
         """Start a fresh interpreter for the child."""
@@ -488,6 +491,8 @@ class SandboxHost:
     def _drain_output(self, final: bool = False) -> None:
         if self.proc is None or self.proc.stdout is None or not self._stdout_open:
             return
+        if not final and not self._stdout_poll.poll(0):
+            return  # nothing printed (POLLHUP when closed counts as something)
         truncated = self._output_lines > self.limits.output_lines
         buffer = self._output_buffer
         chunks = [buffer] if buffer else []
