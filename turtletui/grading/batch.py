@@ -10,6 +10,7 @@ student's files, the lesson and turtletui are the same (``force`` regrades).
 
 from __future__ import annotations
 
+import gc
 import hashlib
 import json
 import multiprocessing
@@ -293,6 +294,10 @@ def grade_submissions(
         for student, item in pending.items()
         for index in range(len(plan.runs))
     ]
+    # What is built so far (modules, the plan) lives through the runs: frozen,
+    # the garbage collector does not walk it during them, and forked workers
+    # do not copy the pages it would touch.
+    gc.freeze()
     try:
         if jobs <= 1 or len(tasks) <= 1:
             global _worker_plan, _worker_limits
@@ -303,6 +308,7 @@ def grade_submissions(
         else:
             _run_parallel(plan, tasks, jobs, limits, plugins, done)
     finally:
+        gc.unfreeze()
         if store is not None:
             store.restore()
     order = {s.student: i for i, s in enumerate(submissions)}
