@@ -291,15 +291,17 @@ class ForkServers:
 _servers: ForkServers | None = None
 
 
+def _available() -> bool:
+    return sys.platform.startswith("linux") and hasattr(socket, "send_fds")
+
+
 def enable() -> None:
     """Start this process's sandboxed children from fork servers from now on
-    (a grading worker: one run at a time, one submission after another)."""
+    (a grading worker: one run at a time, one submission after another). A
+    server ends when this process does (end of file on its socket)."""
     global _servers
-    if _servers is None and sys.platform.startswith("linux") and hasattr(socket, "send_fds"):
-        import atexit
-
+    if _servers is None and _available():
         _servers = ForkServers()
-        atexit.register(_servers.close)
 
 
 @contextmanager
@@ -307,7 +309,7 @@ def serving() -> Iterator[None]:
     """Fork servers for the runs inside the block (one at a time), all stopped
     at its end; nothing changes if they are in use already."""
     global _servers
-    if _servers is not None or not sys.platform.startswith("linux") or not hasattr(socket, "send_fds"):
+    if _servers is not None or not _available():
         yield
         return
     _servers = ForkServers()
