@@ -92,6 +92,8 @@ class TurtlesimNode:
         self.node.parameter_setter = self.set_parameter
         self.world = world if world is not None else World(spawn_turtle1=False)
         self._turtles: dict[str, _TurtleEndpoints] = {}
+        self._poses: dict[str, Any] = {}
+        """The Pose message last published for each turtle."""
         self._goals: dict[int, GoalHandle] = {}
         lidar = self.world.lidar
         self._scan_period = lidar.period_ticks(DT) if lidar is not None else 0
@@ -137,6 +139,7 @@ class TurtlesimNode:
             self._handle_events()
         publish = graph.publish
         trusted_pose = Pose._trusted
+        poses = self._poses
         for turtle in world._order:
             ends = turtles[turtle.name]
             vx, vy = turtle.vx, turtle.vy
@@ -145,7 +148,8 @@ class TurtlesimNode:
                 fields = _F32_unpack(_F32_pack(turtle.x, turtle.y, turtle.theta, speed, turtle.wz))
             except OverflowError:
                 fields = _float32(turtle.x, turtle.y, turtle.theta, speed, turtle.wz)
-            publish(ends.pose.topic, trusted_pose(*fields))
+            pose = poses[turtle.name] = trusted_pose(*fields)
+            publish(ends.pose.topic, pose)
             if sense:
                 publish(ends.color.topic, Color._trusted(*turtle.color))
         if self._scan_period and world.ticks % self._scan_period == 0:
@@ -193,11 +197,10 @@ class TurtlesimNode:
             graph.publish(topic, msg)
 
     def published(self, turtle: str, pose: Any) -> bool:
-        """Whether ``pose`` is what this node publishes for ``turtle`` now: a
-        controller may publish a Pose on the same topic, as in ROS, but a
-        trajectory is the turtle's own."""
-        state = self.world.turtles.get(turtle)
-        return state is not None and (pose.x, pose.y, pose.theta) == _float32(state.x, state.y, state.theta)
+        """Whether ``pose`` is the message this node last published for
+        ``turtle``: a controller may publish a Pose on the same topic, as in
+        ROS, but a trajectory is the turtle's own."""
+        return self._poses.get(turtle) is pose
 
     # -- parameters -----------------------------------------------------------
     def set_parameter(self, name: str, value: Any) -> str | None:
