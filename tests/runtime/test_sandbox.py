@@ -772,6 +772,8 @@ MALFORMED = "sent a malformed reply"
 FORGED = {
     # name: (frame, kind of the crash or None if harmless, what its message says)
     "not-json": (frame(b"{not json"), "exception", MALFORMED),
+    "more-after-the-value": (frame(b'{"log": []} {"done": true}'), "exception", MALFORMED),
+    "white-space-first": (frame(b' {"log": []}'), "exception", MALFORMED),
     "not-utf8": (frame(b'{"log": "\xff\xfe"}'), "exception", MALFORMED),
     "not-an-object": (frame([1, 2, 3]), "exception", MALFORMED),
     "deep-nesting": (frame(b"[" * 100_000 + b"]" * 100_000), "exception", MALFORMED),

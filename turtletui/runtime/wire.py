@@ -194,13 +194,23 @@ def read_header(data: bytes) -> int:
     return size
 
 
+_SCAN = json.JSONDecoder().scan_once
+"""What json.loads does past its checks for encodings and white space: the
+child sends UTF-8 without white space, and anything else is malformed."""
+
+
 def parse_reply(payload: bytes) -> dict:
     try:
-        reply = json.loads(payload)
+        text = payload.decode()
+        reply, end = _SCAN(text, 0)
+    except StopIteration as stop:
+        raise WireError(f"sent a malformed reply (no JSON value at char {stop.value})") from None
     except ValueError as err:  # also UnicodeDecodeError
         raise WireError(f"sent a malformed reply ({err})") from None
     except RecursionError:
         raise WireError("sent a malformed reply (nested too deeply)") from None
+    if end != len(text):
+        raise WireError(f"sent a malformed reply (more after the JSON value at char {end})")
     if not isinstance(reply, dict):
         raise WireError("sent a malformed reply (not an object)")
     return reply
