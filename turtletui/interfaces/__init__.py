@@ -50,6 +50,7 @@ from turtletui.interfaces._message import (
     InterfaceError,
     Message,
     Service,
+    _build,
 )
 
 TYPE_CHECKING = False
@@ -550,6 +551,7 @@ def trusted_from_values(cls: type) -> Callable[[list], Message]:
     fields = cls._FIELDS
     simple = all(f.array == _SCALAR and f.kind not in ('msg', 'byte') for f in fields)
     nested = all(f.array == _SCALAR and f.kind != 'byte' for f in fields)
+    _build(cls)  # the compiled constructor, not the stub that compiles it on first use
     trusted = cls._trusted
     if simple:
         def builder(values: list) -> Message:
