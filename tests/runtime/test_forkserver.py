@@ -188,3 +188,15 @@ def test_a_pid_that_is_not_the_graders_own_new_child_is_refused(answer: str) -> 
         mine.close()
         if answer != "nothing":
             theirs.close()
+
+
+def test_two_controllers_of_one_run_both_run_the_second_started_afresh(tmp_path: Path) -> None:
+    """A server forks one run at a time: a second child alive at once starts the usual way."""
+    first, second = controller(tmp_path / "first"), controller(tmp_path / "second", name="other.py")
+    second.write_text(second.read_text().replace('super().__init__("driver")', 'super().__init__("other")'))
+    with forkserver.serving():
+        result = run([first, second], duration=1.0)
+    assert result.crashes == []
+    tokens = noted(tmp_path / "first", "token") + noted(tmp_path / "second", "token")
+    assert len(set(tokens)) == 2
+    assert _processes_with(tokens[0]) == set() and _processes_with(tokens[1]) == set()
