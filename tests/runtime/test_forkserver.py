@@ -101,6 +101,7 @@ def test_the_runs_of_one_submission_share_a_server_and_others_get_their_own(tmp_
 
 
 def _processes_with(token: str) -> set[int]:
+    """Processes whose environment holds the sandbox token (those this user may read)."""
     found = set()
     for entry in os.listdir("/proc"):
         if entry.isdigit():
@@ -113,32 +114,53 @@ def _processes_with(token: str) -> set[int]:
     return found
 
 
+SERVER_MARK = "turtletui.runtime.forkserver import serve"
+
+
+def _servers_of(parent: int) -> set[int]:
+    """Fork servers the process ``parent`` started (their command lines say so)."""
+    found = set()
+    for entry in os.listdir("/proc"):
+        if entry.isdigit():
+            try:
+                with open(f"/proc/{entry}/stat", "rb") as f:
+                    ppid = int(f.read().rpartition(b")")[2].split()[1])
+                with open(f"/proc/{entry}/cmdline", "rb") as f:
+                    command = f.read().decode(errors="replace")
+            except (OSError, ValueError, IndexError):
+                continue
+            if ppid == parent and SERVER_MARK in command:
+                found.add(int(entry))
+    return found
+
+
 def test_the_server_and_everything_it_started_end_with_the_block(tmp_path: Path) -> None:
     path = controller(tmp_path, before="""
         if os.fork() == 0:
             os.setsid()
+            note("grandchild", os.getpid())
             signal.pause()
     """)
     with forkserver.serving():
         run([path], duration=0.5)
-        token = noted(tmp_path, "token")[0]
-        assert _processes_with(token), "the server waits for the submission's next run"
-    assert _processes_with(token) == set()
+        servers = _servers_of(os.getpid())
+        assert len(servers) == 1, "the server waits for the submission's next run"
+        grandchild = int(noted(tmp_path, "grandchild")[0])
+        assert grandchild not in _processes_with(noted(tmp_path, "token")[0]), "killed with its run"
+    assert _servers_of(os.getpid()) == set()
+    assert _processes_with(noted(tmp_path, "token")[0]) == set()
 
 
 def test_a_controller_that_kills_its_server_only_slows_its_own_later_runs(tmp_path: Path) -> None:
-    killer = controller(tmp_path / "killer", before="""
-        me = os.getpid()
+    killer = controller(tmp_path / "killer", before=f"""
         for entry in os.listdir("/proc"):
-            if entry.isdigit() and int(entry) != me:
-                try:
-                    with open(f"/proc/{entry}/environ", "rb") as f:
-                        mine = f"TURTLETUI_SANDBOX={os.environ['TURTLETUI_SANDBOX']}".encode()
-                        if mine in f.read().split(b"\\0"):
-                            os.kill(int(entry), signal.SIGKILL)
-                            note("killed", entry)
-                except OSError:
-                    pass
+            try:
+                with open(f"/proc/{{entry}}/cmdline", "rb") as f:
+                    if {SERVER_MARK!r}.encode() in f.read() and int(entry) != os.getpid():
+                        os.kill(int(entry), signal.SIGKILL)
+                        note("killed", entry)
+            except (OSError, ValueError):
+                pass
     """)
     with forkserver.serving():
         first = run([killer], duration=1.0)
