@@ -4,29 +4,11 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from support.lessons import SOLUTIONS
+from support.lessons import SOLUTIONS, failed, feedback
 
 LESSON = "go-to-goal"
 HERE = SOLUTIONS / "go_to_goal"
 STARTER = Path(__file__).parents[2] / "lessons" / "go_to_goal_starter.py"
-
-
-def check_of(test) -> str:
-    """The check's name (a labelled check is shown as 'name: label')."""
-    return test.check.split(":")[0]
-
-
-def failed(result) -> dict[str, set[str]]:
-    """Check name -> scenarios where it failed."""
-    out: dict[str, set[str]] = {}
-    for test in result.tests:
-        if not test.passed:
-            out.setdefault(check_of(test), set()).add(test.scenario)
-    return out
-
-
-def feedback(result, check: str) -> str:
-    return "\n".join(t.output for t in result.tests if check_of(t) == check and not t.passed)
 
 
 def test_the_reference_scores_full_marks(grade):

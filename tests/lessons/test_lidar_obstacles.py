@@ -5,7 +5,7 @@ from __future__ import annotations
 import dataclasses
 from pathlib import Path
 
-from support.lessons import SOLUTIONS, failed_checks, feedback_of
+from support.lessons import SOLUTIONS, failed, failed_checks, feedback_of
 
 from turtletui.grading.engine import grade_controllers
 from turtletui.grading.engine import random_start as random_start_pose
@@ -14,15 +14,6 @@ from turtletui.runtime.resolve import resolve_controllers
 LESSON = "lidar-obstacles"
 HERE = SOLUTIONS / "lidar_obstacles"
 STARTER = Path(__file__).parents[2] / "lessons" / "lidar_obstacles_starter.py"
-
-
-def failed(result) -> dict[str, set[str]]:
-    """Check name -> scenarios where it failed."""
-    out: dict[str, set[str]] = {}
-    for test in result.tests:
-        if not test.passed:
-            out.setdefault(test.check, set()).add(test.scenario)
-    return out
 
 
 def test_the_reference_scores_full_marks(grade):

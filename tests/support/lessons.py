@@ -41,3 +41,22 @@ def failed_checks(result: SubmissionResult) -> set[str]:
 
 def feedback_of(result: SubmissionResult, check: str) -> list[str]:
     return [test.output for test in result.tests if test.check == check and not test.passed]
+
+
+def check_of(test) -> str:
+    """The check's name (a labelled check is shown as 'name: label')."""
+    return test.check.split(":")[0]
+
+
+def failed(result: SubmissionResult) -> dict[str, set[str]]:
+    """Check name -> scenarios where it failed."""
+    out: dict[str, set[str]] = {}
+    for test in result.tests:
+        if not test.passed:
+            out.setdefault(check_of(test), set()).add(test.scenario)
+    return out
+
+
+def feedback(result: SubmissionResult, check: str) -> str:
+    """The feedback of every failed test of ``check`` (any label), one per line."""
+    return "\n".join(t.output for t in result.tests if check_of(t) == check and not t.passed)
