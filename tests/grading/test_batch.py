@@ -5,6 +5,7 @@ scenarios, hidden scenarios, and a batch stopped by Ctrl-C or SIGKILL."""
 
 from __future__ import annotations
 
+import gc
 import json
 import signal
 import time
@@ -99,6 +100,23 @@ def test_jobs_2_gives_exactly_the_report_of_jobs_1(tmp_path: Path, lesson: Path)
     # and a third grading of the same work (no store) scores the same again
     again = grade_submissions(plan, subs, jobs=2)
     assert comparable(again) == comparable(serial)
+
+
+def test_grading_leaves_the_garbage_collectors_frozen_heap_as_it_found_it(tmp_path: Path, lesson: Path):
+    """The batch freezes the heap during its runs; a caller that froze its own
+    (as the app does after start-up) keeps it frozen, one that did not gets it back."""
+    plan = plan_of(lesson)
+    subs = find_submissions([make_class(tmp_path / "class", {"ann": HONEST})])
+    gc.unfreeze()  # whatever an earlier test froze (the app freezes its start-up heap)
+    grade_submissions(plan, subs, jobs=1)
+    assert gc.get_freeze_count() == 0
+    gc.freeze()
+    try:
+        frozen = gc.get_freeze_count()
+        grade_submissions(plan, subs, jobs=1)
+        assert gc.get_freeze_count() >= frozen
+    finally:
+        gc.unfreeze()
 
 
 # -- results kept, reused, regraded ------------------------------------------------------

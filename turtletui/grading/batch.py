@@ -160,7 +160,7 @@ def default_jobs() -> int:
 
 
 def _init_worker(
-    lesson_path: str, plugins: Sequence[str], limits: Limits | None, parent: int | None = None, cpus: Any = None
+    lesson_path: str, plugins: Sequence[str], limits: Limits | None, parent: int | None = None, next_cpu: Any = None
 ) -> None:
     global _worker_plan, _worker_limits
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent handles Ctrl-C
@@ -176,12 +176,12 @@ def _init_worker(
             pass
     if parent is not None and os.getppid() != parent:
         os._exit(1)  # it died before the line above
-    if cpus is not None:
+    if next_cpu is not None:
         # More runs than pairs of CPUs: a reader polling for its child's answer
         # would take the CPU that child needs (the children read the variable too).
         wire.SPIN_SECONDS = 0.0
         os.environ[wire.SPIN_ENV] = "0"
-        _pin_to_one_cpu(cpus)
+        _pin_to_one_cpu(next_cpu)
     forkserver.enable()
     if _worker_plan is None or str(_worker_plan.lesson.path) != lesson_path:
         _worker_plan = prepare(load_lesson(lesson_path), plugins=plugins)
@@ -297,6 +297,7 @@ def grade_submissions(
     # What is built so far (modules, the plan) lives through the runs: frozen,
     # the garbage collector does not walk it during them, and forked workers
     # do not copy the pages it would touch.
+    frozen_before = gc.get_freeze_count()
     gc.freeze()
     try:
         if jobs <= 1 or len(tasks) <= 1:
@@ -308,7 +309,8 @@ def grade_submissions(
         else:
             _run_parallel(plan, tasks, jobs, limits, plugins, done)
     finally:
-        gc.unfreeze()
+        if not frozen_before:  # a caller's own frozen heap (the app freezes its start-up) stays so
+            gc.unfreeze()
         if store is not None:
             store.restore()
     order = {s.student: i for i, s in enumerate(submissions)}
@@ -369,12 +371,12 @@ def _run_pool(
     _worker_plan = plan
     # A run whose simulator and controller each have a CPU to themselves polls
     # for answers; when runs outnumber pairs of CPUs, each worker keeps to one CPU.
-    cpus = context.Value("i", 0) if 2 * jobs > default_jobs() else None
+    next_cpu = context.Value("i", 0) if 2 * jobs > default_jobs() else None
     executor = ProcessPoolExecutor(
         max_workers=min(jobs, len(queue)),
         mp_context=context,
         initializer=_init_worker,
-        initargs=(str(plan.lesson.path), [str(p) for p in plugins], limits, os.getpid(), cpus),
+        initargs=(str(plan.lesson.path), [str(p) for p in plugins], limits, os.getpid(), next_cpu),
     )
     lost: list[tuple[Any, ...]] = []
     try:
