@@ -9,8 +9,27 @@ from __future__ import annotations
 
 import os
 import signal
+from collections.abc import Iterator
 
 TOKEN_VAR = "TURTLETUI_SANDBOX"
+
+
+def _processes() -> Iterator[tuple[int, bytes, int]]:
+    """(pid, state, parent pid) of every process in /proc (none elsewhere)."""
+    try:
+        entries = os.listdir("/proc")
+    except OSError:
+        return
+    for entry in entries:
+        if not entry.isdigit():
+            continue
+        try:
+            with open(f"/proc/{entry}/stat", "rb") as f:
+                fields = f.read().rpartition(b")")[2].split()
+            state, ppid = fields[0], int(fields[1])
+        except (OSError, ValueError, IndexError):
+            continue
+        yield int(entry), state, ppid
 
 
 def _sandboxed(root: int, token: bytes) -> set[int]:
@@ -18,24 +37,11 @@ def _sandboxed(root: int, token: bytes) -> set[int]:
     descendants, and any process whose environment holds ``token``."""
     children: dict[int, list[int]] = {}
     marked: set[int] = set()
-    try:
-        entries = os.listdir("/proc")
-    except OSError:
-        return marked
     me = os.getpid()
-    for entry in entries:
-        if not entry.isdigit():
-            continue
-        pid = int(entry)
-        try:
-            with open(f"/proc/{entry}/stat", "rb") as f:
-                stat = f.read()
-            ppid = int(stat.rpartition(b")")[2].split()[1])
-        except (OSError, ValueError, IndexError):
-            continue
+    for pid, _, ppid in _processes():
         children.setdefault(ppid, []).append(pid)
         try:
-            with open(f"/proc/{entry}/environ", "rb") as f:
+            with open(f"/proc/{pid}/environ", "rb") as f:
                 if token in f.read().split(b"\0"):
                     marked.add(pid)
         except OSError:
@@ -92,21 +98,10 @@ def kill_tree(pid: int, token: str, *, reaped: bool = False, spare: int | None =
 def reap_zombie_children() -> None:
     """Reap this process's children that have died and that nobody waits for:
     a child subreaper inherits the orphans of what it started and kills them."""
-    me = str(os.getpid()).encode()
-    try:
-        entries = os.listdir("/proc")
-    except OSError:
-        return
-    for entry in entries:
-        if not entry.isdigit():
-            continue
-        try:
-            with open(f"/proc/{entry}/stat", "rb") as f:
-                fields = f.read().rpartition(b")")[2].split()
-        except OSError:
-            continue
-        if len(fields) > 1 and fields[0] == b"Z" and fields[1] == me:
+    me = os.getpid()
+    for pid, state, ppid in _processes():
+        if state == b"Z" and ppid == me:
             try:
-                os.waitpid(int(entry), os.WNOHANG)
+                os.waitpid(pid, os.WNOHANG)
             except ChildProcessError:
                 pass
