@@ -6,6 +6,7 @@ import os
 from pathlib import Path
 
 import pytest
+from support.grading import one_line_error
 from typer.testing import CliRunner
 
 from turtletui import __version__
@@ -19,13 +20,6 @@ def _no_installed_plugins(monkeypatch):
 
 def invoke(*args: str):
     return CliRunner().invoke(app, list(args))
-
-
-def one_line_error(result) -> str:
-    assert result.exit_code == 2, result.output
-    assert result.stderr.startswith("turtletui: error: ")
-    assert result.stderr.count("\n") == 1
-    return result.stderr
 
 
 def test_gradescope_writes_the_autograder(tmp_path: Path):

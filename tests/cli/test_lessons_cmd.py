@@ -6,6 +6,7 @@ import json
 from pathlib import Path
 
 import pytest
+from support.grading import one_line_error
 from typer.testing import CliRunner
 
 from turtletui.cli import app
@@ -21,13 +22,6 @@ def _no_installed_plugins(monkeypatch):
 
 def invoke(*args: str):
     return CliRunner().invoke(app, list(args))
-
-
-def one_line_error(result) -> str:
-    assert result.exit_code == 2, result.output
-    assert result.stderr.startswith("turtletui: error: ")
-    assert result.stderr.count("\n") == 1
-    return result.stderr
 
 
 def write_lesson(folder: Path, name: str, front: str) -> Path:
