@@ -23,6 +23,7 @@ from turtletui.runtime.loader import ControllerSpec
 from turtletui.tui import lesson_checks
 from turtletui.tui.ros2cli import Ros2Cli
 from turtletui.tui.session import LiveSession
+from turtletui.tui.ticker import Ticker
 from turtletui.tui.widgets.arena import ArenaView
 from turtletui.tui.widgets.panels import (
     ConsolePanel,
@@ -120,16 +121,15 @@ class TurtleApp(App):
         """The world to run in; None: the lesson's world, else the empty arena."""
         self.session: LiveSession | None = None
         self._log_seen = 0
-        self._last_frame = 0.0
         self._last_panels = 0.0
         self._last_reload = 0.0
         self._streams: list = []
         self._echo = None
-        self._last_tick: float | None = None
+        self._ticker: Ticker | None = None
         self._side_open = True
         self._shown_status = ""
         self.tick_gaps: deque[float] = deque(maxlen=4096)
-        """Wall seconds between the latest ticks: how steady the loop is."""
+        """Wall seconds between the latest simulation ticks: how steady the loop is."""
 
     # -- layout --------------------------------------------------------------
     def compose(self) -> ComposeResult:
@@ -185,45 +185,59 @@ class TurtleApp(App):
             install_replay(self.session.sim, self._replay)
         self.cli = Ros2Cli(self.session.sim)
         arena = self.query_one(ArenaView)
+        arena.lock = self.session.lock
         arena.world = self.session.sim.world
         arena.focus()
         self.session.advance(self._clock())
-        self.set_interval(TICK_SECONDS, self._tick)
+        self._ticker = Ticker(
+            TICK_SECONDS,
+            self._tick,
+            self.session.lock,
+            clock=self._clock,
+            on_error=lambda err: self.call_from_thread(self._handle_exception, err),
+            gaps=self.tick_gaps,
+        )
+        self._ticker.start()
+        self.set_interval(FRAME_SECONDS, self._frame)
         self._render_frame()
         self.set_timer(1.0, _freeze_startup_heap)
 
     def on_unmount(self) -> None:
+        if self._ticker is not None:
+            self._ticker.stop()
         for stream in self._streams:
             stream.close()
         if self.session is not None:
             self.session.close()
 
     # -- the loop ---------------------------------------------------------------
-    def _tick(self) -> None:
+    def _tick(self, now: float) -> None:
+        """One step of the simulation clock (the ticker's thread, holding session.lock)."""
         session = self.session
-        now = self._clock()
-        if self._last_tick is not None:
-            self.tick_gaps.append(now - self._last_tick)
-        self._last_tick = now
         session.advance(now)
         if self._replay is not None and not session.paused and session.t >= self._replay.duration:
             session.toggle_pause()  # the recording is over: hold its last frame
             session.sim.graph.log("turtletui", INFO, "replay finished: space resumes the simulation")
-        for stream in list(self._streams):
-            lines = stream.poll()
+
+    def _frame(self) -> None:
+        """The screen's side of the loop, at most 30 times a second: streams,
+        reloads, then the frame (which repaints only what changed)."""
+        session = self.session
+        now = self._clock()
+        with session.lock:
+            polled = [(stream, stream.poll(), stream.done) for stream in list(self._streams)]
+        for stream, lines, done in polled:
             if lines:
                 if stream is self._echo:
                     self.query_one(TopicsPanel).echo(lines)
                 else:
                     self.query_one(ConsolePanel).show(lines)
-            if stream.done:
+            if done:
                 self._streams.remove(stream)
         if now - self._last_reload >= RELOAD_SECONDS:
             self._last_reload = now
             session.check_for_changes()
-        if now - self._last_frame >= FRAME_SECONDS:
-            self._last_frame = now
-            self._render_frame(panels=now - self._last_panels >= PANEL_SECONDS)
+        self._render_frame(panels=now - self._last_panels >= PANEL_SECONDS)
 
     def _render_frame(self, panels: bool = True) -> None:
         session = self.session
@@ -235,18 +249,24 @@ class TurtleApp(App):
         if not panels:
             return
         self._last_panels = self._clock()
-        if session.log_count != self._log_seen:
-            new = min(session.log_count - self._log_seen, len(session.logs))
-            self._log_seen = session.log_count
-            self.query_one(LogPanel).add(list(session.logs)[-new:])
         side = self.query_one(ContentSwitcher).current
-        if side in ("topics", "graph"):
-            graph = snapshot(session.sim.graph)
+        # Read what the panels show holding the lock, then let go before
+        # Textual lays them out and paints them.
+        with session.lock:
+            new_logs = []
+            if session.log_count != self._log_seen:
+                new = min(session.log_count - self._log_seen, len(session.logs))
+                self._log_seen = session.log_count
+                new_logs = list(session.logs)[-new:]
+            graph = snapshot(session.sim.graph) if side in ("topics", "graph") else None
+            status = self._status()
+        if new_logs:
+            self.query_one(LogPanel).add(new_logs)
+        if graph is not None:
             if side == "topics":
                 self.query_one(TopicsPanel).update_topics(graph)
             else:
                 self.query_one(GraphPanel).update_graph(graph)
-        status = self._status()
         if status != self._shown_status:
             self._shown_status = status
             # One line of fixed size: no need for Textual to lay out the screen again.
@@ -382,7 +402,8 @@ class TurtleApp(App):
         self._side_open = True
         self._layout_side()
         console.command(line)
-        result = self.cli.run(line)
+        with self.session.lock:
+            result = self.cli.run(line)
         console.show(result.lines, error=result.error)
         if result.stream is not None:
             self._streams.append(result.stream)
@@ -391,11 +412,12 @@ class TurtleApp(App):
         topic = self.query_one(TopicsPanel).selected_topic()
         if topic is None:
             return
-        if self._echo is not None:
-            self._echo.close()
-            if self._echo in self._streams:
-                self._streams.remove(self._echo)
-        result = self.cli.run(f"ros2 topic echo {topic}")
+        with self.session.lock:
+            if self._echo is not None:
+                self._echo.close()
+                if self._echo in self._streams:
+                    self._streams.remove(self._echo)
+            result = self.cli.run(f"ros2 topic echo {topic}")
         self.query_one(TopicsPanel).echo([f"--- echo {topic} ---", *result.lines])
         self._echo = result.stream
         if result.stream is not None:

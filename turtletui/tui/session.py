@@ -6,7 +6,9 @@ its 16 ms timer and reads the rest as plain data.
 
 from __future__ import annotations
 
+import functools
 import os
+import threading
 from collections import deque
 from collections.abc import Sequence
 from dataclasses import dataclass, field
@@ -49,6 +51,18 @@ TELEOP_HEADINGS = {
 _OWNER = "app"
 
 
+def _locked(method):
+    """Run a method holding its object's ``lock``: the app's ticker thread
+    advances the simulation while the screen's thread sends requests."""
+
+    @functools.wraps(method)
+    def locked(self, *args, **kwargs):
+        with self.lock:
+            return method(self, *args, **kwargs)
+
+    return locked
+
+
 @dataclass
 class ControllerSlot:
     """One controller the app runs, and the file it watches for changes."""
@@ -70,18 +84,21 @@ class Teleop:
     turtle: str = "turtle1"
     goal: Any = None
     node: Any = field(init=False)
+    lock: Any = field(default_factory=threading.RLock)
 
     def __post_init__(self) -> None:
         self.node = self.sim.graph.add_node("teleop_turtle", "", _OWNER)
         self._publisher = self.sim.graph.add_publisher(self.node, f"/{self.turtle}/cmd_vel", Twist, 1)
         self.sim.graph.add_action_client(self.node, f"/{self.turtle}/rotate_absolute", RotateAbsolute)
 
+    @_locked
     def drive(self, linear: float = 0.0, angular: float = 0.0) -> None:
         msg = Twist()
         msg.linear.x = linear * TELEOP_LINEAR
         msg.angular.z = angular * TELEOP_ANGULAR
         self.sim.graph.publish(self._publisher.topic, msg)
 
+    @_locked
     def rotate(self, key: str) -> None:
         self.sim.graph.send_goal(
             f"/{self.turtle}/rotate_absolute",
@@ -92,6 +109,7 @@ class Teleop:
             self._finished,
         )
 
+    @_locked
     def cancel(self) -> None:
         if self.goal is not None:
             self.sim.graph.cancel_goal(self.goal)
@@ -117,6 +135,9 @@ class LiveSession:
         log_capacity: int = 2000,
         world: WorldSpec | None = None,
     ) -> None:
+        self.lock = threading.RLock()
+        """Held by whoever reads or changes the simulation: the app advances it
+        from a ticker thread while the screen's thread reads it and sends requests."""
         self.logs: deque[LogRecord] = deque(maxlen=log_capacity)
         """The latest log lines (bounded, so memory stays flat)."""
         self.log_count = 0
@@ -125,7 +146,7 @@ class LiveSession:
         """The world the simulation runs in (obstacles, LiDAR); None: turtlesim's empty arena."""
         built = None if world is None else world.build(seed)
         self.sim = Simulation(world=built, realtime=True, paced=False, log_sinks=[self._on_log])
-        self.teleop = Teleop(self.sim)
+        self.teleop = Teleop(self.sim, lock=self.lock)
         self.paused = False
         self.speed = 1.0
         self._ros_args = list(ros_args)
@@ -144,6 +165,7 @@ class LiveSession:
     def t(self) -> float:
         return self.sim.t
 
+    @_locked
     def advance(self, now: float) -> None:
         """Run the simulation up to wall time ``now`` (time.monotonic())."""
         last, self._last_wall = self._last_wall, now
@@ -154,10 +176,12 @@ class LiveSession:
         self.sim.run_until(self._target_ns)
         self._watch_controllers()
 
+    @_locked
     def toggle_pause(self) -> bool:
         self.paused = not self.paused
         return self.paused
 
+    @_locked
     def step(self) -> None:
         """One 16 ms step (pauses first)."""
         self.paused = True
@@ -165,29 +189,35 @@ class LiveSession:
         self.sim.run_until(self._target_ns)
         self._watch_controllers()
 
+    @_locked
     def faster(self) -> float:
         self.speed = next((s for s in SPEEDS if s > self.speed), SPEEDS[-1])
         return self.speed
 
+    @_locked
     def slower(self) -> float:
         self.speed = next((s for s in reversed(SPEEDS) if s < self.speed), SPEEDS[0])
         return self.speed
 
     # -- turtlesim's services -------------------------------------------------
+    @_locked
     def reset(self) -> None:
         """Call /reset, as `ros2 service call /reset std_srvs/srv/Empty` would."""
         self.sim.graph.call("/reset", Empty.Request(), lambda response: None, _OWNER)
 
+    @_locked
     def clear(self) -> None:
         self.sim.graph.call("/clear", Empty.Request(), lambda response: None, _OWNER)
 
     # -- controllers --------------------------------------------------------------
+    @_locked
     def restart_controllers(self) -> None:
         for slot in self.slots:
             self._stop(slot)
             self._log(INFO, f"restarting {slot.spec.label}")
             self._start(slot)
 
+    @_locked
     def check_for_changes(self) -> list[str]:
         """Reload controllers whose file changed; returns what was reloaded.
         A file that no longer compiles is reported and the running one kept."""
@@ -211,6 +241,7 @@ class LiveSession:
             reloaded.append(slot.spec.label)
         return reloaded
 
+    @_locked
     def close(self) -> None:
         for slot in self.slots:
             self._stop(slot)

@@ -10,6 +10,7 @@ strips from an LRU cache keyed on each line's content.
 from __future__ import annotations
 
 from collections.abc import Hashable, Iterable, Sequence
+from contextlib import AbstractContextManager, nullcontext
 
 from rich.style import Style
 from textual.cache import LRUCache
@@ -71,6 +72,8 @@ class ArenaView(Widget):
     ) -> None:
         super().__init__(name=name, id=id, classes=classes)
         self._world = world
+        self.lock: AbstractContextManager = nullcontext()
+        """Held while the world is read: the app's ticker thread changes it."""
         self.renderer = ArenaRenderer()
         """Renders the world; its ``lines`` are what this widget shows."""
         self._strips: LRUCache[tuple[Hashable, Style, int], Strip] = LRUCache(1024)
@@ -136,7 +139,8 @@ class ArenaView(Widget):
         if self._world is None:
             return
         width, height = self.size
-        self.renderer.frame(self._world, width, height, ascii=self.ascii, overlays=self.overlays)
+        with self.lock:
+            self.renderer.frame(self._world, width, height, ascii=self.ascii, overlays=self.overlays)
 
     def _redraw(self) -> None:
         if self.is_mounted:
