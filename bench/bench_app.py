@@ -64,7 +64,6 @@ import json, os, resource, sys, time
 params = json.loads(sys.argv[1])
 sys.path.insert(0, params["root"])
 from pathlib import Path
-from turtletui.cli.run_cmd import PART6_SAFE_BOX
 from turtletui.plugins.bundled import lessons_dir
 from turtletui.runtime.resolve import resolve_controllers
 from turtletui.tui.app import TICK_SECONDS, TurtleApp
@@ -81,7 +80,7 @@ class BenchApp(TurtleApp):
 
 specs = resolve_controllers(["part6_wall_avoider"])
 lesson = lessons_dir() / "part6_closed_loop.md"
-app = BenchApp(specs, lesson=lesson, overlays=(PART6_SAFE_BOX,))
+app = BenchApp(specs, lesson=lesson)
 page = os.sysconf("SC_PAGE_SIZE")
 stats = {}
 

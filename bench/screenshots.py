@@ -25,7 +25,6 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 import turtletui.runtime.simulation as simulation  # noqa: E402
-from turtletui.cli.run_cmd import PART6_SAFE_BOX  # noqa: E402
 from turtletui.graph.core import LOCKSTEP_EPOCH_NS  # noqa: E402
 from turtletui.runtime.resolve import resolve_controllers  # noqa: E402
 from turtletui.tui.app import TICK_SECONDS, TurtleApp  # noqa: E402
@@ -57,7 +56,7 @@ class StepClock:
 async def shoot(filename: str, size: tuple[int, int], ascii_only: bool, key: str | None, seconds: float) -> Path:
     specs = resolve_controllers(["part6_wall_avoider"])
     clock = StepClock(seconds)
-    app = TurtleApp(specs, lesson=LESSON, ascii=ascii_only, overlays=(PART6_SAFE_BOX,), clock=clock)
+    app = TurtleApp(specs, lesson=LESSON, ascii=ascii_only, clock=clock)
     async with app.run_test(size=size) as pilot:
         for _ in range(int(seconds * 20) + 200):  # the ticks take about `seconds` of wall time
             if clock.now >= clock.stop:

@@ -35,6 +35,12 @@ def run(
     plugin: list[Path] = typer.Option(None, "--plugin", help="Load a plugin file or folder (repeatable)."),
     lesson: str = typer.Option(None, "--lesson", help="Lesson to open in the app: an id (see turtletui lessons) or a file."),
     ascii_only: bool = typer.Option(False, "--ascii", help="Draw with plain ASCII and no colour."),
+    pixels: str = typer.Option(
+        "auto",
+        "--pixels",
+        help="How the app draws the arena: half (half blocks, any terminal), braille (finer trails),"
+        " graphics (the real picture: Kitty, Sixel), or auto (the best the terminal shows).",
+    ),
     world: str = typer.Option(
         None,
         "--world",
@@ -52,7 +58,7 @@ def run(
                 "no terminal to draw the app in; run headless instead: "
                 "turtletui run FILE.py --headless --duration 60"
             )
-        _run_app(controllers, plugin, lesson, ascii_only, seed, world)
+        _run_app(controllers, plugin, lesson, ascii_only, seed, world, pixels)
         return
     from turtletui.api import run as run_controllers
     from turtletui.compat.ros_args import RosArgsError
@@ -102,10 +108,6 @@ def run(
         raise SystemExit(1)
 
 
-PART6_SAFE_BOX = (2.0, 2.0, 9.0, 9.0)
-"""The Part 6 controller's safe zone (x, y from and to, metres), drawn on the arena."""
-
-
 def _resolve_world(name: str, plugins: list[Path] | None, what: str = "--world") -> WorldSpec:
     """The WorldSpec ``--world`` (or a lesson) names; a clean exit if there is none."""
     from turtletui.worlds import WorldError, resolve_world
@@ -123,16 +125,15 @@ def _run_app(
     ascii_only: bool,
     seed: int,
     world: str | None = None,
+    pixels: str = "auto",
 ) -> None:
     """The Textual app (imported only here: headless runs never load Textual)."""
     from turtletui.lessons.loader import LessonError, find_lesson
     from turtletui.runtime.loader import ControllerError
     from turtletui.runtime.resolve import resolve_controllers
 
-    overlays: tuple = ()
     if not controllers:
         controllers = ["part6_wall_avoider"]
-        overlays = (PART6_SAFE_BOX,)
         lesson = lesson or "part6-closed-loop"
     lesson_path = None
     if lesson is not None:
@@ -149,6 +150,7 @@ def _run_app(
         specs = resolve_controllers(controllers, plugins=plugins or ())
     except ControllerError as err:
         fail(str(err))
+    drawing = _drawing(pixels, ascii_only)
     from turtletui.tui.app import TurtleApp
 
     TurtleApp(
@@ -157,6 +159,17 @@ def _run_app(
         ascii=ascii_only,
         ros_args=ROS_ARGS,
         seed=seed,
-        overlays=overlays,
         world=world_spec,
+        pixels=drawing.pixels,
+        graphics=drawing.graphics,
     ).run()
+
+
+def _drawing(pixels: str, ascii_only: bool):
+    """How the app draws the arena in this terminal (asked before Textual takes it over)."""
+    from turtletui.tui.terminal import TerminalError, choose_drawing
+
+    try:
+        return choose_drawing(pixels, ascii=ascii_only)
+    except TerminalError as err:
+        fail(f"--pixels: {err}")

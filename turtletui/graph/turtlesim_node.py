@@ -5,6 +5,7 @@ from __future__ import annotations
 import functools
 import struct
 from array import array
+from collections.abc import Callable
 from typing import Any
 
 from turtletui.graph.core import NS_PER_S, GoalHandle, Graph, Publisher, Subscription
@@ -26,6 +27,7 @@ from turtletui.interfaces.turtlesim import (
 )
 from turtletui.sim import (
     DT,
+    Event,
     Killed,
     ObstacleHit,
     RotationFeedback,
@@ -95,6 +97,9 @@ class TurtlesimNode:
         self._poses: dict[str, Any] = {}
         """The Pose message last published for each turtle."""
         self._goals: dict[int, GoalHandle] = {}
+        self.event_sinks: list[Callable[[Event], None]] = []
+        """Called with every event of the world as it is handled (e.g. the app
+        marks wall hits on the arena)."""
         lidar = self.world.lidar
         self._scan_period = lidar.period_ticks(DT) if lidar is not None else 0
         self._scan_angles = lidar.angles() if lidar is not None else None
@@ -322,6 +327,8 @@ class TurtlesimNode:
     # -- events -----------------------------------------------------------------------
     def _handle_events(self) -> None:
         for event in self.world.take_events():
+            for sink in self.event_sinks:
+                sink(event)
             if isinstance(event, WallHit):
                 self._log(WARN, f"Oh no! I hit the wall! (Clamping from [x={event.x:f}, y={event.y:f}])")
             elif isinstance(event, ObstacleHit):

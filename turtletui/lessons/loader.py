@@ -23,7 +23,7 @@ try:
 except ModuleNotFoundError:  # Python 3.10
     import tomli as tomllib
 
-from turtletui.lessons.model import DEFAULT_START, CheckSpec, Lesson, Scenario
+from turtletui.lessons.model import DEFAULT_START, ArenaOverlay, CheckSpec, Lesson, Scenario
 from turtletui.messages import did_you_mean, one_line
 
 FENCE = "+++"
@@ -39,10 +39,12 @@ LESSON_FIELDS = (
     "world",
     "scenarios",
     "checks",
+    "overlays",
 )
 SCENARIO_FIELDS = ("name", "start", "duration", "seed", "seeds", "hidden", "world", "ros_args")
 START_FIELDS = ("x", "y", "theta")
 CHECK_FIELDS = ("name", "label", "weight", "feedback", "thresholds", "scenarios")
+OVERLAY_FIELDS = ("x0", "y0", "x1", "y1", "color")
 
 
 class LessonError(ValueError):
@@ -247,6 +249,9 @@ class _Validator:
                         "name",
                         self._section("checks", i),
                     )
+        overlays = tuple(
+            self._overlay(i, item) for i, item in enumerate(self._tables(data, "overlays", top))
+        )
         return Lesson(
             id=lesson_id,
             title=title,
@@ -259,6 +264,7 @@ class _Validator:
             world=world,
             scenarios=scenarios,
             checks=checks,
+            overlays=overlays,
         )
 
     def _required_text(self, data: dict[str, Any], key: str, top: tuple[int, int]) -> str:
@@ -351,6 +357,41 @@ class _Validator:
             world=world,
             ros_args=tuple(ros_args),
         )
+
+    def _overlay(self, i: int, item: dict[str, Any]) -> ArenaOverlay:
+        where = f"overlays[{i}]"
+        section = self._section("overlays", i)
+        for key in item:
+            if key not in OVERLAY_FIELDS:
+                raise self._error(
+                    f"{where}: unknown field {key!r}{did_you_mean(key, OVERLAY_FIELDS)}", key, section
+                )
+        corners = []
+        for key in ("x0", "y0", "x1", "y1"):
+            if key not in item:
+                raise self._error(f"{where}: missing field {key!r}", None, section)
+            value = item[key]
+            if not _is_number(value) or not -1.0 <= value <= 12.0:
+                raise self._error(
+                    f"{where}.{key} must be a number of metres in the arena (0 to 11.09), got {_show(value)}",
+                    key,
+                    section,
+                )
+            corners.append(float(value))
+        color = item.get("color")
+        if color is not None:
+            if not (
+                isinstance(color, list)
+                and len(color) == 3
+                and all(_is_int(c) and 0 <= c <= 255 for c in color)
+            ):
+                raise self._error(
+                    f"{where}.color must be [r, g, b] with integers 0..255, got {_show(color)}",
+                    "color",
+                    section,
+                )
+            color = tuple(color)
+        return ArenaOverlay(*corners, color=color)
 
     def _start(self, value: Any, bad: Any) -> dict[str, float] | str:
         if value == "random":

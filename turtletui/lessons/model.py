@@ -57,6 +57,19 @@ class CheckSpec:
 
 
 @dataclass(frozen=True)
+class ArenaOverlay:
+    """A rectangle the app draws on the arena while the lesson is open (a dotted
+    outline, e.g. Part 6's safe box), in metres."""
+
+    x0: float
+    y0: float
+    x1: float
+    y1: float
+    color: tuple[int, int, int] | None = None
+    """RGB of the outline; None: the app's overlay colour (orange)."""
+
+
+@dataclass(frozen=True)
 class Lesson:
     """A lesson file, parsed and validated."""
 
@@ -76,6 +89,8 @@ class Lesson:
     world: str = "empty"
     scenarios: tuple[Scenario, ...] = ()
     checks: tuple[CheckSpec, ...] = ()
+    overlays: tuple[ArenaOverlay, ...] = ()
+    """Rectangles drawn on the arena while the lesson is open."""
 
     @property
     def starter_path(self) -> Path | None:

@@ -21,10 +21,11 @@ from turtletui.graph.introspection import snapshot
 from turtletui.graph.logs import ERROR, INFO
 from turtletui.runtime.loader import ControllerSpec
 from turtletui.tui import lesson_checks
+from turtletui.tui.ascii_filter import AsciiFilter
 from turtletui.tui.ros2cli import Ros2Cli
 from turtletui.tui.session import LiveSession
 from turtletui.tui.ticker import Ticker
-from turtletui.tui.widgets.arena import ArenaView
+from turtletui.tui.widgets.arena import MIN_WIDTH, ArenaView, Overlay
 from turtletui.tui.widgets.panels import (
     ConsolePanel,
     GraphPanel,
@@ -32,6 +33,7 @@ from turtletui.tui.widgets.panels import (
     LogPanel,
     TopicsPanel,
 )
+from turtletui.tui.widgets.splitter import Splitter
 from turtletui.worlds import WorldError, WorldSpec, resolve_world
 
 if TYPE_CHECKING:
@@ -54,6 +56,12 @@ PANELS = ("log", "topics", "graph", "lesson", "console")
 
 NARROW = 60
 """Columns below which the side panel gives way to the arena."""
+
+SIDE_MIN = 30
+"""Fewest columns the side panel is made (keys, dragging its edge)."""
+
+
+_ASCII = AsciiFilter()
 
 
 def _freeze_startup_heap() -> None:
@@ -91,6 +99,12 @@ class TurtleApp(App):
         *(Binding(key, f"rotate('{key}')", f"Rotate {key}", show=False) for key in "gtredcvb"),
         Binding("f", "cancel_rotation", "Cancel rotation", show=False),
         Binding("escape", "focus_arena", "Back to the arena", show=False),
+        Binding("z", "zoom(1)", "Zoom in", show=False),
+        Binding("Z", "zoom(-1)", "Zoom out", show=False),
+        Binding("o", "follow_next", "Follow the next turtle", show=False),
+        Binding("p", "pixels", "Half blocks / braille / picture", show=False),
+        Binding("less_than_sign", "side_width(4)", "Wider side panel", show=False),
+        Binding("greater_than_sign", "side_width(-4)", "Narrower side panel", show=False),
         Binding("q", "quit", "Quit"),
     ]
 
@@ -106,6 +120,8 @@ class TurtleApp(App):
         clock: object = time.monotonic,
         world: WorldSpec | None = None,
         replay: Recording | None = None,
+        pixels: str = "half",
+        graphics: str | None = None,
     ) -> None:
         super().__init__()
         self._replay = replay
@@ -113,6 +129,10 @@ class TurtleApp(App):
         self._controllers = list(controllers)
         self._lesson = lesson
         self._ascii = ascii
+        self._pixels = pixels
+        """The arena's pixel mode: "half" or "braille" (turtletui.tui.cells)."""
+        self._graphics = graphics
+        """The terminal's graphics protocol for the real picture (turtletui.tui.terminal)."""
         self._ros_args = list(ros_args)
         self._seed = seed
         self._overlays = tuple(overlays)
@@ -135,7 +155,15 @@ class TurtleApp(App):
     def compose(self) -> ComposeResult:
         yield Static(id="status")
         with Horizontal(id="main"):
-            yield ArenaView(None, ascii=self._ascii, overlays=self._overlays, id="arena")
+            yield ArenaView(
+                None,
+                ascii=self._ascii,
+                mode=self._pixels,
+                graphics=self._graphics,
+                overlays=self._overlays + self._lesson_overlays(),
+                id="arena",
+            )
+            yield Splitter(ascii=self._ascii, id="splitter")
             with ContentSwitcher(initial="log", id="side"):
                 yield LogPanel(id="log")
                 yield TopicsPanel(id="topics")
@@ -156,6 +184,21 @@ class TurtleApp(App):
             return load_lesson(self._lesson).body
         except LessonError as err:
             return f"**This lesson cannot be shown:** {err}"
+
+    def _lesson_overlays(self) -> tuple:
+        """The open lesson's [[overlays]] (e.g. Part 6's safe box), as the arena draws them."""
+        if self._lesson is None:
+            return ()
+        from turtletui.lessons.loader import LessonError, load_lesson
+
+        try:
+            overlays = load_lesson(self._lesson).overlays
+        except LessonError:
+            return ()  # the lesson pane says what is wrong with it
+        return tuple(
+            Overlay(o.x0, o.y0, o.x1, o.y1) if o.color is None else Overlay(o.x0, o.y0, o.x1, o.y1, o.color)
+            for o in overlays
+        )
 
     def _lesson_world(self) -> tuple[WorldSpec | None, str | None]:
         """(the lesson's world, or None for the empty arena; a problem to log)."""
@@ -186,6 +229,7 @@ class TurtleApp(App):
         self.cli = Ros2Cli(self.session.sim)
         arena = self.query_one(ArenaView)
         arena.lock = self.session.lock
+        arena.hits = self.session.hits
         arena.world = self.session.sim.world
         arena.focus()
         self.session.advance(self._clock())
@@ -223,7 +267,7 @@ class TurtleApp(App):
         """The screen's side of the loop, at most 30 times a second: streams,
         reloads, then the frame (which repaints only what changed)."""
         session = self.session
-        now = self._clock()
+        now = time.monotonic()  # the screen's own pace; self._clock is the simulation's
         with session.lock:
             polled = [(stream, stream.poll(), stream.done) for stream in list(self._streams)]
         for stream, lines, done in polled:
@@ -248,7 +292,7 @@ class TurtleApp(App):
         arena.refresh_frame()
         if not panels:
             return
-        self._last_panels = self._clock()
+        self._last_panels = time.monotonic()
         side = self.query_one(ContentSwitcher).current
         # Read what the panels show holding the lock, then let go before
         # Textual lays them out and paints them.
@@ -280,6 +324,11 @@ class TurtleApp(App):
             for slot in session.slots
         )
         return f" t = {session.t:8.3f} s   x{session.speed:g}   {state}   {controllers or 'no controller'}"
+
+    def get_line_filters(self):
+        """With --ascii, every widget's text is turned into ASCII (turtletui.tui.ascii_filter)."""
+        filters = super().get_line_filters()
+        return [*filters, _ASCII] if self._ascii else filters
 
     def get_system_commands(self, screen: Screen) -> Iterable[SystemCommand]:
         """The command palette (ctrl+p) offers every control the keys do."""
@@ -349,7 +398,32 @@ class TurtleApp(App):
     def _layout_side(self) -> None:
         # Below NARROW columns the arena gets the whole width: a panel opened
         # there would leave neither readable.
-        self.query_one(ContentSwitcher).display = self._side_open and self.size.width >= NARROW
+        shown = self._side_open and self.size.width >= NARROW
+        self.query_one(ContentSwitcher).display = shown
+        self.query_one(Splitter).display = shown
+
+    # -- the arena's view and the side panel's width ---------------------------------------
+    def action_zoom(self, steps: int) -> None:
+        arena = self.query_one(ArenaView)
+        arena.zoom_in() if steps > 0 else arena.zoom_out()
+
+    def action_follow_next(self) -> None:
+        self.query_one(ArenaView).follow_next()
+
+    def action_pixels(self) -> None:
+        """Switch the arena between half blocks, braille dots and the picture."""
+        self.query_one(ArenaView).cycle_drawing()
+
+    def action_side_width(self, delta: int) -> None:
+        self._set_side_width(self.query_one(ContentSwitcher).outer_size.width + delta)
+
+    def on_splitter_dragged(self, event: Splitter.Dragged) -> None:
+        self._set_side_width(self.size.width - event.x - 1)
+
+    def _set_side_width(self, width: int) -> None:
+        """Give the side panel ``width`` columns, leaving the arena its minimum."""
+        width = max(SIDE_MIN, min(width, self.size.width - MIN_WIDTH - 1))
+        self.query_one(ContentSwitcher).styles.width = width
 
     def action_check_lesson(self) -> None:
         """Grade the running controller file against the open lesson, in another

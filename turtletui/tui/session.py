@@ -23,6 +23,7 @@ from turtletui.runtime.loader import ControllerError, ControllerSpec, check_sour
 from turtletui.runtime.sandbox import Limits, SandboxHost
 from turtletui.runtime.simulation import Simulation
 from turtletui.sim import DT
+from turtletui.tui.marks import HitMarks
 from turtletui.worlds import WorldSpec
 
 SPEEDS = (0.25, 0.5, 1.0, 2.0, 4.0, 8.0)
@@ -147,6 +148,9 @@ class LiveSession:
         built = None if world is None else world.build(seed)
         self.sim = Simulation(world=built, realtime=True, paced=False, log_sinks=[self._on_log])
         self.teleop = Teleop(self.sim, lock=self.lock)
+        self.hits = HitMarks()
+        """Where turtles ran into walls and obstacles lately (the arena marks them)."""
+        self.sim.turtlesim.event_sinks.append(lambda event: self.hits.record(event, self.sim.world.time))
         self.paused = False
         self.speed = 1.0
         self._ros_args = list(ros_args)

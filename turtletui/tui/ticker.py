@@ -17,7 +17,7 @@ import threading
 import time
 from collections import deque
 from collections.abc import Callable
-from typing import ContextManager
+from contextlib import AbstractContextManager
 
 MAX_BEHIND = 0.25
 """Seconds a tick may fall behind its deadline before the schedule starts
@@ -73,7 +73,7 @@ class Ticker:
         self,
         period: float,
         tick: Callable[[float], None],
-        lock: ContextManager,
+        lock: AbstractContextManager,
         *,
         clock: Callable[[], float] = time.monotonic,
         on_error: Callable[[BaseException], None] | None = None,

@@ -9,37 +9,47 @@ strips from an LRU cache keyed on each line's content.
 
 from __future__ import annotations
 
+import time
 from collections.abc import Hashable, Iterable, Sequence
 from contextlib import AbstractContextManager, nullcontext
 
 from rich.style import Style
+from textual import events
+from textual.app import ComposeResult
 from textual.cache import LRUCache
-from textual.events import Resize
 from textual.geometry import Region
 from textual.reactive import reactive
 from textual.strip import Strip
 from textual.widget import Widget
 
 from turtletui.sim import World
+from turtletui.tui.cells import MODES
+from turtletui.tui.marks import HitMarks
+from turtletui.tui.picture import arena_picture
 from turtletui.tui.render import (
     MIN_HEIGHT,
     MIN_WIDTH,
     TOO_SMALL,
     ArenaRenderer,
+    Camera,
     Overlay,
     normalise_overlays,
 )
 
-__all__ = ["MIN_HEIGHT", "MIN_WIDTH", "TOO_SMALL", "ArenaView", "Overlay"]
+PICTURE_SECONDS = 0.2
+"""The picture (graphics protocol) is sent at most 5 times a second."""
+
+__all__ = ["MIN_HEIGHT", "MIN_WIDTH", "MODES", "TOO_SMALL", "ArenaView", "Overlay"]
 
 
 class ArenaView(Widget):
-    """The arena: pen image in half-block pixels, turtles as arrows, a metre scale.
+    """The arena: pen image in true-colour cells, turtles as named two-cell
+    tiles, hit marks, a metre scale; zoom follows a turtle.
 
     Below ``MIN_WIDTH`` x ``MIN_HEIGHT`` cells it shows ``TOO_SMALL`` instead;
     without a world (``None``, e.g. until the app has built its session) it is
     blank. Focusable, so the app can park the focus here while keys drive the
-    turtle.
+    turtle. The mouse wheel over it zooms.
     """
 
     can_focus = True
@@ -52,7 +62,12 @@ class ArenaView(Widget):
     """
 
     ascii: reactive[bool] = reactive(False)
-    """Plain ASCII, no colour: '#' trail, '.' overlay, '>' '^' '<' 'v' '/' '\\' turtles."""
+    """Plain ASCII, no colour: a character per pen colour ('#' turtlesim's own),
+    'X' obstacles, '.' overlays, '@' and '>' '^' '<' 'v' '/' '\\' turtles, '!' hits."""
+
+    mode: reactive[str] = reactive("half")
+    """Pixel mode of the colour drawing: "half" (half blocks) or "braille"
+    (2 x 4 dots a cell, finer trails where the font has braille)."""
 
     overlays: reactive[tuple[Overlay, ...]] = reactive(())
     """Rectangles in metres drawn as dotted outlines under the turtles.
@@ -65,7 +80,10 @@ class ArenaView(Widget):
         world: World | None,
         *,
         ascii: bool = False,
+        mode: str = "half",
         overlays: Iterable[Overlay | Sequence] = (),
+        hits: HitMarks | None = None,
+        graphics: str | None = None,
         name: str | None = None,
         id: str | None = None,
         classes: str | None = None,
@@ -74,10 +92,22 @@ class ArenaView(Widget):
         self._world = world
         self.lock: AbstractContextManager = nullcontext()
         """Held while the world is read: the app's ticker thread changes it."""
+        self.hits = hits
+        """Wall and obstacle hits to mark (the session's); None: none shown."""
+        self.camera = Camera()
+        """Zoom level and the turtle the zoomed view follows."""
         self.renderer = ArenaRenderer()
         """Renders the world; its ``lines`` are what this widget shows."""
         self._strips: LRUCache[tuple[Hashable, Style, int], Strip] = LRUCache(1024)
+        self.graphics = graphics
+        """The terminal's graphics protocol ("kitty", "sixel") or None: with one,
+        ``picture`` shows turtlesim's real picture over the arena's cells."""
+        self.picture = graphics is not None
+        """Whether the picture is shown (a graphics protocol and not ASCII)."""
+        self._picture_key: Hashable = None
+        self._picture_at = float("-inf")
         self.set_reactive(ArenaView.ascii, ascii)
+        self.set_reactive(ArenaView.mode, self.validate_mode(mode))
         self.set_reactive(ArenaView.overlays, normalise_overlays(overlays))
 
     @property
@@ -93,15 +123,73 @@ class ArenaView(Widget):
     def validate_overlays(self, overlays: Iterable[Overlay | Sequence]) -> tuple[Overlay, ...]:
         return normalise_overlays(overlays)
 
+    def validate_mode(self, mode: str) -> str:
+        if mode not in MODES:
+            raise ValueError(f"pixel mode must be one of {', '.join(MODES)}, got {mode!r}")
+        return mode
+
     def watch_ascii(self) -> None:
+        self._redraw()
+
+    def watch_mode(self) -> None:
         self._redraw()
 
     def watch_overlays(self) -> None:
         self._redraw()
 
-    def on_resize(self, event: Resize) -> None:
+    def on_resize(self, event: events.Resize) -> None:
         self._redraw()
 
+    def compose(self) -> ComposeResult:
+        if self.graphics is not None:
+            from textual_image.widget import SixelImage, TGPImage
+
+            image_class = SixelImage if self.graphics == "sixel" else TGPImage
+            yield image_class(id="arena-picture")
+
+    def cycle_drawing(self) -> str:
+        """Half blocks, braille, then the picture (with a graphics protocol);
+        returns the drawing now shown."""
+        choices = [*MODES, *(["picture"] if self.graphics is not None else [])]
+        current = "picture" if self.picture else self.mode
+        chosen = choices[(choices.index(current) + 1) % len(choices)]
+        self.picture = chosen == "picture"
+        if not self.picture:
+            self.mode = chosen
+        self._picture_key = None
+        self._redraw()
+        return chosen
+
+    # -- zoom ------------------------------------------------------------------------
+    def zoom_in(self) -> float:
+        """Zoom in one step (the view follows the turtle); returns the zoom."""
+        zoom = self.camera.zoom_in()
+        self._redraw()
+        return zoom
+
+    def zoom_out(self) -> float:
+        zoom = self.camera.zoom_out()
+        self._redraw()
+        return zoom
+
+    def follow_next(self) -> str | None:
+        """Follow the next turtle when zoomed; returns its name."""
+        if self._world is None:
+            return None
+        with self.lock:
+            name = self.camera.follow_next(self._world)
+        self._redraw()
+        return name
+
+    def on_mouse_scroll_up(self, event: events.MouseScrollUp) -> None:
+        event.stop()
+        self.zoom_in()
+
+    def on_mouse_scroll_down(self, event: events.MouseScrollDown) -> None:
+        event.stop()
+        self.zoom_out()
+
+    # -- drawing -------------------------------------------------------------------
     def refresh_frame(self) -> int:
         """Render the world as it is now and repaint the lines that changed.
 
@@ -115,7 +203,37 @@ class ArenaView(Widget):
         changed = self.renderer.changed_lines
         for start, stop in _runs(changed):
             self.refresh(Region(0, start, width, stop - start))
+        if self.graphics is not None:
+            self._show_picture()
         return len(changed)
+
+    def _show_picture(self, now: float | None = None) -> None:
+        """Send the picture again if the frame changed, at most every PICTURE_SECONDS
+        (each one is a new image for the terminal to receive and scale)."""
+        image = self.query_one("#arena-picture")
+        layout = self.renderer.layout
+        shown = self.picture and not self.ascii and layout is not None
+        image.display = shown
+        if not shown:
+            return
+        now = time.monotonic() if now is None else now
+        key = (self.renderer.line_keys and tuple(self.renderer.line_keys), layout)
+        if key == self._picture_key or now - self._picture_at < PICTURE_SECONDS:
+            return
+        self._picture_key, self._picture_at = key, now
+        from PIL import Image
+
+        with self.lock:
+            picture = arena_picture(
+                self._world,
+                overlays=self.overlays,
+                hits=self.hits.visible(self._world.time) if self.hits is not None else (),
+                window=layout.window,
+            )
+        image.styles.offset = (layout.left, layout.top)
+        image.styles.width = layout.size
+        image.styles.height = layout.rows
+        image.image = Image.fromarray(picture, "RGB")
 
     def render_line(self, y: int) -> Strip:
         renderer = self.renderer
@@ -136,16 +254,30 @@ class ArenaView(Widget):
         return strip
 
     def _render_frame(self) -> None:
-        if self._world is None:
+        world = self._world
+        if world is None:
             return
         width, height = self.size
         with self.lock:
-            self.renderer.frame(self._world, width, height, ascii=self.ascii, overlays=self.overlays)
+            hits = self.hits.visible(world.time) if self.hits is not None else ()
+            self.renderer.frame(
+                world,
+                width,
+                height,
+                ascii=self.ascii,
+                overlays=self.overlays,
+                mode=self.mode,
+                camera=self.camera,
+                hits=hits,
+            )
 
     def _redraw(self) -> None:
         if self.is_mounted:
             self._render_frame()
             self.refresh()
+            if self.graphics is not None:
+                self._picture_at = float("-inf")
+                self._show_picture()
 
 
 def _runs(lines: list[int]) -> list[tuple[int, int]]:
