@@ -44,28 +44,28 @@ def test_obstacles_are_filled_in_their_own_colour():
     rows = arena_rows(renderer, renderer.frame(world, 80, 30))
     with_obstacle = [i for i, line in enumerate(rows) if OBSTACLE_COLOR in colours(line)]
     layout = renderer.layout
-    top_box = layout.cell_of(2.5, 2.9)[1] // 2
-    bottom_box = layout.cell_of(2.5, 1.1)[1] // 2
-    dot = layout.cell_of(9.0, 9.0)[1] // 2
+    top_box = layout.pixel_of(2.5, 2.9)[1] // 2
+    bottom_box = layout.pixel_of(2.5, 1.1)[1] // 2
+    dot = layout.pixel_of(9.0, 9.0)[1] // 2
     box_lines = [i for i in with_obstacle if i > dot + 1]
     assert box_lines == list(range(top_box, bottom_box + 1))
     assert dot in with_obstacle and len(with_obstacle) - len(box_lines) <= 2  # 0.4 m: 2 pixels at most
     assert all(BACKGROUND in colours(line) for line in rows)
 
 
-def test_obstacles_are_hashes_in_ascii():
+def test_obstacles_are_xs_in_ascii_apart_from_trails():
     renderer = ArenaRenderer()
     world = World(spawn_turtle1=False, obstacles=[BOX])
     lines = renderer.frame(world, 80, 30, ascii=True)
     layout = renderer.layout
-    col0, row = layout.cell_of(1.05, 2.0)
-    col1, _ = layout.cell_of(3.95, 2.0)
+    col0, row = layout.pixel_of(1.05, 2.0)
+    col1, _ = layout.pixel_of(3.95, 2.0)
     text = "".join(segment.text for segment in lines[layout.top + row // 2])
     start = layout.left
-    assert set(text[start + col0 : start + col1 + 1]) == {"#"}
+    assert set(text[start + col0 : start + col1 + 1]) == {"X"}
     assert text[start + col1 + 2] == " " and text[start + col0 - 2] == " "
     empty = renderer.frame(World(spawn_turtle1=False), 80, 30, ascii=True)
-    assert "#" not in "".join(segment.text for line in empty for segment in line)
+    assert "X" not in "".join(segment.text for line in empty for segment in line)
 
 
 def test_the_live_session_runs_in_the_world_it_is_given():

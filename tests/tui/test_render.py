@@ -9,12 +9,19 @@ import pytest
 from rich.segment import Segment
 
 from turtletui.sim import BACKGROUND, PEN_COLOR, World
+from turtletui.tui.marks import HitMarks, pen_char, turtle_color
 from turtletui.tui.render import (
-    ARROWS,
-    ASCII_ARROWS,
+    ASCII_BODY,
+    ASCII_HEADS,
+    ASCII_HIT,
+    BODY,
+    HEADS,
+    HIT,
+    HIT_COLORS,
     MIN_HEIGHT,
     MIN_WIDTH,
     OVERLAY_COLOR,
+    TILE_COLOR,
     TOO_SMALL,
     ArenaRenderer,
     Overlay,
@@ -54,7 +61,7 @@ def colours_at(line: list[Segment], column: int) -> set[tuple[int, int, int]]:
 def pixel_colour(renderer: ArenaRenderer, lines, x: float, y: float) -> tuple[int, int, int]:
     """The colour the frame shows for the arena pixel under (x, y) metres."""
     layout = renderer.layout
-    col, row = layout.cell_of(x, y)
+    col, row = layout.pixel_of(x, y)
     char, segment = cells(lines[layout.top + row // 2])[layout.left + col]
     if char == "▀" and row % 2 == 0:
         return tuple(segment.style.color.triplet)
@@ -204,42 +211,83 @@ def test_changing_the_background_recolours_the_arena():
 
 
 # -- turtles ------------------------------------------------------------------
+def turtle_at(renderer: ArenaRenderer, lines, name: str, x: float, y: float):
+    """(body cell, head cell) of the turtle drawn at (x, y): ((line, column), ...)."""
+    layout = renderer.layout
+    col, line = layout.cell_of(x, y)
+    return layout.top + line, layout.left + col
+
+
 @pytest.mark.parametrize("k", range(8))
-def test_the_turtle_glyph_shows_its_heading(k):
+def test_a_turtle_is_a_body_and_a_head_on_the_side_it_faces(k):
     world = empty_world()
-    world.spawn(3.0, 7.0, k * math.pi / 4, "t")
+    world.spawn(3.0, 7.0, k * math.pi / 4, "turtle1")
     renderer = ArenaRenderer()
     lines = renderer.frame(world, 80, 24)
-    layout = renderer.layout
-    col, row = layout.cell_of(3.0, 7.0)
-    found = find_glyphs(lines, ARROWS)
-    assert found == [(layout.top + row // 2, layout.left + col, ARROWS[k])]
-    _, segment = cells(lines[layout.top + row // 2])[layout.left + col]
-    assert segment.style.bold
-    # Contrasting: the glyph's colour is not the colour it sits on.
-    assert segment.style.color.triplet != segment.style.bgcolor.triplet
-    assert tuple(segment.style.bgcolor.triplet) == BACKGROUND
+    line, col = turtle_at(renderer, lines, "turtle1", 3.0, 7.0)
+    # The body: its cell filled with the turtle's colour (turtle1: yellow).
+    body_char, body = cells(lines[line])[col]
+    assert body_char == BODY and tuple(body.style.bgcolor.triplet) == turtle_color("turtle1")
+    # The head: the heading's triangle in the same colour, on the dark tile, next to the body.
+    d_line, d_col = [(0, 1), (-1, 1), (-1, 0), (-1, -1), (0, -1), (1, -1), (1, 0), (1, 1)][k]
+    head_char, head = cells(lines[line + d_line])[col + d_col]
+    assert head_char == HEADS[k] and head.style.bold
+    assert tuple(head.style.color.triplet) == turtle_color("turtle1")
+    assert tuple(head.style.bgcolor.triplet) == TILE_COLOR
+    assert find_glyphs(lines, HEADS) == [(line + d_line, col + d_col, HEADS[k])]
     ascii_lines = renderer.frame(world, 80, 24, ascii=True)
-    assert text(ascii_lines[layout.top + row // 2])[layout.left + col] == ASCII_ARROWS[k]
+    assert text(ascii_lines[line])[col] == ASCII_BODY
+    assert text(ascii_lines[line + d_line])[col + d_col] == ASCII_HEADS[k]
 
 
 @pytest.mark.parametrize(
-    ("theta", "glyph"),
+    ("theta", "index"),
     [
-        (0.0, "→"),
-        (0.39, "→"),
-        (0.40, "↗"),
-        (-math.pi / 2, "↓"),
-        (-math.pi, "←"),
-        (math.pi, "←"),
-        (3 * math.pi / 4, "↖"),
-        (-3 * math.pi / 4, "↙"),
-        (-0.8, "↘"),
-        (2 * math.pi + 1.57, "↑"),
+        (0.0, 0),
+        (0.39, 0),
+        (0.40, 1),
+        (-math.pi / 2, 6),
+        (-math.pi, 4),
+        (math.pi, 4),
+        (3 * math.pi / 4, 3),
+        (-3 * math.pi / 4, 5),
+        (-0.8, 7),
+        (2 * math.pi + 1.57, 2),
     ],
 )
-def test_headings_round_to_the_nearest_of_eight(theta, glyph):
-    assert ARROWS[heading_index(theta)] == glyph
+def test_headings_round_to_the_nearest_of_eight(theta, index):
+    assert heading_index(theta) == index
+
+
+def test_the_name_is_written_beside_the_turtle_in_its_colour():
+    world = empty_world()
+    world.spawn(5.0, 5.0, 0.0, "turtle2")
+    renderer = ArenaRenderer()
+    lines = renderer.frame(world, 80, 24)
+    line, col = turtle_at(renderer, lines, "turtle2", 5.0, 5.0)
+    above = text(lines[line - 1])
+    start = above.index("turtle2")
+    assert start <= col < start + len("turtle2")
+    _, segment = cells(lines[line - 1])[start]
+    assert tuple(segment.style.color.triplet) == turtle_color("turtle2") != turtle_color("turtle1")
+    # Facing north the head is above: the name goes below.
+    world.teleport_absolute("turtle2", 5.0, 5.0, math.pi / 2)
+    world.step()
+    world.step()
+    lines = renderer.frame(world, 80, 24)
+    assert "turtle2" in text(lines[line + 1]) and "turtle2" not in text(lines[line - 1])
+    assert "turtle2" in text(renderer.frame(world, 80, 24, ascii=True)[line + 1])
+
+
+def test_a_turtle_at_the_wall_keeps_its_head_inside_the_arena():
+    world = empty_world()
+    world.spawn(11.08, 5.0, 0.0, "turtle1")  # against the east wall, facing it
+    renderer = ArenaRenderer()
+    lines = renderer.frame(world, 80, 24)
+    layout = renderer.layout
+    [(line, col, glyph)] = find_glyphs(lines, HEADS)
+    assert glyph == HEADS[0] and col == layout.left + layout.size - 1
+    assert cells(lines[line])[col - 1][0] == BODY
 
 
 def test_a_turtle_on_its_trail_is_still_visible():
@@ -249,30 +297,70 @@ def test_a_turtle_on_its_trail_is_still_visible():
         world.step()
     renderer = ArenaRenderer()
     lines = renderer.frame(world, 80, 24)
-    [(y, x, glyph)] = find_glyphs(lines, ARROWS)
-    assert glyph == "→"
+    [(y, x, glyph)] = find_glyphs(lines, HEADS)
+    assert glyph == HEADS[0]
     _, segment = cells(lines[y])[x]
-    assert tuple(segment.style.bgcolor.triplet) == PEN_COLOR
-    assert segment.style.color.triplet != segment.style.bgcolor.triplet
+    assert tuple(segment.style.bgcolor.triplet) == TILE_COLOR  # dark under the head, on any trail
+    assert tuple(cells(lines[y])[x - 2][1].style.bgcolor.triplet) == PEN_COLOR  # the trail behind it
 
 
-def test_several_turtles_are_each_drawn():
+def test_several_turtles_are_each_drawn_in_their_own_colour():
     world = empty_world()
-    world.spawn(1.0, 1.0, 0.0, "a")
-    world.spawn(10.0, 10.0, math.pi, "b")
-    world.spawn(1.0, 10.0, math.pi / 2, "c")
-    world.spawn(10.0, 1.0, -math.pi / 2, "d")
+    names = ("turtle1", "turtle2", "turtle3", "turtle4")
+    for name, (x, y) in zip(names, [(1.0, 1.0), (10.0, 10.0), (1.0, 10.0), (10.0, 4.0)], strict=True):
+        world.spawn(x, y, 0.0, name)
     renderer = ArenaRenderer()
     lines = renderer.frame(world, 160, 50)
-    layout = renderer.layout
-    expected = []
-    for name in ("a", "b", "c", "d"):
+    colours = set()
+    for name in names:
         turtle = world.turtles[name]
-        col, row = layout.cell_of(turtle.x, turtle.y)
-        expected.append(
-            (layout.top + row // 2, layout.left + col, ARROWS[heading_index(turtle.theta)])
-        )
-    assert sorted(find_glyphs(lines, ARROWS)) == sorted(expected)
+        line, col = turtle_at(renderer, lines, name, turtle.x, turtle.y)
+        _, body = cells(lines[line])[col]
+        colours.add(tuple(body.style.bgcolor.triplet))
+        assert any(name in text(lines[line + d]) for d in (-1, 1))
+    assert colours == {turtle_color(name) for name in names} and len(colours) == 4
+    assert len(find_glyphs(lines, HEADS)) == 4
+
+
+def test_turtle_colours_are_fixed_by_name():
+    assert turtle_color("turtle1") != turtle_color("turtle2")
+    assert turtle_color("alice") == turtle_color("alice")
+    assert turtle_color("turtle1") == turtle_color("turtle9")  # the palette's 8 colours repeat
+
+
+# -- hit marks ------------------------------------------------------------------
+def test_hit_marks_fade_in_steps_and_go():
+    world = empty_world()
+    renderer = ArenaRenderer()
+    levels = []
+    for level in range(3):
+        lines = renderer.frame(world, 80, 24, hits=[(11.0888, 5.0, level)])
+        [(line, col, _)] = find_glyphs(lines, HIT)
+        levels.append(tuple(cells(lines[line])[col][1].style.color.triplet))
+    assert levels == list(HIT_COLORS)
+    assert col == renderer.layout.left + renderer.layout.size - 1  # on the wall it hit
+    lines = renderer.frame(world, 80, 24, ascii=True, hits=[(11.0888, 5.0, 0)])
+    assert text(lines[line])[col] == ASCII_HIT
+
+
+def test_hit_marks_follow_wall_hits_of_the_world():
+    world = World()
+    marks = HitMarks()
+    for _ in range(80):  # 1.28 s at 5 m/s from x = 5.5: into the east wall
+        world.command_velocity("turtle1", 5.0, 0.0, 0.0)
+        world.step()
+        for event in world.take_events():
+            marks.record(event, world.time)
+    shown = marks.visible(world.time)
+    assert len(shown) == 1  # pushing along the wall refreshes one mark
+    x, y, level = shown[0]
+    assert x == pytest.approx(11.0888, abs=1e-3) and y == pytest.approx(5.5444, abs=1e-3) and level == 0
+    assert marks.visible(world.time + 1.5)[0][2] == 1
+    assert marks.visible(world.time + 3.1) == ()
+    world.clear()
+    for event in world.take_events():
+        marks.record(event, world.time)
+    assert marks.visible(world.time) == ()
 
 
 # -- scale --------------------------------------------------------------------
@@ -330,8 +418,8 @@ def test_an_overlay_is_a_dotted_outline_under_the_turtles():
     for x, y in [(9.0, 9.0), (2.0, 9.0), (9.0, 2.0)]:
         assert pixel_colour(renderer, lines, x, y) == OVERLAY_COLOR
     # Dotted: along an edge, overlay and background pixels alternate.
-    c0, r0 = layout.cell_of(2.0, 9.0)
-    c1, _ = layout.cell_of(9.0, 9.0)
+    c0, r0 = layout.pixel_of(2.0, 9.0)
+    c1, _ = layout.pixel_of(9.0, 9.0)
     line = lines[layout.top + r0 // 2]
     edge = []
     for col in range(c0, c1 + 1):
@@ -345,8 +433,9 @@ def test_an_overlay_is_a_dotted_outline_under_the_turtles():
     for x, y in [(5.5, 5.5), (1.0, 1.0), (10.0, 10.0), (5.5, 1.5), (9.5, 5.5)]:
         assert pixel_colour(renderer, lines, x, y) == BACKGROUND
     # The turtle on the corner is drawn over the outline.
-    col, row = layout.cell_of(2.0, 2.0)
-    assert cells(lines[layout.top + row // 2])[layout.left + col][0] == "→"
+    col, line = layout.cell_of(2.0, 2.0)
+    assert cells(lines[layout.top + line])[layout.left + col][0] == BODY
+    assert cells(lines[layout.top + line])[layout.left + col + 1][0] == HEADS[0]
 
 
 def test_overlays_take_a_colour_and_any_corner_order():
@@ -377,9 +466,9 @@ def test_ascii_mode_is_plain_ascii_without_style():
         text(line)[layout.left : layout.left + layout.size]
         for line in lines[layout.top : layout.top + layout.rows]
     )
-    assert set(arena) <= set(" #.") | set(ASCII_ARROWS)
-    assert "#" in arena and "." in arena
-    assert sum(arena.count(glyph) for glyph in set(ASCII_ARROWS)) == 1
+    assert set(arena) <= set(" #.@turtle1") | set(ASCII_HEADS)
+    assert "#" in arena and "." in arena and "turtle1" in arena
+    assert arena.count("@") == 1
     top = text(lines[layout.top - 1])
     assert top.strip() == "+" + "-" * layout.size + "+"
     assert text(lines[layout.top])[layout.left - 1] in "|+"
@@ -388,15 +477,37 @@ def test_ascii_mode_is_plain_ascii_without_style():
 
 def test_ascii_trail_cells_follow_the_pen_image():
     world = empty_world()
-    world.canvas.draw_segment(1.0, 3.0, 10.0, 3.0, RED, 3)
+    world.canvas.draw_segment(1.0, 3.0, 10.0, 3.0, PEN_COLOR, 3)
     renderer = ArenaRenderer()
     lines = renderer.frame(world, 80, 24, ascii=True)
     layout = renderer.layout
-    col0, row = layout.cell_of(1.0, 3.0)
-    col1, _ = layout.cell_of(10.0, 3.0)
+    col0, row = layout.pixel_of(1.0, 3.0)
+    col1, _ = layout.pixel_of(10.0, 3.0)
     line = text(lines[layout.top + row // 2])[layout.left : layout.left + layout.size]
     assert set(line[col0 : col1 + 1]) == {"#"}
     assert line.count("#") <= col1 - col0 + 3
+
+
+def test_each_pen_colour_has_its_own_ascii_character():
+    # Part 7: red on one side of x = 5.5, green on the other; both were '#'.
+    world = empty_world()
+    world.canvas.draw_segment(1.0, 3.0, 5.0, 3.0, (255, 0, 0), 3)
+    world.canvas.draw_segment(6.0, 3.0, 10.0, 3.0, (0, 255, 0), 3)
+    world.canvas.draw_segment(1.0, 8.0, 10.0, 8.0, PEN_COLOR, 3)
+    renderer = ArenaRenderer()
+    lines = renderer.frame(world, 80, 24, ascii=True)
+    layout = renderer.layout
+
+    def chars_at(x0: float, x1: float, y: float) -> set[str]:
+        c0, row = layout.pixel_of(x0, y)
+        c1, _ = layout.pixel_of(x1, y)
+        return set(text(lines[layout.top + row // 2])[layout.left + c0 : layout.left + c1 + 1])
+
+    assert chars_at(1.5, 4.5, 3.0) == {pen_char((255, 0, 0))} == {"*"}
+    assert chars_at(6.5, 9.5, 3.0) == {pen_char((0, 255, 0))} == {"+"}
+    assert chars_at(1.5, 9.5, 8.0) == {"#"}
+    distinct = {pen_char(rgb) for rgb in [(255, 0, 0), (255, 255, 0), (0, 255, 0), (0, 255, 255), (0, 0, 255), (255, 0, 255), (255, 255, 255), (0, 0, 0), PEN_COLOR]}
+    assert len(distinct) == 9
 
 
 # -- what changed -------------------------------------------------------------
@@ -415,26 +526,31 @@ def test_the_first_frame_changes_every_line_and_an_unchanged_world_none():
     assert renderer.changed_lines == []
 
 
+def marked_lines(renderer: ArenaRenderer) -> set[int]:
+    """Screen lines holding a turtle's cells or its name."""
+    return {renderer.layout.top + line for line, _ in renderer.marks}
+
+
 def test_a_moving_turtle_changes_only_its_old_and_new_lines():
     world = World()
     world.set_pen("turtle1", 0, 0, 0, 0, 1)
     renderer = ArenaRenderer()
     renderer.frame(world, 160, 50)
-    layout = renderer.layout
-    turtle = world.turtles["turtle1"]
-    old_line = layout.top + layout.cell_of(turtle.x, turtle.y)[1] // 2
+    before = marked_lines(renderer)
+    assert len(before) == 2  # the turtle's line and its name's
     world.teleport_absolute("turtle1", 5.544, 8.0, math.pi / 2)
     world.step()
     world.step()
     renderer.frame(world, 160, 50)
-    new_line = layout.top + layout.cell_of(turtle.x, turtle.y)[1] // 2
-    assert old_line != new_line
-    assert renderer.changed_lines == [new_line, old_line]
-    # Turning in place changes one line.
-    world.teleport_relative("turtle1", 0.0, math.pi / 2)
+    after = marked_lines(renderer)
+    assert len(after) == 3 and not before & after  # head above, name below
+    assert renderer.changed_lines == sorted(before | after)
+    # Turning in place changes only the lines around the turtle.
+    world.teleport_relative("turtle1", 0.0, -math.pi / 2)
     world.step()
     renderer.frame(world, 160, 50)
-    assert renderer.changed_lines == [new_line]
+    assert set(renderer.changed_lines) <= after | marked_lines(renderer)
+    assert renderer.changed_lines
 
 
 def test_a_drawing_turtle_changes_a_few_lines_per_step():
@@ -448,8 +564,8 @@ def test_a_drawing_turtle_changes_a_few_lines_per_step():
         world.step()
         renderer.frame(world, 80, 24)
         counts.append(len(renderer.changed_lines))
-    assert max(counts) <= 3
-    assert sum(counts) > 0
+    assert max(counts) <= 6  # the old and new lines of its head, body and name
+    assert sum(counts) > 0 and sorted(counts)[len(counts) // 2] <= 3
 
 
 def test_equal_line_keys_mean_equal_lines():
@@ -489,7 +605,7 @@ def test_too_small_shows_the_message(size):
         assert " ".join(shown) == TOO_SMALL
     for word in shown:
         assert word in TOO_SMALL
-    assert not find_glyphs(lines, ARROWS)
+    assert not find_glyphs(lines, HEADS)
     renderer.frame(World(), width, height)
     assert renderer.changed_lines == []
 
@@ -498,7 +614,7 @@ def test_the_minimum_size_shows_the_arena():
     renderer = ArenaRenderer()
     lines = renderer.frame(World(), MIN_WIDTH, MIN_HEIGHT)
     assert renderer.layout is not None
-    assert len(find_glyphs(lines, ARROWS)) == 1
+    assert len(find_glyphs(lines, HEADS)) == 1
 
 
 def test_a_new_world_is_never_mistaken_for_the_old_one():

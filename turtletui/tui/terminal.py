@@ -47,28 +47,25 @@ def multiplexed(env: Mapping[str, str]) -> bool:
     return bool(env.get("TMUX") or env.get("STY")) or term.startswith(("screen", "tmux"))
 
 
-def may_have_graphics(env: Mapping[str, str]) -> bool:
-    """Whether the environment names a terminal with a graphics protocol."""
+def _names(env: Mapping[str, str], terms, programs, variables) -> bool:
+    """Whether the environment names one of these terminals (never through tmux or screen)."""
     if multiplexed(env):
         return False
     return (
-        env.get("TERM", "") in GRAPHICS_TERMINALS
-        or env.get("TERM_PROGRAM", "") in GRAPHICS_PROGRAMS
-        or "KITTY_WINDOW_ID" in env
-        or "WEZTERM_PANE" in env
-        or "KONSOLE_VERSION" in env
+        env.get("TERM", "") in terms
+        or env.get("TERM_PROGRAM", "") in programs
+        or any(name in env for name in variables)
     )
+
+
+def may_have_graphics(env: Mapping[str, str]) -> bool:
+    """Whether the environment names a terminal with a graphics protocol."""
+    return _names(env, GRAPHICS_TERMINALS, GRAPHICS_PROGRAMS, ("KITTY_WINDOW_ID", "WEZTERM_PANE", "KONSOLE_VERSION"))
 
 
 def draws_braille(env: Mapping[str, str]) -> bool:
     """Whether the terminal draws braille itself (so no font can lack it)."""
-    if multiplexed(env):
-        return False
-    return (
-        env.get("TERM", "") in BRAILLE_TERMINALS
-        or env.get("TERM_PROGRAM", "") in BRAILLE_PROGRAMS
-        or "KITTY_WINDOW_ID" in env
-    )
+    return _names(env, BRAILLE_TERMINALS, BRAILLE_PROGRAMS, ("KITTY_WINDOW_ID",))
 
 
 def probe_graphics() -> str | None:
