@@ -343,6 +343,22 @@ def test_hit_marks_fade_in_steps_and_go():
     assert text(lines[line])[col] == ASCII_HIT
 
 
+def test_a_wall_hit_also_marks_the_border_beside_it():
+    world = empty_world()
+    renderer = ArenaRenderer()
+    lines = renderer.frame(world, 80, 24, hits=[(11.0888, 5.0, 0), (3.0, 0.0, 2)])
+    layout = renderer.layout
+    _, line = layout.cell_of(11.0888, 5.0)
+    char, segment = cells(lines[layout.top + line])[layout.left + layout.size]
+    assert char == "│" and tuple(segment.style.color.triplet) == HIT_COLORS[0]
+    col, _ = layout.cell_of(3.0, 0.0)
+    char, segment = cells(lines[layout.top + layout.rows])[layout.left + col]
+    assert char in "─┬" and tuple(segment.style.color.triplet) == HIT_COLORS[2]
+    ascii = renderer.frame(world, 80, 24, ascii=True, hits=[(11.0888, 5.0, 0)])
+    assert text(ascii[layout.top + line])[layout.left + layout.size] == ASCII_HIT
+    assert len(text(ascii[layout.top + line])) == 80
+
+
 def test_hit_marks_follow_wall_hits_of_the_world():
     world = World()
     marks = HitMarks()

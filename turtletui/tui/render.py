@@ -44,7 +44,7 @@ from rich.segment import Segment
 from rich.style import Style
 
 from turtletui.sim.canvas import to_pixel
-from turtletui.sim.constants import METER_PX, PIXELS
+from turtletui.sim.constants import ARENA_SIZE, METER_PX, PIXELS
 from turtletui.sim.obstacles import Circle
 from turtletui.tui import cells as cell_modes
 from turtletui.tui.marks import OBSTACLE_CHAR, OVERLAY_CHAR, pen_char, turtle_color
@@ -476,7 +476,7 @@ class ArenaRenderer:
             self._scene = _scene(self._image, canvas.background, layout, overlays, world.obstacles, mode)
             self._scene_key = scene_key
         self.marks = marks
-        lines, keys = self._compose(layout, ascii, mode, marks)
+        lines, keys = self._compose(layout, ascii, mode, marks, _wall_marks(layout, hits))
         return self._publish(frame_key, lines, keys)
 
     def _publish(self, frame_key, lines, keys) -> list[list[Segment]]:
@@ -492,7 +492,7 @@ class ArenaRenderer:
         self._frame_key = frame_key
         return lines
 
-    def _compose(self, layout: Layout, ascii: bool, mode: str, marks: dict) -> tuple[list, list]:
+    def _compose(self, layout: Layout, ascii: bool, mode: str, marks: dict, walls: dict) -> tuple[list, list]:
         scene = self._scene
         box = ASCII_BOX if ascii else BOX
         style = None if ascii else BORDER_STYLE
@@ -514,31 +514,89 @@ class ArenaRenderer:
                 here = tuple(by_line.get(arena_row, ()))
                 label = y_labels.get(arena_row, "").rjust(_LABEL_WIDTH)
                 tick = box["ytick"] if arena_row in y_ticks else box["v"]
+                hit = (walls.get(("left", arena_row)), walls.get(("right", arena_row)))
                 if ascii:
                     text = _ascii_row(scene.chars[arena_row], here)
-                    key: Hashable = ("ascii", layout, line, label, tick, text)
+                    key: Hashable = ("ascii", layout, line, label, tick, text, hit)
                 else:
                     row_cells = scene.cells[arena_row]
-                    key = (mode, layout, line, label, tick, row_cells.tobytes(), here)
+                    key = (mode, layout, line, label, tick, row_cells.tobytes(), here, hit)
                 cached = segments.get(key)
                 if cached is None:
-                    head = Segment(pad_left + label + tick, style)
-                    tail = Segment(box["v"] + pad_right, style)
+                    left_wall, right_wall = (_wall_char(box["v"], level, ascii) for level in hit)
+                    head = [Segment(pad_left + label, style), _wall_segment(tick, hit[0], style, ascii)]
+                    tail = [_wall_segment(box["v"], hit[1], style, ascii), Segment(pad_right, style)]
                     if ascii:
-                        cached = [Segment(head.text + text + tail.text)]
+                        cached = [Segment(pad_left + label + (tick if hit[0] is None else left_wall) + text
+                                          + (box["v"] if hit[1] is None else right_wall) + pad_right)]
                     else:
-                        cached = [head, *_rgb_row(row_cells, mode, here), tail]
+                        cached = [*head, *_rgb_row(row_cells, mode, here), *tail]
                     segments.put(key, cached)
             else:
-                key = ("frame", ascii, layout, line, tuple(sorted(x_labels.items())))
+                edge = "top" if line == top - 1 else "bottom" if line == top + rows else None
+                hit_cols = tuple(sorted((c, lv) for (side, c), lv in walls.items() if side == edge))
+                key = ("frame", ascii, layout, line, tuple(sorted(x_labels.items())), hit_cols)
                 cached = segments.get(key)
                 if cached is None:
                     text = _frame_line(layout, line, box, x_ticks, x_labels)
-                    cached = [Segment(text, None if not text.strip() else style)]
+                    cached = _frame_segments(text, left, dict(hit_cols), None if not text.strip() else style, ascii)
                     segments.put(key, cached)
             lines.append(cached)
             keys.append(key)
         return lines, keys
+
+
+def _wall_marks(layout: Layout, hits) -> dict[tuple[str, int], int]:
+    """Border cells next to wall hits, so a hit shows even under the turtle
+    that made it: ("left" | "right", arena line) or ("top" | "bottom", arena
+    column) -> the freshest fade level there."""
+    walls: dict[tuple[str, int], int] = {}
+    edge = 0.5 / METER_PX  # within half a pen-image pixel of the wall
+    for x, y, level in hits:
+        col, line = layout.cell_of(x, y)
+        sides = []
+        if x <= edge:
+            sides.append(("left", line))
+        elif x >= ARENA_SIZE - edge:
+            sides.append(("right", line))
+        if y <= edge:
+            sides.append(("bottom", col))
+        elif y >= ARENA_SIZE - edge:
+            sides.append(("top", col))
+        for side, where in sides:
+            limit = layout.rows if side in ("left", "right") else layout.size
+            if 0 <= where < limit:
+                walls[side, where] = min(level, walls.get((side, where), level))
+    return walls
+
+
+def _wall_char(char: str, level: int | None, ascii: bool) -> str:
+    return char if level is None or not ascii else ASCII_HIT
+
+
+def _wall_segment(char: str, level: int | None, style: Style | None, ascii: bool) -> Segment:
+    if level is None:
+        return Segment(char, style)
+    if ascii:
+        return Segment(ASCII_HIT)
+    color = HIT_COLORS[min(level, len(HIT_COLORS) - 1)]
+    return Segment(char, Style(color=Color.from_rgb(*color), bold=True))
+
+
+def _frame_segments(text: str, left: int, hit_cols: dict[int, int], style, ascii: bool) -> list[Segment]:
+    """A border line with the columns of wall hits in their colour."""
+    if not hit_cols:
+        return [Segment(text, style)]
+    result, start = [], 0
+    for col in sorted(hit_cols):
+        at = left + col
+        if at > start:
+            result.append(Segment(text[start:at], style))
+        result.append(_wall_segment(text[at], hit_cols[col], style, ascii))
+        start = at + 1
+    if start < len(text):
+        result.append(Segment(text[start:], style))
+    return result
 
 
 def _marks(world: World, layout: Layout, hits, ascii: bool) -> dict[tuple[int, int], Mark]:
