@@ -7,14 +7,18 @@ Run from the repository root:
 
 What is measured (the app is the default ``turtletui run``: the Part 6
 reference controller ``part6_wall_avoider`` in its sandbox, the Part 6 lesson
-and the safe-box overlay), each at 120x40 and 80x24 unless said otherwise:
+with its safe-box overlay, the arena in half blocks), each at 120x40 and 80x24
+unless said otherwise. The machine's load average is printed before and after:
+on a shared machine the tick figures say more about the neighbours than about
+the app.
 
 - first frame: ``python -m turtletui run`` is spawned on a new pty
   (TERM=xterm-256color); time from the spawn until the pty output, escape
   sequences removed, contains the status line text " t = ". Median of
   ``--repeats`` starts. Then 'q' is sent and the time to exit is noted too.
-- tick period: a child on a new pty runs TurtleApp in-process (the same specs,
-  lesson and overlay as ``turtletui run``) for ``--seconds``; after a warm-up
+- tick period: a child on a new pty runs TurtleApp in-process (the same specs
+  and lesson as ``turtletui run``) for ``--seconds``; the simulation ticks in
+  the app's ticker thread; after a warm-up
   of WARMUP_SECONDS it clears ``app.tick_gaps`` and takes
   ``getrusage(RUSAGE_SELF)``; at the end it writes the mean gap, the p99 of
   |gap - 16 ms| and the CPU share (user+sys of the app process only: the
@@ -119,6 +123,10 @@ def finish():
 
 app.run()
 """
+
+
+def load_average() -> str:
+    return ", ".join(f"{load:.2f}" for load in os.getloadavg())
 
 
 def spawn(argv: list[str], cols: int, rows: int) -> tuple[int, int]:
@@ -231,6 +239,7 @@ def main() -> None:
     print(f"machine: {platform.platform()}")
     print(f"cpu:     {cpu_model()} ({os.cpu_count()} cores)")
     print(f"python:  {sys.version.split()[0]} ({platform.python_implementation()})")
+    print(f"load:    {load_average()} (1, 5, 15 min) at the start")
     print(
         f"runs:    first frame median of {args.repeats}; tick runs {args.seconds:g} s;"
         f" memory run {args.minutes:g} min (after a {WARMUP_SECONDS:g} s warm-up)\n"
@@ -284,6 +293,7 @@ def main() -> None:
             row(f"{label}: RSS growth, minute 1 to end", f"{(end - start) / start * 100:+.1f} %", "within 10 %")
         print(f"\n  status line at the end: {stats['status']}")
 
+    print(f"\n  load average at the end: {load_average()} (1, 5, 15 min)")
     print(
         "\nfirst frame: spawn of `python -m turtletui run` to the status line in the pty output."
         "\nmean tick period / p99: wall gaps between the app's 16 ms simulation ticks (app.tick_gaps)"

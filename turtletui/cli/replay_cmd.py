@@ -16,6 +16,7 @@ def replay(
     headless: bool = typer.Option(False, "--headless", help="Print the replayed log instead of opening the app."),
     quiet: bool = typer.Option(False, "--quiet", "-q", help="Headless: print only the summary line."),
     ascii_only: bool = typer.Option(False, "--ascii", help="Draw with plain ASCII and no colour."),
+    pixels: str = typer.Option("auto", "--pixels", help="half, braille, graphics or auto: as turtletui run."),
 ) -> None:
     """Play a recorded run: the turtle drives the recorded path again."""
     from turtletui.runtime.replay import RecordingError, read_recording
@@ -33,9 +34,21 @@ def replay(
         sys.stderr.write(f"replaying {recording} ({where}; start {start}; {found.duration:g} s)\n")
     world = _world(header.get("world"))
     if not headless:
+        from turtletui.cli.run_cmd import _drawing
+
+        drawing = _drawing(pixels, ascii_only)
         from turtletui.tui.app import TurtleApp
 
-        TurtleApp([], ascii=ascii_only, seed=int(header.get("seed", 0)), world=world, replay=found).run()
+        TurtleApp(
+            [],
+            lesson=_lesson(header.get("lesson")),
+            ascii=ascii_only,
+            seed=int(header.get("seed", 0)),
+            world=world,
+            replay=found,
+            pixels=drawing.pixels,
+            graphics=drawing.graphics,
+        ).run()
         return
     from turtletui.api import run
     from turtletui.runtime.replay import install_replay
@@ -68,3 +81,15 @@ def _world(name: str | None):
         return resolve_world(name)
     except WorldError as err:
         fail(f"{name}: {err}")
+
+
+def _lesson(lesson_id):
+    """The recorded run's lesson file, so the app shows its text and overlays; None if unknown."""
+    if not isinstance(lesson_id, str):
+        return None
+    from turtletui.lessons.loader import LessonError, find_lesson
+
+    try:
+        return find_lesson(lesson_id).path
+    except LessonError:
+        return None

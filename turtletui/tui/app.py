@@ -219,7 +219,11 @@ class TurtleApp(App):
 
     def on_mount(self) -> None:
         world, problem = (self._world, None) if self._world is not None else self._lesson_world()
-        self.session = LiveSession(self._controllers, ros_args=self._ros_args, seed=self._seed, world=world)
+        # The controllers start once the first frame is on the screen: a
+        # sandbox takes a few hundred milliseconds to start.
+        self.session = LiveSession(
+            self._controllers, ros_args=self._ros_args, seed=self._seed, world=world, start=False
+        )
         if problem is not None:
             self.session.sim.graph.log("turtletui", ERROR, problem)
         if self._replay is not None:
@@ -244,6 +248,7 @@ class TurtleApp(App):
         self._ticker.start()
         self.set_interval(FRAME_SECONDS, self._frame)
         self._render_frame()
+        self.call_after_refresh(self.session.start_controllers)
         self.set_timer(1.0, _freeze_startup_heap)
 
     def on_unmount(self) -> None:
@@ -405,7 +410,10 @@ class TurtleApp(App):
     # -- the arena's view and the side panel's width ---------------------------------------
     def action_zoom(self, steps: int) -> None:
         arena = self.query_one(ArenaView)
-        arena.zoom_in() if steps > 0 else arena.zoom_out()
+        if steps > 0:
+            arena.zoom_in()
+        else:
+            arena.zoom_out()
 
     def action_follow_next(self) -> None:
         self.query_one(ArenaView).follow_next()

@@ -135,7 +135,9 @@ class LiveSession:
         limits: Limits | None = None,
         log_capacity: int = 2000,
         world: WorldSpec | None = None,
+        start: bool = True,
     ) -> None:
+        """``start``: start the controllers now (else with start_controllers())."""
         self.lock = threading.RLock()
         """Held by whoever reads or changes the simulation: the app advances it
         from a ticker thread while the screen's thread reads it and sends requests."""
@@ -161,6 +163,17 @@ class LiveSession:
         self._target_ns = 0
         self._last_wall: float | None = None
         self.slots = [ControllerSlot(spec) for spec in controllers]
+        self._started = False
+        if start:
+            self.start_controllers()
+
+    @_locked
+    def start_controllers(self) -> None:
+        """Start the controllers (each in its sandbox); simulated time stands
+        still until they are started, so they see the run from t = 0."""
+        if self._started:
+            return
+        self._started = True
         for slot in self.slots:
             self._start(slot)
 
@@ -173,7 +186,7 @@ class LiveSession:
     def advance(self, now: float) -> None:
         """Run the simulation up to wall time ``now`` (time.monotonic())."""
         last, self._last_wall = self._last_wall, now
-        if last is None or self.paused:
+        if last is None or self.paused or not self._started:
             return
         elapsed = min(max(now - last, 0.0), MAX_CATCH_UP)
         self._target_ns += round(elapsed * self.speed * 1e9)
@@ -226,6 +239,8 @@ class LiveSession:
         """Reload controllers whose file changed; returns what was reloaded.
         A file that no longer compiles is reported and the running one kept."""
         reloaded = []
+        if not self._started:
+            return reloaded
         for slot in self.slots:
             path = slot.spec.path
             if path is None:
