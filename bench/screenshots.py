@@ -47,9 +47,12 @@ class StepClock:
     def __init__(self, stop: float) -> None:
         self.start = self.now = 1000.0
         self.stop = self.start + stop
+        self.running = False
+        """Held until the controller has started (the app starts it after its first frame)."""
 
     def __call__(self) -> float:
-        self.now = min(self.now + TICK_SECONDS, self.stop)
+        if self.running:
+            self.now = min(self.now + TICK_SECONDS, self.stop)
         return self.now
 
 
@@ -58,6 +61,11 @@ async def shoot(filename: str, size: tuple[int, int], ascii_only: bool, key: str
     clock = StepClock(seconds)
     app = TurtleApp(specs, lesson=LESSON, ascii=ascii_only, clock=clock)
     async with app.run_test(size=size) as pilot:
+        for _ in range(200):
+            if app.session is not None and all(slot.status != "starting" for slot in app.session.slots):
+                break
+            await pilot.pause(0.05)
+        clock.running = True
         for _ in range(int(seconds * 20) + 200):  # the ticks take about `seconds` of wall time
             if clock.now >= clock.stop:
                 break

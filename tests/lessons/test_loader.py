@@ -237,6 +237,37 @@ def test_check_field_errors(tmp_path):
     assert error_of(path) == f"{path}:7: checks[0].thresholds must be a table, got 3"
 
 
+def test_overlays_are_read_with_their_colour(tmp_path):
+    path = write(
+        tmp_path,
+        "x.md",
+        GOOD_FRONT + "[[overlays]]\nx0 = 2\ny0 = 2.0\nx1 = 9.0\ny1 = 9\n"
+        "[[overlays]]\nx0 = 1.0\ny0 = 1.0\nx1 = 3.0\ny1 = 3.0\ncolor = [0, 200, 0]\n",
+    )
+    overlays = load_lesson(path).overlays
+    assert [(o.x0, o.y0, o.x1, o.y1, o.color) for o in overlays] == [
+        (2.0, 2.0, 9.0, 9.0, None),
+        (1.0, 1.0, 3.0, 3.0, (0, 200, 0)),
+    ]
+    assert [(o.x0, o.x1) for o in load_lesson(PART6).overlays] == [(2.0, 9.0)]
+
+
+def test_overlay_field_errors(tmp_path):
+    def error(lines: str) -> str:
+        return error_of(write(tmp_path, "x.md", GOOD_FRONT + "[[overlays]]\n" + lines))
+
+    assert error("x0 = 1.0\ny0 = 1.0\nx1 = 2.0\n").endswith("overlays[0]: missing field 'y1'")
+    assert error("x0 = 1.0\ny0 = 1.0\nx1 = 2.0\ny1 = 20\n").endswith(
+        "overlays[0].y1 must be a number of metres in the arena (0 to 11.09), got 20"
+    )
+    assert error('x0 = 1.0\ny0 = 1.0\nx1 = 2.0\ny1 = 2.0\ncolor = "red"\n').endswith(
+        "overlays[0].color must be [r, g, b] with integers 0..255, got 'red'"
+    )
+    assert "overlays[0]: unknown field 'colour' (did you mean 'color'?)" in error(
+        "x0 = 1.0\ny0 = 1.0\nx1 = 2.0\ny1 = 2.0\ncolour = [1, 2, 3]\n"
+    )
+
+
 def test_a_missing_starter_file(tmp_path):
     path = write(tmp_path, "x.md", GOOD_FRONT + 'starter = "nope.py"\n')
     assert error_of(path).startswith(

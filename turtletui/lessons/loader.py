@@ -371,7 +371,7 @@ class _Validator:
             if key not in item:
                 raise self._error(f"{where}: missing field {key!r}", None, section)
             value = item[key]
-            if not _is_number(value) or not -1.0 <= value <= 12.0:
+            if not _is_number(value) or not 0.0 <= value <= 11.09:
                 raise self._error(
                     f"{where}.{key} must be a number of metres in the arena (0 to 11.09), got {_show(value)}",
                     key,

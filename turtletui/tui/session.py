@@ -1,7 +1,8 @@
 """What the app shows and drives, without Textual: a live simulation in real
 time, its sandboxed controllers, teleop, and the controls (pause, step,
 speed, reset, clear, restart, hot reload). The app calls ``advance()`` from
-its 16 ms timer and reads the rest as plain data.
+its ticker thread every 16 ms and reads the rest as plain data, holding
+``lock`` (the public methods take it themselves).
 """
 
 from __future__ import annotations
@@ -169,8 +170,9 @@ class LiveSession:
 
     @_locked
     def start_controllers(self) -> None:
-        """Start the controllers (each in its sandbox); simulated time stands
-        still until they are started, so they see the run from t = 0."""
+        """Start the controllers (each in its sandbox). A session made with
+        ``start=False`` keeps simulated time still until then, so its
+        controllers see the run from t = 0."""
         if self._started:
             return
         self._started = True
