@@ -8,8 +8,9 @@ the Part 6 reference controller ``part6_wall_avoider`` sandboxed, the Part 6
 lesson and the safe-box overlay, with seed 0. The app's clock is a fake one
 that advances exactly 16 ms per tick and stops at --seconds (default 3), so
 every shot shows the simulation at exactly t = 3.000 s whatever the machine's
-speed (the sandboxed controller runs in lockstep with the simulation), and
-log stamps use the fixed lockstep epoch instead of the wall clock.
+speed (the clock starts once the controller is up, and the simulation waits
+for every answer of the sandboxed controller, as in lockstep), and log
+stamps use the fixed lockstep epoch instead of the wall clock.
 """
 
 from __future__ import annotations
@@ -89,12 +90,21 @@ def fixed_epoch() -> None:
     simulation.time = fake
 
 
+def wait_for_the_controller() -> None:
+    """The app waits at most 2 ms for the sandboxed controller's answer to each
+    step (a slow answer is picked up later, as in ROS). On a busy machine that
+    makes the controller late and the picture different; the shots wait for
+    every answer instead, as lockstep does, so they show the same run anywhere."""
+    simulation._UNPACED_BUDGET = 2.0
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--seconds", type=float, default=3.0, help="simulated seconds to run before each shot")
     seconds = parser.parse_args().seconds
     DOCS.mkdir(exist_ok=True)
     fixed_epoch()
+    wait_for_the_controller()
     for filename, size, ascii_only, key in SHOTS:
         path = asyncio.run(shoot(filename, size, ascii_only, key, seconds))
         print(f"{path.relative_to(ROOT)}  {path.stat().st_size / 1024:.0f} KB")

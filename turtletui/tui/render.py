@@ -523,12 +523,10 @@ class ArenaRenderer:
                     key = (mode, layout, line, label, tick, row_cells.tobytes(), here, hit)
                 cached = segments.get(key)
                 if cached is None:
-                    left_wall, right_wall = (_wall_char(box["v"], level, ascii) for level in hit)
                     head = [Segment(pad_left + label, style), _wall_segment(tick, hit[0], style, ascii)]
                     tail = [_wall_segment(box["v"], hit[1], style, ascii), Segment(pad_right, style)]
                     if ascii:
-                        cached = [Segment(pad_left + label + (tick if hit[0] is None else left_wall) + text
-                                          + (box["v"] if hit[1] is None else right_wall) + pad_right)]
+                        cached = [Segment("".join(segment.text for segment in [*head, Segment(text), *tail]))]
                     else:
                         cached = [*head, *_rgb_row(row_cells, mode, here), *tail]
                     segments.put(key, cached)
@@ -568,10 +566,6 @@ def _wall_marks(layout: Layout, hits) -> dict[tuple[str, int], int]:
             if 0 <= where < limit:
                 walls[side, where] = min(level, walls.get((side, where), level))
     return walls
-
-
-def _wall_char(char: str, level: int | None, ascii: bool) -> str:
-    return char if level is None or not ascii else ASCII_HIT
 
 
 def _wall_segment(char: str, level: int | None, style: Style | None, ascii: bool) -> Segment:

@@ -79,11 +79,12 @@ def probe_graphics() -> str | None:
         from textual_image import renderable
     except ImportError:
         return None
-    if renderable.Image is renderable.SixelImage:
-        return "sixel"
-    if renderable.Image is renderable.TGPImage:
-        return "kitty"
-    return None
+    found = {renderable.SixelImage: "sixel", renderable.TGPImage: "kitty"}.get(renderable.Image)
+    if found is not None:
+        # Its widgets ask the terminal for the size of a cell in pixels when
+        # imported, which works only before the app reads the terminal's input.
+        import textual_image.widget  # noqa: F401
+    return found
 
 
 def choose_drawing(

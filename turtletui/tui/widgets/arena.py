@@ -104,7 +104,8 @@ class ArenaView(Widget):
         ``picture`` shows turtlesim's real picture over the arena's cells."""
         self.picture = graphics is not None
         """Whether the picture is shown (a graphics protocol and not ASCII)."""
-        self._picture_key: Hashable = None
+        self._picture_stale = True
+        """Whether the frame changed since the picture was last sent."""
         self._picture_at = float("-inf")
         self.set_reactive(ArenaView.ascii, ascii)
         self.set_reactive(ArenaView.mode, self.validate_mode(mode))
@@ -156,7 +157,6 @@ class ArenaView(Widget):
         self.picture = chosen == "picture"
         if not self.picture:
             self.mode = chosen
-        self._picture_key = None
         self._redraw()
         return chosen
 
@@ -217,10 +217,10 @@ class ArenaView(Widget):
         if not shown:
             return
         now = time.monotonic() if now is None else now
-        key = (self.renderer.line_keys and tuple(self.renderer.line_keys), layout)
-        if key == self._picture_key or now - self._picture_at < PICTURE_SECONDS:
+        self._picture_stale |= bool(self.renderer.changed_lines)
+        if not self._picture_stale or now - self._picture_at < PICTURE_SECONDS:
             return
-        self._picture_key, self._picture_at = key, now
+        self._picture_stale, self._picture_at = False, now
         from PIL import Image
 
         with self.lock:
@@ -276,7 +276,7 @@ class ArenaView(Widget):
             self._render_frame()
             self.refresh()
             if self.graphics is not None:
-                self._picture_at = float("-inf")
+                self._picture_stale, self._picture_at = True, float("-inf")
                 self._show_picture()
 
 
