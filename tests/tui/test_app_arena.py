@@ -123,3 +123,33 @@ async def test_ascii_means_every_widget_is_ascii() -> None:
     async with app.run_test(size=(80, 24)) as pilot:
         await pilot.pause()
         assert any(not char.isascii() for char in screen_text(app))  # the filter is what made it ASCII
+
+
+def test_a_replayed_run_marks_its_wall_hits(tmp_path) -> None:
+    from turtletui.api import run
+    from turtletui.runtime.replay import install_replay, read_recording
+    from turtletui.tui.session import LiveSession
+
+    controller = tmp_path / "into_the_wall.py"
+    controller.write_text(
+        "import rclpy\n"
+        "from rclpy.node import Node\n"
+        "from geometry_msgs.msg import Twist\n\n\n"
+        "def main():\n"
+        "    rclpy.init()\n"
+        "    node = Node('into_the_wall')\n"
+        "    publisher = node.create_publisher(Twist, '/turtle1/cmd_vel', 10)\n"
+        "    msg = Twist()\n"
+        "    msg.linear.x = 5.0\n"
+        "    node.create_timer(0.1, lambda: publisher.publish(msg))\n"
+        "    rclpy.spin(node)\n"
+    )
+    record = tmp_path / "run.jsonl"
+    result = run([controller], duration=3.0, record=record)
+    assert result.wall_hits >= 1
+    session = LiveSession()
+    install_replay(session.sim, read_recording(record))
+    with session.lock:
+        session.sim.run_until(round(3.0 * 1e9))
+        shown = session.hits.visible(session.sim.world.time)
+    assert shown and all(x > 11.0 for x, _, _ in shown)
