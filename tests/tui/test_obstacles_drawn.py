@@ -114,3 +114,36 @@ def test_the_app_runs_the_lessons_world(tmp_path, monkeypatch, world):
                 assert len(sim.world.obstacles) > 4 and "/turtle1/scan" in sim.graph.topics
 
     asyncio.run(scenario())
+
+
+def test_zoomed_in_an_obstacle_covers_more_cells_and_stays_where_it_is():
+    from turtletui.tui.render import Camera
+
+    world = World(obstacles=[BOX])
+    world.teleport_absolute("turtle1", 2.5, 4.0, 0.0)  # the view follows turtle1, next to the box
+    world.step()
+    world.step()
+    renderer = ArenaRenderer()
+
+    def obstacle_cells(lines) -> int:
+        return sum(
+            1
+            for line in arena_rows(renderer, lines)
+            for segment in line
+            if segment.style is not None and segment.style.bgcolor is not None
+            and tuple(segment.style.bgcolor.triplet) == OBSTACLE_COLOR
+            for _ in segment.text
+        )
+
+    whole = obstacle_cells(renderer.frame(world, 80, 24))
+    camera = Camera()
+    camera.zoom_in()
+    camera.zoom_in()  # x2
+    lines = renderer.frame(world, 80, 24, camera=camera)
+    window = renderer.layout.window
+    assert window.span == 250
+    assert obstacle_cells(lines) >= 3 * whole  # twice as wide and twice as tall, less what is cut off
+    # The box's corner (1, 3) is where the zoomed layout puts it.
+    col, line = renderer.layout.cell_of(1.5, 2.5)
+    assert 0 <= col < renderer.layout.size and 0 <= line < renderer.layout.rows
+    assert OBSTACLE_COLOR in colours(lines[renderer.layout.top + line])

@@ -24,7 +24,7 @@ from turtletui.tui.render import (
     Overlay,
     Window,
     normalise_overlays,
-    obstacle_mask,
+    obstacle_pixels,
 )
 
 if TYPE_CHECKING:
@@ -45,7 +45,7 @@ def arena_picture(
     cropped to ``window`` (the whole 500 x 500 image by default)."""
     picture = np.array(world.canvas.pixels, dtype=np.uint8)  # a copy: the canvas stays as it is
     if world.obstacles:
-        picture[obstacle_mask(PIXELS, tuple(world.obstacles))] = OBSTACLE_COLOR
+        picture[obstacle_pixels(tuple(world.obstacles))] = OBSTACLE_COLOR
     for overlay in normalise_overlays(overlays):
         _dotted_rectangle(picture, overlay)
     for x, y, level in hits:

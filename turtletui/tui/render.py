@@ -631,11 +631,11 @@ def _marks(world: World, layout: Layout, hits, ascii: bool) -> dict[tuple[int, i
     return marks
 
 
-@lru_cache(maxsize=8)
-def obstacle_mask(pixels: int, obstacles: tuple[Obstacle, ...], window: Window = WHOLE) -> np.ndarray:
-    """(pixels, pixels) bool: the arena pixels showing an obstacle. Like a trail,
-    a block shows an obstacle if any pen-image pixel in it lies inside one (and
-    the pixel under an obstacle's centre always does, so none vanishes). Read only."""
+@lru_cache(maxsize=4)
+def obstacle_pixels(obstacles: tuple[Obstacle, ...]) -> np.ndarray:
+    """(500, 500) bool: the pen-image pixels whose centre lies inside an
+    obstacle, and the pixel under each obstacle's centre (so none vanishes
+    when shrunk). Read only."""
     pen = np.zeros((PIXELS, PIXELS), dtype=bool)
     # World coordinates of the pen-image pixels' centres (row 0 at the top).
     xs = (np.arange(PIXELS) / METER_PX)[None, :]
@@ -649,8 +649,16 @@ def obstacle_mask(pixels: int, obstacles: tuple[Obstacle, ...], window: Window =
             centre = ((obstacle.x0 + obstacle.x1) / 2, (obstacle.y0 + obstacle.y1) / 2)
         col, row = to_pixel(*centre)
         pen[row, col] = True
+    pen.flags.writeable = False
+    return pen
+
+
+@lru_cache(maxsize=8)
+def obstacle_mask(pixels: int, obstacles: tuple[Obstacle, ...], window: Window = WHOLE) -> np.ndarray:
+    """(pixels, pixels) bool: the arena pixels showing an obstacle. Like a trail,
+    a block shows an obstacle if any pen-image pixel in it lies inside one. Read only."""
     col, row, span = window
-    pen = pen[row : row + span, col : col + span]
+    pen = obstacle_pixels(obstacles)[row : row + span, col : col + span]
     edges = np.arange(pixels) * span // pixels
     mask = np.maximum.reduceat(pen.view(np.uint8), edges, axis=0)
     mask = np.maximum.reduceat(mask, edges, axis=1).astype(bool)
