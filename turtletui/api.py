@@ -144,10 +144,10 @@ def run(
         sim.graph.taps.append(tap)
     recorder = None
     if record is not None:
-        from turtletui.runtime.recorder import Recorder
+        from turtletui.runtime.recorder import open_recorder
 
         # turtlesim's start lines were logged before the recorder existed
-        recorder = Recorder(sim.graph, record, earlier_logs=logs)
+        recorder = open_recorder(sim, record, earlier_logs=logs)
     started = time.perf_counter()
     try:
         outcome = run_controllers(

@@ -27,7 +27,13 @@ def run(
     duration: float = typer.Option(60.0, "--duration", "-d", help="Simulated seconds to run."),
     seed: int = typer.Option(0, "--seed", help="Seed for everything random in the run."),
     realtime: bool = typer.Option(False, "--realtime", help="Run at wall-clock speed instead of lockstep."),
-    record: Path = typer.Option(None, "--record", help="Write every message, call and log line to FILE.jsonl."),
+    record: str = typer.Option(
+        None,
+        "--record",
+        metavar="PATH",
+        help="Record every message, call and log line: run.jsonl (JSON Lines), run.mcap (MCAP for"
+        " Foxglove, PlotJuggler, ros2 bag) or run/ (a rosbag2 folder for ros2 bag info|play).",
+    ),
     in_process: bool = typer.Option(
         False, "--in-process", help="Run the controllers in this process (trusted code only: no sandbox)."
     ),

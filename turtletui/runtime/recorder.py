@@ -1,4 +1,5 @@
-"""JSON Lines recording of a run, written atomically."""
+"""Recording a run, written atomically: JSON Lines here, MCAP in
+turtletui.recording (``open_recorder`` chooses by the path's name)."""
 
 from __future__ import annotations
 
@@ -134,3 +135,22 @@ def _event(t: float, kind: str, payload: Any) -> dict[str, Any] | None:
         return _log_event(t, payload)
     return None
 
+
+
+def open_recorder(
+    sim: Any,
+    path: str | os.PathLike[str],
+    earlier_logs: Iterable[LogRecord] = (),
+    header: dict[str, Any] | None = None,
+    *,
+    buffered: bool = False,
+) -> Recorder | Any:
+    """A recorder of ``sim`` (a Simulation) for ``path``, chosen by its name:
+    ``run.mcap`` an MCAP file, a folder (``run/``, or one that exists) a
+    rosbag2 bag, anything else JSON Lines. Both kinds ``close(keep)``."""
+    text = os.fspath(path)
+    if text.endswith((".mcap", "/", os.sep)) or Path(text).is_dir():
+        from turtletui.recording.recorder import McapRecorder
+
+        return McapRecorder(sim, path, earlier_logs, header, buffered=buffered)
+    return Recorder(sim.graph, path, earlier_logs, header, buffered=buffered)
