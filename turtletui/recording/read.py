@@ -101,11 +101,11 @@ def _events(reader: Any, epoch_ns: int) -> Iterator[dict[str, Any]]:
             level = LEVEL_NAMES.get(decoded.level, str(decoded.level))
             yield {"t": t, "log": {"level": level, "node": decoded.name, "msg": decoded.msg}}
         elif topic.endswith(REQUEST_SUFFIX):
-            yield {"t": t, "service": topic[: -len(REQUEST_SUFFIX)], "request": _plain(cls, decoded), "response": {}}
+            yield {"t": t, "service": topic[: -len(REQUEST_SUFFIX)], "request": plain(cls, decoded), "response": {}}
         elif topic.endswith(GOAL_SUFFIX):
-            yield {"t": t, "action": topic[: -len(GOAL_SUFFIX)], "goal": _plain(cls, decoded)}
+            yield {"t": t, "action": topic[: -len(GOAL_SUFFIX)], "goal": plain(cls, decoded)}
         else:
-            yield {"t": t, "topic": topic, "type": cls._TYPE_NAME, "msg": _plain(cls, decoded)}
+            yield {"t": t, "topic": topic, "type": cls._TYPE_NAME, "msg": plain(cls, decoded)}
 
 
 def _decoded(reader: Any) -> Iterator[tuple[Any, Any, Any, Any]]:
@@ -127,7 +127,7 @@ def _class_of(schema: Any) -> type | None:
     return cls if isinstance(cls, type) and issubclass(cls, Message) else None
 
 
-def _plain(cls: type, decoded: Any) -> dict[str, Any]:
+def plain(cls: type, decoded: Any) -> dict[str, Any]:
     """A decoded message as the nested dict ``from_dict`` takes, by turtletui's fields."""
     out: dict[str, Any] = {}
     for spec in cls._FIELDS:
@@ -146,7 +146,7 @@ def _value(spec: Any, value: Any) -> Any:
 
 def _scalar(spec: Any, value: Any) -> Any:
     if spec.kind == "msg":
-        return _plain(spec.msg_cls, value)
+        return plain(spec.msg_cls, value)
     if spec.kind == "float":
         return float(value)
     if spec.kind == "bool":

@@ -1,9 +1,9 @@
-"""Record a run's graph as MCAP (a file or a rosbag2 folder): the tap side.
+"""Record a run's graph as MCAP (a file or a rosbag2 folder).
 
-The tap only notes what happened (time, kind, payload), as the JSON Lines
-recorder does; messages are serialized in batches (a live recording, every
-few thousand events) or only if the recording is kept (``buffered``: grading
-records every run and keeps the failed ones).
+The tap only notes what happened (turtletui.recording.tap); messages are
+serialized in batches (a live recording, every few thousand events) or only
+if the recording is kept (``buffered``: grading records every run and keeps
+the failed ones).
 """
 
 from __future__ import annotations
@@ -12,11 +12,9 @@ import os
 from collections.abc import Iterable
 from typing import Any
 
-from turtletui.graph.core import Graph
 from turtletui.graph.logs import LogRecord
-from turtletui.interfaces.turtlesim import Pose
 from turtletui.recording.mcap_file import McapWriter
-from turtletui.recording.scene import Scene
+from turtletui.recording.tap import RunTap
 
 _FLUSH_EVERY = 4096
 
@@ -42,61 +40,40 @@ class McapRecorder:
         buffered: bool = False,
     ) -> None:
         self.path = path
-        self._graph: Graph = sim.graph
-        self._world = sim.world
-        self._turtlesim = sim.turtlesim
         self._header = header
-        self._background = self._world.background
-        self._scene = Scene(tuple(self._world.obstacles), self._background, list(self._world.turtles))
-        self._events: list[tuple[int, str, Any]] = [
-            (round(record.t * 1e9), "log", record) for record in earlier_logs
-        ]
-        self._buffered = buffered
+        self._tap = RunTap(sim, earlier_logs, everything=not buffered)
+        self._scene = self._tap.scene()
         self._writer = None if buffered else self._open()
-        self._graph.taps.append(self._tap)
-        self._graph.record_everything = not buffered
+        if self._writer is not None:
+            self._tap.graph.taps.append(self._flush_when_full)
 
     def _open(self) -> McapWriter:
-        return McapWriter(self.path, epoch_ns=self._graph.epoch_ns, scene=self._scene)
+        return McapWriter(self.path, epoch_ns=self._tap.graph.epoch_ns, scene=self._scene)
 
-    def _tap(self, kind: str, payload: Any) -> None:
-        events = self._events
-        now = self._graph.now_ns
-        if kind == "topic":
-            msg = payload[1]
-            if msg.__class__ is Pose:
-                name = payload[0].name
-                turtle = name[1:-5]
-                if name.endswith("/pose") and self._turtlesim.published(turtle, msg):
-                    kind, payload = "pose", (payload[0], msg, turtle)
-                    background = self._world.background
-                    if background != self._background:
-                        self._background = background
-                        events.append((now, "background", background))
-        events.append((now, kind, payload))
-        if self._writer is not None and len(events) >= _FLUSH_EVERY:
+    def _flush_when_full(self, kind: str, payload: Any) -> None:
+        if len(self._tap.events) >= _FLUSH_EVERY:
             self._flush(self._writer)
 
     def _flush(self, writer: McapWriter) -> None:
         feed = writer.stream.feed
-        for t_ns, kind, payload in self._events:
+        for t_ns, kind, payload in self._tap.take():
             feed(t_ns, kind, payload)
-        self._events = []
 
     def close(self, keep: bool = True) -> None:
         """Finish the recording (rename into place) or drop it; nothing temporary is left."""
-        if self._tap in self._graph.taps:
-            self._graph.taps.remove(self._tap)
-            self._graph.record_everything = False
+        self._tap.detach()
+        graph = self._tap.graph
+        if self._flush_when_full in graph.taps:
+            graph.taps.remove(self._flush_when_full)
         writer = self._writer
         if writer is None:
             if not keep:
-                self._events = []
+                self._tap.take()
                 return
             writer = self._open()
         try:
             if keep:
                 self._flush(writer)
         finally:
-            self._events = []
+            self._tap.take()
             writer.close(keep=keep, header=self._header)

@@ -154,3 +154,18 @@ def open_recorder(
 
         return McapRecorder(sim, path, earlier_logs, header, buffered=buffered)
     return Recorder(sim.graph, path, earlier_logs, header, buffered=buffered)
+
+
+def check_record_path(path: str | os.PathLike[str]) -> None:
+    """OSError (one line) if a recording could not be written at ``path``:
+    a missing or unwritable folder, or a bag folder that is not empty."""
+    text = os.fspath(path)
+    target = Path(text)
+    if text.endswith(("/", os.sep)) or target.is_dir():
+        if target.is_dir() and any(target.iterdir()):
+            raise OSError(f"{path}: cannot write the bag (the folder exists and is not empty)")
+        parent = target.parent if not target.is_dir() else target
+    else:
+        parent = target.parent
+    if not parent.is_dir() or not os.access(parent, os.W_OK):
+        raise OSError(f"{path}: cannot write the recording (no writable folder {parent})")

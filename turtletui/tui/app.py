@@ -105,8 +105,14 @@ class TurtleApp(App):
         clock: object = time.monotonic,
         world: WorldSpec | None = None,
         replay: Recording | None = None,
+        record: str | None = None,
+        foxglove: str | None = None,
     ) -> None:
         super().__init__()
+        self._record = record
+        """Where to record the session (--record), or None."""
+        self._foxglove = foxglove
+        """HOST:PORT to serve the session to Foxglove on (--foxglove), or None."""
         self._replay = replay
         """A recorded run to play instead of controllers (turtletui replay)."""
         self._controllers = list(controllers)
@@ -176,7 +182,14 @@ class TurtleApp(App):
 
     def on_mount(self) -> None:
         world, problem = (self._world, None) if self._world is not None else self._lesson_world()
-        self.session = LiveSession(self._controllers, ros_args=self._ros_args, seed=self._seed, world=world)
+        self.session = LiveSession(
+            self._controllers,
+            ros_args=self._ros_args,
+            seed=self._seed,
+            world=world,
+            record=self._record,
+            foxglove=self._foxglove,
+        )
         if problem is not None:
             self.session.sim.graph.log("turtletui", ERROR, problem)
         if self._replay is not None:
