@@ -221,3 +221,28 @@ def test_a_headless_run_without_mcap_recording_does_not_import_mcap(tmp_path: Pa
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "[]"
+
+
+def test_the_apps_session_records_what_it_shows(tmp_path: Path):
+    from turtletui.tui.session import LiveSession
+
+    session = LiveSession([], record=str(tmp_path / "app.mcap"))
+    clock = 100.0
+    session.advance(clock)
+    session.teleop.drive(linear=1.0)
+    for _ in range(60):
+        clock += 0.016
+        session.advance(clock)
+    session.clear()
+    clock += 0.016
+    session.advance(clock)
+    session.close()
+    messages = decoded(tmp_path / "app.mcap")
+    topics = Counter(channel.topic for _, channel, _, _ in messages)
+    assert topics["/turtle1/pose"] >= 50 and topics["/turtle1/cmd_vel"] == 1 and topics["/clear/_request"] == 1
+    twist = next(msg for _, channel, _, msg in messages if channel.topic == "/turtle1/cmd_vel")
+    assert twist.linear.x == 2.0  # turtle_teleop_key's scale
+
+    broken = LiveSession([], record=str(tmp_path / "no" / "such" / "dir" / "app.mcap"))
+    assert any("not recording" in record.msg for record in broken.logs)
+    broken.close()
