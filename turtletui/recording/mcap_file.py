@@ -18,6 +18,7 @@ from __future__ import annotations
 import json
 import os
 import shutil
+from collections.abc import Collection
 from pathlib import Path
 from typing import Any
 
@@ -95,7 +96,9 @@ def is_bag_folder(path: str | os.PathLike[str]) -> bool:
 class McapWriter:
     """Writes one recording: ``feed`` events, then ``close``."""
 
-    def __init__(self, path: str | os.PathLike[str], *, epoch_ns: int, scene: Scene) -> None:
+    def __init__(
+        self, path: str | os.PathLike[str], *, epoch_ns: int, scene: Scene, topics: Collection[str] | None = None
+    ) -> None:
         self.folder = is_bag_folder(path)
         self.path = Path(os.fspath(path).rstrip("/" + os.sep) or ".")
         if self.folder:
@@ -120,7 +123,7 @@ class McapWriter:
             self._file.close()
             self._discard()
             raise
-        self.stream = RosStream(self._sink, epoch_ns=epoch_ns, scene=scene)
+        self.stream = RosStream(self._sink, epoch_ns=epoch_ns, scene=scene, topics=topics)
 
     def close(self, keep: bool = True, header: dict[str, Any] | None = None) -> None:
         """Finish and rename into place (``keep``), or drop; nothing temporary is left."""

@@ -44,8 +44,15 @@ def mcap_file_of(path: Path) -> Path:
     raise McapReadError(f"{path}: no .mcap file in this folder (not a rosbag2 bag with the mcap storage)")
 
 
-def read_mcap(path: str | os.PathLike[str]) -> tuple[dict[str, Any], list[dict[str, Any]]]:
-    """(header, events) of an MCAP recording or rosbag2 folder; McapReadError if unreadable."""
+def read_mcap(
+    path: str | os.PathLike[str], *, everything: bool = False
+) -> tuple[dict[str, Any], list[dict[str, Any]]]:
+    """(header, events) of an MCAP recording or rosbag2 folder; McapReadError if unreadable.
+
+    Events are what a replay feeds in: the controllers' messages, service
+    calls, goals and the log. With ``everything``, every message of every
+    channel turtletui can decode, as a topic event (what ``ros2 bag play``
+    publishes)."""
     path = Path(path)
     if not path.exists():
         raise McapReadError(f"{path}: no such recording")
@@ -65,7 +72,7 @@ def read_mcap(path: str | os.PathLike[str]) -> tuple[dict[str, Any], list[dict[s
             if epoch is None:
                 stats = summary.statistics if summary is not None else None
                 epoch = stats.message_start_time if stats is not None else 0
-            events = list(_events(reader, int(epoch)))
+            events = list(_events(reader, int(epoch), everything))
     except (McapError, ValueError, KeyError, IndexError, EOFError, NotImplementedError, struct.error) as err:
         raise McapReadError(f"{file}: not a readable MCAP recording ({_reason(err)})") from None
     except OSError as err:
@@ -87,9 +94,9 @@ def _wanted(topic: str) -> bool:
     return topic == ROSOUT_TOPIC or not topic.endswith(SIMULATOR_TOPICS) and not topic.endswith(RESPONSE_SUFFIX)
 
 
-def _events(reader: Any, epoch_ns: int) -> Iterator[dict[str, Any]]:
+def _events(reader: Any, epoch_ns: int, everything: bool) -> Iterator[dict[str, Any]]:
     classes: dict[int, type | None] = {}
-    for schema, channel, message, decoded in _decoded(reader):
+    for schema, channel, message, decoded in _decoded(reader, everything):
         cls = classes.get(channel.id, 0)
         if cls == 0:
             cls = classes[channel.id] = _class_of(schema)
@@ -97,7 +104,9 @@ def _events(reader: Any, epoch_ns: int) -> Iterator[dict[str, Any]]:
             continue
         t = max(message.log_time - epoch_ns, 0) / 1e9
         topic = channel.topic
-        if topic == ROSOUT_TOPIC:
+        if everything:
+            yield {"t": t, "topic": topic, "type": cls._TYPE_NAME, "msg": plain(cls, decoded)}
+        elif topic == ROSOUT_TOPIC:
             level = LEVEL_NAMES.get(decoded.level, str(decoded.level))
             yield {"t": t, "log": {"level": level, "node": decoded.name, "msg": decoded.msg}}
         elif topic.endswith(REQUEST_SUFFIX):
@@ -108,11 +117,11 @@ def _events(reader: Any, epoch_ns: int) -> Iterator[dict[str, Any]]:
             yield {"t": t, "topic": topic, "type": cls._TYPE_NAME, "msg": plain(cls, decoded)}
 
 
-def _decoded(reader: Any) -> Iterator[tuple[Any, Any, Any, Any]]:
+def _decoded(reader: Any, everything: bool) -> Iterator[tuple[Any, Any, Any, Any]]:
     """Decoded messages of the channels a replay uses (the others stay undecoded)."""
     summary = reader.get_summary()
     topics = None
-    if summary is not None:
+    if summary is not None and not everything:
         topics = [channel.topic for channel in summary.channels.values() if _wanted(channel.topic)]
     yield from reader.iter_decoded_messages(topics=topics, log_time_order=True)
 

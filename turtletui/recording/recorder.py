@@ -9,7 +9,7 @@ the failed ones).
 from __future__ import annotations
 
 import os
-from collections.abc import Iterable
+from collections.abc import Collection, Iterable
 from typing import Any
 
 from turtletui.graph.logs import LogRecord
@@ -27,7 +27,8 @@ class McapRecorder:
     turtletui.runtime.simulation.Simulation). ``earlier_logs`` were logged
     before the recorder was attached (turtlesim's start lines); ``header``
     (where the run started, for ``turtletui replay``) is stored as the file's
-    "turtletui" metadata record.
+    "turtletui" metadata record. ``topics`` limits the recording to those
+    topics (``ros2 bag record TOPIC...``).
     """
 
     def __init__(
@@ -38,8 +39,10 @@ class McapRecorder:
         header: dict[str, Any] | None = None,
         *,
         buffered: bool = False,
+        topics: Collection[str] | None = None,
     ) -> None:
         self.path = path
+        self._topics = topics
         self._header = header
         self._tap = RunTap(sim, earlier_logs, everything=not buffered)
         self._scene = self._tap.scene()
@@ -48,7 +51,7 @@ class McapRecorder:
             self._tap.graph.taps.append(self._flush_when_full)
 
     def _open(self) -> McapWriter:
-        return McapWriter(self.path, epoch_ns=self._tap.graph.epoch_ns, scene=self._scene)
+        return McapWriter(self.path, epoch_ns=self._tap.graph.epoch_ns, scene=self._scene, topics=self._topics)
 
     def _flush_when_full(self, kind: str, payload: Any) -> None:
         if len(self._tap.events) >= _FLUSH_EVERY:

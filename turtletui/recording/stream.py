@@ -22,7 +22,7 @@ Log times are ROS time (the run's epoch plus simulated time).
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Collection
 from dataclasses import dataclass
 from typing import Any, Protocol
 
@@ -45,6 +45,8 @@ REQUEST_SUFFIX = "/_request"
 RESPONSE_SUFFIX = "/_response"
 GOAL_SUFFIX = "/_goal"
 _NS_PER_S = 1_000_000_000
+_SKIPPED = -1
+"""The id of a channel left out of the recording."""
 
 _TurtlesimCall = Callable[[Scene, str, Any, Any], None]
 
@@ -81,9 +83,11 @@ class RosStream:
     (LogRecord) and "background" ((r, g, b), turtlesim's parameters).
     """
 
-    def __init__(self, sink: Sink, *, epoch_ns: int, scene: Scene) -> None:
+    def __init__(self, sink: Sink, *, epoch_ns: int, scene: Scene, topics: Collection[str] | None = None) -> None:
         self._sink = sink
         self._epoch_ns = epoch_ns
+        self._topics = None if topics is None else frozenset(topics)
+        """Only these topics are written (``ros2 bag record TOPIC...``); None: every one."""
         self._channels: dict[str, Channel] = {}
         self.scene = scene
         self._last_ns = 0
@@ -93,16 +97,22 @@ class RosStream:
         found = self._channels.get(topic)
         if found is None:
             found = self._channels[topic] = Channel(topic, type_name, [qos] * max(publishers, 1))
-            self._sink.add_channel(found)
+            if self._topics is None or topic in self._topics:
+                self._sink.add_channel(found)
+            else:
+                found.id = _SKIPPED
         return found
 
     def _write(self, channel: Channel, t_ns: int, msg: Any) -> None:
+        if channel.id == _SKIPPED:
+            return
         channel.count += 1
         self._sink.write(channel, self._epoch_ns + t_ns, cdr.serialize(msg))
 
     @property
     def channels(self) -> list[Channel]:
-        return list(self._channels.values())
+        """The channels written so far."""
+        return [channel for channel in self._channels.values() if channel.id != _SKIPPED]
 
     # -- events --------------------------------------------------------------------------
     def feed(self, t_ns: int, kind: str, payload: Any) -> None:
@@ -160,6 +170,8 @@ class RosStream:
             msg=record.msg,
         )
         channel = self.channel(ROSOUT_TOPIC, "rcl_interfaces/msg/Log", ROSOUT)
+        if channel.id == _SKIPPED:
+            return
         channel.count += 1
         self._sink.write(channel, record.stamp_ns, cdr.serialize(msg))
 

@@ -158,18 +158,7 @@ def install_replay(sim: Simulation, recording: Recording) -> None:
 
     for event in recording.inputs:
         due = round(event["t"] * NS_PER_S)
-        _once(graph, node, max(due - graph.now_ns, 1), send(event))
-
-
-def _once(graph: Any, node: Any, delay_ns: int, callback: Callable[[], None]) -> None:
-    """A timer that fires once, ``delay_ns`` from now."""
-    holder: list[Any] = []
-
-    def fire() -> None:
-        holder[0].canceled = True
-        callback()
-
-    holder.append(graph.add_timer(node, delay_ns, fire))
+        graph.call_later(node, max(due - graph.now_ns, 1), send(event))
 
 
 def _ignore(*_: Any) -> None:
