@@ -99,3 +99,15 @@ def test_play_drives_a_fresh_turtle_along_the_recorded_path(subset):
     player = next(node for node in sim.graph.nodes if node.name == "rosbag2_player")
     assert {p.topic.name for t in sim.graph.topics.values() for p in t.publishers if p.node is player} == {
         "/turtle1/cmd_vel", "/turtle1/pose"}
+
+
+def test_a_bag_stopped_during_a_live_recording_leaves_the_colour_sensor_on(tmp_path: Path):
+    from turtletui.recording.recorder import McapRecorder
+
+    sim = Simulation()
+    whole = McapRecorder(sim, tmp_path / "whole.mcap")
+    bag = BagRecording(sim, ["/turtle1/pose"], tmp_path / "bag")
+    bag.stop()
+    assert sim.graph.record_everything  # the whole recording still wants every topic
+    whole.close()
+    assert not sim.graph.record_everything

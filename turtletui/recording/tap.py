@@ -27,9 +27,10 @@ class RunTap:
         self._turtlesim = sim.turtlesim
         self._background = self._world.background
         self.events: list[tuple[int, str, Any]] = [(round(record.t * 1e9), "log", record) for record in earlier_logs]
+        self.everything = everything
+        """Whether turtlesim should publish its colour sensor even with no subscriber."""
         self.graph.taps.append(self._tap)
         if everything:
-            # turtlesim then publishes its colour sensor even with no subscriber
             self.graph.record_everything = True
 
     def scene(self) -> Scene:
@@ -59,6 +60,11 @@ class RunTap:
         return events
 
     def detach(self) -> None:
-        if self._tap in self.graph.taps:
-            self.graph.taps.remove(self._tap)
-            self.graph.record_everything = False
+        graph = self.graph
+        if self._tap in graph.taps:
+            graph.taps.remove(self._tap)
+            # another recording (a bag, the live view) may still want everything
+            graph.record_everything = any(
+                isinstance(owner, RunTap) and owner.everything
+                for owner in (getattr(tap, "__self__", None) for tap in graph.taps)
+            )

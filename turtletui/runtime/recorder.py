@@ -148,8 +148,9 @@ def open_recorder(
     """A recorder of ``sim`` (a Simulation) for ``path``, chosen by its name:
     ``run.mcap`` an MCAP file, a folder (``run/``, or one that exists) a
     rosbag2 bag, anything else JSON Lines. Both kinds ``close(keep)``."""
-    text = os.fspath(path)
-    if text.endswith((".mcap", "/", os.sep)) or Path(text).is_dir():
+    from turtletui.recording.mcap_file import is_bag_folder
+
+    if os.fspath(path).endswith(".mcap") or is_bag_folder(path):
         from turtletui.recording.recorder import McapRecorder
 
         return McapRecorder(sim, path, earlier_logs, header, buffered=buffered)
@@ -159,9 +160,10 @@ def open_recorder(
 def check_record_path(path: str | os.PathLike[str]) -> None:
     """OSError (one line) if a recording could not be written at ``path``:
     a missing or unwritable folder, or a bag folder that is not empty."""
-    text = os.fspath(path)
-    target = Path(text)
-    if text.endswith(("/", os.sep)) or target.is_dir():
+    from turtletui.recording.mcap_file import is_bag_folder
+
+    target = Path(path)
+    if is_bag_folder(path):
         if target.is_dir() and any(target.iterdir()):
             raise OSError(f"{path}: cannot write the bag (the folder exists and is not empty)")
         parent = target.parent if not target.is_dir() else target
