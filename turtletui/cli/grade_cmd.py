@@ -68,8 +68,10 @@ def grade(
 
     if fmt not in FORMATS:
         fail(f"--format {fmt!r}: choose one of {', '.join(FORMATS)}")
-    if recording_format not in ("mcap", "jsonl"):
-        fail(f"--recording-format {recording_format!r}: choose mcap or jsonl")
+    from turtletui.grading.engine import RECORDING_FORMATS
+
+    if recording_format not in RECORDING_FORMATS:
+        fail(f"--recording-format {recording_format!r}: choose {' or '.join(RECORDING_FORMATS)}")
     try:
         _check_output(output)
         report = _grade(

@@ -48,6 +48,7 @@ RECORDING_FORMATS = ("mcap", "jsonl")
 """How failed runs are kept: MCAP (the default: replay, Foxglove, PlotJuggler
 and ros2 bag open it, and it is a quarter of the size) or JSON Lines."""
 
+
 @dataclass(frozen=True)
 class ScenarioRun:
     """One scenario with one seed: what a single simulated run is."""

@@ -136,7 +136,6 @@ def _event(t: float, kind: str, payload: Any) -> dict[str, Any] | None:
     return None
 
 
-
 def open_recorder(
     sim: Any,
     path: str | os.PathLike[str],
