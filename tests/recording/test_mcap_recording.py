@@ -5,6 +5,7 @@ rosbag2 folder), never with turtletui's own code."""
 from __future__ import annotations
 
 import math
+import re
 import subprocess
 import sys
 from collections import Counter
@@ -98,7 +99,7 @@ def test_every_message_decodes_with_the_right_schema_and_qos(mcap_file: Path):
         assert channel.message_encoding == "cdr" and schema.encoding == "ros2msg"
         (profile,) = YAML_LOADER.load(channel.metadata["offered_qos_profiles"])
         assert profile["reliability"] == "reliable" and profile["history"] == "unknown"
-        assert "topic_type_hash" in channel.metadata
+        assert re.fullmatch(r"RIHS01_[0-9a-f]{64}", channel.metadata["topic_type_hash"])
     types = {channel.topic: summary.schemas[channel.schema_id].name for channel in summary.channels.values()}
     assert types == {
         "/turtle1/pose": "turtlesim/msg/Pose",
@@ -190,6 +191,7 @@ def test_a_bag_folder_reads_with_rosbags_and_its_metadata_is_rosbag2s(bag: Path,
     assert {name: t["message_count"] for name, t in topics.items()} == dict(counts)
     rosout = topics["/rosout"]["topic_metadata"]
     assert rosout["type"] == "rcl_interfaces/msg/Log" and rosout["serialization_format"] == "cdr"
+    assert rosout["type_description_hash"] == "RIHS01_e28ce254ca8abc06abf92773b74602cdbf116ed34fbaf294fb9f81da9f318eac"
     (qos,) = rosout["offered_qos_profiles"]
     assert qos["durability"] == "transient_local" and qos["lifespan"] == {"sec": 10, "nsec": 0}
     assert qos["deadline"] == {"sec": 9223372036, "nsec": 854775807}

@@ -96,3 +96,15 @@ def test_every_recorded_definition_parses_in_mcap_ros2_with_turtletuis_fields():
         assert name in generate_dynamic(name, message_definition(name))
     assert [s.name for s in get_interface("visualization_msgs/msg/Marker")._FIELDS][-3:] == [
         "mesh_resource", "mesh_file", "mesh_use_embedded_materials"]
+
+
+def test_type_hashes_are_ros_2s():
+    from turtletui.recording.type_hash import type_hash
+
+    # as rclpy (Kilted) reports them and the ROS packages' type description files hold them
+    assert type_hash("geometry_msgs/msg/Twist") == (
+        "RIHS01_9c45bf16fe0983d80e3cfe750d6835843d265a9a6c46bd2e609fcddde6fb8d2a")
+    assert type_hash("rcl_interfaces/msg/Log") == (
+        "RIHS01_e28ce254ca8abc06abf92773b74602cdbf116ed34fbaf294fb9f81da9f318eac")
+    assert type_hash("geometry_msgs/msg/Vector3") == (
+        "RIHS01_cc12fe83e4c02719f1ce8070bfd14aecd40f75a96696a67a2a1f37f7dbb0765d")

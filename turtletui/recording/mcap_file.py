@@ -27,6 +27,7 @@ from turtletui.recording.qos import profiles_yaml
 from turtletui.recording.scene import Scene
 from turtletui.recording.schema import message_definition
 from turtletui.recording.stream import Channel, RosStream
+from turtletui.recording.type_hash import type_hash
 
 TURTLETUI_METADATA = "turtletui"
 """Name of the metadata record with the run's header (start, seed, duration...)."""
@@ -61,7 +62,7 @@ class McapSink:
             channel.topic,
             "cdr",
             schema_id,
-            {"offered_qos_profiles": profiles_yaml(channel.qos), "topic_type_hash": ""},
+            {"offered_qos_profiles": profiles_yaml(channel.qos), "topic_type_hash": type_hash(channel.type_name)},
         )
 
     def write(self, channel: Channel, log_time_ns: int, data: bytes) -> None:
@@ -75,7 +76,8 @@ class McapSink:
     def bag_info(self, channels: list[Channel], file_name: str) -> rosbag2.BagInfo:
         start = self.start_ns or 0
         topics = [
-            rosbag2.TopicInfo(channel.topic, channel.type_name, channel.qos, channel.count) for channel in channels
+            rosbag2.TopicInfo(channel.topic, channel.type_name, channel.qos, channel.count, type_hash(channel.type_name))
+            for channel in channels
         ]
         return rosbag2.BagInfo([file_name], start, max(self.end_ns - start, 0), self.message_count, topics)
 
