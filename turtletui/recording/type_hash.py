@@ -42,14 +42,14 @@ def _field(spec: Any) -> dict[str, Any]:
     }
 
 
-def _description(cls: type) -> dict[str, Any]:
+def _description(cls: type, type_name: str | None = None) -> dict[str, Any]:
     fields = [_field(spec) for spec in cls._FIELDS] or [
         {
             "name": "structure_needs_at_least_one_member",
             "type": {"type_id": 3, "capacity": 0, "string_capacity": 0, "nested_type_name": ""},
         }
     ]
-    return {"type_name": cls._TYPE_NAME, "fields": fields}
+    return {"type_name": type_name or cls._TYPE_NAME, "fields": fields}
 
 
 def _referenced(cls: type, found: dict[str, type]) -> None:
@@ -61,12 +61,14 @@ def _referenced(cls: type, found: dict[str, type]) -> None:
 
 @functools.cache
 def type_hash(type_name: str) -> str:
-    """The RIHS01 hash of a recorded message type (``turtlesim/msg/Pose``)."""
+    """The RIHS01 hash of a recorded message type (``turtlesim/msg/Pose``);
+    a request recorded as ``turtlesim/msg/SetPen_Request`` is hashed under that
+    name, as readers that check hashes (rosbags) hash the type they are given."""
     cls = interface_of(type_name)
     found: dict[str, type] = {}
     _referenced(cls, found)
     hashable = {
-        "type_description": _description(cls),
+        "type_description": _description(cls, type_name),
         "referenced_type_descriptions": [_description(found[name]) for name in sorted(found)],
     }
     text = json.dumps(hashable, ensure_ascii=True, separators=(", ", ": "))
