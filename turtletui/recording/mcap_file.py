@@ -90,9 +90,9 @@ class McapSink:
 
 def is_bag_folder(path: str | os.PathLike[str]) -> bool:
     """Whether ``--record PATH`` names a rosbag2 folder: it ends with a
-    separator or is an existing folder."""
-    text = os.fspath(path)
-    return text.endswith(("/", os.sep)) or Path(text).is_dir()
+    separator (``run/``). An existing folder named without one stays an
+    error, so a typo cannot turn a file's name into a folder."""
+    return os.fspath(path).endswith(("/", os.sep))
 
 
 class McapWriter:

@@ -59,7 +59,10 @@ class Recorder:
     ) -> None:
         self.path = Path(path)
         if self.path.is_dir():
-            raise OSError(f"{path}: cannot write the record (is a folder; name a file such as run.jsonl)")
+            raise OSError(
+                f"{path}: cannot write the record (is a folder; name a file such as run.jsonl or run.mcap,"
+                " or a new folder for a rosbag2 bag, such as run/)"
+            )
         self._tmp = self.path.with_name(f".{self.path.name}.{os.getpid()}.tmp")
         self._file = None if buffered else self._open()
         self._buffer: list[tuple[int | float, str, Any]] | None = [] if buffered else None
@@ -145,8 +148,8 @@ def open_recorder(
     buffered: bool = False,
 ) -> Recorder | Any:
     """A recorder of ``sim`` (a Simulation) for ``path``, chosen by its name:
-    ``run.mcap`` an MCAP file, a folder (``run/``, or one that exists) a
-    rosbag2 bag, anything else JSON Lines. Both kinds ``close(keep)``."""
+    ``run.mcap`` an MCAP file, a folder (``run/``) a rosbag2 bag, anything
+    else JSON Lines. Both kinds ``close(keep)``."""
     from turtletui.recording.mcap_file import is_bag_folder
 
     if os.fspath(path).endswith(".mcap") or is_bag_folder(path):
@@ -165,8 +168,8 @@ def check_record_path(path: str | os.PathLike[str]) -> None:
     if is_bag_folder(path):
         if target.is_dir() and any(target.iterdir()):
             raise OSError(f"{path}: cannot write the bag (the folder exists and is not empty)")
-        parent = target.parent if not target.is_dir() else target
-    else:
-        parent = target.parent
+    elif target.is_dir():
+        raise OSError(f"{path}: cannot write the record (is a folder; name a file, or a bag folder as {path}/)")
+    parent = target.parent
     if not parent.is_dir() or not os.access(parent, os.W_OK):
         raise OSError(f"{path}: cannot write the recording (no writable folder {parent})")
