@@ -100,6 +100,7 @@ def run(
     setup: Callable[[Simulation], None] | None = None,
     limits: Limits | None = None,
     world: World | None = None,
+    foxglove: str | None = None,
 ) -> RunResult:
     """Run controllers for ``duration`` simulated seconds and summarise the run.
 
@@ -109,7 +110,9 @@ def run(
     ControllerError or RosArgsError (one-line messages) for bad input.
     ``limits`` (turtletui.runtime.sandbox.Limits) bounds what sandboxed
     controllers may use; the defaults when None. ``world`` is a fresh World
-    to run in (turtlesim's empty arena when None).
+    to run in (turtlesim's empty arena when None). ``record`` names a
+    recording (``run.jsonl``, ``run.mcap`` or a rosbag2 folder ``run/``);
+    ``foxglove`` (``HOST:PORT``) serves the run live to Foxglove, in real time.
     """
     if not (duration > 0 and duration < 1e7):
         raise ValueError(f"duration must be a positive number of seconds, got {duration}")
@@ -123,6 +126,11 @@ def run(
     for spec in specs:
         if spec.path is not None:
             check_source(spec.path)
+    if foxglove is not None:
+        from turtletui.recording.foxglove import parse_address
+
+        parse_address(foxglove)  # a bad address is a ValueError before anything starts
+        realtime = True  # a live view of a run that ends in a blink shows nothing
     logs: list[LogRecord] = []
     sinks = [logs.append] if on_log is None else [logs.append, on_log]
     sim = Simulation(world=world, realtime=realtime, log_sinks=sinks)
@@ -144,10 +152,20 @@ def run(
         sim.graph.taps.append(tap)
     recorder = None
     if record is not None:
-        from turtletui.runtime.recorder import Recorder
+        from turtletui.runtime.recorder import open_recorder
 
         # turtlesim's start lines were logged before the recorder existed
-        recorder = Recorder(sim.graph, record, earlier_logs=logs)
+        recorder = open_recorder(sim, record, earlier_logs=logs)
+    bridge = None
+    if foxglove is not None:
+        from turtletui.recording.foxglove import FoxgloveBridge
+
+        try:
+            bridge = FoxgloveBridge(sim, foxglove)
+        except BaseException:
+            if recorder is not None:
+                recorder.close(keep=False)
+            raise
     started = time.perf_counter()
     try:
         outcome = run_controllers(
@@ -159,6 +177,8 @@ def run(
             limits=limits,
         )
     finally:
+        if bridge is not None:
+            bridge.close()
         if recorder is not None:
             # A run cut short (Ctrl-C, an error) keeps what it recorded so far.
             recorder.close(keep=True)

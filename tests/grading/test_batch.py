@@ -227,10 +227,10 @@ def test_a_failed_visible_scenario_is_recorded_and_a_hidden_one_is_not(tmp_path:
     assert ann.recordings == []  # nothing failed: nothing to watch
     failed = {t.scenario for t in ben.tests if not t.passed}
     assert failed == {"centre", "hidden 1"}  # it fails the hidden run too...
-    assert ben.recordings == [str(store.recordings("ben") / "centre.jsonl")]  # ...which is not recorded
+    assert ben.recordings == [str(store.recordings("ben") / "centre.mcap")]  # ...which is not recorded
     recorded = sorted(p.name for p in (tmp_path / "results" / "recordings").rglob("*") if p.is_file())
-    assert recorded == ["centre.jsonl"]
-    header = json.loads(Path(ben.recordings[0]).read_text().splitlines()[0])
+    assert recorded == ["centre.mcap"]
+    header = mcap_header(Path(ben.recordings[0]))
     assert header["scenario"] == "centre" and header["start"] == [5.5, 5.5, 0.0]
     # the stored result lists the recording for the student to replay
     assert stored_results(tmp_path / "results")["ben"]["recordings"] == ben.recordings
@@ -327,3 +327,22 @@ def test_a_killed_grader_leaves_finished_results_and_no_student_processes(tmp_pa
     assert {s for s, line in status.items() if line.endswith("(kept from an earlier run)")} == set(kept)
     assert sorted(stored_results(results)) == [f"s{i}" for i in range(6)]
     assert wait_until_gone([klass]) == []
+
+
+def mcap_header(path: Path) -> dict:
+    """The run's header in an MCAP recording's "turtletui" metadata, read with mcap's own reader."""
+    from mcap.reader import make_reader
+
+    with path.open("rb") as stream:
+        (record,) = [m for m in make_reader(stream).iter_metadata() if m.name == "turtletui"]
+    return json.loads(record.metadata["header"])
+
+
+def test_failed_runs_can_be_kept_as_json_lines(tmp_path: Path, lesson: Path):
+    klass = make_class(tmp_path / "class", {"ben": WALL_HITTER})
+    plan = plan_of(lesson)
+    store = ResultStore(tmp_path / "results", store_key(plan))
+    (ben,) = grade_submissions(plan, find_submissions([klass]), store=store, jobs=1, recording_format="jsonl").submissions
+    assert ben.recordings == [str(store.recordings("ben") / "centre.jsonl")]
+    header = json.loads(Path(ben.recordings[0]).read_text().splitlines()[0])
+    assert header["scenario"] == "centre" and header["start"] == [5.5, 5.5, 0.0]

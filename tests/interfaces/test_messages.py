@@ -27,8 +27,10 @@ from turtletui.interfaces import (
     sensor_msgs,
     std_msgs,
     std_srvs,
+    tf2_msgs,
     turtlesim,
     unique_identifier_msgs,
+    visualization_msgs,
 )
 from turtletui.interfaces.geometry_msgs import (
     Point32,
@@ -46,7 +48,8 @@ from turtletui.interfaces.turtlesim import Color, RotateAbsolute, SetPen, Spawn
 TURTLE_POSE = turtlesim.Pose
 
 MODULES = [action_msgs, builtin_interfaces, geometry_msgs, rcl_interfaces, sensor_msgs,
-           std_msgs, std_srvs, turtlesim, unique_identifier_msgs]
+           std_msgs, std_srvs, tf2_msgs, turtlesim, unique_identifier_msgs,
+           visualization_msgs]
 
 
 def message_classes() -> list[type]:
@@ -726,3 +729,4 @@ def test_from_values_refuses_a_service_class_like_from_dict() -> None:
     for build, data in ((from_dict, {}), (from_values, [])):
         with pytest.raises(I.InterfaceError, match="turtlesim/srv/SetPen is not a message type"):
             build("turtlesim/srv/SetPen", data)
+

@@ -62,4 +62,4 @@ def main() -> None:
     """Console-script entry point."""
     argv, ros_args = split_ros_args(sys.argv[1:])
     run_cmd.ROS_ARGS[:] = ros_args
-    app(args=argv, prog_name="turtletui")
+    app(args=run_cmd.with_foxglove_default(argv), prog_name="turtletui")

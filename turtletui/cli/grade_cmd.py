@@ -49,6 +49,13 @@ def grade(
     plugin: list[Path] = typer.Option(
         None, "--plugin", metavar="PATH", help="Also load this plugin file or folder (repeatable)."
     ),
+    recording_format: str = typer.Option(
+        "mcap",
+        "--recording-format",
+        metavar="FORMAT",
+        help="How failed runs are kept for turtletui replay: mcap (also opens in Foxglove,"
+        " PlotJuggler and ros2 bag) or jsonl (JSON Lines).",
+    ),
     quiet: bool = typer.Option(False, "--quiet", "-q", help="No progress lines on stderr."),
     same_user: bool = typer.Option(
         False,
@@ -61,10 +68,24 @@ def grade(
 
     if fmt not in FORMATS:
         fail(f"--format {fmt!r}: choose one of {', '.join(FORMATS)}")
+    from turtletui.grading.engine import RECORDING_FORMATS
+
+    if recording_format not in RECORDING_FORMATS:
+        fail(f"--recording-format {recording_format!r}: choose {' or '.join(RECORDING_FORMATS)}")
     try:
         _check_output(output)
         report = _grade(
-            submissions, lesson_id, fmt, results, jobs, force, folder or [], plugin or [], quiet, same_user
+            submissions,
+            lesson_id,
+            fmt,
+            results,
+            jobs,
+            force,
+            folder or [],
+            plugin or [],
+            quiet,
+            same_user,
+            recording_format,
         )
         _write(report, fmt, output)
     except KeyboardInterrupt:
@@ -80,7 +101,7 @@ def grade(
         raise SystemExit(EXIT_BELOW)
 
 
-def _grade(submissions, lesson_id, fmt, results, jobs, force, folders, plugins, quiet, same_user):
+def _grade(submissions, lesson_id, fmt, results, jobs, force, folders, plugins, quiet, same_user, recording_format):
     from turtletui.grading.batch import ResultStore, default_jobs, grade_submissions, store_key
     from turtletui.grading.engine import prepare
     from turtletui.grading.integrity import PrivateCopies, check_runtime_readable, unprivileged_ids
@@ -130,6 +151,7 @@ def _grade(submissions, lesson_id, fmt, results, jobs, force, folders, plugins, 
             plugins=plugins,
             on_result=progress,
             workdir=copies,
+            recording_format=recording_format,
         )
     finally:
         if copies is not None:

@@ -12,7 +12,9 @@ from turtletui.cli.errors import fail
 
 
 def replay(
-    recording: Path = typer.Argument(..., metavar="RECORDING", help="A .jsonl recording."),
+    recording: Path = typer.Argument(
+        ..., metavar="RECORDING", help="A recording: run.jsonl, run.mcap or a rosbag2 folder."
+    ),
     headless: bool = typer.Option(False, "--headless", help="Print the replayed log instead of opening the app."),
     quiet: bool = typer.Option(False, "--quiet", "-q", help="Headless: print only the summary line."),
     ascii_only: bool = typer.Option(False, "--ascii", help="Draw with plain ASCII and no colour."),

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 import sys
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -27,7 +28,20 @@ def run(
     duration: float = typer.Option(60.0, "--duration", "-d", help="Simulated seconds to run."),
     seed: int = typer.Option(0, "--seed", help="Seed for everything random in the run."),
     realtime: bool = typer.Option(False, "--realtime", help="Run at wall-clock speed instead of lockstep."),
-    record: Path = typer.Option(None, "--record", help="Write every message, call and log line to FILE.jsonl."),
+    record: str = typer.Option(
+        None,
+        "--record",
+        metavar="PATH",
+        help="Record every message, call and log line: run.jsonl (JSON Lines), run.mcap (MCAP for"
+        " Foxglove, PlotJuggler, ros2 bag) or run/ (a rosbag2 folder for ros2 bag info|play).",
+    ),
+    foxglove: str = typer.Option(
+        None,
+        "--foxglove",
+        metavar="[HOST:PORT]",
+        help="Serve the run live to Foxglove or Lichtblick (default 127.0.0.1:8765; headless runs"
+        " then run in real time). Needs: pip install 'turtletui[foxglove]'.",
+    ),
     in_process: bool = typer.Option(
         False, "--in-process", help="Run the controllers in this process (trusted code only: no sandbox)."
     ),
@@ -58,7 +72,7 @@ def run(
                 "no terminal to draw the app in; run headless instead: "
                 "turtletui run FILE.py --headless --duration 60"
             )
-        _run_app(controllers, plugin, lesson, ascii_only, seed, world, pixels)
+        _run_app(controllers, plugin, lesson, ascii_only, seed, world, pixels, record, foxglove)
         return
     from turtletui.api import run as run_controllers
     from turtletui.compat.ros_args import RosArgsError
@@ -89,6 +103,7 @@ def run(
             on_log=print_log,
             keep_calls=False,
             world=sim_world,
+            foxglove=foxglove,
         )
     except (ControllerError, RosArgsError, ValueError) as err:
         fail(str(err))
@@ -126,8 +141,11 @@ def _run_app(
     seed: int,
     world: str | None = None,
     pixels: str = "auto",
+    record: str | None = None,
+    foxglove: str | None = None,
 ) -> None:
     """The Textual app (imported only here: headless runs never load Textual)."""
+    _check_outputs(record, foxglove)
     from turtletui.lessons.loader import LessonError, find_lesson
     from turtletui.runtime.loader import ControllerError
     from turtletui.runtime.resolve import resolve_controllers
@@ -162,6 +180,8 @@ def _run_app(
         world=world_spec,
         pixels=drawing.pixels,
         graphics=drawing.graphics,
+        record=record,
+        foxglove=foxglove,
     ).run()
 
 
@@ -173,3 +193,35 @@ def _drawing(pixels: str, ascii_only: bool):
         return choose_drawing(pixels, ascii=ascii_only)
     except TerminalError as err:
         fail(f"--pixels: {err}")
+
+
+def _check_outputs(record: str | None, foxglove: str | None) -> None:
+    """A bad --record path or --foxglove address is an error before the app starts."""
+    from turtletui.runtime.recorder import check_record_path
+
+    try:
+        if record is not None:
+            check_record_path(record)
+        if foxglove is not None:
+            from turtletui.recording.foxglove import parse_address
+
+            parse_address(foxglove)
+    except (OSError, ValueError) as err:
+        fail(str(err))
+
+
+FOXGLOVE_DEFAULT = "127.0.0.1:8765"
+_ADDRESS = re.compile(r"(\[[0-9A-Fa-f:.]+\]|[A-Za-z0-9.-]+)?:?\d{1,5}")
+
+
+def with_foxglove_default(argv: list[str]) -> list[str]:
+    """``--foxglove`` with no address gets the default: Click options cannot
+    take an optional value, so a bare flag is completed before parsing."""
+    out: list[str] = []
+    for i, arg in enumerate(argv):
+        out.append(arg)
+        if arg == "--foxglove":
+            following = argv[i + 1] if i + 1 < len(argv) else None
+            if following is None or not _ADDRESS.fullmatch(following):
+                out.append(FOXGLOVE_DEFAULT)
+    return out

@@ -207,7 +207,9 @@ def _pin_to_one_cpu(counter: Any) -> None:
         pass
 
 
-def _run_task(student: str, controller: str, run_index: int, recordings: str | None) -> tuple[str, RunOutcome, float]:
+def _run_task(
+    student: str, controller: str, run_index: int, recordings: str | None, recording_format: str
+) -> tuple[str, RunOutcome, float]:
     global _in_task
     assert _worker_plan is not None
     started = time.perf_counter()
@@ -219,6 +221,7 @@ def _run_task(student: str, controller: str, run_index: int, recordings: str | N
             [ControllerSpec(name=Path(controller).stem, path=Path(controller))],
             limits=_worker_limits,
             recordings=Path(recordings) if recordings else None,
+            recording_format=recording_format,
         )
     except _GraderGone:
         os._exit(1)
@@ -241,9 +244,12 @@ def grade_submissions(
     plugins: Sequence[str | Path] = (),
     on_result: Callable[[SubmissionResult, bool], None] | None = None,
     workdir: Callable[[Submission], Submission] | None = None,
+    recording_format: str = "mcap",
 ) -> GradeReport:
     """Grade every submission (reusing stored results unless ``force``).
 
+    Failed visible runs are recorded in ``recording_format`` ("mcap" or
+    "jsonl") in the store's recordings folder.
     ``on_result(result, reused)`` is called as each submission's result is known.
     ``workdir`` may map a submission to a private copy to run (see integrity).
     KeyboardInterrupt propagates after the workers are stopped; every result
@@ -290,6 +296,7 @@ def grade_submissions(
             str(item.submission.controller),
             index,
             str(store.recordings(student)) if store is not None else None,
+            recording_format,
         )
         for student, item in pending.items()
         for index in range(len(plan.runs))

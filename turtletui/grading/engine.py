@@ -25,7 +25,7 @@ from turtletui.lessons.loader import display_path
 from turtletui.lessons.model import CheckSpec, Lesson, Scenario
 from turtletui.messages import did_you_mean
 from turtletui.runtime.loader import ControllerSpec
-from turtletui.runtime.recorder import Recorder
+from turtletui.runtime.recorder import open_recorder
 
 if TYPE_CHECKING:
     from turtletui.runtime.sandbox import Limits
@@ -42,6 +42,11 @@ OBSTACLE_START_CLEARANCE = 0.5
 
 class GradingError(ValueError):
     """A lesson that cannot be graded; the message is one line naming the file."""
+
+
+RECORDING_FORMATS = ("mcap", "jsonl")
+"""How failed runs are kept: MCAP (the default: replay, Foxglove, PlotJuggler
+and ros2 bag open it, and it is a quarter of the size) or JSON Lines."""
 
 
 @dataclass(frozen=True)
@@ -204,7 +209,7 @@ def run_scenario(
     *,
     limits: Limits | None = None,
     record: str | Path | None = None,
-) -> tuple[Trace, Recorder | None]:
+) -> tuple[Trace, Any]:
     """Run one scenario in the grader's own simulation: its trace and, with
     ``record``, its recording in memory (the caller closes it, keeping the
     file or not). Raises KeyboardInterrupt if Ctrl-C cut the run short."""
@@ -213,7 +218,7 @@ def run_scenario(
     scenario = run.scenario
     world_name = scenario.world or plan.lesson.world
     collector: list[TraceCollector] = []
-    recorder: list[Recorder] = []
+    recorder: list[Any] = []
     start_logs: list[LogRecord] = []
 
     def setup(sim: Simulation) -> None:
@@ -227,7 +232,7 @@ def run_scenario(
                 "start": list(run.start),
                 "ros_args": list(scenario.ros_args),
             }
-            recorder.append(Recorder(sim.graph, record, start_logs, header, buffered=True))
+            recorder.append(open_recorder(sim, record, start_logs, header, buffered=True))
         place_turtle(sim, run.start, run.label)
         collector.append(TraceCollector(sim, scenario=run.label, seed=run.seed, duration=scenario.duration))
 
@@ -284,15 +289,20 @@ def grade_run(
     *,
     limits: Limits | None = None,
     recordings: Path | None = None,
+    recording_format: str = "mcap",
 ) -> RunOutcome:
     """Run one scenario of the plan and judge every check that applies to it.
 
     With ``recordings`` (a folder), a visible run that failed a check leaves
-    its recording there as ``<label>.jsonl`` for ``turtletui replay``.
+    its recording there as ``<label>.mcap`` (or ``.jsonl``, the
+    ``recording_format``) for ``turtletui replay``, Foxglove or ros2 bag.
     """
+    if recording_format not in RECORDING_FORMATS:
+        raise ValueError(f"recording format {recording_format!r}: choose one of {', '.join(RECORDING_FORMATS)}")
     run = plan.runs[run_index]
     # hidden runs are not recorded: a recording would show where they start
-    path = None if recordings is None or run.hidden else recordings / f"{_file_name(run.label)}.jsonl"
+    name = f"{_file_name(run.label)}.{recording_format}"
+    path = None if recordings is None or run.hidden else recordings / name
     if path is not None:
         recordings.mkdir(parents=True, exist_ok=True)
     trace, recorder = run_scenario(plan, run, controllers, limits=limits, record=path)
@@ -370,12 +380,15 @@ def grade_controllers(
     student: str = "",
     limits: Limits | None = None,
     recordings: Path | None = None,
+    recording_format: str = "mcap",
 ) -> SubmissionResult:
     """Run every scenario of the plan with these controllers, one after the
-    other, and judge every check (:func:`grade_run` says what ``recordings`` does)."""
+    other, and judge every check (:func:`grade_run` says what ``recordings``
+    and ``recording_format`` do)."""
     started = time.perf_counter()
     outcomes = [
-        grade_run(plan, i, controllers, limits=limits, recordings=recordings) for i in range(len(plan.runs))
+        grade_run(plan, i, controllers, limits=limits, recordings=recordings, recording_format=recording_format)
+        for i in range(len(plan.runs))
     ]
     return assemble(plan, outcomes, submission=submission, student=student, seconds=time.perf_counter() - started)
 

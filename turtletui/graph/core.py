@@ -397,6 +397,17 @@ class Graph:
         heapq.heappush(self._timers, (timer.next_due, timer.seq, timer))
         return timer
 
+    def call_later(self, node: NodeRecord, delay_ns: int, callback: Callable[[], None]) -> Timer:
+        """A timer that fires once, ``delay_ns`` from now (cancel it to call nothing)."""
+        holder: list[Timer] = []
+
+        def fire() -> None:
+            holder[0].canceled = True
+            callback()
+
+        holder.append(self.add_timer(node, delay_ns, fire))
+        return holder[0]
+
     def reschedule(self, timer: Timer) -> None:
         """Put a reset timer back on the schedule."""
         heapq.heappush(self._timers, (timer.next_due, timer.seq, timer))

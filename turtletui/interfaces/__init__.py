@@ -35,8 +35,10 @@ from turtletui.interfaces import (  # noqa: F401  (registers every type)
     sensor_msgs,
     std_msgs,
     std_srvs,
+    tf2_msgs,
     turtlesim,
     unique_identifier_msgs,
+    visualization_msgs,
 )
 from turtletui.interfaces._message import (
     _F32_BOUND,

@@ -18,6 +18,7 @@ __all__ = [
     'PoseStamped',
     'Quaternion',
     'Transform',
+    'TransformStamped',
     'Twist',
     'TwistStamped',
     'Vector3',
@@ -144,4 +145,26 @@ TwistStamped = _msg('geometry_msgs/msg/TwistStamped', '''\
 
 std_msgs/Header header
 Twist twist
+''', globals())
+
+TransformStamped = _msg('geometry_msgs/msg/TransformStamped', '''\
+# This expresses a transform from coordinate frame header.frame_id
+# to the coordinate frame child_frame_id at the time of header.stamp
+#
+# This message is mostly used by the
+# <a href="https://docs.ros.org/en/rolling/p/tf2/">tf2</a> package.
+# See its documentation for more information.
+#
+# The child_frame_id is necessary in addition to the frame_id
+# in the Header to communicate the full reference for the transform
+# in a self contained message.
+
+# The frame id in the header is used as the reference frame of this transform.
+std_msgs/Header header
+
+# The frame id of the child frame to which this transform points.
+string child_frame_id
+
+# Translation and rotation in 3-dimensions of child_frame_id from header.frame_id.
+Transform transform
 ''', globals())

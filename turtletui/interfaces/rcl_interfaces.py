@@ -23,7 +23,7 @@ __all__ = [
 Log = _msg('rcl_interfaces/msg/Log', '''\
 ##
 ## Severity level constants
-##
+##\x20
 ## These logging levels follow the Python Standard
 ## https://docs.python.org/3/library/logging.html#logging-levels
 ## And are implemented in rcutils as well
@@ -161,7 +161,7 @@ float64 from_value
 float64 to_value
 
 # Size of valid steps between the from and to bound.
-#
+#\x20
 # Step is considered to be a magnitude, therefore negative values are treated
 # the same as positive values, and a step value of zero implies a continuous
 # range of values.
@@ -201,7 +201,7 @@ int64 to_value
 # between the two bounds, then the bounds will be the only valid values. e.g. if
 # the range is defined as {from_value: 1, to_value: 2, step: 5} then the valid
 # values will be 1 and 2.
-#
+#\x20
 # If the step is less than the distance between the bounds, but the distance is
 # not a multiple of the step, then the "to" bound will always be a valid value,
 # e.g. if the range is defined as {from_value: 2, to_value: 5, step: 2} then

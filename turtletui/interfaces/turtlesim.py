@@ -3,8 +3,9 @@
 Import paths in ROS 2: turtlesim.msg, turtlesim.srv, turtlesim.action (and,
 from Jazzy on, the same types as turtlesim_msgs.msg / .srv / .action; here
 both names give the *same* class objects: see ``ros_module_members``).
-Definitions transcribed from ros/ros_tutorials (BSD-3-Clause); the text of
-each is what ``ros2 interface show`` prints.
+Definitions transcribed from ros/ros_tutorials (BSD-3-Clause), byte for byte
+(Pose.msg, Spawn.srv and Kill.srv end without a newline); the text of each is
+what ``ros2 interface show`` prints.
 """
 
 from turtletui.interfaces import action_msgs as _action_msgs  # noqa: F401  (Impl types)
@@ -37,8 +38,7 @@ float32 y
 float32 theta
 
 float32 linear_velocity
-float32 angular_velocity
-''', globals())
+float32 angular_velocity''', globals())
 
 Spawn = _srv('turtlesim/srv/Spawn', '''\
 float32 x
@@ -46,13 +46,11 @@ float32 y
 float32 theta
 string name # Optional.  A unique name will be created and returned if this is empty
 ---
-string name
-''', globals())
+string name''', globals())
 
 Kill = _srv('turtlesim/srv/Kill', '''\
 string name
----
-''', globals())
+---''', globals())
 
 SetPen = _srv('turtlesim/srv/SetPen', '''\
 uint8 r

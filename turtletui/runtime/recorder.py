@@ -1,4 +1,5 @@
-"""JSON Lines recording of a run, written atomically."""
+"""Recording a run, written atomically: JSON Lines here, MCAP in
+turtletui.recording (``open_recorder`` chooses by the path's name)."""
 
 from __future__ import annotations
 
@@ -58,7 +59,10 @@ class Recorder:
     ) -> None:
         self.path = Path(path)
         if self.path.is_dir():
-            raise OSError(f"{path}: cannot write the record (is a folder; name a file such as run.jsonl)")
+            raise OSError(
+                f"{path}: cannot write the record (is a folder; name a file such as run.jsonl or run.mcap,"
+                " or a new folder for a rosbag2 bag, such as run/)"
+            )
         self._tmp = self.path.with_name(f".{self.path.name}.{os.getpid()}.tmp")
         self._file = None if buffered else self._open()
         self._buffer: list[tuple[int | float, str, Any]] | None = [] if buffered else None
@@ -134,3 +138,38 @@ def _event(t: float, kind: str, payload: Any) -> dict[str, Any] | None:
         return _log_event(t, payload)
     return None
 
+
+def open_recorder(
+    sim: Any,
+    path: str | os.PathLike[str],
+    earlier_logs: Iterable[LogRecord] = (),
+    header: dict[str, Any] | None = None,
+    *,
+    buffered: bool = False,
+) -> Recorder | Any:
+    """A recorder of ``sim`` (a Simulation) for ``path``, chosen by its name:
+    ``run.mcap`` an MCAP file, a folder (``run/``) a rosbag2 bag, anything
+    else JSON Lines. Both kinds ``close(keep)``."""
+    from turtletui.recording.mcap_file import is_bag_folder
+
+    if os.fspath(path).endswith(".mcap") or is_bag_folder(path):
+        from turtletui.recording.recorder import McapRecorder
+
+        return McapRecorder(sim, path, earlier_logs, header, buffered=buffered)
+    return Recorder(sim.graph, path, earlier_logs, header, buffered=buffered)
+
+
+def check_record_path(path: str | os.PathLike[str]) -> None:
+    """OSError (one line) if a recording could not be written at ``path``:
+    a missing or unwritable folder, or a bag folder that is not empty."""
+    from turtletui.recording.mcap_file import is_bag_folder
+
+    target = Path(path)
+    if is_bag_folder(path):
+        if target.is_dir() and any(target.iterdir()):
+            raise OSError(f"{path}: cannot write the bag (the folder exists and is not empty)")
+    elif target.is_dir():
+        raise OSError(f"{path}: cannot write the record (is a folder; name a file, or a bag folder as {path}/)")
+    parent = target.parent
+    if not parent.is_dir() or not os.access(parent, os.W_OK):
+        raise OSError(f"{path}: cannot write the recording (no writable folder {parent})")

@@ -3,9 +3,11 @@ at the recorded instants, into a fresh simulation that starts as the recorded
 one did. The simulation is deterministic, so the turtle drives exactly the
 recorded path, without the controller's code.
 
-A recording is JSON Lines (turtletui.runtime.recorder); its optional first
+A recording is JSON Lines (turtletui.runtime.recorder), whose optional first
 line is a header ``{"recording": 1, "start": [x, y, theta], "seed": ...,
-"duration": ..., "world": ..., ...}`` that grading writes.
+"duration": ..., "world": ..., ...}`` that grading writes, or MCAP: a
+``.mcap`` file or a rosbag2 folder (turtletui.recording), with that header
+in its "turtletui" metadata record.
 """
 
 from __future__ import annotations
@@ -57,8 +59,11 @@ def _controller_input(event: dict[str, Any]) -> bool:
 
 
 def read_recording(path: str | Path) -> Recording:
-    """Parse a recording; RecordingError names the line of anything malformed."""
+    """Parse a recording; RecordingError names the line (or the MCAP file) of
+    anything malformed."""
     path = Path(path)
+    if path.suffix == ".mcap" or path.is_dir():
+        return _read_mcap(path)
     try:
         lines = path.read_text(encoding="utf-8").splitlines()
     except FileNotFoundError:
@@ -90,7 +95,26 @@ def read_recording(path: str | Path) -> Recording:
     return recording
 
 
-def _check_input(path: Path, number: int, event: dict[str, Any]) -> None:
+def _read_mcap(path: Path) -> Recording:
+    from turtletui.recording.read import McapReadError, read_mcap
+
+    try:
+        header, events = read_mcap(path)
+    except McapReadError as err:
+        raise RecordingError(str(err)) from None
+    recording = Recording(path, header=header)
+    for event in events:
+        recording.end = max(recording.end, event["t"])
+        if "log" in event:
+            recording.logs.append(event)
+        elif _controller_input(event):
+            where = f"{event.get('topic') or event.get('service') or event.get('action')} at t={event['t']:.3f} s"
+            _check_input(path, where, event)
+            recording.inputs.append(event)
+    return recording
+
+
+def _check_input(path: Path, number: int | str, event: dict[str, Any]) -> None:
     kind = "topic" if "topic" in event else "service" if "service" in event else "action"
     try:
         if kind == "topic":
@@ -134,18 +158,7 @@ def install_replay(sim: Simulation, recording: Recording) -> None:
 
     for event in recording.inputs:
         due = round(event["t"] * NS_PER_S)
-        _once(graph, node, max(due - graph.now_ns, 1), send(event))
-
-
-def _once(graph: Any, node: Any, delay_ns: int, callback: Callable[[], None]) -> None:
-    """A timer that fires once, ``delay_ns`` from now."""
-    holder: list[Any] = []
-
-    def fire() -> None:
-        holder[0].canceled = True
-        callback()
-
-    holder.append(graph.add_timer(node, delay_ns, fire))
+        graph.call_later(node, max(due - graph.now_ns, 1), send(event))
 
 
 def _ignore(*_: Any) -> None:

@@ -122,8 +122,14 @@ class TurtleApp(App):
         replay: Recording | None = None,
         pixels: str = "half",
         graphics: str | None = None,
+        record: str | None = None,
+        foxglove: str | None = None,
     ) -> None:
         super().__init__()
+        self._record = record
+        """Where to record the session (--record), or None."""
+        self._foxglove = foxglove
+        """HOST:PORT to serve the session to Foxglove on (--foxglove), or None."""
         self._replay = replay
         """A recorded run to play instead of controllers (turtletui replay)."""
         self._controllers = list(controllers)
@@ -222,7 +228,13 @@ class TurtleApp(App):
         # The controllers start once the first frame is on the screen: a
         # sandbox takes a few hundred milliseconds to start.
         self.session = LiveSession(
-            self._controllers, ros_args=self._ros_args, seed=self._seed, world=world, start=False
+            self._controllers,
+            ros_args=self._ros_args,
+            seed=self._seed,
+            world=world,
+            start=False,
+            record=self._record,
+            foxglove=self._foxglove,
         )
         if problem is not None:
             self.session.sim.graph.log("turtletui", ERROR, problem)

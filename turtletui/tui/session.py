@@ -137,6 +137,8 @@ class LiveSession:
         log_capacity: int = 2000,
         world: WorldSpec | None = None,
         start: bool = True,
+        record: str | None = None,
+        foxglove: str | None = None,
     ) -> None:
         """``start``: start the controllers now (else with start_controllers())."""
         self.lock = threading.RLock()
@@ -163,6 +165,9 @@ class LiveSession:
         self._limits = limits or Limits(start_timeout=3.0)
         self._target_ns = 0
         self._last_wall: float | None = None
+        self._outputs: list[Any] = []
+        """The recording and the Foxglove view of this session (``--record``, ``--foxglove``)."""
+        self._open_outputs(record, foxglove)
         self.slots = [ControllerSlot(spec) for spec in controllers]
         self._started = False
         if start:
@@ -266,6 +271,28 @@ class LiveSession:
     def close(self) -> None:
         for slot in self.slots:
             self._stop(slot)
+        for output in self._outputs:
+            try:
+                output.close()
+            except OSError as err:
+                self._log(ERROR, str(err))
+        self._outputs = []
+
+    def _open_outputs(self, record: str | None, foxglove: str | None) -> None:
+        if record is not None:
+            from turtletui.runtime.recorder import open_recorder
+
+            try:
+                self._outputs.append(open_recorder(self.sim, record, earlier_logs=list(self.logs)))
+            except OSError as err:
+                self._log(ERROR, f"not recording: {err}")
+        if foxglove is not None:
+            from turtletui.recording.foxglove import FoxgloveBridge
+
+            try:
+                self._outputs.append(FoxgloveBridge(self.sim, foxglove))
+            except (OSError, ValueError) as err:
+                self._log(ERROR, f"no Foxglove view: {err}")
 
     def _start(self, slot: ControllerSlot) -> None:
         if slot.spec.path is not None:

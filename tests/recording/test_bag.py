@@ -1,0 +1,113 @@
+"""``ros2 bag record | info | play`` as the official tutorial uses them, over a
+simulation (the library functions the app's command line runs); the bag is
+read back with rosbags."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+from rosbags.highlevel import AnyReader
+from rosbags.typesys import Stores, get_typestore
+
+from turtletui.graph.core import NS_PER_S
+from turtletui.interfaces.geometry_msgs import Twist
+from turtletui.recording.bag import BagError, BagRecording, bag_info, default_bag_name, play_bag
+from turtletui.runtime.simulation import Simulation
+
+
+def drive(sim: Simulation, seconds: float, linear: float = 1.5, angular: float = 0.7) -> None:
+    """turtle_teleop_key's way: a Twist every 100 ms."""
+    node = sim.graph.add_node("teleop_turtle")
+    pub = sim.graph.add_publisher(node, "/turtle1/cmd_vel", Twist, 10)
+    end = sim.graph.now_ns + round(seconds * NS_PER_S)
+    while sim.graph.now_ns < end:
+        msg = Twist()
+        msg.linear.x, msg.angular.z = linear, angular
+        sim.graph.publish(pub.topic, msg)
+        sim.run_until(sim.graph.now_ns + 100_000_000)
+
+
+@pytest.fixture
+def subset(tmp_path: Path) -> tuple[Path, Simulation]:
+    logs: list = []
+    sim = Simulation(log_sinks=[logs.append])
+    sim.logs = logs
+    sim.run_until(NS_PER_S)
+    recording = BagRecording(sim, ["/turtle1/cmd_vel", "/turtle1/pose"], tmp_path / "subset")
+    drive(sim, 3.0)
+    recording.stop()
+    return tmp_path / "subset", sim
+
+
+def test_record_keeps_only_the_topics_asked_for(subset):
+    bag, sim = subset
+    times: dict[str, list[int]] = {}
+    with AnyReader([bag], default_typestore=get_typestore(Stores.EMPTY)) as reader:
+        for connection, timestamp, raw in reader.messages():
+            reader.deserialize(raw, connection.msgtype)
+            times.setdefault(connection.topic, []).append(timestamp)
+    assert set(times) == {"/turtle1/cmd_vel", "/turtle1/pose"} and len(times["/turtle1/cmd_vel"]) == 30
+    poses = times["/turtle1/pose"]
+    assert {b - a for a, b in zip(poses, poses[1:], strict=False)} == {16_000_000} and len(poses) > 180
+    said = [(record.node, record.msg) for record in sim.logs if record.node == "rosbag2_recorder"]
+    assert said[2:5] == [
+        ("rosbag2_recorder", "Subscribed to topic '/turtle1/cmd_vel'"),
+        ("rosbag2_recorder", "Subscribed to topic '/turtle1/pose'"),
+        ("rosbag2_recorder", "Recording..."),
+    ]
+
+
+def test_recording_into_an_existing_folder_is_refused(tmp_path: Path):
+    (tmp_path / "subset").mkdir()
+    with pytest.raises(BagError, match="Output folder '.*subset' already exists."):
+        BagRecording(Simulation(), None, tmp_path / "subset")
+    assert re.fullmatch(r"rosbag2_\d{4}_\d\d_\d\d-\d\d_\d\d_\d\d", default_bag_name())
+
+
+def test_info_prints_what_ros2_bag_info_prints(subset):
+    bag, _ = subset
+    text = bag_info(bag)
+    lines = text.split("\n")
+    assert lines[0] == "" and lines[1] == "Files:             subset_0.mcap"
+    assert re.fullmatch(r"Bag size:          \d+\.\d KiB", lines[2])
+    assert lines[3:5] == ["Storage id:        mcap", "ROS Distro:        jazzy"]
+    assert lines[5] == "Duration:          3.000000000s"  # cmd_vel from t=1 s, the last pose at t=4 s
+    assert re.fullmatch(r"Start:             \w{3} [ \d]\d \d{4} \d\d:\d\d:\d\d\.\d{9} \(1700000001\.\d{9}\)", lines[6])
+    pose_count = int(re.search(r"Topic: /turtle1/pose .* Count: (\d+)", text).group(1))
+    assert lines[8] == f"Messages:          {30 + pose_count}"
+    assert lines[9].startswith("Topic information: Topic: /turtle1/cmd_vel | Type: geometry_msgs/msg/Twist | Count: 30 |")
+    assert lines[10].startswith(" " * 19 + "Topic: /turtle1/pose | Type: turtlesim/msg/Pose | Count: ")
+    assert lines[11:] == ["Service:           0", "Service information: ", ""]
+    with pytest.raises(BagError, match="no such bag"):
+        bag_info(bag.parent / "nope")
+
+
+def test_play_drives_a_fresh_turtle_along_the_recorded_path(subset):
+    bag, recorded = subset
+    sim = Simulation()
+    sim.run_until(NS_PER_S)
+    playback = play_bag(sim, bag)
+    assert playback.messages > 200 and not playback.done
+    # the recording ran from t=1 s to t=4 s: so does the playback, in a fresh turtlesim
+    sim.run_until(4 * NS_PER_S + 1)
+    assert playback.done
+    turtle, original = sim.world.turtles["turtle1"], recorded.world.turtles["turtle1"]
+    assert (turtle.x, turtle.y, turtle.theta) == pytest.approx((original.x, original.y, original.theta), abs=1e-5)
+    assert turtle.distance == pytest.approx(original.distance, abs=1e-5) and turtle.distance > 4
+    player = next(node for node in sim.graph.nodes if node.name == "rosbag2_player")
+    assert {p.topic.name for t in sim.graph.topics.values() for p in t.publishers if p.node is player} == {
+        "/turtle1/cmd_vel", "/turtle1/pose"}
+
+
+def test_a_bag_stopped_during_a_live_recording_leaves_the_colour_sensor_on(tmp_path: Path):
+    from turtletui.recording.recorder import McapRecorder
+
+    sim = Simulation()
+    whole = McapRecorder(sim, tmp_path / "whole.mcap")
+    bag = BagRecording(sim, ["/turtle1/pose"], tmp_path / "bag")
+    bag.stop()
+    assert sim.graph.record_everything  # the whole recording still wants every topic
+    whole.close()
+    assert not sim.graph.record_everything
