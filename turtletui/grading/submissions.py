@@ -346,6 +346,8 @@ def choose_controller(
         chosen = [c for c in candidates if c.matches(executable)]
         if len(chosen) == 1:
             return chosen[0]
+        if not chosen and len(candidates) == 1 and candidates[0].package is None:
+            return candidates[0]  # a plain file upload: the executable named a package's node
         if not chosen:
             found = f"found: {listed}" if candidates else "found no Python controller"
             raise SubmissionError(f"{folder}: no executable {executable!r} ({found})")
