@@ -195,7 +195,7 @@ def _grade(
         if result.error:
             status = f"error: {result.error}"
         else:
-            status = f"{result.score:g}/{result.max_score:g} ({result.graded})"
+            status = f"{result.score:g}/{result.max_score:g}"
             status += " (kept from an earlier run)" if reused else f" in {result.execution_time:.1f} s"
         sys.stderr.write(f"[{finished}/{total}] {result.student}: {status}\n")
 

@@ -106,15 +106,17 @@ class Candidate:
     """The executable's name (console_scripts) or the file's stem."""
     package: str | None = None
     function: str | None = None
+    shown: str = ""
+    """The file's path within the student's folder."""
 
     @property
     def label(self) -> str:
-        return f"{self.package} {self.name}" if self.package else self.path.name
+        return f"{self.package} {self.name}" if self.package else (self.shown or self.path.name)
 
     def matches(self, wanted: str) -> bool:
         """``wanted`` names it: ``NAME``, ``PKG NAME``, ``PKG/NAME``, or a file name."""
         wanted = wanted.strip()
-        names = {self.name, self.path.name}
+        names = {self.name, self.path.name, self.shown}
         if self.package:
             names |= {f"{self.package} {self.name}", f"{self.package}/{self.name}"}
         return wanted in names
@@ -304,7 +306,7 @@ def _file_candidates(folder: Path, skip: list[Path]) -> list[Candidate]:
             continue
         if any(root in file.parents for root in skip):
             continue
-        files.append(Candidate(file, file.stem))
+        files.append(Candidate(file, file.stem, shown=file.relative_to(folder).as_posix()))
     return files
 
 
