@@ -96,6 +96,7 @@ def repack_installed(dest: Path, distribution: str = DISTRIBUTION) -> Path:
     info = next((f.parts[0] for f in files if f.parts and f.parts[0].endswith(".dist-info")), None)
     if info is None:
         raise WheelError(f"{distribution}'s installation lists no .dist-info folder")
+    dest.mkdir(parents=True, exist_ok=True)
     name = re.sub(r"[-_.]+", "_", dist.metadata["Name"]).lower()
     version = dist.version
     target = dest / f"{name}-{version}-py3-none-any.whl"
