@@ -200,3 +200,20 @@ def test_pictures_are_real_pngs_and_svgs():
     assert (pixels == (150, 150, 160)).all(axis=2).any()  # and the obstacle
     svg = render_svg(drawing)
     assert svg.startswith("<svg") and "<polyline" in svg and "hit at x=11.09, y=8.00" in svg
+
+
+def test_replay_png_draws_a_recording(tmp_path: Path):
+    from support.grading import WALL_HITTER
+    from typer.testing import CliRunner
+
+    from turtletui.cli import app
+
+    node = tmp_path / "node.py"
+    node.write_text(WALL_HITTER)
+    record = tmp_path / "run.jsonl"
+    ran = CliRunner().invoke(app, ["run", str(node), "--headless", "--duration", "5", "--record", str(record), "-q"])
+    assert ran.exit_code == 0, ran.output
+    drawn = CliRunner().invoke(app, ["replay", str(record), "--png", str(tmp_path / "run.png")])
+    assert drawn.exit_code == 0, drawn.output
+    assert (tmp_path / "run.png").read_bytes().startswith(b"\x89PNG")
+    assert "1 wall or obstacle hits marked" in drawn.stderr
