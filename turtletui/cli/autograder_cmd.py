@@ -55,6 +55,20 @@ def _lesson_and_source(lesson_id: str, lessons: Path | None) -> tuple[str, Path 
     return found.id, found.path
 
 
+def _bundle(write, requirement: str | None, **arguments) -> list[Path]:
+    """Call ``write`` (an autograder writer) with a wheel of this turtletui built
+    for it, or with the ``requirement`` instead; a one-line error on failure."""
+    import tempfile
+
+    from turtletui.grading.autograder import AutograderError
+
+    with tempfile.TemporaryDirectory(prefix="turtletui-wheel-") as tmp:
+        try:
+            return write(turtletui_requirement=requirement, wheel=_wheel(requirement, Path(tmp)), **arguments)
+        except AutograderError as err:
+            fail(str(err))
+
+
 def _wheel(requirement: str | None, into: Path) -> Path | None:
     """A wheel of this turtletui in ``into`` (None when a requirement replaces it);
     a one-line error when it cannot be built."""
@@ -93,26 +107,13 @@ def gradescope(
     force: bool = typer.Option(False, "--force", help=_FORCE_HELP),
 ) -> None:
     """Write a Gradescope autograder (setup.sh, run_autograder, turtletui's wheel) for a lesson."""
-    import tempfile
-
-    from turtletui.grading.autograder import AutograderError, write_gradescope_autograder
+    from turtletui.grading.autograder import write_gradescope_autograder
 
     found_id, source = _lesson_and_source(lesson_id, lessons)
-    with tempfile.TemporaryDirectory(prefix="turtletui-wheel-") as tmp:
-        try:
-            written = write_gradescope_autograder(
-                found_id,
-                output,
-                turtletui_requirement=requirement,
-                wheel=_wheel(requirement, Path(tmp)),
-                lesson_source=source,
-                executable=executable,
-                hidden_tests=hidden_tests,
-                time_limit=time_limit,
-                force=force,
-            )
-        except AutograderError as err:
-            fail(str(err))
+    written = _bundle(
+        write_gradescope_autograder, requirement, lesson_id=found_id, out_dir=output, lesson_source=source,
+        executable=executable, hidden_tests=hidden_tests, time_limit=time_limit, force=force,
+    )
     _report(
         written,
         f"Zip the files in {output} (not the folder) and upload the zip as the "
@@ -133,25 +134,13 @@ def classroom50(
     force: bool = typer.Option(False, "--force", help=_FORCE_HELP),
 ) -> None:
     """Write a Classroom 50 autograder (autograder.py, turtletui's wheel, a workflow) for a lesson."""
-    import tempfile
-
-    from turtletui.grading.autograder import AutograderError
     from turtletui.grading.autograder_classroom50 import write_classroom50_autograder
 
     found_id, source = _lesson_and_source(lesson_id, lessons)
-    with tempfile.TemporaryDirectory(prefix="turtletui-wheel-") as tmp:
-        try:
-            written = write_classroom50_autograder(
-                found_id,
-                output,
-                turtletui_requirement=requirement,
-                wheel=_wheel(requirement, Path(tmp)),
-                lesson_source=source,
-                executable=executable,
-                force=force,
-            )
-        except AutograderError as err:
-            fail(str(err))
+    written = _bundle(
+        write_classroom50_autograder, requirement, lesson_id=found_id, out_dir=output, lesson_source=source,
+        executable=executable, force=force,
+    )
     _report(written, f"Commit {output} to your classroom50 repository; see {output / 'README.txt'}.")
 
 
@@ -171,25 +160,13 @@ def github(
     force: bool = typer.Option(False, "--force", help=_FORCE_HELP),
 ) -> None:
     """Write a GitHub Classroom workflow (GitHub Classroom was retired on 2026-08-28)."""
-    import tempfile
-
-    from turtletui.grading.autograder import AutograderError, write_github_workflow
+    from turtletui.grading.autograder import write_github_workflow
 
     found_id, source = _lesson_and_source(lesson_id, lessons)
-    with tempfile.TemporaryDirectory(prefix="turtletui-wheel-") as tmp:
-        try:
-            written = write_github_workflow(
-                found_id,
-                output,
-                turtletui_requirement=requirement,
-                wheel=_wheel(requirement, Path(tmp)),
-                lesson_source=source,
-                submission=submission,
-                executable=executable,
-                force=force,
-            )
-        except AutograderError as err:
-            fail(str(err))
+    written = _bundle(
+        write_github_workflow, requirement, lesson_id=found_id, out_dir=output, lesson_source=source,
+        submission=submission, executable=executable, force=force,
+    )
     _report(
         written,
         f"Commit them to the assignment's template repository ({output}). GitHub Classroom was "
