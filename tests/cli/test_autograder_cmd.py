@@ -28,7 +28,10 @@ def test_gradescope_writes_the_autograder(tmp_path: Path):
     assert result.exit_code == 0, result.output
     assert f"wrote {out / 'run_autograder'}" in result.stdout
     assert os.access(out / "run_autograder", os.X_OK)
-    assert f"pip install turtletui=={__version__}" in (out / "setup.sh").read_text()
+    # turtletui's own wheel travels in the bundle: no package index has this version
+    wheel = out / f"turtletui-{__version__}-py3-none-any.whl"
+    assert wheel.is_file()
+    assert f"pip install /autograder/source/{wheel.name}" in (out / "setup.sh").read_text()
     # A bundled lesson comes with the installed turtletui: nothing to copy.
     assert not (out / "turtletui_lessons").exists()
 

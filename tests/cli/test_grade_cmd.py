@@ -126,8 +126,8 @@ def test_per_student_problems_are_in_their_rows_with_score_0_and_the_rest_is_gra
         "syn": "SyntaxError",
         "nocode": "no controller",
         "two": "several possible controllers (a.py, b.py)",
-        "grades": "not a submission",
     }
+    assert "grades" not in rows  # a file that is not Python is nobody's submission
     for student, words in expected.items():
         row = rows[student]
         assert row["score"] == 0 and row["tests"] == [], row
@@ -135,7 +135,7 @@ def test_per_student_problems_are_in_their_rows_with_score_0_and_the_rest_is_gra
         assert row["max_score"] == MAX_SCORE
     # ... each with a one-line progress line, and its result kept like any other
     progress = [line for line in result.stderr.splitlines() if line.startswith("[")]
-    assert len(progress) == len(rows) == 6
+    assert len(progress) == len(rows) == 5
     assert sorted(stored_results(klass.parent / "results")) == sorted(rows)
 
 
@@ -169,7 +169,10 @@ def test_json_output_has_the_documented_shape(klass: Path, lesson: Path, tmp_pat
     assert set(report) == {"lesson", "max_score", "submissions"}
     assert (report["lesson"], report["max_score"]) == ("tiny-walls", MAX_SCORE)
     for sub in report["submissions"]:
-        assert set(sub) == {"submission", "student", "score", "max_score", "error", "execution_time", "tests", "recordings"}
+        assert set(sub) == {
+            "submission", "student", "score", "max_score", "error", "execution_time", "graded", "tests",
+            "recordings", "pictures",
+        }
         assert sub["max_score"] == MAX_SCORE and sub["error"] is None and sub["execution_time"] > 0
         assert sum(t["score"] for t in sub["tests"]) == pytest.approx(sub["score"])
         for test in sub["tests"]:
@@ -187,15 +190,26 @@ def test_csv_has_one_row_per_student(klass: Path, lesson: Path):
     assert result.exit_code == 0, result.stderr
     rows = list(csv.reader(io.StringIO(result.stdout)))
     assert rows == [
-        ["student", "score", "max_score", "wall_hits", "no_crash"],
-        ["ann", "3", "3", "2", "1"],
-        ["ben", "1", "3", "0", "1"],
+        ["student", "score", "max_score", "wall_hits", "no_crash", "graded"],
+        ["ann", "3", "3", "2", "1", "controller.py"],
+        ["ben", "1", "3", "0", "1", "controller.py"],
     ]
 
 
 def test_gradescope_with_two_submissions_is_a_one_line_error(klass: Path, lesson: Path):
-    stderr = one_line_error(grade_class(klass, lesson, "--format", "gradescope"))
+    stderr = one_line_error(grade_class(klass, lesson, "klass_again", "--format", "gradescope"))
+    assert "klass_again: no such file" in stderr
+    stderr = one_line_error(grade_class(klass, lesson, klass, "--format", "gradescope"))
     assert "--format gradescope reports one submission" in stderr and "got 2" in stderr
+
+
+def test_gradescope_grades_a_folder_of_folders_as_one_ambiguous_upload(klass: Path, lesson: Path):
+    """The platform hands over one upload: two folders in it are two candidates, not two students."""
+    result = grade_class(klass, lesson, "--format", "gradescope")
+    assert result.exit_code == 0, result.stderr
+    data = json.loads(result.stdout)
+    assert data["score"] == 0.0
+    assert "several possible controllers (ann/controller.py, ben/controller.py)" in data["output"]
 
 
 def test_github_appends_a_result_line_to_github_output(klass: Path, lesson: Path, tmp_path: Path):

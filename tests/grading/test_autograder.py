@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import os
 import re
 import shutil
@@ -51,12 +52,14 @@ def test_gradescope_writes_setup_run_autograder_and_readme(tmp_path: Path):
     bash_syntax_ok(setup)
     setup_text, run_text = setup.read_text(), run.read_text()
     assert "python3-venv" in setup_text and "pip install turtletui==0.1.0" in setup_text
+    assert "sys.version_info >= (3, 10)" in setup_text
     assert "/autograder/submission" in run_text
     assert re.search(
-        r"turtletui grade \"\$target\" --lesson part6-closed-loop \\\n\s+--format gradescope "
-        r"--output /autograder/results/results.json",
+        r"turtletui grade /autograder/submission --lesson part6-closed-loop \\\n\s+--format gradescope "
+        r"--hidden-tests summary --results \"\$\(mktemp -d\)\" \\\n\s+--output \"\$results\"",
         run_text,
     )
+    assert "timeout --signal=TERM --kill-after=20 540" in run_text
     assert "--lessons" not in run_text
     readme = (out / "README.txt").read_text()
     assert "zip" in readme and "setup.sh" in readme
@@ -120,27 +123,49 @@ def test_bad_ids_requirements_and_lesson_copies_are_one_line_errors(tmp_path: Pa
         write_gradescope_autograder(LESSON, tmp_path / "file", turtletui_requirement=REQ)
 
 
-def test_run_autograder_grades_the_single_python_file(tmp_path: Path):
-    """Run the script's submission-finding part against a fake /autograder tree."""
-    if BASH is None:
-        pytest.skip("no bash")
-    write_gradescope_autograder(LESSON, tmp_path / "ag", turtletui_requirement=REQ)
+def _fake_autograder(tmp_path: Path, turtletui_script: str) -> tuple[Path, str]:
+    """run_autograder pointed at a fake /autograder tree and a fake turtletui."""
+    write_gradescope_autograder(LESSON, tmp_path / "ag", turtletui_requirement=REQ, time_limit=10)
     script = (tmp_path / "ag" / "run_autograder").read_text()
     fake = tmp_path / "fake"
-    submission = fake / "submission"
-    (submission / "upload").mkdir(parents=True)
-    (submission / "upload" / "controller.py").write_text("")
-    (submission / "upload" / "notes.txt").write_text("")
+    (fake / "submission" / "upload").mkdir(parents=True)
+    (fake / "submission" / "upload" / "controller.py").write_text("")
     bin_dir = fake / "venv" / "bin"
     bin_dir.mkdir(parents=True)
-    (bin_dir / "turtletui").write_text('#!/usr/bin/env bash\nprintf "%s\\n" "$@"\n')
+    (bin_dir / "turtletui").write_text("#!/usr/bin/env bash\n" + turtletui_script)
     (bin_dir / "turtletui").chmod(0o755)
-    script = script.replace("/autograder", str(fake)).replace("/opt/turtletui", str(fake / "venv"))
+    return fake, script.replace("/autograder", str(fake)).replace("/opt/turtletui", str(fake / "venv"))
+
+
+def test_run_autograder_grades_the_whole_upload(tmp_path: Path):
+    """Run the script against a fake /autograder tree: the upload is one submission."""
+    if BASH is None:
+        pytest.skip("no bash")
+    fake, script = _fake_autograder(tmp_path, 'printf "%s\\n" "$@"; echo "{}" > "${@: -1}"\n')
     proc = subprocess.run([BASH, "-c", script], capture_output=True, text=True)
     assert proc.returncode == 0, proc.stderr
     args = proc.stdout.splitlines()
-    assert args[:2] == ["grade", str(submission / "upload" / "controller.py")]
+    assert args[:2] == ["grade", str(fake / "submission")]
     assert args[args.index("--output") + 1] == str(fake / "results" / "results.json")
+
+
+@pytest.mark.parametrize(
+    ("behaviour", "words"),
+    [
+        ('echo "turtletui: internal error: boom" >&2; exit 3\n', "could not grade this submission (exit status 3): turtletui: internal error: boom"),
+        ("exit 0\n", "could not grade this submission (exit status 0)"),
+        ("sleep 60\n", "Grading took longer than 10 seconds"),
+    ],
+)
+def test_run_autograder_always_leaves_a_result(tmp_path: Path, behaviour: str, words: str):
+    """A grader that fails, writes nothing or outlives the time limit still leaves results.json."""
+    if BASH is None:
+        pytest.skip("no bash")
+    fake, script = _fake_autograder(tmp_path, behaviour)
+    proc = subprocess.run([BASH, "-c", script], capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr
+    data = json.loads((fake / "results" / "results.json").read_text())
+    assert data["score"] == 0.0 and words in data["output"], data
 
 
 # -- github ---------------------------------------------------------------------------

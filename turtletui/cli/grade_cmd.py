@@ -20,7 +20,10 @@ EXIT_BELOW = 1
 EXIT_INTERNAL = 3
 EXIT_INTERRUPTED = 130
 
-_FORMAT_HELP = "table (default), json, junit, gradescope, csv or github."
+_FORMAT_HELP = (
+    "table (default), json, junit, gradescope, prairielearn, classroom50, canvas (with --roster), moodle, csv,"
+    " or github (for GitHub Classroom, retired 2026-08-28)."
+)
 
 
 def grade(
@@ -62,9 +65,25 @@ def grade(
         "--same-user",
         help="Run student code as this user even when it is root (only in a throwaway container).",
     ),
+    executable: str = typer.Option(
+        None,
+        "--executable",
+        metavar="NAME",
+        help="The node to grade in a ROS 2 package (as ros2 run PKG NAME names it) or the file in a folder.",
+    ),
+    roster: Path = typer.Option(
+        None, "--roster", metavar="CSV", help="canvas, moodle: the class list exported from the LMS."
+    ),
+    hidden_tests: str = typer.Option(
+        "summary",
+        "--hidden-tests",
+        metavar="HOW",
+        help="gradescope: summary (one test, the student sees their total) or a visibility for each:"
+        " after_published, after_due_date, hidden, visible.",
+    ),
 ) -> None:
     """Grade submissions against a lesson's scenarios and checks."""
-    from turtletui.grading.reports import FORMATS
+    from turtletui.grading.reports import FORMATS, HIDDEN_CHOICES, ROSTER_FORMATS, ReportOptions
 
     if fmt not in FORMATS:
         fail(f"--format {fmt!r}: choose one of {', '.join(FORMATS)}")
@@ -72,7 +91,14 @@ def grade(
 
     if recording_format not in RECORDING_FORMATS:
         fail(f"--recording-format {recording_format!r}: choose {' or '.join(RECORDING_FORMATS)}")
+    if hidden_tests not in HIDDEN_CHOICES:
+        fail(f"--hidden-tests {hidden_tests!r}: choose one of {', '.join(HIDDEN_CHOICES)}")
+    if fmt == "canvas" and roster is None:
+        fail("--format canvas needs --roster EXPORT.csv: the gradebook exported from Canvas")
+    if roster is not None and fmt not in ROSTER_FORMATS:
+        fail(f"--roster is for --format {' or '.join(ROSTER_FORMATS)}, not {fmt}")
     try:
+        options = ReportOptions(roster=_roster(roster), hidden=hidden_tests)
         _check_output(output)
         report = _grade(
             submissions,
@@ -86,8 +112,9 @@ def grade(
             quiet,
             same_user,
             recording_format,
+            executable,
         )
-        _write(report, fmt, output)
+        _write(report, fmt, output, options)
     except KeyboardInterrupt:
         sys.stderr.write("turtletui: interrupted: finished results are kept; run the same command to resume\n")
         raise SystemExit(EXIT_INTERRUPTED) from None
@@ -101,29 +128,61 @@ def grade(
         raise SystemExit(EXIT_BELOW)
 
 
-def _grade(submissions, lesson_id, fmt, results, jobs, force, folders, plugins, quiet, same_user, recording_format):
-    from turtletui.grading.batch import ResultStore, default_jobs, grade_submissions, store_key
+def _roster(path: Path | None):
+    if path is None:
+        return None
+    from turtletui.grading.formats.roster import read_roster
+
+    return read_roster(path)
+
+
+def _grade(
+    submissions, lesson_id, fmt, results, jobs, force, folders, plugins, quiet, same_user, recording_format, executable
+):
+    from dataclasses import replace
+
+    from turtletui.grading.batch import grade_submissions
     from turtletui.grading.engine import prepare
     from turtletui.grading.integrity import PrivateCopies, check_runtime_readable, unprivileged_ids
     from turtletui.grading.reports import SINGLE_SUBMISSION_FORMATS
+    from turtletui.grading.store import ResultStore, checkout_of, store_key
     from turtletui.grading.submissions import find_submissions
     from turtletui.lessons.loader import find_lesson
+    from turtletui.runtime import container
     from turtletui.runtime.sandbox import Limits
 
     lesson = find_lesson(lesson_id, folders, plugins)
     plan = prepare(lesson, plugins=plugins)
-    found = find_submissions(list(submissions), starter=lesson.starter)
-    if fmt in SINGLE_SUBMISSION_FORMATS and len(found) != 1:
+    single = fmt in SINGLE_SUBMISSION_FORMATS
+    found = find_submissions(
+        list(submissions),
+        starter=lesson.starter_path,
+        executable=executable,
+        default_executable=lesson.executable,
+        single=single,
+    )
+    if single and len(found) != 1:
         raise ValueError(
             f"--format {fmt} reports one submission (the platform grades one per container), got {len(found)}"
         )
-    store = ResultStore(results or Path("turtletui-grades") / lesson.id, store_key(plan))
+    # Runs side by side fit the container's CPUs and memory (a run that could
+    # use more than the container has would get the whole container killed).
+    jobs = container.fitting_jobs(jobs or container.available_cpus())
     limits = Limits()
+    limits = replace(limits, memory_bytes=container.run_memory(jobs, limits.memory_bytes))
+    # Stored results inside a submission, or inside the checkout a submission
+    # named here comes from, could have been written by the student: never reused.
+    named = [checkout_of(path) for path in submissions if path.is_file() or path in {s.path for s in found}]
+    store = ResultStore(
+        results or Path("turtletui-grades") / lesson.id,
+        store_key(plan, plugins=plugins, limits=limits),
+        untrusted=[*named, *(s.path for s in found)],
+    )
     copies = None
     ids = None if same_user else unprivileged_ids()
     if ids is not None:
         check_runtime_readable()
-        limits = Limits(run_as=ids)
+        limits = replace(limits, run_as=ids)
         copies = PrivateCopies()
     total = len(found)
     finished = 0
@@ -145,7 +204,7 @@ def _grade(submissions, lesson_id, fmt, results, jobs, force, folders, plugins, 
             plan,
             found,
             store=store,
-            jobs=jobs or default_jobs(),
+            jobs=jobs,
             force=force,
             limits=limits,
             plugins=plugins,
@@ -170,7 +229,7 @@ def _check_output(output: Path | None) -> None:
         raise ValueError(f"cannot write {output}: permission denied")
 
 
-def _write(report, fmt: str, output: Path | None) -> None:
+def _write(report, fmt: str, output: Path | None, options) -> None:
     from turtletui.grading.reports import (
         github_output_line,
         print_table,
@@ -179,11 +238,13 @@ def _write(report, fmt: str, output: Path | None) -> None:
     )
 
     if output is not None:
-        write_report(report, fmt, output)
+        write_report(report, fmt, output, options)
     elif fmt == "table":
         print_table(report)
     else:
-        sys.stdout.write(render_report(report, fmt).rstrip("\n") + "\n")
+        sys.stdout.write(render_report(report, fmt, options).rstrip("\n") + "\n")
+    for warning in options.warnings:
+        sys.stderr.write(f"turtletui: warning: {warning}\n")
     github_output = os.environ.get("GITHUB_OUTPUT")
     if fmt == "github" and github_output:
         with open(github_output, "a", encoding="utf-8") as file:

@@ -19,6 +19,9 @@ def replay(
     quiet: bool = typer.Option(False, "--quiet", "-q", help="Headless: print only the summary line."),
     ascii_only: bool = typer.Option(False, "--ascii", help="Draw with plain ASCII and no colour."),
     pixels: str = typer.Option("auto", "--pixels", help="half, braille, graphics or auto: as turtletui run."),
+    png: Path = typer.Option(
+        None, "--png", metavar="FILE", help="Draw the run's path as a PNG picture (an .svg name: SVG) instead."
+    ),
 ) -> None:
     """Play a recorded run: the turtle drives the recorded path again."""
     from turtletui.runtime.replay import RecordingError, read_recording
@@ -27,6 +30,9 @@ def replay(
         found = read_recording(recording)
     except RecordingError as err:
         fail(str(err))
+    if png is not None:
+        _picture(found, _world(found.header.get("world")), png)
+        return
     if not headless and (not sys.stdout.isatty() or not sys.stdin.isatty()):
         fail(f"no terminal to draw the app in; replay headless instead: turtletui replay {recording} --headless")
     header = found.header
@@ -72,6 +78,37 @@ def replay(
     except BrokenPipeError:
         raise
     sys.stdout.write(result.summary() + "\n")
+
+
+def _picture(found, world, out: Path) -> None:
+    """Replay the recording (any format) headless and draw turtle1's path."""
+    from turtletui.api import run
+    from turtletui.grading.pictures import drawing_of, render_png, render_svg
+    from turtletui.grading.reports import ReportError, write_text_atomic
+    from turtletui.runtime.replay import install_replay
+
+    seed = int(found.header.get("seed", 0))
+    result = run(
+        [],
+        duration=found.duration,
+        seed=seed,
+        setup=lambda sim: install_replay(sim, found),
+        keep_calls=False,
+        keep_poses=True,
+        world=None if world is None else world.build(seed),
+    )
+    poses = result.poses.get("turtle1", [])
+    xy = [(x, y) for _, x, y, _ in poses]
+    start = found.start or ((*xy[0], poses[0][3]) if poses else (5.544445, 5.544445, 0.0))
+    drawing = drawing_of(xy, start, () if world is None else world.obstacles)
+    try:
+        if out.suffix.lower() == ".svg":
+            write_text_atomic(out, render_svg(drawing))
+        else:
+            out.write_bytes(render_png(drawing))
+    except (OSError, ReportError) as err:
+        fail(f"cannot write {out}: {getattr(err, 'strerror', None) or err}")
+    sys.stderr.write(f"wrote {out}: the path of turtle1, {len(drawing.hits)} wall or obstacle hits marked\n")
 
 
 def _world(name: str | None):

@@ -1,14 +1,24 @@
-"""Generate the files that let Gradescope or GitHub Classroom grade a lesson in their
-own containers, one submission per container, with ``turtletui grade``.
+"""Generate the files that let Gradescope, Classroom 50 or GitHub Classroom grade a
+lesson in their own containers, one submission per container, with ``turtletui grade``.
+
+Every bundle carries a wheel of the turtletui that wrote it (see
+:mod:`turtletui.grading.wheel`) and installs it, with its dependencies from the
+package index; an instructor may name a pip requirement instead.
 
 - Gradescope (https://gradescope-autograders.readthedocs.io/en/latest/specs/): a
-  zip with ``setup.sh`` (run once, as root, to build the Ubuntu image) and
-  ``run_autograder`` (run per submission from /autograder; the student's upload
-  is in /autograder/submission; /autograder/results/results.json is the result).
-- GitHub Classroom: ``.github/workflows/classroom.yml`` in the template repository,
-  laid out like the workflow Classroom itself generates (workflow "Autograding
-  Tests", job ``run-autograding-tests``), ending with
-  classroom-resources/autograding-grading-reporter.
+  zip with ``setup.sh`` (run once, as root, to build the Ubuntu 22.04 image with
+  its Python 3.10) and ``run_autograder`` (run per submission from /autograder;
+  the student's upload is in /autograder/submission). run_autograder always
+  leaves /autograder/results/results.json: an upload that cannot be graded
+  scores 0 with the reason, and grading that fails or outlives its time budget
+  (set below the platform's timeout) leaves 0 with a message.
+- Classroom 50: ``autograder.py`` for CLASSROOM/autograders/ASSIGNMENT/ (the
+  runner calls it in the student's checkout and reads ./result.json), and a
+  workflow that runs the same grading in any repository.
+- GitHub Classroom (retired on 2026-08-28; for repositories still set up for
+  it): ``.github/workflows/classroom.yml`` in the template repository, laid out
+  like the workflow Classroom itself generated (workflow "Autograding Tests", job
+  ``run-autograding-tests``), ending with classroom-resources/autograding-grading-reporter.
 
 The templates are plain strings here, filled with :class:`string.Template`;
 every value put in a shell command is quoted with :func:`shlex.quote`.
@@ -16,6 +26,7 @@ every value put in a shell command is quoted with :func:`shlex.quote`.
 
 from __future__ import annotations
 
+import re
 import shlex
 import shutil
 from pathlib import Path
@@ -24,11 +35,17 @@ from string import Template
 from turtletui.grading.reports import ReportError, write_text_atomic
 
 GRADESCOPE_VENV = "/opt/turtletui"
+GRADESCOPE_SOURCE = "/autograder/source"
 GRADESCOPE_LESSONS = "/autograder/source/turtletui_lessons"
+GRADESCOPE_TIME_LIMIT = 540
+"""Seconds run_autograder lets grading take by default: below Gradescope's
+default autograder timeout of 10 minutes, with time left to write the result."""
 LESSONS_FOLDER = "turtletui_lessons"
 """Name of the copied lesson folder inside a Gradescope autograder."""
 GITHUB_LESSONS = ".github/turtletui_lessons"
 """Where a custom lesson goes in a GitHub Classroom template repository."""
+GITHUB_WHEELS = ".github/turtletui"
+"""Where turtletui's wheel goes in a GitHub Classroom template repository."""
 GITHUB_STEP_ID = "turtletui"
 """The grading step's id; the reporter reads its result from ``TURTLETUI_RESULTS``."""
 
@@ -44,13 +61,17 @@ _SETUP_SH = Template("""\
 # builds the autograder image (Ubuntu 22.04 or newer: turtletui needs Python 3.10+).
 set -euo pipefail
 
-export DEBIAN_FRONTEND=noninteractive
-apt-get update
-apt-get install -y --no-install-recommends python3 python3-venv python3-pip
+if ! python3 -c 'import sys, venv, ensurepip; sys.exit(sys.version_info < (3, 10))' 2>/dev/null; then
+    export DEBIAN_FRONTEND=noninteractive
+    apt-get update
+    apt-get install -y --no-install-recommends python3 python3-venv python3-pip
+fi
+python3 -c 'import sys; sys.exit(0 if sys.version_info >= (3, 10) else "turtletui needs Python 3.10 or newer: choose an Ubuntu 22.04 (or newer) base image")'
 
 python3 -m venv $venv
 $venv/bin/python -m pip install --upgrade pip
 $venv/bin/python -m pip install $requirement
+$venv/bin/turtletui --version
 $lessons_setup""")
 
 _LESSONS_SETUP = Template("""
@@ -65,33 +86,41 @@ _RUN_AUTOGRADER = Template("""\
 #!/usr/bin/env bash
 # Gradescope runs this for every submission, as root, from /autograder. Written by
 # `turtletui autograder gradescope` for lesson $lesson_id.
+# It always leaves /autograder/results/results.json: Gradescope shows "the
+# autograder failed" for a run without one.
 set -uo pipefail
 
-submission=/autograder/submission
+results=/autograder/results/results.json
 mkdir -p /autograder/results
 $lessons_guard
-# Gradescope puts the student's upload in /autograder/submission (a zip comes
-# unpacked). A single folder inside it is the submission; a single Python file is
-# graded as that file; anything else as the folder (turtletui grade finds the
-# controller in it).
-shopt -s nullglob dotglob
-entries=("$$submission"/*)
-if [ "$${#entries[@]}" -eq 1 ] && [ -d "$${entries[0]}" ]; then
-    submission="$${entries[0]}"
-fi
-python_files=("$$submission"/*.py)
-shopt -u dotglob
-target="$$submission"
-if [ "$${#python_files[@]}" -eq 1 ]; then
-    target="$${python_files[0]}"
-fi
+# A result of 0 with a message, for when grading itself could not finish.
+fail() {
+    local message="$$1"
+    if ! MESSAGE="$$message" python3 -c 'import json, os, sys
+json.dump({"score": 0.0, "output": os.environ["MESSAGE"], "visibility": "visible",
+           "stdout_visibility": "hidden", "tests": []}, open(sys.argv[1], "w"))' "$$results"; then
+        printf '{"score": 0.0, "output": "The autograder failed; ask your instructor.", "tests": []}' > "$$results"
+    fi
+}
 
 # The student's code runs as user nobody: it must be able to read its own files.
-chmod -R a+rX /autograder/submission
-
-# Only the grader writes results.json: turtletui grade replaces it atomically.
-exec $venv/bin/turtletui grade "$$target" --lesson $lesson_arg$lessons_arg \\
-    --format gradescope --output /autograder/results/results.json
+chmod -R a+rX /autograder/submission 2>/dev/null
+errors=$$(mktemp)
+# The whole upload is one submission, whatever its layout (a file, a folder, a
+# ROS 2 package, a workspace); turtletui grade finds the controller in it and
+# writes results.json atomically, also for an upload it cannot grade.
+timeout --signal=TERM --kill-after=20 $time_limit \\
+    $venv/bin/turtletui grade /autograder/submission --lesson $lesson_arg$lessons_arg$executable_arg \\
+    --format gradescope --hidden-tests $hidden --results "$$(mktemp -d)" \\
+    --output "$$results" 2>"$$errors"
+status=$$?
+cat "$$errors" >&2
+if [ "$$status" -eq 124 ] || [ "$$status" -eq 137 ]; then
+    fail "Grading took longer than $time_limit seconds and was stopped: does your controller keep the simulation waiting? Your score is 0; resubmit, or ask your instructor."
+elif [ "$$status" -ne 0 ] || [ ! -s "$$results" ]; then
+    fail "The autograder could not grade this submission (exit status $$status): $$(tail -n 1 "$$errors" | cut -c1-500)"
+fi
+exit 0
 """)
 
 _LESSONS_GUARD = Template("""
@@ -111,20 +140,34 @@ $underline
 2. In Gradescope, create a "Programming Assignment", open "Configure
    Autograder", choose an Ubuntu 22.04 (or newer) base image and upload the zip.
    Gradescope runs setup.sh once to build the image (it installs
-   $requirement_text), then run_autograder for each submission.
+   $requirement_text and its dependencies from PyPI), then run_autograder for
+   each submission. Keep the autograder timeout above $time_limit seconds (the
+   default, 10 minutes, is): run_autograder stops grading after $time_limit s and
+   reports 0 with a message, instead of leaving no result.
 
-3. Students upload their controller (one .py file, or several files with the
-   controller among them). Each submission is graded in its own container with
+3. Students upload their controller: one .py file, a folder, their ROS 2 package
+   (e.g. my_robot_controller, with setup.py) or a workspace with src/. Each
+   upload is graded in its own container with
 
-       turtletui grade /autograder/submission --lesson $lesson_id --format gradescope
+       turtletui grade /autograder/submission --lesson $lesson_id --format gradescope$executable_arg
 
-   which writes /autograder/results/results.json. Tests of hidden scenarios are
-   shown to students only once you publish the grades ("after_published"); the
-   grader's own log (stdout) is for you only.
+   which writes /autograder/results/results.json, naming the file and executable
+   it graded. An upload that cannot be graded (empty, no controller, several
+   possible ones) scores 0 with the reason. $hidden_text Failed
+   runs come with a picture of the turtle's path. The grader's own log (stdout)
+   is for you only.
 
 4. Test it with "Test Autograder" and the lesson's reference controller before
    students submit.
 $lessons_note""")
+
+_HIDDEN_TEXT = {
+    "summary": "Hidden scenarios show as one test (\"hidden scenarios: 2 of 3 passed\") without details, so students see their total.",
+    "after_published": "Tests of hidden scenarios show once you publish grades; until then Gradescope hides the student's total.",
+    "after_due_date": "Tests of hidden scenarios show after the due date; until then Gradescope hides the student's total.",
+    "hidden": "Tests of hidden scenarios never show; Gradescope then hides the student's total.",
+    "visible": "Tests of hidden scenarios show at once (their feedback has no measurements).",
+}
 
 _README_LESSONS = """
 The lesson comes from turtletui_lessons/ in this folder (copied from
@@ -136,6 +179,8 @@ _WORKFLOW = Template("""\
 # GitHub Classroom autograding for turtletui lesson $lesson_id, written by
 # `turtletui autograder github`. Put it in the assignment's template repository
 # as .github/workflows/classroom.yml; Classroom runs it on every push.
+# GitHub Classroom was retired on 2026-08-28: this is for repositories still set
+# up for it. New courses: `turtletui autograder classroom50`.
 #
 # The layout follows the workflow GitHub Classroom generates itself: workflow
 # "Autograding Tests", job run-autograding-tests, skipped for the Classroom bot.
@@ -173,8 +218,11 @@ jobs:
           python -m pip install $requirement
       - name: Grade with turtletui
         id: $step_id
+        # Results are kept outside the student's checkout and signed with a key
+        # made for this job: nothing in the repository can pass for a result.
         run: |
-          turtletui grade $submission --lesson $lesson_arg$lessons_arg --format github --output "$$RUNNER_TEMP/turtletui-result.txt"
+          export TURTLETUI_RESULTS_KEY="$$(python -c 'import secrets; print(secrets.token_hex(32))')"
+          turtletui grade $submission --lesson $lesson_arg$lessons_arg$executable_arg --format github --results "$$RUNNER_TEMP/turtletui-grades" --output "$$RUNNER_TEMP/turtletui-result.txt"
       - name: Autograding Reporter
         # Report even when the grading step failed: the output carries the score.
         if: $${{ !cancelled() }}
@@ -272,21 +320,52 @@ def _write(path: Path, text: str, mode: int = 0o644) -> Path:
 # -- gradescope -----------------------------------------------------------------------
 
 
+def _install_source(out_dir: Path, requirement: str | None, wheel: Path | None, force: bool) -> tuple[str, str, list[Path]]:
+    """What pip installs (quoted for the shell, relative to the bundle), how the
+    README names it, and the files copied for it (the wheel)."""
+    if (requirement is None) == (wheel is None):
+        raise AutograderError("name either a pip requirement or a wheel of turtletui to install")
+    if requirement is not None:
+        _check_requirement(requirement)
+        return shlex.quote(requirement), requirement, []
+    assert wheel is not None
+    target = out_dir / wheel.name
+    _refuse_existing([target], force)
+    if target.resolve() != wheel.resolve():
+        try:
+            out_dir.mkdir(parents=True, exist_ok=True)
+            shutil.copyfile(wheel, target)
+        except OSError as err:
+            raise AutograderError(f"cannot copy {wheel} to {target}: {err.strerror or err}") from err
+    return "", f"{wheel.name} (turtletui itself, in this folder)", [target]
+
+
 def write_gradescope_autograder(
     lesson_id: str,
     out_dir: Path,
     *,
-    turtletui_requirement: str,
+    turtletui_requirement: str | None = None,
+    wheel: Path | None = None,
     lesson_source: Path | None = None,
+    executable: str | None = None,
+    hidden_tests: str = "summary",
+    time_limit: int = GRADESCOPE_TIME_LIMIT,
     force: bool = False,
 ) -> list[Path]:
     """Write a Gradescope autograder for ``lesson_id`` into ``out_dir``: setup.sh,
-    run_autograder (executable), README.txt and, for a lesson of the instructor's
-    own, a copy of ``lesson_source`` (a lesson file or folder) in turtletui_lessons/.
-    Returns the files written. Existing files are an :class:`AutograderError`
-    unless ``force``."""
+    run_autograder (executable), README.txt, turtletui's ``wheel`` (or setup.sh
+    installs ``turtletui_requirement``) and, for a lesson of the instructor's own,
+    a copy of ``lesson_source`` (a lesson file or folder) in turtletui_lessons/.
+    ``executable`` picks the node in a ROS package upload; ``hidden_tests`` says how
+    hidden scenarios show; grading stops after ``time_limit`` seconds. Returns the
+    files written. Existing files are an :class:`AutograderError` unless ``force``."""
     _check_lesson_id(lesson_id)
-    _check_requirement(turtletui_requirement)
+    if hidden_tests not in _HIDDEN_TEXT:
+        raise AutograderError(f"hidden tests: {hidden_tests!r}; choose one of {', '.join(_HIDDEN_TEXT)}")
+    if executable is not None and not re.fullmatch(r"[A-Za-z0-9_.\-/ ]+", executable):
+        raise AutograderError(f"{executable!r} is not an executable's name")
+    if not 10 <= time_limit <= 24 * 3600:
+        raise AutograderError(f"time limit {time_limit} s: choose between 10 s and a day")
     out_dir = Path(out_dir)
     if out_dir.exists() and not out_dir.is_dir():
         raise AutograderError(f"{out_dir} is a file; name a folder to write the autograder to")
@@ -295,10 +374,18 @@ def write_gradescope_autograder(
 
     lessons = shlex.quote(GRADESCOPE_LESSONS)
     custom = lesson_source is not None
+    written = []
+    if custom:
+        _refuse_existing([out_dir / LESSONS_FOLDER / rel for _, rel in _lesson_files(Path(lesson_source))], force)
+    requirement, requirement_text, copied = _install_source(out_dir, turtletui_requirement, wheel, force)
+    written += copied
+    if not requirement:
+        requirement = shlex.quote(f"{GRADESCOPE_SOURCE}/{copied[0].name}")
+    executable_arg = f" --executable {shlex.quote(executable)}" if executable else ""
     setup_text = _SETUP_SH.substitute(
         lesson_id=lesson_id,
         venv=GRADESCOPE_VENV,
-        requirement=shlex.quote(turtletui_requirement),
+        requirement=requirement,
         lessons_setup=_LESSONS_SETUP.substitute(lessons=lessons) if custom else "",
     )
     run_text = _RUN_AUTOGRADER.substitute(
@@ -306,6 +393,9 @@ def write_gradescope_autograder(
         venv=GRADESCOPE_VENV,
         lesson_arg=shlex.quote(lesson_id),
         lessons_arg=f" --lessons {lessons}" if custom else "",
+        executable_arg=executable_arg,
+        hidden=hidden_tests,
+        time_limit=time_limit,
         lessons_guard=_LESSONS_GUARD.substitute(lessons=lessons) if custom else "",
     )
     title = f"turtletui autograder for Gradescope, lesson {lesson_id}"
@@ -313,13 +403,15 @@ def write_gradescope_autograder(
         lesson_id=lesson_id,
         underline="=" * len(title),
         out_dir=shlex.quote(str(out_dir)),
-        requirement_text=turtletui_requirement,
+        requirement_text=requirement_text,
+        time_limit=time_limit,
+        executable_arg=executable_arg,
+        hidden_text=_HIDDEN_TEXT[hidden_tests],
         lessons_note=Template(_README_LESSONS).substitute(source=lesson_source)
         if custom
         else "",
     )
 
-    written = []
     if custom:
         written += _copy_lessons(Path(lesson_source), out_dir / LESSONS_FOLDER, force)
     written.append(_write(setup, setup_text, 0o755))
@@ -335,19 +427,21 @@ def write_github_workflow(
     lesson_id: str,
     out_dir: Path,
     *,
-    turtletui_requirement: str,
+    turtletui_requirement: str | None = None,
+    wheel: Path | None = None,
     lesson_source: Path | None = None,
     submission: str = ".",
+    executable: str | None = None,
     force: bool = False,
 ) -> list[Path]:
     """Write ``.github/workflows/classroom.yml`` into ``out_dir`` (the template
-    repository) to grade ``lesson_id`` on GitHub Classroom; ``submission`` is the
-    path graded inside a student's repository (the whole repository by default).
-    A lesson of the instructor's own is copied to ``.github/turtletui_lessons``.
-    Returns the files written. Existing files are an :class:`AutograderError`
-    unless ``force``."""
+    repository) to grade ``lesson_id`` on GitHub Classroom (retired 2026-08-28);
+    ``submission`` is the path graded inside a student's repository (the whole
+    repository by default). turtletui's ``wheel`` goes to ``.github/turtletui/``
+    (or the workflow installs ``turtletui_requirement``); a lesson of the
+    instructor's own is copied to ``.github/turtletui_lessons``. Returns the
+    files written. Existing files are an :class:`AutograderError` unless ``force``."""
     _check_lesson_id(lesson_id)
-    _check_requirement(turtletui_requirement)
     if not submission.strip() or any(ord(c) < 32 for c in submission):
         raise AutograderError(f"{submission!r} is not a path to grade")
     out_dir = Path(out_dir)
@@ -355,19 +449,23 @@ def write_github_workflow(
         raise AutograderError(f"{out_dir} is a file; name the template repository's folder")
     workflow = out_dir / ".github" / "workflows" / "classroom.yml"
     _refuse_existing([workflow], force)
+    requirement, _, copied = _install_source(out_dir / GITHUB_WHEELS, turtletui_requirement, wheel, force)
+    if not requirement:
+        requirement = shlex.quote(f"{GITHUB_WHEELS}/{copied[0].name}")
 
     custom = lesson_source is not None
     text = _WORKFLOW.substitute(
         lesson_id=lesson_id,
         step_id=GITHUB_STEP_ID,
         env_name=f"{GITHUB_STEP_ID.upper()}_RESULTS",
-        requirement=shlex.quote(turtletui_requirement),
+        requirement=requirement,
         submission=shlex.quote(submission),
         lesson_arg=shlex.quote(lesson_id),
         lessons_arg=f" --lessons {shlex.quote(GITHUB_LESSONS)}" if custom else "",
+        executable_arg=f" --executable {shlex.quote(executable)}" if executable else "",
         lessons_note=_WORKFLOW_LESSONS if custom else "",
     )
-    written = []
+    written = list(copied)
     if custom:
         written += _copy_lessons(Path(lesson_source), out_dir / GITHUB_LESSONS, force)
     written.append(_write(workflow, text))

@@ -11,8 +11,6 @@ student's files, the lesson and turtletui are the same (``force`` regrades).
 from __future__ import annotations
 
 import gc
-import hashlib
-import json
 import multiprocessing
 import os
 import signal
@@ -33,99 +31,13 @@ from turtletui.grading.engine import (
     grade_run,
     prepare,
 )
-from turtletui.grading.reports import write_text_atomic
 from turtletui.grading.results import GradeReport, SubmissionResult
+from turtletui.grading.store import ResultStore, store_key  # noqa: F401 - where callers found them
 from turtletui.grading.submissions import Submission
 from turtletui.lessons.loader import load_lesson
 from turtletui.runtime import forkserver, wire
 from turtletui.runtime.loader import ControllerError, ControllerSpec, check_source
 from turtletui.runtime.sandbox import Limits
-
-STORE_VERSION = 1
-
-
-class ResultStore:
-    """One JSON file per student in a folder only the grader can read."""
-
-    def __init__(self, folder: Path, key: str) -> None:
-        self.folder = folder
-        self.key = key
-        """Identifies the lesson and turtletui version the results belong to."""
-        try:
-            folder.mkdir(parents=True, exist_ok=True, mode=0o700)
-            probe = folder / f".probe.{os.getpid()}"
-            probe.write_text("")
-            probe.unlink()
-        except OSError as err:
-            raise OSError(f"{folder}: cannot write results there ({err.strerror or err})") from None
-        self._kept: dict[Path, str] = {}
-        """The text of every file this store wrote or reused, for :meth:`restore`."""
-
-    def path(self, student: str) -> Path:
-        return self.folder / f"{_safe(student)}.json"
-
-    def recordings(self, student: str) -> Path:
-        return self.folder / "recordings" / _safe(student)
-
-    def load(self, submission: Submission) -> SubmissionResult | None:
-        """The stored result of the same files under the same lesson, or None."""
-        path = self.path(submission.student)
-        try:
-            raw = path.read_text(encoding="utf-8")
-            data = json.loads(raw)
-            if data.get("store") != STORE_VERSION or data.get("key") != self.key:
-                return None
-            if data.get("fingerprint") != submission.fingerprint():
-                return None
-            result = SubmissionResult.from_dict(data["result"])
-        except (OSError, ValueError, KeyError, TypeError):
-            return None  # missing or damaged: grade again
-        self._kept[path] = raw
-        return result
-
-    def save(self, submission: Submission, result: SubmissionResult) -> None:
-        """Write the result atomically: the file is complete or absent."""
-        data = {
-            "store": STORE_VERSION,
-            "key": self.key,
-            "fingerprint": submission.fingerprint(),
-            "result": result.as_dict(),
-        }
-        target = self.path(submission.student)
-        payload = json.dumps(data, indent=1)
-        write_text_atomic(target, payload)
-        self._kept[target] = payload
-
-    def restore(self) -> None:
-        """Put back every result file this store wrote or reused that is not as
-        it left it: student code running as the grader's own user (--same-user,
-        or a grader that is not root) can write in the folder. Called once no
-        student code runs any more."""
-        for target, payload in self._kept.items():
-            try:
-                if target.read_text(encoding="utf-8") == payload:
-                    continue
-            except (OSError, ValueError):
-                pass
-            write_text_atomic(target, payload)
-
-
-def _safe(name: str) -> str:
-    """A file name for a student: their name, or a cleaned one with a hash of the
-    name (so that "a b" and "a_b" get files of their own)."""
-    safe = "".join(c if c.isalnum() or c in "-_." else "_" for c in name).lstrip(".") or "student"
-    if safe == name:
-        return safe
-    return f"{safe}-{hashlib.sha256(name.encode()).hexdigest()[:8]}"
-
-
-def store_key(plan: GradingPlan) -> str:
-    """What a stored result depends on besides the student's files."""
-    from turtletui import __version__
-
-    digest = hashlib.sha256(plan.lesson.path.read_bytes())
-    digest.update(__version__.encode())
-    return f"{plan.lesson.id}:{digest.hexdigest()[:16]}"
 
 
 @dataclass
@@ -208,7 +120,12 @@ def _pin_to_one_cpu(counter: Any) -> None:
 
 
 def _run_task(
-    student: str, controller: str, run_index: int, recordings: str | None, recording_format: str
+    student: str,
+    controller: str,
+    run_index: int,
+    recordings: str | None,
+    recording_format: str,
+    function: str | None = None,
 ) -> tuple[str, RunOutcome, float]:
     global _in_task
     assert _worker_plan is not None
@@ -218,7 +135,7 @@ def _run_task(
         outcome = grade_run(
             _worker_plan,
             run_index,
-            [ControllerSpec(name=Path(controller).stem, path=Path(controller))],
+            [ControllerSpec(name=Path(controller).stem, path=Path(controller), function=function)],
             limits=_worker_limits,
             recordings=Path(recordings) if recordings else None,
             recording_format=recording_format,
@@ -297,6 +214,7 @@ def grade_submissions(
             index,
             str(store.recordings(student)) if store is not None else None,
             recording_format,
+            item.submission.function,
         )
         for student, item in pending.items()
         for index in range(len(plan.runs))
@@ -332,6 +250,7 @@ def _finish(
     results: dict[str, SubmissionResult],
     on_result: Callable[[SubmissionResult, bool], None] | None,
 ) -> None:
+    result.graded = sub.graded
     if store is not None:
         store.save(sub, result)
     results[sub.student] = result

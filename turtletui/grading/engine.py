@@ -18,7 +18,8 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from turtletui.grading.checks import BUILTIN_CHECKS, Check, Verdict
-from turtletui.grading.results import FAILED, PASSED, SubmissionResult, TestResult
+from turtletui.grading.pictures import picture_of_trace
+from turtletui.grading.results import FAILED, PASSED, Picture, SubmissionResult, TestResult
 from turtletui.grading.trace import Trace, TraceCollector
 from turtletui.graph.logs import INFO, LogRecord
 from turtletui.lessons.loader import display_path
@@ -280,6 +281,8 @@ class RunOutcome:
     run_index: int
     tests: list[tuple[int, TestResult]]
     recording: str | None = None
+    picture: Picture | None = None
+    """The run drawn from above, when it is visible and failed a check."""
 
 
 def grade_run(
@@ -318,7 +321,8 @@ def grade_run(
     failed = not all(test.passed for _, test in tests)
     if recorder is not None:
         recorder.close(keep=failed)
-    return RunOutcome(run_index, tests, str(path) if recorder is not None and failed else None)
+    picture = picture_of_trace(trace, run.label) if failed and not run.hidden else None
+    return RunOutcome(run_index, tests, str(path) if recorder is not None and failed else None, picture)
 
 
 def _judge_run(
@@ -369,6 +373,7 @@ def assemble(
         tests=tests,
         execution_time=seconds,
         recordings=[o.recording for o in sorted(outcomes, key=lambda o: o.run_index) if o.recording],
+        pictures=[o.picture for o in sorted(outcomes, key=lambda o: o.run_index) if o.picture],
     )
 
 

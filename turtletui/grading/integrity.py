@@ -10,6 +10,7 @@ import shutil
 import stat
 import sys
 import tempfile
+from dataclasses import replace
 from pathlib import Path
 
 from turtletui.grading.submissions import Submission
@@ -88,7 +89,7 @@ class PrivateCopies:
                 file = os.path.join(folder, name)
                 if not os.path.islink(file):
                     os.chmod(file, 0o644)
-        return Submission(submission.student, target, controller)
+        return replace(submission, path=target, controller=controller)
 
     def close(self) -> None:
         shutil.rmtree(self.root, ignore_errors=True)

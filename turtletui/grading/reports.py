@@ -1,6 +1,8 @@
 """Write a :class:`~turtletui.grading.results.GradeReport` in the formats that
 instructors upload: a terminal table, JSON, JUnit XML, Gradescope's results.json,
-a gradebook CSV and GitHub Classroom's autograding ``result`` output.
+a gradebook CSV, GitHub Classroom's autograding ``result`` output (for the
+service retired on 2026-08-28), and those of :mod:`turtletui.grading.formats`:
+Classroom 50, PrairieLearn, Canvas's and Moodle's gradebook imports.
 
 Every writer works from the report's data only. Hidden scenarios arrive with a
 generic name and output (``no_wall_hits [hidden 1]``) and no writer adds
@@ -11,7 +13,13 @@ Sources for the platform formats:
 
 - Gradescope: the autograder specification,
   https://gradescope-autograders.readthedocs.io/en/latest/specs/ ("Output format").
-- GitHub Classroom: classroom-resources/autograding-grading-reporter
+- JUnit: valid against both Jenkins' junit-4.xsd and the Apache Ant schema
+  (windyroad/JUnit-Schema JUnit.xsd), which is the stricter: ``<testsuites>``
+  without attributes, each ``<testsuite>`` with ``package``, ``id``,
+  ``timestamp`` (no time zone), ``hostname``, ``<properties>`` first and
+  ``<system-out>``/``<system-err>`` last, at most one outcome per test case.
+- GitHub Classroom (retired 2026-08-28, kept for repositories still using it):
+  classroom-resources/autograding-grading-reporter
   (src/main.js decodes ``<RUNNER>_RESULTS`` from base64 and parses JSON;
   src/notify-classroom.js sums ``max_score`` and every test's ``score``;
   src/console-results.js prints ``name`` and ``message``), and the field names
@@ -24,13 +32,17 @@ from __future__ import annotations
 
 import base64
 import csv
+import datetime as dt
+import html
 import io
 import json
 import os
 import re
+import socket
 import tempfile
 import xml.etree.ElementTree as ET
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -40,22 +52,45 @@ from turtletui.messages import one_line
 if TYPE_CHECKING:  # rich is imported only when a table is drawn
     from rich.console import Console
 
-FORMATS = ("table", "json", "junit", "gradescope", "csv", "github")
+    from turtletui.grading.formats.roster import Roster
+
+FORMATS = (
+    "table", "json", "junit", "gradescope", "prairielearn", "classroom50", "canvas", "moodle", "csv", "github",
+)
 """Every format :func:`render_report` knows, the ``--format`` choices."""
 
-SINGLE_SUBMISSION_FORMATS = ("gradescope", "github")
+SINGLE_SUBMISSION_FORMATS = ("gradescope", "prairielearn", "classroom50", "github")
 """Formats whose platform grades one submission per container or workflow run."""
 
-GRADESCOPE_HIDDEN_VISIBILITY = "after_published"
-"""Gradescope visibility of hidden-scenario tests.
+ROSTER_FORMATS = ("canvas", "moodle")
+"""Formats that write a gradebook for an LMS, matched against its roster."""
 
-The spec offers ``hidden`` (never shown to the student), ``after_due_date``,
-``after_published`` (shown once the instructor publishes grades) and ``visible``.
-A hidden scenario is hidden *before* the deadline so students cannot tune their
-code to it; once grades are out they should see which points they lost and why,
-as with any other mark. ``hidden`` would leave them with a total they cannot
-explain, and ``after_due_date`` would reveal results while late submissions and
-regrades are still open. The output is the grader's generic feedback anyway.
+HIDDEN_CHOICES = ("summary", "after_published", "after_due_date", "hidden", "visible")
+"""How Gradescope shows hidden scenarios: ``summary`` (one test, no details: the
+student sees their total) or a Gradescope visibility for each test of them."""
+
+
+@dataclass
+class ReportOptions:
+    """What some formats need besides the report."""
+
+    roster: Roster | None = None
+    """The class list of canvas and moodle (an LMS export)."""
+    hidden: str = "summary"
+    """Gradescope: one of :data:`HIDDEN_CHOICES`."""
+    environ: Mapping[str, str] | None = None
+    """classroom50: the runner's environment (default: this process's)."""
+    warnings: list[str] = field(default_factory=list)
+    """Filled while rendering: students a roster does not have, and the like."""
+
+GRADESCOPE_HIDDEN_VISIBILITY = "after_published"
+"""Gradescope visibility of each hidden-scenario test when the instructor asks
+for them one by one (``--hidden-tests after_published``).
+
+Gradescope hides a student's total while any test of theirs is not visible, so
+by default (``summary``) hidden scenarios are one visible test instead,
+"hidden scenarios: 2 of 3 passed", with their points and no details: the
+student sees the total and cannot tune their code to the hidden starts.
 """
 
 
@@ -94,6 +129,20 @@ def _check_names(report: GradeReport) -> list[str]:
         for test in submission.tests:
             names.setdefault(test.check, None)
     return list(names)
+
+
+def hidden_summary(tests: Sequence[TestResult]) -> tuple[str, float, float] | None:
+    """(name, points, maximum) of one test standing for all the hidden ones:
+    ``hidden scenarios: 2 of 3 passed`` counts runs, a run passing when all its
+    checks passed; None when there are none."""
+    hidden = [t for t in tests if t.hidden]
+    if not hidden:
+        return None
+    runs: dict[str, bool] = {}
+    for test in hidden:
+        runs[test.scenario] = runs.get(test.scenario, True) and test.passed
+    name = f"hidden scenarios: {sum(runs.values())} of {len(runs)} passed"
+    return name, sum(t.score for t in hidden), sum(t.max_score for t in hidden)
 
 
 def _test_seconds(submission: SubmissionResult) -> float:
@@ -138,7 +187,8 @@ def _test_dict(test: TestResult) -> dict[str, Any]:
 
 def render_json(report: GradeReport) -> str:
     """``{"lesson", "max_score", "submissions": [{"submission", "student", "score",
-    "max_score", "error", "execution_time", "tests": [...], "recordings": [...]}]}``."""
+    "max_score", "error", "execution_time", "graded", "tests": [...], "recordings":
+    [...], "pictures": [{"scenario", "png_base64", "svg"}]}]}``."""
     data = {
         "lesson": report.lesson,
         "max_score": _points(report.max_score),
@@ -150,8 +200,12 @@ def render_json(report: GradeReport) -> str:
                 "max_score": _points(_max_score(report, sub)),
                 "error": sub.error,
                 "execution_time": round(sub.execution_time, 3),
+                "graded": sub.graded,
                 "tests": [_test_dict(test) for test in sub.tests],
                 "recordings": list(sub.recordings),
+                "pictures": [
+                    {"scenario": p.scenario, "png_base64": p.png, "svg": p.svg} for p in sub.pictures
+                ],
             }
             for sub in report.submissions
         ],
@@ -162,40 +216,65 @@ def render_json(report: GradeReport) -> str:
 # -- gradescope -----------------------------------------------------------------------
 
 
-def render_gradescope(report: GradeReport) -> str:
-    """Gradescope's results.json for the report's one submission."""
+def render_gradescope(report: GradeReport, hidden: str = "summary") -> str:
+    """Gradescope's results.json for the report's one submission; ``hidden``
+    says how hidden scenarios show (:data:`HIDDEN_CHOICES`)."""
+    if hidden not in HIDDEN_CHOICES:
+        raise ReportError(f"hidden tests: {hidden!r}; choose one of {', '.join(HIDDEN_CHOICES)}")
     sub = _only_submission(report, "gradescope")
     if sub.error is not None:
-        output = f"Your submission could not be graded: {sub.error}"
+        output = html.escape(f"Your submission could not be graded: {sub.error}")
     else:
         # Counts of visible tests only: the summary must not describe hidden scenarios.
         visible = [test for test in sub.tests if not test.hidden]
-        output = (
+        output = html.escape(
             f"Lesson {report.lesson}: {sum(t.passed for t in visible)} of {len(visible)} "
-            f"checks passed in the scenarios you can see."
+            f"checks passed in the scenarios you can see. Graded: {sub.graded}."
         )
         if len(visible) < len(sub.tests):
-            output += " Hidden scenarios were graded too; their results appear when grades are published."
+            output += " Hidden scenarios were graded too."
+        output = f"<p>{output}</p>" + "".join(
+            f'<p>Scenario {html.escape(p.scenario)}:<br><img alt="the turtle\'s path in scenario '
+            f'{html.escape(p.scenario)}" src="data:image/png;base64,{p.png}"></p>'
+            for p in sub.pictures
+        )
+    tests = [
+        {
+            "name": test.name,
+            "score": _points(test.score),
+            "max_score": _points(test.max_score),
+            "status": "passed" if test.passed else "failed",
+            "output": test.output,
+            "visibility": "visible" if not test.hidden else hidden,
+        }
+        for test in sub.tests
+        if not (test.hidden and hidden == "summary")
+    ]
+    summary = hidden_summary(sub.tests) if hidden == "summary" else None
+    if summary is not None:
+        name, points, most = summary
+        tests.append(
+            {
+                "name": name,
+                "score": _points(points),
+                "max_score": _points(most),
+                "status": "passed" if points == most else "failed",
+                "output": "Scenarios you cannot see, graded like the others.",
+                "visibility": "visible",
+            }
+        )
     data = {
         # The top-level score overrides the sum of the tests' scores (spec); an
         # unusable submission scores 0.
         "score": 0.0 if sub.error is not None else _points(sub.score),
         "execution_time": int(round(sub.execution_time)),
         "output": output,
+        "output_format": "html",
+        "test_output_format": "text",
         "visibility": "visible",
         # stdout is the grader's own log: for the instructor's debugging only.
         "stdout_visibility": "hidden",
-        "tests": [
-            {
-                "name": test.name,
-                "score": _points(test.score),
-                "max_score": _points(test.max_score),
-                "status": "passed" if test.passed else "failed",
-                "output": test.output,
-                "visibility": GRADESCOPE_HIDDEN_VISIBILITY if test.hidden else "visible",
-            }
-            for test in sub.tests
-        ],
+        "tests": tests,
     }
     return json.dumps(data, indent=2, ensure_ascii=False) + "\n"
 
@@ -210,18 +289,31 @@ def _first_line(text: str) -> str:
     return ""
 
 
+def _timestamp() -> str:
+    """Now (or ``$SOURCE_DATE_EPOCH``), in UTC without a time zone, as the Ant
+    schema's pattern wants it."""
+    epoch = os.environ.get("SOURCE_DATE_EPOCH")
+    when = dt.datetime.fromtimestamp(int(epoch), dt.timezone.utc) if epoch and epoch.isdigit() else None
+    return (when or dt.datetime.now(dt.timezone.utc)).strftime("%Y-%m-%dT%H:%M:%S")
+
+
 def render_junit(report: GradeReport) -> str:
     """JUnit XML: a ``<testsuite>`` per submission, a ``<testcase>`` per check and
     scenario (``<failure>`` when it failed), an ``<error>`` testcase for a
     submission that could not be graded."""
-    root = ET.Element("testsuites", name=_xml_text(report.lesson))
-    totals = {"tests": 0, "failures": 0, "errors": 0, "time": 0.0}
-    for sub in report.submissions:
+    root = ET.Element("testsuites")
+    timestamp = _timestamp()
+    hostname = _xml_text(socket.gethostname() or "localhost").strip() or "localhost"
+    for number, sub in enumerate(report.submissions):
         classname = _xml_text(f"{report.lesson}.{sub.student}")
-        suite = ET.SubElement(root, "testsuite", name=_xml_text(sub.student))
+        suite = ET.SubElement(
+            root, "testsuite", name=_xml_text(sub.student).strip() or "submission",
+            package=_xml_text(report.lesson), id=str(number), timestamp=timestamp, hostname=hostname,
+        )
         properties = ET.SubElement(suite, "properties")
         for name, value in (
             ("submission", sub.submission),
+            ("graded", sub.graded),
             ("score", f"{_points(sub.score):g}"),
             ("max_score", f"{_points(_max_score(report, sub)):g}"),
         ):
@@ -251,19 +343,12 @@ def render_junit(report: GradeReport) -> str:
                     case, "failure", message=_xml_text(message), type="CheckFailed"
                 )
                 failure.text = _xml_text(test.output)
+        ET.SubElement(suite, "system-out").text = ""
+        ET.SubElement(suite, "system-err").text = ""
         suite.set("tests", str(tests))
         suite.set("failures", str(failures))
         suite.set("errors", str(errors))
-        suite.set("skipped", "0")
         suite.set("time", f"{sub.execution_time:.3f}")
-        totals["tests"] += tests
-        totals["failures"] += failures
-        totals["errors"] += errors
-        totals["time"] += sub.execution_time
-    root.set("tests", str(totals["tests"]))
-    root.set("failures", str(totals["failures"]))
-    root.set("errors", str(totals["errors"]))
-    root.set("time", f"{totals['time']:.3f}")
     ET.indent(root)
     body = ET.tostring(root, encoding="unicode")
     return f'<?xml version="1.0" encoding="UTF-8"?>\n{body}\n'
@@ -286,12 +371,13 @@ def _csv_number(value: float) -> str:
 
 
 def render_csv(report: GradeReport) -> str:
-    """A gradebook CSV: ``student,score,max_score,<check>...``, one row per student,
-    each check column the points of that check summed over its scenarios."""
+    """A gradebook CSV: ``student,score,max_score,<check>...,graded``, one row per
+    student, each check column the points of that check summed over its
+    scenarios, and the file (and executable) graded."""
     checks = _check_names(report)
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\n")
-    writer.writerow(["student", "score", "max_score", *(_csv_cell(c) for c in checks)])
+    writer.writerow(["student", "score", "max_score", *(_csv_cell(c) for c in checks), "graded"])
     for sub in report.submissions:
         per_check = dict.fromkeys(checks, 0.0)
         for test in sub.tests:
@@ -303,6 +389,7 @@ def render_csv(report: GradeReport) -> str:
                 _csv_number(score),
                 _csv_number(_max_score(report, sub)),
                 *(_csv_number(per_check[c]) for c in checks),
+                _csv_cell(sub.graded),
             ]
         )
     return out.getvalue()
@@ -372,7 +459,8 @@ def github_result(report: GradeReport) -> dict[str, Any]:
 
 
 def render_github(report: GradeReport) -> str:
-    """The base64 ``result`` output GitHub Classroom's grading reporter reads."""
+    """The base64 ``result`` output GitHub Classroom's grading reporter reads
+    (GitHub Classroom was retired on 2026-08-28: use classroom50 for new courses)."""
     text = json.dumps(github_result(report), ensure_ascii=False, separators=(",", ":"))
     return base64.b64encode(text.encode("utf-8")).decode("ascii")
 
@@ -413,6 +501,8 @@ def _table(report: GradeReport) -> Any:
             if not failed
             else Text(f"{len(failed)} of {len(sub.tests)} checks failed", style="yellow")
         )
+        if sub.graded:
+            summary.append(f" ({_printable(sub.graded)})", style="dim")
         table.add_row(Text(_printable(sub.student), style="bold"), score, summary)
         for check, tests in _failed_by_check(sub.tests).items():
             first = tests[0]
@@ -472,14 +562,31 @@ _RENDERERS = {
     "table": render_table,
     "json": render_json,
     "junit": render_junit,
-    "gradescope": render_gradescope,
     "csv": render_csv,
     "github": render_github,
 }
 
 
-def render_report(report: GradeReport, fmt: str) -> str:
+def render_report(report: GradeReport, fmt: str, options: ReportOptions | None = None) -> str:
     """The report as text in ``fmt``, one of :data:`FORMATS`."""
+    options = options or ReportOptions()
+    if fmt == "gradescope":
+        return render_gradescope(report, options.hidden)
+    if fmt == "classroom50":
+        from turtletui.grading.formats.classroom50 import render_classroom50
+
+        return render_classroom50(report, options.environ)
+    if fmt == "prairielearn":
+        from turtletui.grading.formats.prairielearn import render_prairielearn
+
+        return render_prairielearn(report)
+    if fmt in ROSTER_FORMATS:
+        from turtletui.grading.formats.canvas import render_canvas
+        from turtletui.grading.formats.moodle import render_moodle
+
+        text, unmatched = (render_canvas if fmt == "canvas" else render_moodle)(report, options.roster)
+        options.warnings += [f"{student}: no student of that name or id in the roster" for student in unmatched]
+        return text
     try:
         renderer = _RENDERERS[fmt]
     except KeyError:
@@ -489,12 +596,12 @@ def render_report(report: GradeReport, fmt: str) -> str:
     return renderer(report)
 
 
-def write_report(report: GradeReport, fmt: str, path: str | Path) -> None:
+def write_report(report: GradeReport, fmt: str, path: str | Path, options: ReportOptions | None = None) -> None:
     """Render the report and replace ``path`` with it atomically: a temporary file
     in the same folder, flushed to disk, then renamed over ``path``. On failure
     ``path`` is untouched and no temporary file is left; :class:`ReportError`
     says why in one line."""
-    text = render_report(report, fmt)
+    text = render_report(report, fmt, options)
     if fmt == "github":
         text += "\n"
     write_text_atomic(Path(path), text)

@@ -39,6 +39,19 @@ class TestResult:
         return self.status == PASSED
 
 
+@dataclass(frozen=True)
+class Picture:
+    """A failed scenario run drawn from above: the arena's walls, obstacles, the
+    turtle's path, where it hit a wall and where it started."""
+
+    scenario: str
+    """The scenario's label, as in the tests' names."""
+    png: str
+    """The PNG image, base64-encoded (ready for a ``data:image/png;base64,`` URL)."""
+    svg: str
+    """The same picture as SVG text."""
+
+
 @dataclass
 class SubmissionResult:
     """One student's result for one lesson."""
@@ -56,6 +69,10 @@ class SubmissionResult:
     """Wall seconds grading took."""
     recordings: list[str] = field(default_factory=list)
     """Recordings of failed scenario runs (``turtletui replay`` plays them)."""
+    graded: str = ""
+    """Which file (relative to the submission) and executable were run."""
+    pictures: list[Picture] = field(default_factory=list)
+    """The trajectory of each failed visible scenario run, as pictures."""
 
     def as_dict(self) -> dict[str, Any]:
         return asdict(self)
@@ -64,6 +81,7 @@ class SubmissionResult:
     def from_dict(cls, data: dict[str, Any]) -> SubmissionResult:
         fields = dict(data)
         fields["tests"] = [TestResult(**test) for test in data.get("tests", [])]
+        fields["pictures"] = [Picture(**picture) for picture in data.get("pictures", [])]
         return cls(**fields)
 
 

@@ -35,6 +35,7 @@ LESSON_FIELDS = (
     "part",
     "objectives",
     "starter",
+    "executable",
     "reference",
     "world",
     "scenarios",
@@ -218,6 +219,7 @@ class _Validator:
                 "starter",
                 top,
             )
+        executable = self._optional_text(data, "executable", top)
         reference = self._optional_text(data, "reference", top)
         world = self._optional_text(data, "world", top) or "empty"
         scenarios = tuple(
@@ -260,6 +262,7 @@ class _Validator:
             part=part,
             objectives=tuple(objectives),
             starter=starter,
+            executable=executable,
             reference=reference,
             world=world,
             scenarios=scenarios,

@@ -84,6 +84,9 @@ class Lesson:
     objectives: tuple[str, ...] = ()
     starter: str | None = None
     """File name of the starter code, relative to the lesson file."""
+    executable: str | None = None
+    """The console_scripts executable graded in a ROS package submission when
+    it has several (``turtle_controller``), as ``ros2 run PKG NAME`` names it."""
     reference: str | None = None
     """Name of a registered controller that solves the lesson."""
     world: str = "empty"

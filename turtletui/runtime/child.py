@@ -422,7 +422,7 @@ def main(config: dict[str, Any] | None = None) -> None:
         else:
             module = load_module(spec)
             seed_numpy(config.get("seed", 0))
-            entry_point(module, spec.label)()
+            entry_point(module, spec.label, config.get("function"))()
     except ControllerError as err:
         crash = {"kind": "load", "message": str(err), "frames": []}
     except SystemExit as exc:

@@ -118,7 +118,7 @@ def run_in_process(
             with simulated_sleep(host):
                 module = load_module(spec)
                 seed_numpy(seed)
-                entry_point(module, spec.label)()
+                entry_point(module, spec.label, spec.function)()
     except (ControllerError, KeyboardInterrupt):
         raise
     except SystemExit as exc:

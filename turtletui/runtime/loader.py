@@ -26,6 +26,9 @@ class ControllerSpec:
     module: str | None = None
     factory: Callable[[], Any] | None = None
     trusted: bool = False
+    function: str | None = None
+    """The function to call, as a console_scripts entry names it (``module:function``);
+    None: ``main()``, or the file's Node subclasses."""
 
     @property
     def label(self) -> str:
@@ -55,7 +58,12 @@ def check_source(path: Path) -> str:
 
 
 def load_module(spec: ControllerSpec) -> types.ModuleType:
-    """Import the controller's module (its top level runs now)."""
+    """Import the controller's module (its top level runs now).
+
+    A file inside a Python package (folders with ``__init__.py``, as in a ROS 2
+    ament_python package) is imported as ``package.module`` with the package's
+    parent folder on ``sys.path``, as ``ros2 run`` would import it: relative
+    imports and ``from my_package.utils import x`` both work."""
     if spec.module:
         return importlib.import_module(spec.module)
     assert spec.path is not None
@@ -64,20 +72,45 @@ def load_module(spec: ControllerSpec) -> types.ModuleType:
     # edited twice within a second at the same size would look unchanged to
     # the bytecode cache, and a hot reload would run the old code.
     code = compile(check_source(path), str(path), "exec")
-    name = f"__turtletui_controller_{abs(hash(str(path))):x}"
-    module = types.ModuleType(name)
-    module.__file__ = str(path)
-    folder = str(path.parent)
-    if folder not in sys.path:
-        sys.path.insert(1, folder)
+    packages, root = _enclosing_packages(path)
+    for folder in (str(path.parent), str(root)):
+        if folder not in sys.path:
+            sys.path.insert(1, folder)
+    if packages:
+        name = ".".join([*packages, path.stem])
+        try:
+            importlib.import_module(".".join(packages))
+        except Exception as err:  # the student's package __init__.py failed: report it as theirs
+            raise ControllerError(f"{path}: importing its package {'.'.join(packages)} failed: {type(err).__name__}: {err}") from err
+        module = importlib.util.module_from_spec(importlib.util.spec_from_file_location(name, path))
+    else:
+        name = f"__turtletui_controller_{abs(hash(str(path))):x}"
+        module = types.ModuleType(name)
+        module.__file__ = str(path)
     sys.modules[name] = module
     exec(code, module.__dict__)
     return module
 
 
-def entry_point(module: types.ModuleType, label: str) -> Callable[[], Any]:
-    """What to call to start the controller: ``main()``, or a function that
-    creates every Node subclass the module defines."""
+def _enclosing_packages(path: Path) -> tuple[list[str], Path]:
+    """The package names a file sits in (outermost first) and the folder above them."""
+    packages: list[str] = []
+    folder = path.parent
+    while (folder / "__init__.py").is_file() and folder.name.isidentifier() and folder.parent != folder:
+        packages.insert(0, folder.name)
+        folder = folder.parent
+    return packages, folder
+
+
+def entry_point(module: types.ModuleType, label: str, function: str | None = None) -> Callable[[], Any]:
+    """What to call to start the controller: ``function`` when a console_scripts
+    entry names one, else ``main()``, or a function that creates every Node
+    subclass the module defines."""
+    if function is not None:
+        named = getattr(module, function, None)
+        if not callable(named):
+            raise ControllerError(f"{label}: has no function {function}() (its console_scripts entry names it)")
+        return named
     main = getattr(module, "main", None)
     if callable(main):
         return main

@@ -133,6 +133,7 @@ class SandboxHost:
             "name": self.spec.name,
             "path": str(self.spec.path.resolve()) if self.spec.path else None,
             "module": self.spec.module,
+            "function": self.spec.function,
             "factory": factory_reference(self.spec.factory) if self.spec.factory else None,
             "sys_path": [import_root(self.spec.factory)] if self.spec.factory else [],
             "ros_args": ros_args,

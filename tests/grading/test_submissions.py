@@ -1,0 +1,90 @@
+"""What a student hands in (turtletui.grading.submissions): files, folders, ROS 2
+packages and workspaces; --executable and the lesson's default; ambiguity."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+from support.grading import HONEST, WALL_HITTER, grade_cli
+from support.ros_package import EXECUTABLE, PACKAGE, write_package, write_workspace
+
+from turtletui.grading.submissions import choose_controller, find_submissions
+
+
+def test_a_ros_package_is_graded_by_its_console_scripts_executable(tmp_path: Path, lesson: Path):
+    package = write_package(tmp_path / "alice")
+    with pytest.raises(ValueError, match=f"several possible controllers \\({PACKAGE} test_node, {PACKAGE} {EXECUTABLE}\\)"):
+        choose_controller(package)
+    chosen = choose_controller(package, executable=EXECUTABLE)
+    assert chosen.path == package / PACKAGE / f"{EXECUTABLE}.py" and chosen.function == "main"
+    assert choose_controller(package, default_executable=EXECUTABLE).path == chosen.path
+    assert choose_controller(package, executable=f"{PACKAGE}/{EXECUTABLE}").path == chosen.path
+    with pytest.raises(ValueError, match="no executable 'nope' \\(found: "):
+        choose_controller(package, executable="nope")
+    # graded sandboxed, its package-relative imports working, the report naming what ran
+    result = grade_cli(package, "--lesson", lesson, "--executable", EXECUTABLE, "--format", "json",
+                       "--results", tmp_path / "res", "--same-user")
+    assert result.exit_code == 0, result.stderr
+    sub = json.loads(result.stdout)["submissions"][0]
+    assert sub["error"] is None and sub["score"] == 3.0, sub
+    assert sub["graded"] == f"{PACKAGE}/{EXECUTABLE}.py ({PACKAGE} {EXECUTABLE}: main())"
+
+
+def test_a_workspace_and_nested_uploads_are_found(tmp_path: Path):
+    workspace = write_workspace(tmp_path)
+    chosen = choose_controller(workspace, executable=EXECUTABLE)  # build/ and install/ are skipped
+    assert chosen.path == workspace / "src" / PACKAGE / PACKAGE / f"{EXECUTABLE}.py"
+    (found,) = find_submissions([workspace], executable=EXECUTABLE)
+    assert found.student == "ros2_ws" and found.controller == chosen.path
+    # a setup.cfg package (console_scripts in [options.entry_points]) with a src/ layout
+    cfg = tmp_path / "cfgpkg"
+    (cfg / "src" / "bot").mkdir(parents=True)
+    (cfg / "src" / "bot" / "__init__.py").write_text("")
+    (cfg / "src" / "bot" / "drive.py").write_text(HONEST.replace("def main():", "def run():"))
+    (cfg / "setup.cfg").write_text("[metadata]\nname = bot\n[options.entry_points]\nconsole_scripts =\n    driver = bot.drive:run\n")
+    chosen = choose_controller(cfg)
+    assert (chosen.label, chosen.function) == ("bot driver", "run")
+
+
+def test_a_folder_of_files_stray_files_and_the_untouched_starter(tmp_path: Path):
+    klass = tmp_path / "class"
+    (klass / "ann").mkdir(parents=True)
+    (klass / "ann" / "my_controller.py").write_text(HONEST)
+    starter = tmp_path / "part6_starter.py"
+    starter.write_text(WALL_HITTER)
+    (klass / "ann" / "part6_starter.py").write_text(WALL_HITTER.replace("\n", "\r\n") + "\n\n")
+    (klass / "ann" / "helpers.py").write_text("SPEED = 1.0\n")
+    (klass / "notes.txt").write_text("grading notes\n")
+    (klass / ".DS_Store").write_bytes(b"\0")
+    (klass / "__pycache__").mkdir()
+    (klass / "ben").mkdir()
+    (klass / "ben" / "a.py").write_text(HONEST)
+    (klass / "ben" / "b.py").write_text(HONEST)
+    found = find_submissions([klass], starter=starter)
+    assert [s.student for s in found] == ["ann", "ben"]  # notes.txt is nobody's row
+    ann, ben = found
+    assert ann.controller == klass / "ann" / "my_controller.py"  # not the untouched starter
+    assert ben.controller is None and ben.error.endswith(
+        "several possible controllers (a.py, b.py): choose one with --executable NAME"
+    )
+    assert find_submissions([klass / "ben"], executable="b")[0].controller == klass / "ben" / "b.py"
+
+
+def test_one_upload_as_a_platform_hands_it_over(tmp_path: Path):
+    empty = tmp_path / "empty"
+    empty.mkdir()
+    (empty / ".DS_Store").write_bytes(b"\0")
+    (sub,) = find_submissions([empty], single=True)
+    assert sub.controller is None and "the upload is empty" in sub.error
+    upload = tmp_path / "upload"
+    write_package(upload / "__MACOSX")  # a Mac zip's resource forks are not code
+    write_package(upload)
+    (sub,) = find_submissions([upload], single=True, executable=EXECUTABLE)
+    assert sub.controller == upload / PACKAGE / PACKAGE / f"{EXECUTABLE}.py"
+    plain = tmp_path / "plain"
+    plain.mkdir()
+    (plain / "node.py").write_text(HONEST)
+    (sub,) = find_submissions([plain], single=True, executable=EXECUTABLE)  # a package's name; a file upload
+    assert sub.controller == plain / "node.py"
