@@ -19,10 +19,10 @@ from textual.widgets import ContentSwitcher, DataTable, Footer, Input, Static
 
 from turtletui.graph.introspection import snapshot
 from turtletui.graph.logs import ERROR, INFO
+from turtletui.ros2cli import Ros2Cli
 from turtletui.runtime.loader import ControllerSpec
 from turtletui.tui import lesson_checks
 from turtletui.tui.ascii_filter import AsciiFilter
-from turtletui.tui.ros2cli import Ros2Cli
 from turtletui.tui.session import LiveSession
 from turtletui.tui.ticker import Ticker
 from turtletui.tui.widgets.arena import MIN_WIDTH, ArenaView, Overlay
