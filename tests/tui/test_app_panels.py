@@ -217,6 +217,13 @@ async def test_the_lesson_switcher_opens_a_lesson_and_shows_progress(tmp_path: P
         assert app._lesson == find_lesson("part5-pose-subscriber").path
         assert app.query_one("#side").current == "lesson"
         assert "pose" in app.query_one("#lesson").source.lower()
+        assert "restart with" not in app.query_one("#lesson").source  # same (empty) world
+        await pilot.press("l")
+        options = app.screen.query_one("#lessons-list")
+        options.highlighted = list(labels).index("lidar-obstacles")
+        await pilot.press("enter")
+        await pilot.pause()
+        assert "restart with `turtletui run FILE --lesson lidar-obstacles`" in app.query_one("#lesson").source
 
 
 @pilot_test

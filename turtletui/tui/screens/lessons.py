@@ -27,8 +27,8 @@ def progress_mark(entry: LessonProgress | None, ascii: bool = False) -> tuple[st
     return f"{entry.best_score:g}/{entry.max_score:g}".center(5), "yellow"
 
 
-class LessonScreen(ModalScreen[Path | None]):
-    """Pick a lesson; dismissed with its path, or None."""
+class LessonScreen(ModalScreen["Lesson | None"]):
+    """Pick a lesson; dismissed with it, or None."""
 
     BINDINGS = [Binding("escape,l,q", "dismiss(None)", "Close", show=False)]
 
@@ -63,5 +63,4 @@ class LessonScreen(ModalScreen[Path | None]):
         options.focus()
 
     def on_option_list_option_selected(self, event: OptionList.OptionSelected) -> None:
-        lesson = next(lesson for lesson in self._lessons if lesson.id == event.option.id)
-        self.dismiss(lesson.path)
+        self.dismiss(next(lesson for lesson in self._lessons if lesson.id == event.option.id))
