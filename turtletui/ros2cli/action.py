@@ -7,14 +7,13 @@ from typing import TYPE_CHECKING, Any
 
 from turtletui.graph.introspection import snapshot
 from turtletui.interfaces import Action
-from turtletui.ros2cli.arguments import Command, Verb
+from turtletui.ros2cli.arguments import Command, Verb, list_options
 from turtletui.ros2cli.common import (
-    CommandError,
     CommandResult,
-    absolute,
     check_type,
-    hint,
+    entity_or_error,
     interface_or_error,
+    name_list,
 )
 from turtletui.ros2cli.streams import GoalStream
 from turtletui.ros2cli.values import message_values
@@ -24,25 +23,15 @@ if TYPE_CHECKING:
 
 
 def _server(cli: Ros2Cli, name: str, what: str = "is not available") -> Any:
-    name = absolute(name)
-    server = cli.graph.action_servers.get(name)
-    if server is None:
-        raise CommandError(f"action '{name}' {what}{hint(name, sorted(cli.graph.action_servers))}")
-    return server
+    return entity_or_error(cli.graph.action_servers, name, "action", what)
 
 
 def _list_arguments(parser: ArgumentParser) -> None:
-    parser.add_argument("-t", "--show-types", action="store_true",
-                        help="Additionally show the action type")
-    parser.add_argument("-c", "--count-actions", action="store_true",
-                        help="Only display the number of actions discovered")
+    list_options(parser, "action", "--count-actions")
 
 
 def _list(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
-    actions = snapshot(cli.graph).actions
-    if args.count_actions:
-        return CommandResult([str(len(actions))])
-    return CommandResult([f"{a.name} [{a.type}]" if args.show_types else a.name for a in actions])
+    return name_list(snapshot(cli.graph).actions, count=args.count_actions, show_types=args.show_types)
 
 
 def _info_arguments(parser: ArgumentParser) -> None:

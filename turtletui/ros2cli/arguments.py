@@ -131,6 +131,18 @@ def _subparsers(parser: ArgumentParser, cli_name: str, dest: str, docs: dict[str
     return subparsers
 
 
+def list_options(parser: ArgumentParser, kind: str, count_option: str, hidden_option: str | None = None,
+                 show_types: bool = True) -> None:
+    """The options ros2's list verbs share: ``-t``, ``-c`` and the hidden ones."""
+    if show_types:
+        parser.add_argument("-t", "--show-types", action="store_true",
+                            help=f"Additionally show the {kind} type")
+    parser.add_argument("-c", count_option, action="store_true",
+                        help=f"Only display the number of {kind}s discovered")
+    if hidden_option is not None:
+        parser.add_argument(hidden_option, action="store_true", help=f"Consider hidden {kind}s as well")
+
+
 def command_and_verb(args: Namespace) -> tuple[Command | None, Verb | None]:
     """The command and verb argparse chose (None where the line has none)."""
     return getattr(args, "_command", None), getattr(args, "_verb", None)

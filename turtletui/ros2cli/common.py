@@ -5,9 +5,9 @@ from __future__ import annotations
 
 import difflib
 import re
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, TypeVar
 
 from turtletui.graph.core import Graph, Topic
 from turtletui.graph.introspection import GraphSnapshot, NodeInfo
@@ -15,6 +15,8 @@ from turtletui.interfaces import Action, Service, get_interface, interface_name
 
 if TYPE_CHECKING:
     from turtletui.ros2cli.streams import Stream
+
+T = TypeVar("T")
 
 
 @dataclass
@@ -35,6 +37,15 @@ class CommandError(Exception):
 class PlainError(CommandError):
     """An error printed as it is, without the command's name (as ros2 prints
     ``Parameter not set.`` or ``Setting parameter failed: ...``)."""
+
+
+def name_list(entries: Sequence, *, count: bool, show_types: bool, hidden: bool = True) -> CommandResult:
+    """What ``ros2 topic|service|action list`` prints: names (``-t``: with
+    their types), or how many (``-c``); hidden names only with ``hidden``."""
+    shown = [e for e in entries if hidden or not is_hidden(e.name)]
+    if count:
+        return CommandResult([str(len(shown))])
+    return CommandResult([f"{e.name} [{e.type}]" if show_types else e.name for e in shown])
 
 
 def error(line: str) -> CommandResult:
@@ -98,6 +109,16 @@ def node_or_error(snap: GraphSnapshot, name: str) -> NodeInfo:
 
 def visible_nodes(snap: GraphSnapshot) -> list[NodeInfo]:
     return [n for n in snap.nodes if not n.name.rsplit("/", 1)[-1].startswith("_")]
+
+
+def entity_or_error(table: Mapping[str, T], name: str, kind: str, what: str) -> T:
+    """The service (or action server...) called ``name`` in one of the graph's
+    tables; else ``service '/spwn' is not available (did you mean /spawn?)``."""
+    name = absolute(name)
+    found = table.get(name)
+    if found is None:
+        raise CommandError(f"{kind} '{name}' {what}{hint(name, sorted(table))}")
+    return found
 
 
 def kind_word(cls: type) -> str:

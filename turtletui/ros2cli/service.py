@@ -7,15 +7,13 @@ from typing import TYPE_CHECKING, Any
 
 from turtletui.graph.introspection import snapshot
 from turtletui.interfaces import Service, interface_name
-from turtletui.ros2cli.arguments import Command, Verb
+from turtletui.ros2cli.arguments import Command, Verb, list_options
 from turtletui.ros2cli.common import (
-    CommandError,
     CommandResult,
-    absolute,
     check_type,
-    hint,
+    entity_or_error,
     interface_or_error,
-    is_hidden,
+    name_list,
 )
 from turtletui.ros2cli.streams import CallStream
 from turtletui.ros2cli.values import message_values
@@ -27,27 +25,16 @@ _HIDDEN_HELP = "Consider hidden services as well"
 
 
 def _service(cli: Ros2Cli, name: str, what: str = "is not available") -> Any:
-    name = absolute(name)
-    service = cli.graph.services.get(name)
-    if service is None:
-        raise CommandError(f"service '{name}' {what}{hint(name, sorted(cli.graph.services))}")
-    return service
+    return entity_or_error(cli.graph.services, name, "service", what)
 
 
 def _list_arguments(parser: ArgumentParser) -> None:
-    parser.add_argument("-t", "--show-types", action="store_true",
-                        help="Additionally show the service type")
-    parser.add_argument("-c", "--count-services", action="store_true",
-                        help="Only display the number of services discovered")
-    parser.add_argument("--include-hidden-services", action="store_true", help=_HIDDEN_HELP)
+    list_options(parser, "service", "--count-services", "--include-hidden-services")
 
 
 def _list(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
-    services = [s for s in snapshot(cli.graph).services
-                if args.include_hidden_services or not is_hidden(s.name)]
-    if args.count_services:
-        return CommandResult([str(len(services))])
-    return CommandResult([f"{s.name} [{s.type}]" if args.show_types else s.name for s in services])
+    return name_list(snapshot(cli.graph).services, count=args.count_services, show_types=args.show_types,
+                     hidden=args.include_hidden_services)
 
 
 def _name_arguments(help_text: str):
@@ -63,16 +50,13 @@ def _type(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
 def _find_arguments(parser: ArgumentParser) -> None:
     parser.add_argument("service_type", help="Name of the ROS service type to filter for "
                                              "(e.g. 'rcl_interfaces/srv/ListParameters')")
-    parser.add_argument("-c", "--count-services", action="store_true",
-                        help="Only display the number of services discovered")
-    parser.add_argument("--include-hidden-services", action="store_true", help=_HIDDEN_HELP)
+    list_options(parser, "service", "--count-services", "--include-hidden-services", show_types=False)
 
 
 def _find(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
     wanted = interface_name(interface_or_error(args.service_type, Service, "service"))
-    names = [s.name for s in snapshot(cli.graph).services
-             if s.type == wanted and (args.include_hidden_services or not is_hidden(s.name))]
-    return CommandResult([str(len(names))] if args.count_services else names)
+    found = [s for s in snapshot(cli.graph).services if s.type == wanted]
+    return name_list(found, count=args.count_services, show_types=False, hidden=args.include_hidden_services)
 
 
 def _info(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:

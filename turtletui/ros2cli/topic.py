@@ -8,7 +8,14 @@ from typing import TYPE_CHECKING, Any
 from turtletui.graph.core import NS_PER_S
 from turtletui.graph.introspection import snapshot
 from turtletui.interfaces import Message, get_interface, interface_name
-from turtletui.ros2cli.arguments import Command, Verb, nonnegative_int, positive_float, positive_int
+from turtletui.ros2cli.arguments import (
+    Command,
+    Verb,
+    list_options,
+    nonnegative_int,
+    positive_float,
+    positive_int,
+)
 from turtletui.ros2cli.common import (
     CommandError,
     CommandResult,
@@ -16,9 +23,9 @@ from turtletui.ros2cli.common import (
     check_type,
     hint,
     interface_or_error,
-    is_hidden,
     live_topic,
     live_topic_names,
+    name_list,
     topic_or_error,
 )
 from turtletui.ros2cli.streams import EchoStream, HzStream, PubStream
@@ -37,20 +44,12 @@ HZ_WINDOW = 10000
 # -- list ----------------------------------------------------------------------------
 
 def _list_arguments(parser: ArgumentParser) -> None:
-    parser.add_argument("-t", "--show-types", action="store_true",
-                        help="Additionally show the topic type")
-    parser.add_argument("-c", "--count-topics", action="store_true",
-                        help="Only display the number of topics discovered")
-    parser.add_argument("--include-hidden-topics", action="store_true",
-                        help="Consider hidden topics as well")
+    list_options(parser, "topic", "--count-topics", "--include-hidden-topics")
 
 
 def _list(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
-    topics = [t for t in snapshot(cli.graph).topics
-              if args.include_hidden_topics or not is_hidden(t.name)]
-    if args.count_topics:
-        return CommandResult([str(len(topics))])
-    return CommandResult([f"{t.name} [{t.type}]" if args.show_types else t.name for t in topics])
+    return name_list(snapshot(cli.graph).topics, count=args.count_topics, show_types=args.show_types,
+                     hidden=args.include_hidden_topics)
 
 
 # -- echo ----------------------------------------------------------------------------
@@ -159,17 +158,13 @@ def _type(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
 def _find_arguments(parser: ArgumentParser) -> None:
     parser.add_argument("topic_type",
                         help="Name of the ROS topic type to filter for (e.g. 'std_msg/msg/String')")
-    parser.add_argument("-c", "--count-topics", action="store_true",
-                        help="Only display the number of topics discovered")
-    parser.add_argument("--include-hidden-topics", action="store_true",
-                        help="Consider hidden topics as well")
+    list_options(parser, "topic", "--count-topics", "--include-hidden-topics", show_types=False)
 
 
 def _find(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
     wanted = interface_name(interface_or_error(args.topic_type, Message, "message"))
-    names = [t.name for t in snapshot(cli.graph).topics
-             if t.type == wanted and (args.include_hidden_topics or not is_hidden(t.name))]
-    return CommandResult([str(len(names))] if args.count_topics else names)
+    found = [t for t in snapshot(cli.graph).topics if t.type == wanted]
+    return name_list(found, count=args.count_topics, show_types=False, hidden=args.include_hidden_topics)
 
 
 # -- pub -------------------------------------------------------------------------------
