@@ -97,7 +97,7 @@ def build_parser(commands: Sequence[Command], help_width: Callable[[], int]) -> 
     the columns help is formatted for (read each time help is shown)."""
 
     def formatter(prog: str) -> argparse.HelpFormatter:
-        return argparse.RawDescriptionHelpFormatter(prog, width=max(help_width(), 40))
+        return argparse.RawDescriptionHelpFormatter(prog, width=max(help_width(), 30))
 
     parser = Ros2ArgumentParser(
         prog="ros2", description="ros2 is an extensible command-line tool for ROS 2.",

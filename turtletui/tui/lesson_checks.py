@@ -10,7 +10,7 @@ shows progress as it goes.
 It leaves one CPU to the app: with two CPUs it runs the scenarios one after
 the other on the other CPU, without polling for the controller's answers (a
 reader that polls takes the CPU its controller needs: on a busy two-core
-machine the Part 6 checks took 14 s that way, 3.5 s without).
+machine the Part 6 checks took three to four times as long that way).
 """
 
 from __future__ import annotations
