@@ -19,6 +19,7 @@ KEY_NAMES = {
     "space": "space", "plus": "+", "minus": "-", "equals_sign": "=", "colon": ":", "slash": "/",
     "question_mark": "?", "escape": "Esc", "enter": "Enter", "up": "↑", "down": "↓", "left": "←",
     "right": "→", "f1": "F1", "ctrl+c": "Ctrl+C", "ctrl+p": "Ctrl+P", "tab": "Tab",
+    "less_than_sign": "<", "greater_than_sign": ">", "pageup": "PageUp", "pagedown": "PageDown",
 }
 ASCII_KEY_NAMES = {"up": "up", "down": "down", "left": "left", "right": "right"}
 
