@@ -17,7 +17,10 @@ import turtletui
 PACKAGE_ROOT = Path(turtletui.__file__).resolve().parents[1]
 PART6 = Path(__file__).resolve().parents[1] / "plugins" / "reference" / "turtle_controller.py"
 
-CORE = ["turtletui.sim", "turtletui.graph", "turtletui.runtime", "turtletui.interfaces", "turtletui.compat"]
+CORE = [
+    "turtletui.sim", "turtletui.graph", "turtletui.runtime", "turtletui.interfaces", "turtletui.compat",
+    "turtletui.ros2cli",
+]
 FRONT_ENDS = ["textual", "typer"]
 
 

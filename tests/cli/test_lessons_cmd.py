@@ -105,7 +105,18 @@ def test_new_writes_the_starter(tmp_path):
     assert result.exit_code == 0, result.output
     assert out.read_text() == STARTER.read_text()
     compile(out.read_text(), str(out), "exec")
-    assert str(out) in result.stdout
+    # the command it prints opens the lesson too, so that `k` has something to check
+    assert f"Run it: turtletui run {out} --lesson part6-closed-loop" in result.stdout
+
+
+def test_new_from_a_lesson_folder_names_the_lesson_file(tmp_path):
+    starter = tmp_path / "plain_starter.py"
+    starter.write_text("def main():\n    pass\n")
+    lesson = write_lesson(tmp_path, "plain.md", 'id = "plain"\ntitle = "Plain"\nstarter = "plain_starter.py"\n')
+    out = tmp_path / "my node.py"
+    result = invoke("new", "--lesson", "plain", "--folder", str(tmp_path), str(out))
+    assert result.exit_code == 0, result.output
+    assert f"Run it: turtletui run '{out}' --lesson {lesson}" in result.stdout
 
 
 def test_new_refuses_to_overwrite_without_force(tmp_path):

@@ -7,9 +7,8 @@ import asyncio
 import functools
 import time
 
-from textual.widgets import RichLog
-
 from turtletui.tui.app import TurtleApp
+from turtletui.tui.widgets.textlog import TextLog
 
 SIZE = (120, 40)
 
@@ -25,8 +24,8 @@ def pilot_test(scenario):
 
 
 def log_text(app: TurtleApp, selector: str = "#log-lines") -> str:
-    """What a panel shows, with wrapped lines joined again."""
-    return "".join(line.text for line in app.query_one(selector, RichLog).lines)
+    """What a log panel holds (every entry kept, one per line)."""
+    return "\n".join(app.query_one(selector, TextLog).entries)
 
 
 async def wait_for(pilot, condition, timeout: float = 5.0) -> None:

@@ -10,7 +10,7 @@ from support.pilot import SIZE, pilot_test, wait_for
 
 from turtletui.runtime.loader import ControllerSpec
 from turtletui.tui.app import TurtleApp
-from turtletui.tui.lesson_checks import describe, results_dir
+from turtletui.tui.lesson_checks import CheckProgress, describe_report, results_dir
 
 LESSON = """\
 +++
@@ -58,9 +58,9 @@ def main():
 """
 
 
-def report(tests, **extra) -> str:
+def report(tests, **extra) -> dict:
     submission = {"score": 1.0, "max_score": 2.0, "error": None, "tests": tests, "recordings": [], **extra}
-    return json.dumps({"lesson": "x", "submissions": [submission]})
+    return {"lesson": "x", "submissions": [submission]}
 
 
 def test_describe_groups_failures_by_check_with_the_first_feedback():
@@ -69,7 +69,7 @@ def test_describe_groups_failures_by_check_with_the_first_feedback():
         {"check": "wall_hits", "scenario": "b", "status": "failed", "output": "wall hits: 2\nTurn earlier."},
         {"check": "no_crash", "scenario": "a", "status": "passed", "output": ""},
     ]
-    text = describe(report(tests, recordings=["r/b.jsonl"]), "", 0)
+    text = describe_report(report(tests, recordings=["r/b.jsonl"]))
     assert "**Score: 1 / 2**" in text
     assert "- ✗ `wall_hits`: failed in 1 of 2 runs (b)" in text
     assert "  > wall hits: 2\n  >\n  > Turn earlier." in text
@@ -77,10 +77,21 @@ def test_describe_groups_failures_by_check_with_the_first_feedback():
     assert "- `turtletui replay r/b.jsonl`" in text
 
 
-def test_describe_says_why_the_checks_could_not_run():
-    text = describe("", "turtletui: error: lessons/x.md:3: check 'nope' is not a registered check\n", 2)
-    assert "**The checks could not run:** lessons/x.md:3: check 'nope' is not a registered check" in text
-    assert "not readable" in describe("{", "", 0)
+def test_progress_is_read_line_by_line_and_says_why_checks_could_not_run():
+    progress = CheckProgress()
+    assert progress.running().endswith("*Running the lesson's scenarios...*\n")
+    assert progress.feed('{"run": {"done": 1, "of": 3, "scenario": "centre", "passed": true}}\n')
+    assert progress.feed('{"run": {"done": 2, "of": 3, "scenario": "corner", "passed": false}}')
+    assert not progress.feed("a stray warning\n")
+    assert "2 of 3 done" in progress.running() and "✓ centre ✗ corner" in progress.running()
+    failed = CheckProgress()
+    failed.feed(json.dumps({"error": "lessons/x.md:3: check 'nope' is not a registered check"}))
+    assert "**The checks could not run:** lessons/x.md:3: check 'nope' is not a registered check" in failed.result(2)
+    crashed = CheckProgress()
+    crashed.feed("Traceback (most recent call last):")
+    crashed.feed("MemoryError")
+    assert "**The checks could not run:** MemoryError" in crashed.result(1)
+    assert "not readable" in describe_report({"lesson": "x"})
 
 
 def test_check_results_are_kept_in_the_users_cache(tmp_path: Path, monkeypatch) -> None:
@@ -90,6 +101,7 @@ def test_check_results_are_kept_in_the_users_cache(tmp_path: Path, monkeypatch) 
 
 def test_the_check_key_grades_the_running_file_and_shows_the_result(tmp_path: Path, monkeypatch) -> None:
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "cache"))  # the grading child writes there
+    monkeypatch.setenv("XDG_DATA_HOME", str(tmp_path / "data"))  # and the progress goes here
     _check_key_scenario(tmp_path)
 
 
@@ -100,18 +112,30 @@ async def _check_key_scenario(tmp_path: Path) -> None:
     node = tmp_path / "mover.py"
     node.write_text(NODE.replace("{speed}", "0.0"))
     app = TurtleApp([ControllerSpec(name="mover", path=node)], lesson=lesson)
+    seen = []
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("k")
         panel = app.query_one("#lesson")
         assert app.query_one("#side").current == "lesson"
-        await wait_for(pilot, lambda: "Score:" in panel.source or "could not" in panel.source, timeout=30)
+
+        def finished() -> bool:
+            seen.append(panel.source)
+            return "Score:" in panel.source or "could not" in panel.source
+
+        await wait_for(pilot, finished, timeout=30)
+        assert any("*Running the lesson's scenarios: 1 of 1 done*" in text for text in seen)
         assert "**Score: 1 / 2**" in panel.source
         assert "✗ `distance`" in panel.source and "Publish a forward speed." in panel.source
         assert "Make the turtle move." in panel.source  # the lesson is still there below
         # the student fixes the file and checks again: a new result, not the kept one
+        assert not app.progress.get("drive-a-bit").passed
         node.write_text(NODE.replace("{speed}", "1.0"))
         await pilot.press("k")
         await wait_for(pilot, lambda: "**Score: 2 / 2**" in panel.source, timeout=30)
+        assert app.progress.get("drive-a-bit").passed
+    # kept for the next run of the app, under the user's data folder
+    saved = json.loads((tmp_path / "data" / "turtletui" / "progress.json").read_text())
+    assert saved["lessons"]["drive-a-bit"]["passed"] is True
 
 
 @pilot_test
@@ -143,8 +167,11 @@ async def test_a_recording_replays_in_the_arena(tmp_path: Path) -> None:
         assert "replaying run.jsonl" in "".join(r.msg for r in app.session.logs)
 
 
-def test_the_check_key_is_in_the_footer():
+def test_the_check_key_is_on_the_key_bar():
+    from turtletui.tui.widgets.keybar import APP_KEYS, fit_keys
+
     bindings = {b.key: b for b in TurtleApp.BINDINGS}
-    assert bindings["k"].action == "check_lesson" and bindings["k"].show
+    assert bindings["k"].action == "check_lesson"
+    assert "k" in [hint.key for hint in fit_keys(APP_KEYS, 80)]
 
 

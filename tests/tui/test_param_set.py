@@ -8,8 +8,8 @@ from pathlib import Path
 
 import pytest
 
+from turtletui.ros2cli import Ros2Cli
 from turtletui.runtime.loader import ControllerSpec
-from turtletui.tui.ros2cli import Ros2Cli
 from turtletui.tui.session import LiveSession
 
 NODE = """\

@@ -5,6 +5,7 @@ turtletui.lessons is imported inside the commands, so ``turtletui --help`` stays
 
 from __future__ import annotations
 
+import shlex
 from pathlib import Path
 
 import typer
@@ -132,4 +133,7 @@ def new(
         file.write_bytes(source.read_bytes())
     except OSError as err:
         fail(f"cannot write {file}: {' '.join(str(err).split())}")
-    print(f"Wrote {file} (starter of lesson {found.id}). Run it: turtletui run {file}")
+    # `run --lesson` finds bundled lessons by id; one from --folder or a plugin by its file
+    lesson_arg = str(found.path) if folder or plugin else found.id
+    print(f"Wrote {file} (starter of lesson {found.id}). Run it: "
+          f"turtletui run {shlex.quote(str(file))} --lesson {shlex.quote(lesson_arg)}")

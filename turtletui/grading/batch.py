@@ -162,12 +162,14 @@ def grade_submissions(
     on_result: Callable[[SubmissionResult, bool], None] | None = None,
     workdir: Callable[[Submission], Submission] | None = None,
     recording_format: str = "mcap",
+    on_run: Callable[[str, RunOutcome], None] | None = None,
 ) -> GradeReport:
     """Grade every submission (reusing stored results unless ``force``).
 
     Failed visible runs are recorded in ``recording_format`` ("mcap" or
     "jsonl") in the store's recordings folder.
-    ``on_result(result, reused)`` is called as each submission's result is known.
+    ``on_result(result, reused)`` is called as each submission's result is known,
+    ``on_run(student, outcome)`` as each scenario run finishes (for progress).
     ``workdir`` may map a submission to a private copy to run (see integrity).
     KeyboardInterrupt propagates after the workers are stopped; every result
     finished before it is already saved.
@@ -199,6 +201,8 @@ def grade_submissions(
     def done(student: str, outcome: RunOutcome, seconds: float) -> None:
         item = pending[student]
         item.outcomes.append(outcome)
+        if on_run:
+            on_run(student, outcome)
         item.seconds += seconds
         if len(item.outcomes) == len(plan.runs):
             original = next(s for s in submissions if s.student == student)

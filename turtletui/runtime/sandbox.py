@@ -46,7 +46,9 @@ class Limits:
     """Wall seconds the child may take to answer one exchange (a hung callback)."""
     start_timeout: float = 10.0
     """Wall seconds for start-up and loading the controller's module."""
-    cpu_seconds: int = 120
+    cpu_seconds: int | None = 120
+    """CPU seconds the child may use (RLIMIT_CPU); None: no cap (the app's
+    controllers live as long as the app)."""
     memory_bytes: int = 2 * 1024**3
     file_bytes: int = 64 * 1024**2
     output_lines: int = 10_000

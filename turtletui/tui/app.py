@@ -14,18 +14,24 @@ from textual.app import App, ComposeResult, SystemCommand
 from textual.binding import Binding
 from textual.containers import Horizontal
 from textual.css.query import NoMatches
+from textual.events import DescendantFocus
 from textual.screen import Screen
-from textual.widgets import ContentSwitcher, DataTable, Footer, Input, Static
+from textual.widgets import ContentSwitcher, DataTable, Input, Static
 
 from turtletui.graph.introspection import snapshot
-from turtletui.graph.logs import ERROR, INFO
+from turtletui.graph.logs import ERROR, INFO, WARN
+from turtletui.ros2cli import Ros2Cli, Terminal
 from turtletui.runtime.loader import ControllerSpec
 from turtletui.tui import lesson_checks
 from turtletui.tui.ascii_filter import AsciiFilter
-from turtletui.tui.ros2cli import Ros2Cli
+from turtletui.tui.progress import Progress
+from turtletui.tui.screens.help import HelpScreen
+from turtletui.tui.screens.lessons import LessonScreen
 from turtletui.tui.session import LiveSession
 from turtletui.tui.ticker import Ticker
 from turtletui.tui.widgets.arena import MIN_WIDTH, ArenaView, Overlay
+from turtletui.tui.widgets.command_input import CommandInput
+from turtletui.tui.widgets.keybar import APP_KEYS, COMMAND_LINE_KEYS, KeyBar
 from turtletui.tui.widgets.panels import (
     ConsolePanel,
     GraphPanel,
@@ -37,6 +43,7 @@ from turtletui.tui.widgets.splitter import Splitter
 from turtletui.worlds import WorldError, WorldSpec, resolve_world
 
 if TYPE_CHECKING:
+    from turtletui.lessons.model import Lesson
     from turtletui.runtime.replay import Recording
 
 TICK_SECONDS = 0.016
@@ -78,34 +85,48 @@ class TurtleApp(App):
     CSS_PATH = "app.tcss"
     TITLE = "turtletui"
     BINDINGS = [
-        Binding("space", "pause", "Pause"),
-        Binding("n", "step", "Step"),
-        Binding("plus,equals_sign", "faster", "Faster", show=False),
-        Binding("minus", "slower", "Slower", show=False),
-        Binding("R", "reset", "Reset", show=False),
-        Binding("C", "clear", "Clear", show=False),
-        Binding("S", "restart", "Restart node", show=False),
-        Binding("1", "panel('log')", "Log"),
-        Binding("2", "panel('topics')", "Topics"),
-        Binding("3", "panel('graph')", "Graph"),
-        Binding("4", "panel('lesson')", "Lesson"),
-        Binding("5", "panel('console')", "Console", show=False),
-        Binding("colon,slash", "command_line", "ros2 command"),
-        Binding("k", "check_lesson", "Check"),
-        Binding("up", "drive(1, 0)", "Forward", show=False),
-        Binding("down", "drive(-1, 0)", "Back", show=False),
-        Binding("left", "drive(0, 1)", "Left", show=False),
-        Binding("right", "drive(0, -1)", "Right", show=False),
-        *(Binding(key, f"rotate('{key}')", f"Rotate {key}", show=False) for key in "gtredcvb"),
-        Binding("f", "cancel_rotation", "Cancel rotation", show=False),
-        Binding("escape", "focus_arena", "Back to the arena", show=False),
-        Binding("z", "zoom(1)", "Zoom in", show=False),
-        Binding("Z", "zoom(-1)", "Zoom out", show=False),
-        Binding("o", "follow_next", "Follow the next turtle", show=False),
-        Binding("p", "pixels", "Half blocks / braille / picture", show=False),
-        Binding("less_than_sign", "side_width(4)", "Wider side panel", show=False),
-        Binding("greater_than_sign", "side_width(-4)", "Narrower side panel", show=False),
-        Binding("q", "quit", "Quit"),
+        Binding("space", "pause", "Pause", tooltip="pause or resume the simulation"),
+        Binding("n", "step", "Step", tooltip="one 16 ms step (pauses first)"),
+        Binding("plus,equals_sign", "faster", "Faster", show=False, tooltip="speed up: x0.25 ... x8"),
+        Binding("minus", "slower", "Slower", show=False, tooltip="slow down"),
+        Binding("R", "reset", "Reset", show=False, tooltip="call /reset: one turtle1 at the centre, drawing cleared"),
+        Binding("C", "clear", "Clear", show=False, tooltip="call /clear: the drawing goes"),
+        Binding("S", "restart", "Restart node", show=False, tooltip="restart the controller nodes"),
+        Binding("s", "toggle_controllers", "Stop node", show=False,
+                tooltip="stop the controller nodes (teleop and ros2 topic pub then drive alone), or start them again"),
+        Binding("1", "panel('log')", "Log", tooltip="log panel: every node's log lines (the same key again hides the panel)"),
+        Binding("2", "panel('topics')", "Topics", tooltip="topics panel: types, publishers, subscribers, rates"),
+        Binding("3", "panel('graph')", "Graph", tooltip="graph panel: nodes and topics, as rqt_graph"),
+        Binding("4", "panel('lesson')", "Lesson", tooltip="lesson panel: the open lesson, and your checks"),
+        Binding("5", "panel('console')", "Console", show=False, tooltip="console panel: the ros2 commands and their output"),
+        Binding("colon,slash", "command_line", "ros2 command", tooltip="the ros2 command line (Esc returns to the arena)"),
+        Binding("ctrl+c", "interrupt", "Stop command", show=False, priority=True,
+                tooltip="stop the running ros2 command, as in a terminal (q quits)"),
+        Binding("k", "check_lesson", "Check", tooltip="run the open lesson's checks on your controller file"),
+        Binding("l", "lessons", "Lessons", show=False, tooltip="choose a lesson (your progress is shown)"),
+        *(Binding(key, f"drive({x}, {z})", name, show=False,
+                  tooltip="drive: one Twist each, linear.x = +-2.0, angular.z = +-2.0 (turtle_teleop_key)")
+          for key, x, z, name in (("up", 1, 0, "Forward"), ("down", -1, 0, "Back"),
+                                  ("left", 0, 1, "Left"), ("right", 0, -1, "Right"))),
+        *(Binding(key, f"rotate('{key}')", f"Rotate {key}", show=False,
+                  tooltip="rotate_absolute to 0, 45, 90, 135, 180, -135, -90, -45 degrees (turtle_teleop_key)")
+          for key in "gtredcvb"),
+        Binding("f", "cancel_rotation", "Cancel rotation", show=False, tooltip="cancel the rotation"),
+        Binding("escape", "focus_arena", "Back to the arena", show=False, tooltip="back to the arena"),
+        Binding("pageup", "scroll_side(-1)", "Scroll up", show=False, tooltip="scroll the side panel (lesson, log, console)"),
+        Binding("pagedown", "scroll_side(1)", "Scroll down", show=False, tooltip="scroll the side panel (lesson, log, console)"),
+        Binding("z", "zoom(1)", "Zoom in", show=False, tooltip="zoom in on the arena / out"),
+        Binding("Z", "zoom(-1)", "Zoom out", show=False, tooltip="zoom in on the arena / out"),
+        Binding("o", "follow_next", "Follow the next turtle", show=False,
+                tooltip="zoomed in: follow the next turtle"),
+        Binding("p", "pixels", "Half blocks / braille / picture", show=False,
+                tooltip="draw the arena in half blocks, braille dots or the real picture"),
+        Binding("less_than_sign", "side_width(4)", "Wider side panel", show=False,
+                tooltip="a wider / narrower side panel (or drag its edge)"),
+        Binding("greater_than_sign", "side_width(-4)", "Narrower side panel", show=False,
+                tooltip="a wider / narrower side panel (or drag its edge)"),
+        Binding("question_mark,f1", "help", "Help", tooltip="this help"),
+        Binding("q", "quit", "Quit", tooltip="quit turtletui"),
     ]
 
     def __init__(
@@ -149,8 +170,10 @@ class TurtleApp(App):
         self._log_seen = 0
         self._last_panels = 0.0
         self._last_reload = 0.0
-        self._streams: list = []
         self._echo = None
+        """The stream echoing the topic chosen in the topics panel."""
+        self.progress = Progress()
+        """Which lessons the student passed (kept across runs)."""
         self._ticker: Ticker | None = None
         self._side_open = True
         self._shown_status = ""
@@ -175,11 +198,11 @@ class TurtleApp(App):
                 yield TopicsPanel(id="topics")
                 yield GraphPanel(id="graph")
                 yield LessonPanel(self._lesson_text(), id="lesson")
-                yield ConsolePanel(id="console", max_lines=500, wrap=False)
-        yield Input(
+                yield ConsolePanel(2000, id="console")
+        yield CommandInput(
             placeholder="ros2 topic list   (Enter runs it, Esc returns to the arena)", compact=True, id="command"
         )
-        yield Footer(compact=True)
+        yield KeyBar(APP_KEYS, id="keys")
 
     def _lesson_text(self) -> str:
         if self._lesson is None:
@@ -243,6 +266,9 @@ class TurtleApp(App):
 
             install_replay(self.session.sim, self._replay)
         self.cli = Ros2Cli(self.session.sim)
+        self.terminal = Terminal(self.cli)
+        if self.progress.warning:
+            self.session.sim.graph.log("turtletui", WARN, self.progress.warning)
         arena = self.query_one(ArenaView)
         arena.lock = self.session.lock
         arena.hits = self.session.hits
@@ -266,9 +292,8 @@ class TurtleApp(App):
     def on_unmount(self) -> None:
         if self._ticker is not None:
             self._ticker.stop()
-        for stream in self._streams:
-            stream.close()
         if self.session is not None:
+            self.action_stop_all_commands()
             self.session.close()
 
     # -- the loop ---------------------------------------------------------------
@@ -286,27 +311,28 @@ class TurtleApp(App):
         session = self.session
         now = time.monotonic()  # the screen's own pace; self._clock is the simulation's
         with session.lock:
-            polled = [(stream, stream.poll(), stream.done) for stream in list(self._streams)]
-        for stream, lines, done in polled:
-            if lines:
-                if stream is self._echo:
-                    self.query_one(TopicsPanel).echo(lines)
-                else:
-                    self.query_one(ConsolePanel).show(lines)
-            if done:
-                self._streams.remove(stream)
+            console = self.terminal.poll()
+            echoed = self._echo.poll() if self._echo is not None else []
+            if self._echo is not None and self._echo.done:
+                self._echo = None
+        if console:
+            self.query_one(ConsolePanel).show(console)
+        if echoed:
+            self.query_one(TopicsPanel).echo(echoed)
         if now - self._last_reload >= RELOAD_SECONDS:
             self._last_reload = now
             session.check_for_changes()
         self._render_frame(panels=now - self._last_panels >= PANEL_SECONDS)
 
     def _render_frame(self, panels: bool = True) -> None:
-        session = self.session
         try:
-            arena = self.query_one(ArenaView)
+            self._draw_frame(panels)
         except NoMatches:
-            return  # shutting down: the screen is gone, the timer not yet
-        arena.refresh_frame()
+            return  # shutting down: the widgets go one by one, the timer not yet
+
+    def _draw_frame(self, panels: bool) -> None:
+        session = self.session
+        self.query_one(ArenaView).refresh_frame()
         if not panels:
             return
         self._last_panels = time.monotonic()
@@ -314,15 +340,20 @@ class TurtleApp(App):
         # Read what the panels show holding the lock, then let go before
         # Textual lays them out and paints them.
         with session.lock:
-            new_logs = []
+            new_logs, skipped = [], 0
             if session.log_count != self._log_seen:
-                new = min(session.log_count - self._log_seen, len(session.logs))
+                unseen = session.log_count - self._log_seen
+                new = min(unseen, len(session.logs))
+                skipped = unseen - new
                 self._log_seen = session.log_count
                 new_logs = list(session.logs)[-new:]
+            rates = session.log_rates(time.monotonic())
             graph = snapshot(session.sim.graph) if side in ("topics", "graph") else None
             status = self._status()
-        if new_logs:
-            self.query_one(LogPanel).add(new_logs)
+        log = self.query_one(LogPanel)
+        if new_logs or skipped:
+            log.add(new_logs, skipped=skipped)
+        log.show_rates(rates)
         if graph is not None:
             if side == "topics":
                 self.query_one(TopicsPanel).update_topics(graph)
@@ -337,7 +368,7 @@ class TurtleApp(App):
         session = self.session
         state = "paused" if session.paused else "running"
         controllers = "; ".join(
-            f"{slot.spec.name}: {slot.status}" + (f" ({slot.detail})" if slot.status == "failed" else "")
+            f"{slot.spec.name}: {slot.status}" + (f" ({slot.detail})" if slot.status == "failed" or slot.held else "")
             for slot in session.slots
         )
         return f" t = {session.t:8.3f} s   x{session.speed:g}   {state}   {controllers or 'no controller'}"
@@ -358,7 +389,15 @@ class TurtleApp(App):
             ("Reset turtlesim", "Call /reset: one turtle1 at the centre, drawing cleared (R)", self.action_reset),
             ("Clear the drawing", "Call /clear (C)", self.action_clear),
             ("Restart the controller", "Stop and start the controller nodes again (S)", self.action_restart),
+            ("Stop / start the controller", "Let teleop and ros2 topic pub drive alone (s)",
+             self.action_toggle_controllers),
             ("ros2 command line", "Type ros2 commands against the simulation (:)", self.action_command_line),
+            ("Stop the ros2 command", "Stop the command running in the console (ctrl+c)", self.action_interrupt),
+            ("Stop every ros2 command", "The foreground command and the background publishers",
+             self.action_stop_all_commands),
+            ("Check the lesson", "Run the open lesson's checks on your controller file (k)", self.action_check_lesson),
+            ("Lessons", "Choose a lesson; your progress is shown (l)", self.action_lessons),
+            ("Help", "Every key (? or F1)", self.action_help),
         ]
         commands += [
             (f"Show the {name} panel", f"Toggle the {name} panel ({key})", partial(self.action_panel, name))
@@ -393,6 +432,39 @@ class TurtleApp(App):
     def action_restart(self) -> None:
         self.session.restart_controllers()
 
+    def action_toggle_controllers(self) -> None:
+        if not self.session.slots:
+            self.notify("No controller runs in this session.", timeout=3)
+            return
+        self.session.toggle_controllers()
+        self._render_frame()
+
+    def action_help(self) -> None:
+        if not isinstance(self.screen, HelpScreen):
+            self.push_screen(HelpScreen(self.BINDINGS, ascii=self._ascii))
+
+    def action_lessons(self) -> None:
+        from turtletui.lessons.loader import LessonError, discover_lessons
+
+        try:
+            found = discover_lessons()
+        except LessonError as err:
+            self.notify(str(err), severity="error")
+            return
+        self.push_screen(LessonScreen(found, self.progress.lessons, self._lesson, self._ascii), self._open_lesson)
+
+    def _open_lesson(self, lesson: Lesson | None) -> None:
+        if lesson is None or lesson.path == self._lesson:
+            return
+        self.workers.cancel_group(self, "checks")  # a check of the previous lesson
+        self._lesson = lesson.path
+        running = self.session.world_spec.name if self.session.world_spec else "empty"
+        note = "" if lesson.world == running else (
+            f"*This lesson runs in the world `{lesson.world}`: restart with"
+            f" `turtletui run FILE --lesson {lesson.id}` to run in it.*\n\n")
+        self.query_one(LessonPanel).update(note + self._lesson_text())
+        self._show_side("lesson")
+
     def action_drive(self, linear: int, angular: int) -> None:
         self.session.teleop.drive(float(linear), float(angular))
 
@@ -408,6 +480,15 @@ class TurtleApp(App):
         switcher.current = name
         self._layout_side()
         self._render_frame()
+
+    def action_scroll_side(self, pages: int) -> None:
+        switcher = self.query_one(ContentSwitcher)
+        if not switcher.display or switcher.current is None:
+            return
+        panel = switcher.query_one(f"#{switcher.current}")
+        target = next((w for w in (panel, *panel.query("*")) if w.allow_vertical_scroll), None)
+        if target is not None:
+            target.scroll_to(y=target.scroll_y + pages * max(1, target.size.height - 1), animate=False)
 
     def on_resize(self) -> None:
         self._layout_side()
@@ -445,13 +526,15 @@ class TurtleApp(App):
         width = max(SIDE_MIN, min(width, self.size.width - MIN_WIDTH - 1))
         self.query_one(ContentSwitcher).styles.width = width
 
+    def _show_side(self, name: str) -> None:
+        self.query_one(ContentSwitcher).current = name
+        self._side_open = True
+        self._layout_side()
+
     def action_check_lesson(self) -> None:
         """Grade the running controller file against the open lesson, in another
         process, and show the result at the top of the lesson pane."""
-        switcher = self.query_one(ContentSwitcher)
-        switcher.current = "lesson"
-        self._side_open = True
-        self._layout_side()
+        self._show_side("lesson")
         panel = self.query_one(LessonPanel)
         files = [s.path for s in self._controllers if s.path is not None]
         if self._lesson is None or not files:
@@ -466,13 +549,28 @@ class TurtleApp(App):
     async def _check(self, controller: Path) -> None:
         import asyncio
 
-        command = lesson_checks.grade_command(controller, self._lesson, lesson_checks.results_dir(self._lesson))
+        panel = self.query_one(LessonPanel)
+        command = lesson_checks.check_command(controller, self._lesson, lesson_checks.results_dir(self._lesson))
         process = await asyncio.create_subprocess_exec(
-            *command, stdout=asyncio.subprocess.PIPE, stderr=asyncio.subprocess.PIPE
+            *command, stdin=asyncio.subprocess.DEVNULL, stdout=asyncio.subprocess.PIPE,
+            stderr=asyncio.subprocess.STDOUT,
         )
-        stdout, stderr = await process.communicate()
-        text = lesson_checks.describe(stdout.decode(errors="replace"), stderr.decode(errors="replace"), process.returncode)
-        self.query_one(LessonPanel).update(text + "\n" + self._lesson_text())
+        progress = lesson_checks.CheckProgress()
+        try:
+            async for line in process.stdout:
+                if progress.feed(line.decode(errors="replace")):
+                    panel.update(progress.running() + "\n" + self._lesson_text())
+            await process.wait()
+        finally:
+            if process.returncode is None:  # a new check, or the app quits: stop this one
+                await lesson_checks.stop(process)
+        graded = None if progress.report is None else lesson_checks.graded_score(progress.report)
+        if graded is not None:
+            self.progress.record(*graded)
+            if self.progress.warning:
+                with self.session.lock:
+                    self.session.sim.graph.log("turtletui", WARN, self.progress.warning)
+        panel.update(progress.result(process.returncode) + "\n" + self._lesson_text())
 
     def action_command_line(self) -> None:
         command = self.query_one("#command", Input)
@@ -489,18 +587,45 @@ class TurtleApp(App):
             return
         line = event.value.strip()
         event.input.value = ""
+        event.input.remember(line)
         if not line:
             return
         console = self.query_one(ConsolePanel)
-        self.query_one(ContentSwitcher).current = "console"
-        self._side_open = True
-        self._layout_side()
-        console.command(line)
+        self._show_side("console")
+        self.cli.help_width = console.scrollable_content_region.width or 80
         with self.session.lock:
-            result = self.cli.run(line)
-        console.show(result.lines, error=result.error)
-        if result.stream is not None:
-            self._streams.append(result.stream)
+            lines = self.terminal.run(line)
+        console.show(lines)
+
+    def action_interrupt(self) -> None:
+        """Ctrl+C: stop the ros2 command running in the console (or the topics
+        panel's echo), as a terminal would; never quit."""
+        with self.session.lock:
+            lines = self.terminal.interrupt()
+            echo, jobs = self._echo, len(self.terminal.jobs)
+            if not lines and echo is not None:
+                echo.close()
+                self._echo = None
+        if lines:
+            self.query_one(ConsolePanel).show(lines)
+        elif echo is not None:
+            self.query_one(TopicsPanel).echo(["^C"])
+        elif jobs:
+            self.notify(f"{jobs} publisher(s) run in the background: "
+                        "jobs lists them, kill %N or kill all stops them.", timeout=5)
+        else:
+            self.notify("No ros2 command is running. q quits turtletui.", timeout=3)
+
+    def action_stop_all_commands(self) -> None:
+        with self.session.lock:
+            self.terminal.close()
+            if self._echo is not None:
+                self._echo.close()
+                self._echo = None
+
+    def on_descendant_focus(self, event: DescendantFocus) -> None:
+        on_command_line = event.widget is self.query_one("#command")
+        self.query_one(KeyBar).set_keys(COMMAND_LINE_KEYS if on_command_line else APP_KEYS)
 
     def on_data_table_row_selected(self, event: DataTable.RowSelected) -> None:
         topic = self.query_one(TopicsPanel).selected_topic()
@@ -509,10 +634,6 @@ class TurtleApp(App):
         with self.session.lock:
             if self._echo is not None:
                 self._echo.close()
-                if self._echo in self._streams:
-                    self._streams.remove(self._echo)
             result = self.cli.run(f"ros2 topic echo {topic}")
+            self._echo = result.stream
         self.query_one(TopicsPanel).echo([f"--- echo {topic} ---", *result.lines])
-        self._echo = result.stream
-        if result.stream is not None:
-            self._streams.append(result.stream)

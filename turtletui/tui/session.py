@@ -10,7 +10,7 @@ from __future__ import annotations
 import functools
 import os
 import threading
-from collections import deque
+from collections import Counter, deque
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -52,6 +52,17 @@ TELEOP_HEADINGS = {
 
 _OWNER = "app"
 
+UNCAPPED = 1 << 62
+"""A line count no controller reaches."""
+
+APP_LIMITS = Limits(start_timeout=3.0, cpu_seconds=None, output_lines=UNCAPPED, log_lines=UNCAPPED)
+"""Controllers in the app live as long as the app: no CPU cap and no cap on
+what they log (the log panel keeps a window of its own); memory, files and
+the per-step deadline stay limited as when grading."""
+
+RATE_SECONDS = 1.0
+"""Wall seconds over which log rates are measured."""
+
 
 def _locked(method):
     """Run a method holding its object's ``lock``: the app's ticker thread
@@ -73,8 +84,10 @@ class ControllerSlot:
     host: SandboxHost | None = None
     mtime: float | None = None
     status: str = "starting"
-    """starting, running, stopped (ended normally) or failed."""
+    """starting, running, stopped (ended normally, or by the user) or failed."""
     detail: str = ""
+    held: bool = False
+    """Stopped by the user: a change to its file does not start it again."""
 
 
 @dataclass
@@ -148,6 +161,10 @@ class LiveSession:
         """The latest log lines (bounded, so memory stays flat)."""
         self.log_count = 0
         """Log lines seen since the start (the app compares it to know what is new)."""
+        self.node_log_counts: Counter[str] = Counter()
+        """Log lines per node since the start."""
+        self._rate_sample: tuple[float, Counter[str]] | None = None
+        self._rates: dict[str, float] = {}
         self.world_spec = world
         """The world the simulation runs in (obstacles, LiDAR); None: turtlesim's empty arena."""
         built = None if world is None else world.build(seed)
@@ -162,7 +179,7 @@ class LiveSession:
         if self._ros_args and self._ros_args[0] != "--ros-args":
             self._ros_args.insert(0, "--ros-args")
         self._seed = seed
-        self._limits = limits or Limits(start_timeout=3.0)
+        self._limits = limits or APP_LIMITS
         self._target_ns = 0
         self._last_wall: float | None = None
         self._outputs: list[Any] = []
@@ -241,6 +258,26 @@ class LiveSession:
             self._log(INFO, f"restarting {slot.spec.label}")
             self._start(slot)
 
+    @property
+    def controllers_held(self) -> bool:
+        """True when the user stopped the controllers (``toggle_controllers``)."""
+        return bool(self.slots) and all(slot.held for slot in self.slots)
+
+    @_locked
+    def toggle_controllers(self) -> bool:
+        """Stop the controller nodes (teleop and ``topic pub`` then drive alone),
+        or start them again; returns True when they now run."""
+        start = self.controllers_held
+        for slot in self.slots:
+            if start:
+                self._log(INFO, f"starting {slot.spec.label}")
+                self._start(slot)
+            else:
+                self._stop(slot)
+                slot.held, slot.status, slot.detail = True, "stopped", "by you"
+                self._log(INFO, f"stopped {slot.spec.label} (turtlesim stops the turtle 1 s after its last command)")
+        return start
+
     @_locked
     def check_for_changes(self) -> list[str]:
         """Reload controllers whose file changed; returns what was reloaded.
@@ -256,6 +293,8 @@ class LiveSession:
             if mtime is None or mtime == slot.mtime:
                 continue
             slot.mtime = mtime
+            if slot.held:
+                continue  # stopped by the user: it starts from the new file when started
             try:
                 check_source(path)
             except ControllerError as err:
@@ -302,10 +341,10 @@ class LiveSession:
                 self.sim, slot.spec, ros_args=self._ros_args, seed=self._seed, limits=self._limits
             )
         except ControllerError as err:
-            slot.host, slot.status, slot.detail = None, "failed", str(err)
+            slot.host, slot.status, slot.detail, slot.held = None, "failed", str(err), False
             self._log(ERROR, str(err))
             return
-        slot.status, slot.detail = "running", ""
+        slot.status, slot.detail, slot.held = "running", "", False
         self._watch_controllers()
 
     def _stop(self, slot: ControllerSlot) -> None:
@@ -328,6 +367,21 @@ class LiveSession:
     def _on_log(self, record: LogRecord) -> None:
         self.logs.append(record)
         self.log_count += 1
+        self.node_log_counts[record.node] += 1
+
+    @_locked
+    def log_rates(self, now: float) -> dict[str, float]:
+        """Log lines per wall second of each node that logged in the last
+        ``RATE_SECONDS`` (measured once per period; ``now`` is time.monotonic())."""
+        sample = self._rate_sample
+        if sample is None:
+            self._rate_sample = (now, self.node_log_counts.copy())
+        elif now - sample[0] >= RATE_SECONDS:
+            then, counts = sample
+            self._rates = {node: (count - counts[node]) / (now - then)
+                           for node, count in self.node_log_counts.items() if count > counts[node]}
+            self._rate_sample = (now, self.node_log_counts.copy())
+        return self._rates
 
     def _log(self, level: int, msg: str) -> None:
         self.sim.graph.log("turtletui", level, msg)

@@ -3,17 +3,27 @@ graph (rqt_graph), lesson and the ros2 console."""
 
 from __future__ import annotations
 
+from collections import deque
+
 from rich.text import Text
 from textual.app import ComposeResult
+from textual.binding import Binding
 from textual.containers import Horizontal, Vertical
-from textual.widgets import DataTable, Input, Markdown, RichLog, Select, Static
+from textual.events import Resize
+from textual.widgets import DataTable, Input, Markdown, Select, Static
 
-from turtletui.graph.introspection import GraphSnapshot
+from turtletui.graph.introspection import GraphSnapshot, TopicInfo
 from turtletui.graph.logs import LEVEL_NAMES, LogRecord
+from turtletui.ros2cli.terminal import Line
+from turtletui.tui.widgets.textlog import TextLog
 
 LEVEL_STYLES = {10: "dim", 20: "", 30: "yellow", 40: "bold red", 50: "bold white on red"}
-MAX_LOG_LINES = 1000
-"""Lines a log view keeps; older ones scroll away (memory stays flat)."""
+MAX_LOG_LINES = 5000
+"""Log lines the log panel keeps; older ones are counted ("N older lines")."""
+
+FLOOD_LINES_PER_S = 20.0
+"""A node logging faster than this (per wall second) has its rate shown:
+faster than anyone reads."""
 
 
 def format_record(record: LogRecord) -> Text:
@@ -40,19 +50,33 @@ class LogPanel(Vertical):
                 id="log-level",
             )
             yield Input(placeholder="node filter", compact=True, id="log-node")
-        yield RichLog(id="log-lines", max_lines=MAX_LOG_LINES, wrap=True, auto_scroll=True)
+        yield Static(id="log-rate")
+        yield TextLog(MAX_LOG_LINES, id="log-lines")
 
     def on_mount(self) -> None:
-        self._records: list[LogRecord] = []
+        self._records: deque[LogRecord] = deque(maxlen=MAX_LOG_LINES)
+        self._older = 0
+        """Records that left the window or never reached the panel."""
+        self.query_one("#log-rate").display = False
 
-    def add(self, records: list[LogRecord]) -> None:
-        """Append new records (the panel keeps the latest for refiltering)."""
+    def add(self, records: list[LogRecord], skipped: int = 0) -> None:
+        """Append new records; ``skipped`` counts records lost on the way
+        (the panel keeps the latest for refiltering)."""
+        self._older += skipped + max(0, len(self._records) + len(records) - MAX_LOG_LINES)
         self._records.extend(records)
-        del self._records[:-MAX_LOG_LINES]
-        view = self.query_one("#log-lines", RichLog)
-        for record in records:
-            if self._shown(record):
-                view.write(format_record(record))
+        view = self.query_one("#log-lines", TextLog)
+        view.skip(skipped)
+        view.write_all(format_record(r) for r in records if self._shown(r))
+
+    def show_rates(self, rates: dict[str, float]) -> None:
+        """Name the nodes that log faster than anyone reads, with their rate."""
+        flooding = sorted(((rate, node) for node, rate in rates.items() if rate >= FLOOD_LINES_PER_S),
+                          reverse=True)
+        label = self.query_one("#log-rate", Static)
+        label.display = bool(flooding)
+        if flooding:
+            label.update(Text("  ".join(f"{node}: {rate:,.0f} lines/s" for rate, node in flooding),
+                              style="yellow"))
 
     def _shown(self, record: LogRecord) -> bool:
         level = self.query_one("#log-level", Select).value
@@ -60,11 +84,10 @@ class LogPanel(Vertical):
         return record.level >= (level if isinstance(level, int) else 0) and node in record.node
 
     def _refilter(self) -> None:
-        view = self.query_one("#log-lines", RichLog)
+        view = self.query_one("#log-lines", TextLog)
         view.clear()
-        for record in self._records:
-            if self._shown(record):
-                view.write(format_record(record))
+        view.older = self._older
+        view.write_all(format_record(r) for r in self._records if self._shown(r))
 
     def on_select_changed(self, event: Select.Changed) -> None:
         self._refilter()
@@ -75,40 +98,82 @@ class LogPanel(Vertical):
 
 
 class TopicsPanel(Vertical):
-    """Topics with types, publisher/subscriber counts and rates; Enter echoes one."""
+    """Topics with types, publisher/subscriber counts and rates; Enter echoes one.
+
+    The columns fit the panel: topic names keep their width, the type is
+    shortened (``Pose``) or left out when the panel is narrow."""
 
     def compose(self) -> ComposeResult:
-        table: DataTable = DataTable(id="topics-table", cursor_type="row", zebra_stripes=True)
-        table.add_columns("topic", "type", "pub", "sub", "Hz")
-        yield table
+        yield DataTable(id="topics-table", cursor_type="row", zebra_stripes=True)
         yield Static("Select a topic and press Enter to echo it.", id="topics-hint")
-        yield RichLog(id="topics-echo", max_lines=400, wrap=False)
+        yield TextLog(400, id="topics-echo")
+
+    def on_mount(self) -> None:
+        self._topics: tuple[TopicInfo, ...] = ()
+        self._shown: tuple = ()
 
     def update_topics(self, graph: GraphSnapshot) -> None:
+        self._topics = graph.topics
+        self._show()
+
+    def on_resize(self, event: Resize) -> None:
+        self._show()
+
+    def _show(self) -> None:
         table = self.query_one("#topics-table", DataTable)
-        rows = [
-            (t.name, t.type, str(len(t.publishers)), str(len(t.subscribers)), f"{t.rate_hz:.1f}")
-            for t in graph.topics
-        ]
-        if rows == getattr(self, "_rows", None):
+        width = table.scrollable_content_region.width or self.size.width
+        layout = topic_columns(self._topics, width)
+        if layout == self._shown:
             return
-        self._rows = rows
+        self._shown = layout
+        headers, rows = layout
         cursor = table.cursor_row
-        table.clear()
-        for row in rows:
-            table.add_row(*row, key=row[0])
+        table.clear(columns=True)
+        table.add_columns(*headers)
+        for topic, row in zip(self._topics, rows, strict=True):
+            table.add_row(*row, key=topic.name)
         if rows:
             table.move_cursor(row=min(cursor, len(rows) - 1))
 
     def selected_topic(self) -> str | None:
         table = self.query_one("#topics-table", DataTable)
-        rows = getattr(self, "_rows", [])
-        return rows[table.cursor_row][0] if rows and 0 <= table.cursor_row < len(rows) else None
+        topics = self._topics
+        return topics[table.cursor_row].name if topics and 0 <= table.cursor_row < len(topics) else None
 
     def echo(self, lines: list[str]) -> None:
-        view = self.query_one("#topics-echo", RichLog)
-        for line in lines:
-            view.write(line)
+        self.query_one("#topics-echo", TextLog).write_all(lines)
+
+
+def topic_columns(topics: tuple[TopicInfo, ...], width: int) -> tuple[tuple[str, ...], tuple]:
+    """(headers, rows) of the topics table for ``width`` columns: full types
+    when they fit, else their last part (``Pose``), else no type column;
+    names too long for what is left are cut in the middle."""
+    counts = [(str(len(t.publishers)), str(len(t.subscribers)), f"{t.rate_hz:.1f}") for t in topics]
+    fixed = sum(max(len(h), *(len(c[i]) for c in counts)) + 2 for i, h in enumerate(("pub", "sub", "Hz"))) \
+        if counts else 0
+    names = [t.name for t in topics]
+    name_width = max(map(len, names), default=5)
+    for types in ([t.type for t in topics], [t.type.rsplit("/", 1)[-1] for t in topics], None):
+        type_width = 0 if types is None else max(map(len, types), default=4) + 2
+        if types is None or name_width + 2 + type_width + fixed <= width:
+            break
+    room = max(8, width - fixed - type_width - 2)
+    shown = [_cut(name, room) for name in names]
+    if types is None:
+        headers = ("topic", "pub", "sub", "Hz")
+        rows = tuple((n, *c) for n, c in zip(shown, counts, strict=True))
+    else:
+        headers = ("topic", "type", "pub", "sub", "Hz")
+        rows = tuple((n, ty, *c) for n, ty, c in zip(shown, types, counts, strict=True))
+    return headers, rows
+
+
+def _cut(name: str, width: int) -> str:
+    """``/turtle1/co~sensor``: the start and end of a name kept, the middle cut."""
+    if len(name) <= width:
+        return name
+    head = (width - 1) // 2
+    return name[:head] + "~" + name[len(name) - (width - 1 - head):]
 
 
 class GraphPanel(Static):
@@ -140,17 +205,24 @@ def graph_text(graph: GraphSnapshot) -> str:
     return "\n".join(lines) or "(no nodes)"
 
 
-class LessonPanel(Markdown):
-    """The current lesson, rendered as Markdown."""
+class LessonPanel(Markdown, can_focus=True):
+    """The current lesson, rendered as Markdown; it scrolls (Tab to it, then
+    the arrows, or PageUp/PageDown from anywhere), its code blocks wrap."""
+
+    BINDINGS = [
+        Binding("up", "scroll_up", "Scroll up", show=False),
+        Binding("down", "scroll_down", "Scroll down", show=False),
+        Binding("home", "scroll_home", "Top", show=False),
+        Binding("end", "scroll_end", "End", show=False),
+    ]
 
 
-class ConsolePanel(RichLog):
-    """Output of the ros2 commands typed on the command line."""
+LINE_STYLES = {"prompt": "bold cyan", "out": "", "error": "red", "note": "dim"}
 
-    def show(self, lines: list[str], *, error: bool = False) -> None:
-        for line in lines:
-            self.write(Text(line, style="red" if error else ""))
 
-    def command(self, line: str) -> None:
-        self.write(Text(f"$ {line}", style="bold cyan"))
+class ConsolePanel(TextLog):
+    """What the ros2 command line printed: the commands typed, their output,
+    the console's own notes (^C, background jobs)."""
 
+    def show(self, lines: list[Line]) -> None:
+        self.write_all(Text(line.text, style=LINE_STYLES.get(line.kind, "")) for line in lines)

@@ -1,0 +1,257 @@
+"""The app at 80x24 as a student uses it: every log line readable, every
+ros2 command stoppable with Ctrl+C, the key bar and help complete, the
+topics and the lesson fitting their pane, the controller switched off and on."""
+
+from __future__ import annotations
+
+import textwrap
+from pathlib import Path
+
+import pytest
+from support.pilot import log_text, pilot_test, wait_for
+from textual.widgets import DataTable
+from textual.widgets._markdown import MarkdownFence
+
+from turtletui.lessons.loader import find_lesson
+from turtletui.runtime.loader import ControllerSpec
+from turtletui.runtime.resolve import resolve_controllers
+from turtletui.tui.app import TurtleApp
+from turtletui.tui.screens.help import HelpScreen
+from turtletui.tui.widgets.keybar import KeyBar
+from turtletui.tui.widgets.panels import ConsolePanel
+from turtletui.tui.widgets.textlog import TextLog
+
+SMALL = (80, 24)
+
+
+async def type_command(pilot, line: str) -> None:
+    if pilot.app.focused is not pilot.app.query_one("#command"):
+        await pilot.press("colon")
+    await pilot.press(*line, "enter")
+
+
+@pilot_test
+async def test_at_80x24_the_log_shows_whole_lines_with_their_numbers() -> None:
+    """Part 3 logs "Hello 0", "Hello 1"...: the number must be on screen."""
+    app = TurtleApp(resolve_controllers(["part3_first_node"]))
+    async with app.run_test(size=SMALL) as pilot:
+        await wait_for(pilot, lambda: "Hello 1" in log_text(app), timeout=10)
+        await pilot.pause(0.3)
+        view = app.query_one("#log-lines", TextLog)
+        width = view.scrollable_content_region.width
+        assert 20 < width < 45
+        screen = [line.rstrip() for line in view.visible_lines]
+        assert all(len(line) <= width for line in screen)
+        words = " ".join(screen).split()
+        assert "[first_node] Hello 1" in " ".join(words), screen
+
+
+@pilot_test
+async def test_a_node_that_floods_shows_its_rate(tmp_path: Path) -> None:
+    path = tmp_path / "chatty.py"
+    path.write_text(textwrap.dedent("""
+        import rclpy
+        from rclpy.node import Node
+
+
+        def main():
+            rclpy.init()
+            node = Node("chatty")
+            node.create_timer(0.002, lambda: node.get_logger().info("tick"))
+            rclpy.spin(node)
+    """))
+    app = TurtleApp([ControllerSpec("chatty", path=path)])
+    async with app.run_test(size=SMALL) as pilot:
+        rate = app.query_one("#log-rate")
+        await wait_for(pilot, lambda: rate.display and "chatty:" in str(rate.render()), timeout=10)
+        lines_per_s = float(str(rate.render()).split("chatty:")[1].split()[0].replace(",", ""))
+        assert lines_per_s > 100  # 500 lines per simulated second, at x1
+
+
+@pilot_test
+async def test_ctrl_c_stops_the_running_command_and_never_quits() -> None:
+    app = TurtleApp()
+    async with app.run_test(size=SMALL) as pilot:
+        main = app.screen
+        await type_command(pilot, "ros2 topic echo /turtle1/pose")
+        await wait_for(pilot, lambda: "theta: 0.0" in log_text(app, "#console"))
+        assert app.terminal.foreground is not None
+        await pilot.press("ctrl+c")
+        await pilot.pause()
+        assert app.terminal.foreground is None and app.is_running
+        assert not [n for n in app.session.sim.graph.nodes if n.name.startswith("_ros2cli")]
+        assert log_text(app, "#console").endswith("^C")
+        await pilot.press("ctrl+c")  # nothing runs now: a hint, still no quitting
+        await pilot.pause()
+        assert app.is_running and app.screen is main and app.return_code is None  # no quit dialog
+
+
+@pilot_test
+async def test_a_new_command_stops_the_last_stream_and_publishers_can_be_listed() -> None:
+    app = TurtleApp()
+    async with app.run_test(size=SMALL) as pilot:
+        await type_command(pilot, "ros2 topic hz /turtle1/pose")
+        await type_command(pilot, "ros2 topic pub -r 5 /turtle1/cmd_vel geometry_msgs/msg/Twist '{linear: {x: 1.0}}'")
+        await type_command(pilot, "jobs")
+        console = log_text(app, "#console")
+        assert "\n^C\n$ ros2 topic pub" in console
+        assert "average rate" not in console.split("$ ros2 topic pub")[1]  # hz output stopped there
+        assert "[1]  Running  ros2 topic pub -r 5" in console
+        await wait_for(pilot, lambda: app.session.sim.world.turtles["turtle1"].vx == 1.0)
+        await type_command(pilot, "kill %1")
+        assert app.terminal.jobs == []
+
+
+@pilot_test
+async def test_the_key_bar_keeps_help_and_quit_at_80_columns() -> None:
+    app = TurtleApp()
+    async with app.run_test(size=SMALL) as pilot:
+        await pilot.pause()
+        bar = app.query_one(KeyBar)
+        text = str(bar.render())
+        assert {"?", ":", "k", "q"} <= set(bar.shown)
+        assert text.startswith(" ? Help") and text.rstrip().endswith("q Quit")
+        assert len(text.rstrip()) <= 80
+        await pilot.press("colon")
+        assert "Esc" in bar.shown and "^C" in bar.shown  # the command line's own keys
+        await pilot.press("escape")
+        assert "?" in bar.shown
+
+
+@pytest.mark.parametrize("key", ["question_mark", "f1"])
+def test_the_help_screen_lists_every_key(key) -> None:
+    _help_scenario(key)
+
+
+@pilot_test
+async def _help_scenario(key: str) -> None:
+    app = TurtleApp()
+    async with app.run_test(size=SMALL) as pilot:
+        await pilot.press(key)
+        assert isinstance(app.screen, HelpScreen)
+        page = app.screen.query_one("#help-text")
+        for binding in TurtleApp.BINDINGS:
+            assert binding.tooltip, f"{binding.key} has no help text"
+        lines = app.console.render_lines(page.content, app.console.options.update_width(200))
+        plain = " ".join("".join(seg.text for seg in line) for line in lines)
+        for tip in {b.tooltip for b in TurtleApp.BINDINGS}:
+            assert tip in plain
+        for shown in ("space", "Ctrl+C", "? F1", "jobs", "kill %N"):
+            assert shown in plain
+        await pilot.press("escape")
+        assert not isinstance(app.screen, HelpScreen)
+
+
+@pytest.mark.parametrize("size", [(80, 24), (120, 40)])
+def test_every_topics_column_is_on_screen(size) -> None:
+    _topics_scenario(size)
+
+
+@pilot_test
+async def _topics_scenario(size) -> None:
+    app = TurtleApp(resolve_controllers(["part6_wall_avoider"]))
+    async with app.run_test(size=size) as pilot:
+        await pilot.press("2")
+        table = app.query_one("#topics-table", DataTable)
+        await wait_for(pilot, lambda: table.row_count == 3)
+        await pilot.pause(0.3)
+        labels = [str(column.label) for column in table.columns.values()]
+        assert labels[-3:] == ["pub", "sub", "Hz"]
+        used = sum(column.get_render_width(table) for column in table.columns.values())
+        assert used <= table.scrollable_content_region.width
+        assert ("type" in labels) == (size == (120, 40))
+
+
+@pilot_test
+async def test_lesson_code_wraps_inside_the_pane() -> None:
+    app = TurtleApp(lesson=find_lesson("part6-closed-loop").path)
+    async with app.run_test(size=SMALL) as pilot:
+        await pilot.press("4")
+        await pilot.pause(0.5)
+        fences = list(app.query(MarkdownFence))
+        assert fences
+        for fence in fences:
+            assert fence.virtual_size.width <= fence.size.width
+        lesson = app.query_one("#lesson")
+        assert lesson.max_scroll_y > 0  # the lesson is longer than the pane: it scrolls
+        await pilot.press("pagedown")
+        await pilot.pause()
+        assert lesson.scroll_y > 0
+
+
+@pilot_test
+async def test_s_stops_and_starts_the_controller() -> None:
+    app = TurtleApp(resolve_controllers(["part6_wall_avoider"]))
+    async with app.run_test(size=SMALL) as pilot:
+        await wait_for(pilot, lambda: app.session.slots[0].status == "running")
+        await pilot.press("s")
+        slot = app.session.slots[0]
+        assert slot.host is None and slot.status == "stopped" and slot.held
+        await wait_for(pilot, lambda: "part6_wall_avoider: stopped (by you)" in str(app.query_one("#status").render()))
+        assert "controller" not in " ".join(n.name for n in app.session.sim.graph.nodes)
+        await pilot.press("s")
+        assert slot.status == "running" and slot.host is not None and not slot.held
+
+
+@pilot_test
+async def test_the_lesson_switcher_opens_a_lesson_and_shows_progress(tmp_path: Path) -> None:
+    from turtletui.tui.screens.lessons import LessonScreen
+
+    app = TurtleApp(lesson=find_lesson("part6-closed-loop").path)
+    async with app.run_test(size=SMALL) as pilot:
+        app.progress.record("part5-pose-subscriber", 4, 4)
+        app.progress.record("part4-open-loop-circle", 2, 5)
+        await pilot.press("l")
+        assert isinstance(app.screen, LessonScreen)
+        options = app.screen.query_one("#lessons-list")
+        labels = {options.get_option_at_index(i).id: str(options.get_option_at_index(i).prompt)
+                  for i in range(options.option_count)}
+        assert labels["part5-pose-subscriber"].lstrip().startswith("✓")
+        assert labels["part4-open-loop-circle"].lstrip().startswith("2/5")
+        assert labels["part3-first-node"].lstrip().startswith("-")
+        assert options.get_option_at_index(options.highlighted).id == "part6-closed-loop"
+        options.highlighted = list(labels).index("part5-pose-subscriber")
+        await pilot.press("enter")
+        await pilot.pause()
+        assert not isinstance(app.screen, LessonScreen)
+        assert app._lesson == find_lesson("part5-pose-subscriber").path
+        assert app.query_one("#side").current == "lesson"
+        assert "pose" in app.query_one("#lesson").source.lower()
+        assert "restart with" not in app.query_one("#lesson").source  # same (empty) world
+        await pilot.press("l")
+        options = app.screen.query_one("#lessons-list")
+        options.highlighted = list(labels).index("lidar-obstacles")
+        await pilot.press("enter")
+        await pilot.pause()
+        assert "restart with `turtletui run FILE --lesson lidar-obstacles`" in app.query_one("#lesson").source
+
+
+@pilot_test
+async def test_a_damaged_progress_file_is_a_warning_not_a_crash() -> None:
+    import os
+
+    data = Path(os.environ["XDG_DATA_HOME"]) / "turtletui"
+    data.mkdir(parents=True, exist_ok=True)
+    (data / "progress.json").write_text("{not json")
+    app = TurtleApp()
+    async with app.run_test(size=SMALL) as pilot:
+        await wait_for(pilot, lambda: "your progress could not be read" in log_text(app))
+        assert app.progress.lessons == {}
+
+
+@pilot_test
+async def test_the_console_wraps_and_keeps_everything_after_a_resize() -> None:
+    app = TurtleApp()
+    async with app.run_test(size=SMALL) as pilot:
+        await type_command(pilot, "ros2 interface show turtlesim/srv/Spawn")
+        console = app.query_one(ConsolePanel)
+        await pilot.pause()
+        narrow = console.visible_lines
+        assert all(len(line.rstrip()) <= console.scrollable_content_region.width for line in narrow)
+        await pilot.resize_terminal(120, 40)
+        await pilot.pause(0.3)
+        wide = [line.rstrip() for line in console.visible_lines]
+        assert "$ ros2 interface show turtlesim/srv/Spawn" in wide
+        long = next(line for line in wide if line.startswith("string name"))
+        assert len(long) > max(map(len, narrow))  # wrapped again at the new width
+        assert "created and returned if this is empty" in " ".join(wide)

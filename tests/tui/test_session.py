@@ -1,0 +1,93 @@
+"""The app's live session: its controllers live as long as the app (no CPU
+cap, no cap on what they log; memory still limited), they can be stopped
+and started, and the log rate of each node is measured."""
+
+from __future__ import annotations
+
+import textwrap
+import time
+from pathlib import Path
+
+from turtletui.runtime.loader import ControllerSpec
+from turtletui.tui.session import LiveSession
+
+NODE = textwrap.dedent("""
+    import resource
+    import rclpy
+    from rclpy.node import Node
+
+
+    def main():
+        rclpy.init()
+        node = Node("chatty")
+        log = node.get_logger()
+
+        def once():
+            timer.cancel()
+            for i in range(25_000):
+                log.info(f"line {i}")
+            cpu = resource.getrlimit(resource.RLIMIT_CPU)[0]
+            memory = resource.getrlimit(resource.RLIMIT_AS)[0]
+            log.info(f"limits: cpu {'none' if cpu == resource.RLIM_INFINITY else cpu} memory {memory}")
+
+        timer = node.create_timer(0.05, once)
+        rclpy.spin(node)
+""")
+
+
+def run_until(session: LiveSession, condition, timeout: float = 20.0) -> None:
+    deadline = time.monotonic() + timeout
+    while not condition():
+        assert time.monotonic() < deadline, "timed out"
+        session.advance(time.monotonic())
+        time.sleep(0.01)
+
+
+def test_controllers_in_the_app_have_no_cpu_cap_and_every_log_line_arrives(tmp_path: Path) -> None:
+    path = tmp_path / "chatty.py"
+    path.write_text(NODE)
+    session = LiveSession([ControllerSpec("chatty", path=path)])
+    try:
+        run_until(session, lambda: any(r.msg.startswith("limits:") for r in session.logs))
+        limits = next(r.msg for r in session.logs if r.msg.startswith("limits:"))
+        assert limits.startswith("limits: cpu none memory ") and not limits.endswith(" -1")
+        # past the grader's 20,000-line cap, nothing was cut and nothing said "truncated"
+        assert session.node_log_counts["chatty"] == 25_001
+        assert not [r for r in session.logs if "truncated" in r.msg]
+        assert session.slots[0].status == "running"
+    finally:
+        session.close()
+
+
+def test_stop_and_start_the_controllers(tmp_path: Path) -> None:
+    path = tmp_path / "chatty.py"
+    path.write_text(NODE)
+    session = LiveSession([ControllerSpec("chatty", path=path)])
+    try:
+        assert not session.controllers_held
+        assert session.toggle_controllers() is False
+        slot = session.slots[0]
+        assert session.controllers_held and slot.host is None and (slot.status, slot.detail) == ("stopped", "by you")
+        assert "/chatty" not in [n.fqn for n in session.sim.graph.nodes]
+        path.write_text(NODE + "\n")  # a change to the file does not start a stopped node
+        time.sleep(0.01)
+        session.check_for_changes()
+        assert slot.host is None
+        assert session.toggle_controllers() is True
+        assert slot.status == "running" and slot.host is not None and not session.controllers_held
+    finally:
+        session.close()
+
+
+def test_log_rates_are_lines_per_wall_second_per_node() -> None:
+    session = LiveSession()
+    try:
+        assert session.log_rates(100.0) == {}
+        for _ in range(30):
+            session.sim.graph.log("chatty", 20, "x")
+        session.sim.graph.log("quiet", 20, "x")
+        assert session.log_rates(100.5) == {}  # measured once a second
+        assert session.log_rates(101.5) == {"chatty": 20.0, "quiet": 1 / 1.5}
+        assert session.log_rates(103.0) == {}  # nothing since
+    finally:
+        session.close()

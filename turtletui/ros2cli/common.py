@@ -1,0 +1,144 @@
+"""What every ``ros2`` verb shares: the result type, the one-line error, name
+hints, and look-ups in the graph that fail with a clear sentence."""
+
+from __future__ import annotations
+
+import difflib
+import re
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, TypeVar
+
+from turtletui.graph.core import Graph, Topic
+from turtletui.graph.introspection import GraphSnapshot, NodeInfo
+from turtletui.interfaces import Action, Service, get_interface, interface_name
+
+if TYPE_CHECKING:
+    from turtletui.ros2cli.streams import Stream
+
+T = TypeVar("T")
+
+
+@dataclass
+class CommandResult:
+    """What one command printed at once, whether it failed, and what goes on."""
+
+    lines: list[str] = field(default_factory=list)
+    error: bool = False
+    """True when the command failed; ``lines`` is then exactly one line."""
+    stream: Stream | None = None
+    """Set for commands that keep printing (echo, hz, pub, call, send_goal)."""
+
+
+class CommandError(Exception):
+    """A verb's one-line error (the dispatcher puts ``ros2 topic echo: `` before it)."""
+
+
+class PlainError(CommandError):
+    """An error printed as it is, without the command's name (as ros2 prints
+    ``Parameter not set.`` or ``Setting parameter failed: ...``)."""
+
+
+def name_list(entries: Sequence, *, count: bool, show_types: bool, hidden: bool = True) -> CommandResult:
+    """What ``ros2 topic|service|action list`` prints: names (``-t``: with
+    their types), or how many (``-c``); hidden names only with ``hidden``."""
+    shown = [e for e in entries if hidden or not is_hidden(e.name)]
+    if count:
+        return CommandResult([str(len(shown))])
+    return CommandResult([f"{e.name} [{e.type}]" if show_types else e.name for e in shown])
+
+
+def error(line: str) -> CommandResult:
+    return CommandResult([line], error=True)
+
+
+def hint(name: str, known: Sequence[str], quote: bool = False) -> str:
+    """`` (did you mean /turtle1/pose?)`` for a close match, else ''."""
+    close = difflib.get_close_matches(name, list(known), n=1, cutoff=0.6)
+    if not close:
+        return ""
+    return f" (did you mean '{close[0]}'?)" if quote else f" (did you mean {close[0]}?)"
+
+
+def absolute(name: str) -> str:
+    """ros2 resolves relative names against the root namespace."""
+    return name if name.startswith("/") else f"/{name}"
+
+
+def is_hidden(name: str) -> bool:
+    """ROS hides names with a part that starts with '_' (``/_ros2cli_1``)."""
+    return any(part.startswith("_") for part in name.split("/"))
+
+
+def one_line(text: str) -> str:
+    """An exception's text as one line, pointing at ros2 commands rather than
+    the Python helpers it may name."""
+    text = " ".join(text.split())
+    return re.sub(r"\(see all_interfaces\(\) for the (\d+) known types\)",
+                  r"(see 'ros2 interface list' for the \1 known types)", text)
+
+
+# -- look-ups -------------------------------------------------------------------------
+
+def live_topic(graph: Graph, name: str) -> Topic | None:
+    """The topic if some node publishes or subscribes to it (ROS forgets the rest)."""
+    topic = graph.topics.get(name)
+    if topic is None or not (topic.publishers or topic.subscriptions):
+        return None
+    return topic
+
+
+def live_topic_names(graph: Graph) -> list[str]:
+    return sorted(n for n, t in graph.topics.items() if t.publishers or t.subscriptions)
+
+
+def topic_or_error(graph: Graph, name: str, what: str) -> Topic:
+    topic = live_topic(graph, name)
+    if topic is None:
+        raise CommandError(f"topic '{name}' {what}{hint(name, live_topic_names(graph))}")
+    return topic
+
+
+def node_or_error(snap: GraphSnapshot, name: str) -> NodeInfo:
+    wanted = absolute(name)
+    for node in snap.nodes:
+        if node.name == wanted:
+            return node
+    raise CommandError(f"node '{wanted}' not found{hint(wanted, [n.name for n in snap.nodes])}")
+
+
+def visible_nodes(snap: GraphSnapshot) -> list[NodeInfo]:
+    return [n for n in snap.nodes if not n.name.rsplit("/", 1)[-1].startswith("_")]
+
+
+def entity_or_error(table: Mapping[str, T], name: str, kind: str, what: str) -> T:
+    """The service (or action server...) called ``name`` in one of the graph's
+    tables; else ``service '/spwn' is not available (did you mean /spawn?)``."""
+    name = absolute(name)
+    found = table.get(name)
+    if found is None:
+        raise CommandError(f"{kind} '{name}' {what}{hint(name, sorted(table))}")
+    return found
+
+
+def kind_word(cls: type) -> str:
+    if issubclass(cls, Service):
+        return "service"
+    if issubclass(cls, Action):
+        return "action"
+    return "message"
+
+
+def interface_or_error(name: str, base: type, what: str) -> type:
+    """The interface class called ``name``; it must be a ``what`` (message...) type."""
+    cls = get_interface(name)
+    if not issubclass(cls, base):
+        raise CommandError(f"'{name}' is a {kind_word(cls)} type, not a {what} type")
+    return cls
+
+
+def check_type(cls: type, actual: str, what: str) -> None:
+    """The type a user named must be the one the graph has."""
+    wanted = interface_name(cls)
+    if wanted != actual:
+        raise CommandError(f"{what} has type {actual}, not {wanted}")

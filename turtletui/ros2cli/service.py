@@ -1,0 +1,104 @@
+"""``ros2 service``: list, type, find, info, call."""
+
+from __future__ import annotations
+
+from argparse import ArgumentParser, Namespace
+from typing import TYPE_CHECKING, Any
+
+from turtletui.graph.introspection import snapshot
+from turtletui.interfaces import Service, interface_name
+from turtletui.ros2cli.arguments import Command, Verb, list_options
+from turtletui.ros2cli.common import (
+    CommandResult,
+    check_type,
+    entity_or_error,
+    interface_or_error,
+    name_list,
+)
+from turtletui.ros2cli.streams import CallStream
+from turtletui.ros2cli.values import message_values
+
+if TYPE_CHECKING:
+    from turtletui.ros2cli.cli import Ros2Cli
+
+_HIDDEN_HELP = "Consider hidden services as well"
+
+
+def _service(cli: Ros2Cli, name: str, what: str = "is not available") -> Any:
+    return entity_or_error(cli.graph.services, name, "service", what)
+
+
+def _list_arguments(parser: ArgumentParser) -> None:
+    list_options(parser, "service", "--count-services", "--include-hidden-services")
+
+
+def _list(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
+    return name_list(snapshot(cli.graph).services, count=args.count_services, show_types=args.show_types,
+                     hidden=args.include_hidden_services)
+
+
+def _name_arguments(help_text: str):
+    def add(parser: ArgumentParser) -> None:
+        parser.add_argument("service_name", help=help_text)
+    return add
+
+
+def _type(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
+    return CommandResult([_service(cli, args.service_name, "does not exist").type_name])
+
+
+def _find_arguments(parser: ArgumentParser) -> None:
+    parser.add_argument("service_type", help="Name of the ROS service type to filter for "
+                                             "(e.g. 'rcl_interfaces/srv/ListParameters')")
+    list_options(parser, "service", "--count-services", "--include-hidden-services", show_types=False)
+
+
+def _find(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
+    wanted = interface_name(interface_or_error(args.service_type, Service, "service"))
+    found = [s for s in snapshot(cli.graph).services if s.type == wanted]
+    return name_list(found, count=args.count_services, show_types=False, hidden=args.include_hidden_services)
+
+
+def _info(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
+    service = _service(cli, args.service_name, "does not exist")
+    clients = [c for c in cli.graph.clients if c.name == service.name]
+    return CommandResult([f"Type: {service.type_name}", f"Clients count: {len(clients)}",
+                          "Services count: 1"])
+
+
+def _call_arguments(parser: ArgumentParser) -> None:
+    parser.add_argument("service_name",
+                        help="Name of the ROS service to call to (e.g. '/add_two_ints')")
+    parser.add_argument("service_type", help="Type of the ROS service (e.g. 'std_srvs/srv/Empty')")
+    parser.add_argument("values", nargs="?", default="{}",
+                        help="Values to fill the service request with in YAML format "
+                             "(e.g. '{a: 1, b: 2}'), otherwise the service request will be "
+                             "published with default values")
+
+
+def _call(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
+    service = _service(cli, args.service_name)
+    srv_type, values = args.service_type, args.values
+    if _looks_like_values(srv_type) and values == "{}":
+        # The type left out: turtletui knows it from the graph.
+        srv_type, values = None, srv_type
+    cls = service.srv_type if srv_type is None else interface_or_error(srv_type, Service, "service")
+    check_type(cls, service.type_name, f"service '{service.name}'")
+    request = message_values(values, cls.Request, "request")
+    return cli.start(CallStream(cli, line, service.name, cls, request))
+
+
+def _looks_like_values(text: str) -> bool:
+    return text.lstrip().startswith(("{", "[")) or ":" in text
+
+
+COMMAND = Command("service", "Various service related sub-commands", verbs=(
+    Verb("call", "Call a service", _call_arguments, _call),
+    Verb("find", "Output a list of available services of a given type", _find_arguments, _find),
+    Verb("info", "Print information about a service",
+         _name_arguments("Name of the ROS service to get info (e.g. '/add_two_ints')"), _info),
+    Verb("list", "Output a list of available services", _list_arguments, _list),
+    Verb("type", "Output a service's type",
+         _name_arguments("Name of the ROS service to get type (e.g. '/talker/list_parameters')"), _type),
+), add_arguments=lambda parser: parser.add_argument(
+    "--include-hidden-services", action="store_true", help=_HIDDEN_HELP))

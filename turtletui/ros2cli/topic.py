@@ -1,0 +1,220 @@
+"""``ros2 topic``: list, echo, hz, info, type, find, pub."""
+
+from __future__ import annotations
+
+from argparse import ArgumentParser, Namespace
+from typing import TYPE_CHECKING, Any
+
+from turtletui.graph.core import NS_PER_S
+from turtletui.graph.introspection import snapshot
+from turtletui.interfaces import Message, get_interface, interface_name
+from turtletui.ros2cli.arguments import (
+    Command,
+    Verb,
+    list_options,
+    nonnegative_int,
+    positive_float,
+    positive_int,
+)
+from turtletui.ros2cli.common import (
+    CommandError,
+    CommandResult,
+    absolute,
+    check_type,
+    hint,
+    interface_or_error,
+    live_topic,
+    live_topic_names,
+    name_list,
+    topic_or_error,
+)
+from turtletui.ros2cli.streams import EchoStream, HzStream, PubStream
+from turtletui.ros2cli.values import message_values
+
+if TYPE_CHECKING:
+    from turtletui.ros2cli.cli import Ros2Cli
+
+MAX_PUB_RATE_HZ = 100.0
+"""``ros2 topic pub -r`` is capped here so a typo cannot flood the graph."""
+
+HZ_WINDOW = 10000
+"""ros2topic's DEFAULT_WINDOW_SIZE."""
+
+
+# -- list ----------------------------------------------------------------------------
+
+def _list_arguments(parser: ArgumentParser) -> None:
+    list_options(parser, "topic", "--count-topics", "--include-hidden-topics")
+
+
+def _list(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
+    return name_list(snapshot(cli.graph).topics, count=args.count_topics, show_types=args.show_types,
+                     hidden=args.include_hidden_topics)
+
+
+# -- echo ----------------------------------------------------------------------------
+
+def _echo_arguments(parser: ArgumentParser) -> None:
+    parser.add_argument("topic_name", help="Name of the ROS topic to listen to (e.g. '/chatter')")
+    parser.add_argument("message_type", nargs="?",
+                        help="Type of the ROS message (e.g. 'std_msgs/msg/String')")
+    parser.add_argument("--field", type=str, default=None,
+                        help="Echo a selected field of a message. Use '.' to select sub-fields. "
+                             "For example, to echo the position field of a nav_msgs/msg/Odometry "
+                             "message: 'ros2 topic echo /odom --field pose.pose.position'")
+    parser.add_argument("--once", action="store_true",
+                        help="Print the first message received and then exit.")
+
+
+def _echo(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
+    name = absolute(args.topic_name)
+    topic = topic_or_error(cli.graph, name, "does not appear to be published yet")
+    if args.message_type is not None:
+        check_type(get_interface(args.message_type), topic.type_name, f"topic '{name}'")
+    path = _field_path(topic.msg_type, args.field) if args.field is not None else []
+    return cli.start(EchoStream(cli, line, topic, args.once, path))
+
+
+def _field_path(cls: type, text: str) -> list[str]:
+    path = [part for part in text.split(".") if part]
+    if not path:
+        raise CommandError(f"Invalid field value '{text}'")
+    current: Any = cls
+    for part in path:
+        specs = {s.name: s for s in getattr(current, "_FIELDS", ())}
+        if part not in specs:
+            names = ", ".join(specs) or "none"
+            raise CommandError(f"invalid field '{text}' of {interface_name(cls)} (fields: {names})")
+        current = specs[part].msg_cls if specs[part].kind == "msg" and not specs[part].array else None
+    return path
+
+
+# -- hz ------------------------------------------------------------------------------
+
+def _hz_arguments(parser: ArgumentParser) -> None:
+    parser.add_argument("topic_name", help="Name of the ROS topic to listen to (e.g. '/chatter')")
+    parser.add_argument("--window", "-w", dest="window_size", type=positive_int, default=HZ_WINDOW,
+                        metavar="WINDOW",
+                        help=f"window size, in # of messages, for calculating rate (default: {HZ_WINDOW})")
+
+
+def _hz(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
+    name = absolute(args.topic_name)
+    topic = topic_or_error(cli.graph, name, "does not appear to be published yet")
+    return cli.start(HzStream(cli, line, topic, args.window_size))
+
+
+# -- info, type, find ------------------------------------------------------------------
+
+def _info_arguments(parser: ArgumentParser) -> None:
+    parser.add_argument("topic_name", help="Name of the ROS topic to get info (e.g. '/chatter')")
+    parser.add_argument("--verbose", "-v", action="store_true",
+                        help="Prints detailed information like the node name, node namespace, "
+                             "topic type, GUID and QoS Profile of the publishers and subscribers "
+                             "to this topic")
+
+
+def _info(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
+    name = absolute(args.topic_name)
+    topic = topic_or_error(cli.graph, name, "does not exist")
+    if not args.verbose:
+        return CommandResult([
+            f"Type: {topic.type_name}",
+            f"Publisher count: {len(topic.publishers)}",
+            f"Subscription count: {len(topic.subscriptions)}",
+        ])
+    lines = [f"Type: {topic.type_name}", ""]
+    for title, kind, endpoints in (("Publisher", "PUBLISHER", topic.publishers),
+                                   ("Subscription", "SUBSCRIPTION", topic.subscriptions)):
+        lines += [f"{title} count: {len(endpoints)}", ""]
+        for endpoint in endpoints:
+            lines += [
+                f"Node name: {endpoint.node.name}",
+                f"Node namespace: {endpoint.node.namespace or '/'}",
+                f"Topic type: {topic.type_name}",
+                f"Endpoint type: {kind}",
+                "QoS profile:",
+                "  Reliability: RELIABLE",
+                f"  History (Depth): KEEP_LAST ({endpoint.depth})",
+                "  Durability: VOLATILE",
+                "  Lifespan: Infinite",
+                "  Deadline: Infinite",
+                "  Liveliness: AUTOMATIC",
+                "  Liveliness lease duration: Infinite",
+                "",
+            ]
+    return CommandResult(lines)
+
+
+def _type_arguments(parser: ArgumentParser) -> None:
+    parser.add_argument("topic_name", help="Name of the ROS topic to get type (e.g. '/chatter')")
+
+
+def _type(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
+    name = absolute(args.topic_name)
+    return CommandResult([topic_or_error(cli.graph, name, "does not exist").type_name])
+
+
+def _find_arguments(parser: ArgumentParser) -> None:
+    parser.add_argument("topic_type",
+                        help="Name of the ROS topic type to filter for (e.g. 'std_msg/msg/String')")
+    list_options(parser, "topic", "--count-topics", "--include-hidden-topics", show_types=False)
+
+
+def _find(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
+    wanted = interface_name(interface_or_error(args.topic_type, Message, "message"))
+    found = [t for t in snapshot(cli.graph).topics if t.type == wanted]
+    return name_list(found, count=args.count_topics, show_types=False, hidden=args.include_hidden_topics)
+
+
+# -- pub -------------------------------------------------------------------------------
+
+def _pub_arguments(parser: ArgumentParser) -> None:
+    parser.add_argument("topic_name", help="Name of the ROS topic to publish to (e.g. '/chatter')")
+    parser.add_argument("message_type", help="Type of the ROS message (e.g. 'std_msgs/String')")
+    parser.add_argument("values", nargs="?", default="{}",
+                        help="Values to fill the message with in YAML format "
+                             "(e.g. 'data: Hello World'), otherwise the message will be "
+                             "published with default values")
+    parser.add_argument("-r", "--rate", metavar="N", type=positive_float, default=1.0,
+                        help="Publishing rate in Hz (default: 1)")
+    parser.add_argument("-p", "--print", metavar="N", type=int, default=1,
+                        help="Only print every N-th published message (default: 1)")
+    group = parser.add_mutually_exclusive_group()
+    group.add_argument("-1", "--once", action="store_true", help="Publish one message and exit")
+    group.add_argument("-t", "--times", type=nonnegative_int, default=0,
+                       help="Publish this number of times and then exit")
+
+
+def _pub(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
+    name = absolute(args.topic_name)
+    cls = interface_or_error(args.message_type, Message, "message")
+    topic = live_topic(cli.graph, name)
+    if topic is not None:
+        check_type(cls, topic.type_name, f"topic '{name}'")
+    msg = message_values(args.values, cls, "message")
+    rate = args.rate
+    notes = []
+    if rate > MAX_PUB_RATE_HZ:
+        notes.append(f"WARNING: rate limited to {MAX_PUB_RATE_HZ:g} Hz in turtletui")
+        rate = MAX_PUB_RATE_HZ
+    if topic is None or not topic.subscriptions:
+        near = hint(name, [n for n in live_topic_names(cli.graph) if n != name])
+        if near:
+            notes.append(f"WARNING: nothing subscribes to '{name}' yet{near}")
+    times = 1 if args.once else args.times
+    result = cli.start(PubStream(cli, line, name, msg, round(NS_PER_S / rate), times, args.print))
+    result.lines[:0] = notes
+    return result
+
+
+COMMAND = Command("topic", "Various topic related sub-commands", verbs=(
+    Verb("echo", "Output messages from a topic", _echo_arguments, _echo),
+    Verb("find", "Output a list of available topics of a given type", _find_arguments, _find),
+    Verb("hz", "Print the average publishing rate to screen", _hz_arguments, _hz),
+    Verb("info", "Print information about a topic", _info_arguments, _info),
+    Verb("list", "Output a list of available topics", _list_arguments, _list),
+    Verb("pub", "Publish a message to a topic", _pub_arguments, _pub),
+    Verb("type", "Print a topic's type", _type_arguments, _type),
+), add_arguments=lambda parser: parser.add_argument(
+    "--include-hidden-topics", action="store_true", help="Consider hidden topics as well"))
