@@ -58,6 +58,7 @@ def serve(sock_fd: int) -> None:
     import turtletui.compat  # noqa: F401
     import turtletui.compat.context  # noqa: F401
     import turtletui.runtime.loader  # noqa: F401
+    import turtletui.runtime.scheduler  # noqa: F401
     import turtletui.runtime.virtual_time  # noqa: F401
     from turtletui.runtime import child
 
