@@ -316,8 +316,8 @@ class _SubmissionClock:
             return None
         duration = self.plan.runs[index].scenario.duration
         if left < duration:
-            return left, f"the submission's runs may take {self.limit:g} s in all (its time limit)"
-        return duration, "a run may take its simulated duration in wall time"
+            return left, f"the submission's runs may take {self.limit:g} s of wall time in all (its time limit)"
+        return duration, f"a run may take its simulated duration ({duration:g} s) in wall time"
 
     def spent(self, student: str) -> str:
         """Why a run of ``student`` was not run."""

@@ -149,6 +149,7 @@ class OutputBudget:
         self.shown_lines = 0
         self.dropped_bytes = 0
         self.dropped_lines = 0
+        self.cut_lines = 0
 
     def feed(self, data: bytes, final: bool = False) -> bool:
         """Show the complete lines of ``data`` (all of it when ``final``).
@@ -183,7 +184,9 @@ class OutputBudget:
                 return True
             self.shown_lines += 1
             self.shown_bytes += size
-            self.dropped_bytes += cut
+            if cut:
+                self.dropped_bytes += cut
+                self.cut_lines += 1
             self._show(text)
         return False
 
@@ -204,13 +207,12 @@ class OutputBudget:
         """One line saying how much output was not shown, or None."""
         if not (self.dropped_bytes or self.dropped_lines):
             return None
-        parts = []
+        why = []
         if self.over:
-            parts.append(
-                f"{size_text(self.dropped_bytes)} of output dropped ({self.dropped_lines:,} lines over its budget of "
-                f"{size_text(self.max_bytes)} or {self.max_lines:,} lines per run)"
+            why.append(
+                f"{self.dropped_lines:,} lines over its budget of {size_text(self.max_bytes)} "
+                f"or {self.max_lines:,} lines per run"
             )
-        else:
-            parts.append(f"{size_text(self.dropped_bytes)} of output dropped")
-        parts.append(f"lines are cut at {self.line_chars:,} characters")
-        return "; ".join(parts)
+        if self.cut_lines:
+            why.append(f"{self.cut_lines:,} long line{'s' if self.cut_lines != 1 else ''} cut at {self.line_chars:,} characters")
+        return f"{size_text(self.dropped_bytes)} of output dropped ({'; '.join(why)})"

@@ -405,12 +405,8 @@ class SandboxHost:
         if limits.realtime_lag is not None and behind > limits.realtime_lag:
             self._fail("slow", pace.report(now))
         elif limits.run_seconds is not None and _perf_counter() - self._wall_start > limits.run_seconds:
-            why = f": {limits.run_seconds_reason}" if limits.run_seconds_reason else ""
-            self._fail(
-                "time",
-                f"ran out of time after {_perf_counter() - self._wall_start:.1f} s of wall time "
-                f"(the run's limit is {limits.run_seconds:g} s{why})",
-            )
+            why = limits.run_seconds_reason or f"the run's limit is {limits.run_seconds:g} s"
+            self._fail("time", f"ran out of time after {_perf_counter() - self._wall_start:.1f} s of wall time: {why}")
 
     def _queued(self) -> float:
         """Seconds the child's threads and this process's have waited for a CPU."""
