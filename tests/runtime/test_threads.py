@@ -380,3 +380,26 @@ def test_threads_in_an_in_process_controller_are_refused_with_a_clear_message(
     [failure] = failures
     assert "run it sandboxed (without --in-process) to use threads" in str(failure)
     assert result.crashes == [] and result.sim_time == pytest.approx(1.0)
+
+
+def test_threads_waiting_for_ever_when_the_run_ends_let_the_program_end(tmp_path: Path) -> None:
+    """A thread waits for an event nobody sets, main() joins it: a hung
+    program on a robot. When the run ends, the waits end, so the program
+    finishes (it is not killed, and nothing is reported as a crash)."""
+    path = write(tmp_path, """
+        import threading
+        import rclpy
+        from rclpy.node import Node
+
+        def main():
+            rclpy.init()
+            node = Node("stuck")
+            never = threading.Event()
+            waiter = threading.Thread(target=never.wait)
+            waiter.start()
+            waiter.join()
+            print("joined", flush=True)
+    """)
+    result = run([path], duration=1.0)
+    assert result.crashes == []
+    assert printed(result) == ["joined"]

@@ -100,10 +100,12 @@ class Scheduler:
 
     def wait(self, ready: Callable[[], bool] | None, deadline: int | None, *, spinning: bool = False) -> bool:
         """Let the calling thread wait until ``ready()`` holds (True), or until
-        simulated time reaches ``deadline`` ns or the run is over (False).
+        simulated time reaches ``deadline`` ns (False).
 
         Other threads run meanwhile; ``spinning`` says the thread waits for
         its node's callbacks, so time stops at the node's next timer too.
+        Once the run is over, a timed wait ends at once (the clock jumps to
+        its deadline), and so does a wait for ever that nothing else can end.
         """
         if self._forks != _forks:
             return self._wait_forked(ready, deadline)
@@ -165,11 +167,15 @@ class Scheduler:
             if turn is not None:
                 break
             if not self._running():
-                # Nothing can go on and time no longer passes: the run is over
-                # and every thread waits for ever (the process is ended soon).
-                if me is not None:
-                    me.park.acquire()
-                return
+                # The run is over and nothing can go on: the caller's wait
+                # ends (False), or, if the caller is ending, the longest
+                # waiting thread's, so that the program may end.
+                if me is None and not self._waiting:
+                    return
+                turn = me if me is not None else self._waiting[0]
+                self._waiting.remove(turn)
+                turn.result = False
+                break
             self._advance(self._wake())
         if turn is me:
             return
