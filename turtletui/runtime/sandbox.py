@@ -626,7 +626,7 @@ class SandboxHost:
                 graph.log(str(node)[:200], int(level), text)
                 continue
             self._log_dropped += 1
-            if self._log_dropped == 1 and not self._child_dropped:
+            if self._log_dropped == 1:
                 graph.log(
                     "turtletui",
                     ERROR,

@@ -7,15 +7,15 @@ the controller runs, ``time.sleep`` becomes a sleep in simulated time: time
 advances, the node's own callbacks stay queued (as a sleeping thread would
 leave them), and the rest of the world goes on.
 
-A sandboxed child (a process that exists to run one controller) goes
-further. In lockstep its clocks read simulated time: ``time.time()``,
+In lockstep the clocks read simulated time too: ``time.time()``,
 ``time.monotonic()``, ``time.perf_counter()`` (and their ``_ns`` forms),
 ``time.localtime()`` and friends, and ``datetime.datetime.now()`` count from
 the run's epoch, so a loop that drives "for 2 s of time.time()" drives for
-2 s of the run, as on a robot. In both modes ``select.select`` and the
-pollers behind ``selectors`` (asyncio's too) wait in simulated time, letting
-the controller's other threads run. CPU-time clocks (``time.process_time``)
-stay real: they measure the controller's own work.
+2 s of the run, as on a robot. CPU-time clocks (``time.process_time``) stay
+real: they measure the controller's own work. A sandboxed child (a process
+that exists to run one controller) also makes ``select.select`` and the
+pollers behind ``selectors`` (asyncio's too) wait in simulated time, in real
+time runs too, letting the controller's other threads run.
 """
 
 from __future__ import annotations
@@ -228,25 +228,23 @@ def _waiting(host: Any, look: Any, timeout: float | None, watched: bool) -> Any:
 
     Nothing in the simulation writes to a real file descriptor, so a wait
     with descriptors looks again every :data:`SELECT_STEP_NS`; one without
-    (``select([], [], [], 1.9)``) is a sleep. After the run, waits are real."""
+    (``select([], [], [], 1.9)``) is a sleep. After the run, a timed wait
+    ends at once (as sleeps do) and a wait for ever is a real one."""
     found = look()
     if found is not None or timeout == 0:
         return found
-    if not host.running:
-        return None if timeout is not None else _wait_for_real(look)
     graph = host.graph
     deadline = None if timeout is None else graph.now_ns + seconds_to_ns(timeout)
-    scheduler = host.scheduler
     while True:
+        if deadline is None and not host.running:
+            return _wait_for_real(look)
         step = deadline
         if watched:
             step = graph.now_ns + SELECT_STEP_NS if deadline is None else min(deadline, graph.now_ns + SELECT_STEP_NS)
-        scheduler.wait(None, step)
+        host.scheduler.wait(None, step)
         found = look()
         if found is not None or (deadline is not None and graph.now_ns >= deadline):
             return found
-        if not host.running:
-            return None if timeout is not None else _wait_for_real(look)
 
 
 def _wait_for_real(look: Any) -> Any:
