@@ -12,6 +12,7 @@ import signal
 import time
 from pathlib import Path
 
+from support.controllers import spin_in_a_thread
 from support.grading import (
     CRASH_WITH_POSE,
     HIDDEN_NAME,
@@ -422,42 +423,14 @@ def test_a_time_limit_that_is_not_a_positive_number_is_a_one_line_error(tmp_path
 
 # A thread spins the node, main() drives from the latest pose: it heads for the
 # north wall and hits it (so its visible run fails and leaves a recording).
-THREADED = """\
-import threading, time
-import rclpy
-from rclpy.node import Node
-from geometry_msgs.msg import Twist
-from turtlesim.msg import Pose
-
-
-class Driver(Node):
-    def __init__(self):
-        super().__init__("driver")
-        self.pub = self.create_publisher(Twist, "/turtle1/cmd_vel", 10)
-        self.create_subscription(Pose, "/turtle1/pose", self.on_pose, 10)
-        self.pose = None
-
-    def on_pose(self, pose):
-        self.pose = pose
-
-
-def main():
-    rclpy.init()
-    node = Driver()
-    threading.Thread(target=rclpy.spin, args=(node,), daemon=True).start()
-    rate = node.create_rate(25)
-    while rclpy.ok():
-        cmd = Twist()
-        cmd.linear.x = 3.0
-        if node.pose is not None:
-            cmd.angular.z = 1.0 * (1.5708 - node.pose.theta)
-        node.pub.publish(cmd)
-        rate.sleep()
-
-
-if __name__ == "__main__":
-    main()
-"""
+THREADED = spin_in_a_thread(
+    """
+    cmd.linear.x = 3.0
+    if pose is not None:
+        cmd.angular.z = 1.0 * (1.5708 - pose.theta)
+    """,
+    rate=25,
+)
 
 
 def test_a_threaded_controller_gets_the_same_run_and_score_with_any_jobs(tmp_path: Path, lesson: Path):

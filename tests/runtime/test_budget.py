@@ -10,6 +10,7 @@ import textwrap
 from pathlib import Path
 
 import pytest
+from support.controllers import WALL_TIME
 from typer.testing import CliRunner
 
 from turtletui.api import run
@@ -19,29 +20,12 @@ from turtletui.runtime.sandbox import Limits
 
 pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="the sandbox needs POSIX processes")
 
-POSE_NODE = """
-import signal, socket, time
+POSE_NODE = WALL_TIME + """
+import signal
 import rclpy
 from rclpy.node import Node
 from geometry_msgs.msg import Twist
 from turtlesim.msg import Pose
-
-
-def work(seconds):
-    # CPU time: the clocks a controller reads in lockstep are simulated
-    end = time.process_time() + seconds
-    while time.process_time() < end:
-        pass
-
-
-def block(seconds):
-    # wall time without CPU: a socket's timeout is real
-    waiting, _ = socket.socketpair()
-    waiting.settimeout(seconds)
-    try:
-        waiting.recv(1)
-    except TimeoutError:
-        pass
 
 
 class Avoider(Node):

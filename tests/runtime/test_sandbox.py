@@ -21,6 +21,7 @@ import tracemalloc
 from pathlib import Path
 
 import pytest
+from support.controllers import WALL_TIME
 
 from turtletui.api import RunResult, run
 from turtletui.runtime import forkserver
@@ -34,22 +35,12 @@ CRASH_TICK = 5
 """The timer tick (0.1 s apart) at which the controllers below misbehave."""
 CRASH_T = CRASH_TICK * 0.1
 
-PRELUDE = f"""\
-import os, signal, socket, subprocess, sys, threading, time
+PRELUDE = WALL_TIME + f"""\
+import os, signal, subprocess, sys, threading, time
 import rclpy
 from rclpy.node import Node
 from geometry_msgs.msg import Twist
 from turtlesim.msg import Pose
-
-
-def hang(seconds):
-    # blocks in wall time: a socket's timeout is real (sleeps and waits are simulated)
-    waiting, _ = socket.socketpair()
-    waiting.settimeout(seconds)
-    try:
-        waiting.recv(1)
-    except TimeoutError:
-        pass
 
 
 def note(name, value):
@@ -306,7 +297,7 @@ def test_multi_line_message_gives_a_one_line_summary(tmp_path: Path) -> None:
         """,
         """
         def misbehave(node):
-            hang(10)
+            block(10)
         """,
     ],
     ids=["endless-loop", "blocking-wait"],
@@ -776,7 +767,7 @@ def misbehave(node):
     # Write a reply of one's own on the pipe to turtletui, then keep quiet:
     # the parent acts on the forged frame (not on a timeout).
     os.write(context.current_host().fd_out, FRAME)
-    hang(30)
+    block(30)
 """
 
 
@@ -848,7 +839,7 @@ def test_forged_reply_then_not_reading(tmp_path: Path) -> None:
 
         def forge_and_hang():
             os.write(context.current_host().fd_out, struct.pack(">I", 2) + b"{}")
-            hang(30)
+            block(30)
 
         def misbehave(node):
             for _ in range(3000):

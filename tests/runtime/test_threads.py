@@ -13,51 +13,18 @@ import threading
 from pathlib import Path
 
 import pytest
+from support.controllers import spin_in_a_thread
 
 from turtletui.api import RunResult, run
 from turtletui.runtime.sandbox import Limits
 
 pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="the sandbox needs POSIX processes")
 
-SPIN_IN_A_THREAD = """
-import threading, time
-import rclpy
-from rclpy.node import Node
-from geometry_msgs.msg import Twist
-from turtlesim.msg import Pose
-
-
-class Controller(Node):
-    def __init__(self):
-        super().__init__("threaded")
-        self.pub = self.create_publisher(Twist, "/turtle1/cmd_vel", 10)
-        self.create_subscription(Pose, "/turtle1/pose", self.on_pose, 10)
-        self.pose = None
-
-    def on_pose(self, pose):
-        self.pose = pose
-
-
-def main():
-    rclpy.init()
-    node = Controller()
-    spinner = threading.Thread(target=rclpy.spin, args=(node,), daemon=True)
-    spinner.start()
-    rate = node.create_rate(20)
-    while rclpy.ok():
-        cmd = Twist()
-        pose = node.pose
-        if pose is not None and not (2.0 < pose.x < 9.0 and 2.0 < pose.y < 9.0):
-            cmd.linear.x, cmd.angular.z = 1.0, 1.7
-        else:
-            cmd.linear.x = 3.0
-        node.pub.publish(cmd)
-        WAIT
-    spinner.join()
-
-
-if __name__ == "__main__":
-    main()
+AVOIDER = """
+if pose is not None and not (2.0 < pose.x < 9.0 and 2.0 < pose.y < 9.0):
+    cmd.linear.x, cmd.angular.z = 1.0, 1.7
+else:
+    cmd.linear.x = 3.0
 """
 
 WAITS = {
@@ -171,7 +138,7 @@ def poses(result: RunResult) -> list[tuple[float, float, float, float]]:
 
 @pytest.mark.parametrize("wait", sorted(WAITS))
 def test_spin_in_a_thread_and_a_loop_in_main_repeat_bit_for_bit(tmp_path: Path, wait: str) -> None:
-    path = write(tmp_path, SPIN_IN_A_THREAD.replace("WAIT", WAITS[wait]))
+    path = write(tmp_path, spin_in_a_thread(AVOIDER, WAITS[wait]))
     runs = [run([path], duration=15.0, seed=3, keep_poses=True) for _ in range(3)]
     for result in runs:
         assert result.crashes == [], result.crashes[0].details()
@@ -374,7 +341,7 @@ def test_threads_in_an_in_process_controller_are_refused_with_a_clear_message(
 ) -> None:
     failures: list[BaseException] = []
     monkeypatch.setattr(threading, "excepthook", lambda args: failures.append(args.exc_value))
-    path = write(tmp_path, SPIN_IN_A_THREAD.replace("WAIT", "time.sleep(0.05)"))
+    path = write(tmp_path, spin_in_a_thread(AVOIDER, "time.sleep(0.05)"))
     result = run([path], duration=1.0, sandbox=False)
     # the spinning thread stops at once with the reason; the main loop goes on
     [failure] = failures
