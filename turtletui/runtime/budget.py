@@ -22,7 +22,7 @@ CALLS = "calls"
 """...one that delivered service responses, requests, goal events or parameters."""
 
 
-@dataclass
+@dataclass(slots=True)
 class _Cost:
     exchanges: int
     seconds: float
@@ -30,7 +30,7 @@ class _Cost:
     last_ns: int
 
 
-@dataclass
+@dataclass(slots=True)
 class Pace:
     """Wall time a controller took to answer, against the simulated time it covered.
 

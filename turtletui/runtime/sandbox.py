@@ -387,12 +387,14 @@ class SandboxHost:
         except _Stop:
             return True
         if self._metering:
-            self._meter(cause, _perf_counter() - sent)
+            answered = _perf_counter()
+            self._meter(cause, answered - sent, answered)
         return True
 
-    def _meter(self, cause: Any, seconds: float) -> None:
-        """Charge one answer's wall time; stop a child that fell too far behind
-        real time, or a run over its wall-clock limit."""
+    def _meter(self, cause: Any, seconds: float, answered: float) -> None:
+        """Charge one answer's wall time (it came at ``answered``, perf_counter);
+        stop a child that fell too far behind real time, or a run over its
+        wall-clock limit."""
         pace = self._pace
         now = self.graph.now_ns
         behind = pace.charge(cause, seconds, now)
@@ -404,9 +406,9 @@ class SandboxHost:
             self._recheck = pace.busy + _RECHECK_SECONDS
         if limits.realtime_lag is not None and behind > limits.realtime_lag:
             self._fail("slow", pace.report(now))
-        elif limits.run_seconds is not None and _perf_counter() - self._wall_start > limits.run_seconds:
+        elif limits.run_seconds is not None and answered - self._wall_start > limits.run_seconds:
             why = limits.run_seconds_reason or f"the run's limit is {limits.run_seconds:g} s"
-            self._fail("time", f"ran out of time after {_perf_counter() - self._wall_start:.1f} s of wall time: {why}")
+            self._fail("time", f"ran out of time after {answered - self._wall_start:.1f} s of wall time: {why}")
 
     def _queued(self) -> float:
         """Seconds the child's threads and this process's have waited for a CPU."""
