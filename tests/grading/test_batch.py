@@ -7,10 +7,12 @@ from __future__ import annotations
 
 import gc
 import json
+import re
 import signal
 import time
 from pathlib import Path
 
+from support.controllers import spin_in_a_thread
 from support.grading import (
     CRASH_WITH_POSE,
     HIDDEN_NAME,
@@ -346,3 +348,107 @@ def test_failed_runs_can_be_kept_as_json_lines(tmp_path: Path, lesson: Path):
     assert ben.recordings == [str(store.recordings("ben") / "centre.jsonl")]
     header = json.loads(Path(ben.recordings[0]).read_text().splitlines()[0])
     assert header["scenario"] == "centre" and header["start"] == [5.5, 5.5, 0.0]
+
+
+# -- time limits, progress -------------------------------------------------------------
+
+# Blocks 12 ms of wall time per 16 ms pose (a socket's timeout is real): faster
+# than real time, so no run stops it as too slow, but a 3 s run takes 2.25 s.
+SLOWPOKE = HONEST.replace(
+    "    def on_pose(self, pose):\n",
+    "    def on_pose(self, pose):\n"
+    "        waiting, _ = __import__('socket').socketpair()\n"
+    "        waiting.settimeout(0.012)\n"
+    "        try:\n            waiting.recv(1)\n        except OSError:\n            pass\n",
+    1,
+)
+
+
+def test_a_submission_over_its_time_limit_is_stopped_and_says_why(tmp_path: Path, lesson: Path):
+    lesson.write_text(lesson.read_text().replace("hidden = true", "hidden = false"))  # to read what it says
+    klass = make_class(tmp_path / "class", {"slowpoke": SLOWPOKE})
+    told: list[tuple[str, str]] = []
+    report = grade_submissions(
+        plan_of(lesson),
+        find_submissions([klass]),
+        jobs=1,
+        time_limit=1.5,
+        on_progress=lambda student, text: told.append((student, text)),
+        progress_every=0.5,
+    )
+    [slowpoke] = report.submissions
+    first, second = ([t for t in slowpoke.tests if t.scenario == label] for label in ("centre", HIDDEN_NAME))
+    # its first run ran until the submission's 1.5 s were gone...
+    [no_crash] = [t for t in first if t.check == "no_crash"]
+    assert "ran out of time after 1." in no_crash.output
+    assert "s of wall time: the submission's runs may take 1.5 s of wall time in all (its time limit)" in no_crash.output
+    # ...and the second was not run at all
+    assert all(not t.passed for t in second)
+    assert all("not judged: the submission used up its time limit" in t.output for t in second)
+    assert "1.5 s allowed for all its runs" in second[0].output
+    assert slowpoke.score == 0.0
+    # while it was being graded, the grader said so
+    assert any(re.fullmatch(r"still grading: 0 of 2 runs done, [1-9]\d* s so far", text) for _, text in told), told
+    assert {student for student, _ in told} == {"slowpoke"}
+
+
+def test_a_lesson_sets_its_own_time_limit_and_the_grader_may_override_it(tmp_path: Path, lesson: Path):
+    text = lesson.read_text().replace('world = "empty"\n', 'world = "empty"\ntime_limit = 1.5\n', 1)
+    lesson.write_text(text)
+    assert load_lesson(lesson).time_limit == 1.5
+    klass = make_class(tmp_path / "class", {"slowpoke": SLOWPOKE})
+    [limited] = grade_submissions(plan_of(lesson), find_submissions([klass]), jobs=1).submissions
+    assert any("the submission's runs may take 1.5 s of wall time in all" in t.output for t in limited.tests)
+    assert limited.score == 0.0
+    [unlimited] = grade_submissions(plan_of(lesson), find_submissions([klass]), jobs=2, time_limit=60).submissions
+    assert unlimited.score == MAX_SCORE
+
+
+def test_a_time_limit_that_is_not_a_positive_number_is_a_one_line_error(tmp_path: Path, lesson: Path):
+    from support.grading import one_line_error
+
+    from turtletui.lessons.loader import LessonError
+
+    result = grade_cli(tmp_path, "--lesson", lesson, "--time-limit", "0")
+    assert "--time-limit must be a positive number of seconds, got 0" in one_line_error(result)
+    lesson.write_text(lesson.read_text().replace('world = "empty"\n', 'world = "empty"\ntime_limit = -5\n', 1))
+    try:
+        load_lesson(lesson)
+    except LessonError as err:
+        assert "field 'time_limit' must be a positive number of seconds, got -5" in str(err)
+        assert str(err).startswith(f"{lesson}") or "tiny_walls.md" in str(err)
+    else:
+        raise AssertionError("a negative time_limit was accepted")
+
+
+# A thread spins the node, main() drives from the latest pose: it heads for the
+# north wall and hits it (so its visible run fails and leaves a recording).
+THREADED = spin_in_a_thread(
+    """
+    cmd.linear.x = 3.0
+    if pose is not None:
+        cmd.angular.z = 1.0 * (1.5708 - pose.theta)
+    """,
+    rate=25,
+)
+
+
+def test_a_threaded_controller_gets_the_same_run_and_score_with_any_jobs(tmp_path: Path, lesson: Path):
+    """"rclpy.spin in a thread, control loop in main": the same trajectory bit
+    for bit and the same report on every grading, one job or two (five
+    gradings scored 4.0, 4.0, 4.0, 0.5 and 1.25 before, crashed at random)."""
+    klass = make_class(tmp_path / "class", {"threaded": THREADED, "honest": HONEST})
+    reports, recordings = [], []
+    for i, jobs in enumerate((1, 2, 2, 1)):
+        store = ResultStore(tmp_path / f"results{i}", store_key(plan_of(lesson)))
+        reports.append(
+            grade_submissions(plan_of(lesson), find_submissions([klass]), store=store, jobs=jobs, recording_format="jsonl")
+        )
+        [recording] = (tmp_path / f"results{i}" / "recordings" / "threaded").glob("*.jsonl")
+        recordings.append([line for line in recording.read_text().splitlines() if '"/turtle1/pose"' in line])
+    assert all(comparable(report) == comparable(reports[0]) for report in reports)
+    assert all(lines == recordings[0] for lines in recordings)
+    threaded = reports[0].submissions[1]
+    assert threaded.student == "threaded"
+    assert {t.check for t in threaded.tests if not t.passed} == {"wall_hits"}  # it ran, and hit the wall
+    assert len(recordings[0]) > 150

@@ -9,6 +9,7 @@ grader that is not root): what is checked is what that mode guarantees.
 from __future__ import annotations
 
 import json
+import time
 from pathlib import Path
 
 from support.grading import (
@@ -284,3 +285,62 @@ def test_a_fake_result_printed_or_written_does_not_reach_the_report(tmp_path: Pa
         "honest": 3.0, "prints_fake_result": 0.0, "writes_results": 2.0,
     }
     assert report["lesson"] == "hostile-drive" and report["max_score"] == 3.0
+
+
+SLOW_LESSON = LESSON.replace('id = "hostile-drive"', 'id = "slow-drive"').replace(
+    "duration = 3.0",
+    'duration = 20.0\n\n[[scenarios]]\nname = "corner"\nstart = {x = 8.8, y = 8.8, theta = 0.785}\nduration = 20.0',
+)
+
+
+def _slowed(code: str) -> str:
+    """The honest controller, with ``code`` at the start of every pose callback."""
+    return (
+        "import queue, select, threading, time\n"
+        + HONEST.replace("    def on_pose(self, pose):\n", f"    def on_pose(self, pose):\n        {code}\n", 1)
+    )
+
+
+SLOW = {
+    # 30 ms of CPU for a pose every 16 ms (1013 s of wall time and "out of memory" before)
+    "thirty_ms_of_cpu": _slowed("end = time.process_time() + 0.03\n        while time.process_time() < end: pass"),
+    # blocking waits: 31.6 s of wall time per simulated second, or 20 h a submission, before
+    "event_wait": _slowed("threading.Event().wait(0.5)"),
+    "select_wait": _slowed("select.select([], [], [], 1.9)"),
+    "queue_wait": _slowed("try:\n            queue.Queue().get(timeout=0.5)\n        except queue.Empty: pass"),
+    "busy_loop": _slowed("while True: pass"),
+}
+
+
+def test_slow_controllers_are_graded_in_minutes_with_verdicts_that_say_why(tmp_path: Path):
+    lesson = tmp_path / "slow.md"
+    lesson.write_text(SLOW_LESSON)
+    plan = prepare(load_lesson(lesson))
+    klass = make_class(tmp_path / "class", {"honest": HONEST, **SLOW})
+    started = time.monotonic()
+    report = grade_submissions(plan, find_submissions([klass]), jobs=2, limits=Limits())
+    took = time.monotonic() - started
+    by_name = {s.student: s for s in report.submissions}
+
+    def outputs(student: str, check: str) -> list[str]:
+        return [t.output for t in by_name[student].tests if t.check == check]
+
+    [alone] = grade_submissions(plan, find_submissions([klass / "honest"]), jobs=1).submissions
+    assert by_name["honest"].score == alone.score == plan.max_score
+
+    for text in outputs("thirty_ms_of_cpu", "no_crash"):
+        assert "could not keep up with real time" in text
+        assert "your on_pose takes" in text and "a message on /turtle1/pose arrives every 16 ms" in text
+        assert "on a real robot this node falls behind" in text
+
+    # a blocked callback blocks its node in simulated time, as on a robot: it
+    # runs to the end and is judged on what its turtle did
+    for student in ("event_wait", "select_wait", "queue_wait"):
+        assert all(t.passed for t in by_name[student].tests if t.check == "no_crash"), student
+
+    for text in outputs("busy_loop", "no_crash"):
+        assert "did not answer within 2 s of wall time" in text
+
+    # six submissions of two 20 s runs: minutes at most, even on a busy machine
+    assert took < 300, f"the batch took {took:.0f} s"
+    assert wait_until_gone([klass]) == []

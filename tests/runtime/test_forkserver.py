@@ -118,13 +118,17 @@ SERVER_MARK = "turtletui.runtime.forkserver import serve"
 
 
 def _servers_of(parent: int) -> set[int]:
-    """Fork servers the process ``parent`` started (their command lines say so)."""
+    """Fork servers the process ``parent`` started (their command lines say so),
+    not counting killed ones its subreaper has not reaped yet."""
     found = set()
     for entry in os.listdir("/proc"):
         if entry.isdigit():
             try:
                 with open(f"/proc/{entry}/stat", "rb") as f:
-                    ppid = int(f.read().rpartition(b")")[2].split()[1])
+                    state, ppid = f.read().rpartition(b")")[2].split()[:2]
+                if state in (b"Z", b"X"):
+                    continue
+                ppid = int(ppid)
                 with open(f"/proc/{entry}/cmdline", "rb") as f:
                     command = f.read().decode(errors="replace")
             except (OSError, ValueError, IndexError):

@@ -21,6 +21,7 @@ import tracemalloc
 from pathlib import Path
 
 import pytest
+from support.controllers import WALL_TIME
 
 from turtletui.api import RunResult, run
 from turtletui.runtime import forkserver
@@ -34,7 +35,7 @@ CRASH_TICK = 5
 """The timer tick (0.1 s apart) at which the controllers below misbehave."""
 CRASH_T = CRASH_TICK * 0.1
 
-PRELUDE = f"""\
+PRELUDE = WALL_TIME + f"""\
 import os, signal, subprocess, sys, threading, time
 import rclpy
 from rclpy.node import Node
@@ -296,7 +297,7 @@ def test_multi_line_message_gives_a_one_line_summary(tmp_path: Path) -> None:
         """,
         """
         def misbehave(node):
-            threading.Event().wait(10)  # blocks in wall time (time.sleep is simulated)
+            block(10)
         """,
     ],
     ids=["endless-loop", "blocking-wait"],
@@ -489,10 +490,15 @@ def test_print_flood_is_truncated(tmp_path: Path) -> None:
     lines = stdout_lines(result)
     assert len(lines) == 500
     assert lines[0] == "spam line 0" and lines[-1] == "spam line 499"
-    notices = [r.msg for r in result.logs if "output truncated" in r.msg]
-    assert len(notices) == 1 and str(path) in notices[0]
+    notices = [r.msg for r in result.logs if "output over its budget" in r.msg]
+    assert len(notices) == 1 and str(path) in notices[0] and "500 lines per run" in notices[0]
     # The controller either went on (its next log arrives) or was stopped with a report.
     assert result.crashes or any(r.msg == "still here" for r in result.logs)
+    # one line at the end says how much was not shown
+    [dropped] = [r.msg for r in result.logs if "of output dropped" in r.msg]
+    assert str(path) in dropped
+    if not result.crashes:
+        assert "(199,500 lines over its budget" in dropped
     assert peak < 20 * 1024**2, f"the parent held {peak / 1024**2:.0f} MiB for 200k lines of output"
     assert_gone(read_pid(tmp_path))
 
@@ -506,7 +512,8 @@ def test_print_without_newlines_is_bounded(tmp_path: Path) -> None:
     result = go(path, output_lines=50)
     lines = stdout_lines(result)
     assert 0 < len(lines) <= 50
-    assert all(len(line) <= 4096 for line in lines)
+    assert all(len(line) <= 1000 + len(" [... cut]") for line in lines)
+    assert all(line.endswith(" [... cut]") for line in lines)
     assert_gone(read_pid(tmp_path))
 
 
@@ -529,8 +536,10 @@ def test_log_flood_is_capped(tmp_path: Path, cap: int | None) -> None:
     own = [r for r in result.logs if r.node == "driver"]
     assert len(own) == cap
     assert own[0].msg == "log line 0" and own[-1].msg == f"log line {cap - 1}"
-    notices = [r.msg for r in result.logs if "log lines" in r.msg and r.node == "turtletui"]
+    notices = [r.msg for r in result.logs if "log over its budget" in r.msg and r.node == "turtletui"]
     assert len(notices) == 1 and str(path) in notices[0]
+    [dropped] = [r.msg for r in result.logs if "log messages over its budget dropped" in r.msg]
+    assert f"{100_000 - cap:,} log messages" in dropped or cap == Limits().log_lines
     assert len(result.logs) < cap + 100
     assert result.crashes == [] and "still here" in stdout_lines(result)
     assert peak < 40 * 1024**2, f"the parent held {peak / 1024**2:.0f} MiB for a log flood"
@@ -758,7 +767,7 @@ def misbehave(node):
     # Write a reply of one's own on the pipe to turtletui, then keep quiet:
     # the parent acts on the forged frame (not on a timeout).
     os.write(context.current_host().fd_out, FRAME)
-    threading.Event().wait(30)
+    block(30)
 """
 
 
@@ -830,7 +839,7 @@ def test_forged_reply_then_not_reading(tmp_path: Path) -> None:
 
         def forge_and_hang():
             os.write(context.current_host().fd_out, struct.pack(">I", 2) + b"{}")
-            threading.Event().wait(30)
+            block(30)
 
         def misbehave(node):
             for _ in range(3000):

@@ -147,11 +147,15 @@ SYNTAX_ERROR = "def main(:\n    pass\n"
 def sleeper(seconds: float) -> str:
     """A controller that passes and takes ``seconds`` of wall time on its first
     pose (inside the step timeout): makes a batch slow enough to interrupt.
-    (time.sleep is simulated time in the sandbox; select waits in wall time.)"""
+    (Sleeps and waits are simulated time in the sandbox; a socket's timeout
+    is wall time.)"""
     return HONEST.replace(
         "    def on_pose(self, pose):\n",
         f"    def on_pose(self, pose):\n        if not hasattr(self, 'slept'):\n"
-        f"            self.slept = True\n            __import__('select').select([], [], [], {seconds})\n",
+        f"            self.slept = True\n"
+        f"            waiting, _ = __import__('socket').socketpair()\n"
+        f"            waiting.settimeout({seconds})\n"
+        f"            try:\n                waiting.recv(1)\n            except OSError:\n                pass\n",
         1,
     )
 

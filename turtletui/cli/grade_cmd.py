@@ -59,6 +59,12 @@ def grade(
         help="How failed runs are kept for turtletui replay: mcap (also opens in Foxglove,"
         " PlotJuggler and ros2 bag) or jsonl (JSON Lines).",
     ),
+    time_limit: float = typer.Option(
+        None,
+        "--time-limit",
+        metavar="SECONDS",
+        help="Wall-clock seconds all the runs of one submission may take (default: the lesson's, else 300).",
+    ),
     quiet: bool = typer.Option(False, "--quiet", "-q", help="No progress lines on stderr."),
     same_user: bool = typer.Option(
         False,
@@ -97,6 +103,8 @@ def grade(
         fail("--format canvas needs --roster EXPORT.csv: the gradebook exported from Canvas")
     if roster is not None and fmt not in ROSTER_FORMATS:
         fail(f"--roster is for --format {' or '.join(ROSTER_FORMATS)}, not {fmt}")
+    if time_limit is not None and not time_limit > 0:
+        fail(f"--time-limit must be a positive number of seconds, got {time_limit:g}")
     try:
         options = ReportOptions(roster=_roster(roster), hidden=hidden_tests)
         _check_output(output)
@@ -113,6 +121,7 @@ def grade(
             same_user,
             recording_format,
             executable,
+            time_limit,
         )
         _write(report, fmt, output, options)
     except KeyboardInterrupt:
@@ -137,7 +146,19 @@ def _roster(path: Path | None):
 
 
 def _grade(
-    submissions, lesson_id, fmt, results, jobs, force, folders, plugins, quiet, same_user, recording_format, executable
+    submissions,
+    lesson_id,
+    fmt,
+    results,
+    jobs,
+    force,
+    folders,
+    plugins,
+    quiet,
+    same_user,
+    recording_format,
+    executable,
+    time_limit,
 ):
     from dataclasses import replace
 
@@ -175,7 +196,7 @@ def _grade(
     named = [checkout_of(path) for path in submissions if path.is_file() or path in {s.path for s in found}]
     store = ResultStore(
         results or Path("turtletui-grades") / lesson.id,
-        store_key(plan, plugins=plugins, limits=limits),
+        store_key(plan, plugins=plugins, limits=(limits, time_limit)),  # a new --time-limit grades again
         untrusted=[*named, *(s.path for s in found)],
     )
     copies = None
@@ -199,6 +220,9 @@ def _grade(
             status += " (kept from an earlier run)" if reused else f" in {result.execution_time:.1f} s"
         sys.stderr.write(f"[{finished}/{total}] {result.student}: {status}\n")
 
+    def slow(student: str, text: str) -> None:
+        sys.stderr.write(f"[{finished}/{total}] {student}: {text}\n")
+
     try:
         return grade_submissions(
             plan,
@@ -211,6 +235,8 @@ def _grade(
             on_result=progress,
             workdir=copies,
             recording_format=recording_format,
+            time_limit=time_limit,
+            on_progress=None if quiet else slow,
         )
     finally:
         if copies is not None:

@@ -62,6 +62,10 @@ def current_host() -> Host:
 class Context:
     """Shared state of the nodes of one program, as ``rclpy.context.Context``."""
 
+    inits = 0
+    """How many contexts were initialised in this process (rclpy.init calls):
+    tells the loader whether a file's top-level code started ROS itself."""
+
     def __init__(self) -> None:
         self._host: Host | None = None
         self._ok = False
@@ -81,6 +85,7 @@ class Context:
         import sys
 
         self._host = current_host()
+        Context.inits += 1
         self.ros_args = parse_ros_args(sys.argv if args is None else list(args))
         self._ok = True
 

@@ -15,11 +15,13 @@ import multiprocessing
 import os
 import signal
 import sys
+import threading
 import time
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
 from concurrent.futures.process import BrokenProcessPool
-from dataclasses import dataclass, field
+from contextlib import contextmanager
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -39,12 +41,25 @@ from turtletui.runtime import forkserver, wire
 from turtletui.runtime.loader import ControllerError, ControllerSpec, check_source
 from turtletui.runtime.sandbox import Limits
 
+DEFAULT_TIME_LIMIT = 300.0
+"""Wall-clock seconds all the runs of one submission may take together, unless
+the lesson (``time_limit``) or the grader (``--time-limit``) says otherwise.
+An honest controller needs a few seconds; a run of each scenario may besides
+take at most its own simulated duration."""
+PROGRESS_EVERY = 10.0
+"""Seconds between progress lines about a submission still being graded."""
+
 
 @dataclass
 class _Pending:
     submission: Submission
     outcomes: list[RunOutcome] = field(default_factory=list)
     seconds: float = 0.0
+    """Wall seconds its finished runs took (what its time limit counts)."""
+    started: float | None = None
+    """When its first run started (time.monotonic), for progress lines."""
+    reported: float = 0.0
+    """When a progress line last spoke of it."""
 
 
 # -- worker side ------------------------------------------------------------------
@@ -126,17 +141,20 @@ def _run_task(
     recordings: str | None,
     recording_format: str,
     function: str | None = None,
+    run_seconds: float | None = None,
+    why: str = "",
 ) -> tuple[str, RunOutcome, float]:
     global _in_task
     assert _worker_plan is not None
     started = time.perf_counter()
+    limits = replace(_worker_limits or Limits(), run_seconds=run_seconds, run_seconds_reason=why)
     _in_task = True
     try:
         outcome = grade_run(
             _worker_plan,
             run_index,
             [ControllerSpec(name=Path(controller).stem, path=Path(controller), function=function)],
-            limits=_worker_limits,
+            limits=limits,
             recordings=Path(recordings) if recordings else None,
             recording_format=recording_format,
         )
@@ -163,6 +181,9 @@ def grade_submissions(
     workdir: Callable[[Submission], Submission] | None = None,
     recording_format: str = "mcap",
     on_run: Callable[[str, RunOutcome], None] | None = None,
+    time_limit: float | None = None,
+    on_progress: Callable[[str, str], None] | None = None,
+    progress_every: float = PROGRESS_EVERY,
 ) -> GradeReport:
     """Grade every submission (reusing stored results unless ``force``).
 
@@ -171,8 +192,12 @@ def grade_submissions(
     ``on_result(result, reused)`` is called as each submission's result is known,
     ``on_run(student, outcome)`` as each scenario run finishes (for progress).
     ``workdir`` may map a submission to a private copy to run (see integrity).
-    KeyboardInterrupt propagates after the workers are stopped; every result
-    finished before it is already saved.
+    ``time_limit``: wall seconds all the runs of one submission may take
+    (default: the lesson's ``time_limit``, else :data:`DEFAULT_TIME_LIMIT`);
+    each run besides may take its simulated duration. ``on_progress(student,
+    text)`` is told every ``progress_every`` seconds about a submission still
+    being graded. KeyboardInterrupt propagates after the workers are stopped;
+    every result finished before it is already saved.
     """
     results: dict[str, SubmissionResult] = {}
     pending: dict[str, _Pending] = {}
@@ -211,6 +236,19 @@ def grade_submissions(
             )
             _finish(store, original, result, results, on_result)
 
+    limit = time_limit if time_limit is not None else plan.lesson.time_limit or DEFAULT_TIME_LIMIT
+    clock = _SubmissionClock(plan, pending, limit, on_progress, progress_every)
+
+    def start(task: tuple[Any, ...]) -> tuple[Any, ...] | None:
+        """``task`` with the wall time its run may take, or None (then judged
+        at once) when its submission has used up its time."""
+        student, index = task[0], task[2]
+        allowed = clock.allowed(student, index)
+        if allowed is None:
+            done(student, failed_run(plan, index, clock.spent(student)), 0.0)
+            return None
+        return (*task, *allowed)
+
     tasks = [
         (
             student,
@@ -232,11 +270,13 @@ def grade_submissions(
         if jobs <= 1 or len(tasks) <= 1:
             global _worker_plan, _worker_limits
             _worker_plan, _worker_limits = plan, limits
-            with forkserver.serving():
+            with forkserver.serving(), clock.ticking():
                 for task in tasks:
-                    done(*_run_task(*task))
+                    started = start(task)
+                    if started is not None:
+                        done(*_run_task(*started))
         else:
-            _run_parallel(plan, tasks, jobs, limits, plugins, done)
+            _run_parallel(plan, tasks, jobs, limits, plugins, start, done, clock.tick)
     finally:
         if not frozen_before:  # a caller's own frozen heap (the app freezes its start-up) stays so
             gc.unfreeze()
@@ -245,6 +285,84 @@ def grade_submissions(
     order = {s.student: i for i, s in enumerate(submissions)}
     ordered = sorted(results.values(), key=lambda r: order[r.student])
     return GradeReport(lesson=plan.lesson.id, submissions=ordered, max_score=round(plan.max_score, 6))
+
+
+class _SubmissionClock:
+    """Each submission's time limit (how long each of its runs may take) and
+    progress lines about submissions that are slow to grade."""
+
+    def __init__(
+        self,
+        plan: GradingPlan,
+        pending: dict[str, _Pending],
+        limit: float,
+        on_progress: Callable[[str, str], None] | None,
+        every: float,
+    ) -> None:
+        self.plan = plan
+        self.pending = pending
+        self.limit = limit
+        self.on_progress = on_progress
+        self.every = every
+
+    def allowed(self, student: str, index: int) -> tuple[float, str] | None:
+        """Wall seconds run ``index`` of ``student`` may take and why that
+        much; None if the submission has none left."""
+        item = self.pending[student]
+        if item.started is None:
+            item.started = item.reported = time.monotonic()
+        left = self.limit - item.seconds
+        if left <= 0:
+            return None
+        duration = self.plan.runs[index].scenario.duration
+        if left < duration:
+            return left, f"the submission's runs may take {self.limit:g} s of wall time in all (its time limit)"
+        return duration, f"a run may take its simulated duration ({duration:g} s) in wall time"
+
+    def spent(self, student: str) -> str:
+        """Why a run of ``student`` was not run."""
+        used = self.pending[student].seconds
+        return (
+            f"not judged: the submission used up its time limit ({used:.0f} s of wall time, "
+            f"{self.limit:g} s allowed for all its runs; slow code is stopped)"
+        )
+
+    def tick(self) -> None:
+        """Tell of each submission under way for :attr:`every` seconds since
+        it started or was last told of."""
+        if self.on_progress is None:
+            return
+        now = time.monotonic()
+        total = len(self.plan.runs)
+        for student, item in self.pending.items():
+            if item.started is None or len(item.outcomes) == total or now - item.reported < self.every:
+                continue
+            item.reported = now
+            self.on_progress(
+                student,
+                f"still grading: {len(item.outcomes)} of {total} runs done, {now - item.started:.0f} s so far",
+            )
+
+    @contextmanager
+    def ticking(self) -> Iterator[None]:
+        """:meth:`tick` every second from a thread of its own while the block
+        runs the submissions here (no worker processes are forked meanwhile)."""
+        if self.on_progress is None:
+            yield
+            return
+        stop = threading.Event()
+
+        def loop() -> None:
+            while not stop.wait(1.0):
+                self.tick()
+
+        ticker = threading.Thread(target=loop, name="turtletui-progress", daemon=True)
+        ticker.start()
+        try:
+            yield
+        finally:
+            stop.set()
+            ticker.join()
 
 
 def _finish(
@@ -268,7 +386,9 @@ def _run_parallel(
     jobs: int,
     limits: Limits | None,
     plugins: Sequence[str | Path],
+    start: Callable[[tuple[Any, ...]], tuple[Any, ...] | None],
     done: Callable[[str, RunOutcome, float], None],
+    tick: Callable[[], None],
 ) -> None:
     # a few tasks queued per worker: results come back in order of the
     # submissions, so early students are saved early
@@ -277,8 +397,8 @@ def _run_parallel(
         # A controller may kill the worker running it (its parent): that breaks
         # the pool. The runs under way then are run again one at a time, alone,
         # so that only the one that kills its worker again is failed for it.
-        for task in _run_pool(plan, queue, jobs, limits, plugins, done):
-            if _run_pool(plan, [task], 1, limits, plugins, done):
+        for task in _run_pool(plan, queue, jobs, limits, plugins, start, done, tick):
+            if _run_pool(plan, [task], 1, limits, plugins, start, done, tick):
                 lost = failed_run(plan, task[2], "not judged: the process grading this run was killed (by the controller?)")
                 done(task[0], lost, 0.0)
 
@@ -289,11 +409,15 @@ def _run_pool(
     jobs: int,
     limits: Limits | None,
     plugins: Sequence[str | Path],
+    start: Callable[[tuple[Any, ...]], tuple[Any, ...] | None],
     done: Callable[[str, RunOutcome, float], None],
+    tick: Callable[[], None],
 ) -> list[tuple[Any, ...]]:
-    """Run the tasks of ``queue`` (taken from its end) in a pool of workers.
-    Returns the tasks that were under way when a worker died (the pool is
-    broken then, and the tasks not started yet stay in ``queue``)."""
+    """Run the tasks of ``queue`` (taken from its end) in a pool of workers:
+    ``start(task)`` gives a task's arguments (or None: it is not run), ``tick()``
+    is called about once a second. Returns the tasks that were under way when
+    a worker died (the pool is broken then, and the tasks not started yet stay
+    in ``queue``)."""
     global _worker_plan
     # fork: workers start at once with the plan already prepared
     methods = multiprocessing.get_all_start_methods()
@@ -315,13 +439,19 @@ def _run_pool(
         while (queue or running) and not broken:
             while queue and len(running) < 2 * jobs:
                 task = queue.pop()
+                started = start(task)
+                if started is None:
+                    continue
                 try:
-                    running[executor.submit(_run_task, *task)] = task
+                    running[executor.submit(_run_task, *started)] = task
                 except BrokenProcessPool:
                     queue.append(task)
                     broken = True
                     break
-            finished, _ = wait(running, return_when=FIRST_COMPLETED)
+            if not running:
+                continue
+            finished, _ = wait(running, timeout=1.0, return_when=FIRST_COMPLETED)
+            tick()
             for future in finished:
                 task = running.pop(future)
                 try:

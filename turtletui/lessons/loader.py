@@ -38,6 +38,7 @@ LESSON_FIELDS = (
     "executable",
     "reference",
     "world",
+    "time_limit",
     "scenarios",
     "checks",
     "overlays",
@@ -222,6 +223,13 @@ class _Validator:
         executable = self._optional_text(data, "executable", top)
         reference = self._optional_text(data, "reference", top)
         world = self._optional_text(data, "world", top) or "empty"
+        time_limit = data.get("time_limit")
+        if time_limit is not None and not (_is_number(time_limit) and time_limit > 0):
+            raise self._error(
+                f"field 'time_limit' must be a positive number of seconds, got {_show(time_limit)}",
+                "time_limit",
+                top,
+            )
         scenarios = tuple(
             self._scenario(i, item) for i, item in enumerate(self._tables(data, "scenarios", top))
         )
@@ -265,6 +273,7 @@ class _Validator:
             executable=executable,
             reference=reference,
             world=world,
+            time_limit=None if time_limit is None else float(time_limit),
             scenarios=scenarios,
             checks=checks,
             overlays=overlays,

@@ -90,6 +90,9 @@ class Lesson:
     reference: str | None = None
     """Name of a registered controller that solves the lesson."""
     world: str = "empty"
+    time_limit: float | None = None
+    """Wall-clock seconds all the runs of one submission may take together
+    when graded; None: turtletui's default (turtletui.grading.batch)."""
     scenarios: tuple[Scenario, ...] = ()
     checks: tuple[CheckSpec, ...] = ()
     overlays: tuple[ArenaOverlay, ...] = ()

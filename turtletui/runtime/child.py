@@ -18,6 +18,8 @@ import random
 import sys
 import traceback
 from collections.abc import Callable
+from select import select as _select
+from time import monotonic as _monotonic
 from typing import Any
 
 from turtletui.graph.core import Graph, NodeRecord, Publisher, Subscription, Topic
@@ -25,6 +27,7 @@ from turtletui.graph.logs import WARN, LogRecord
 from turtletui.interfaces import get_interface, interface_name, to_values, trusted_from_values
 from turtletui.runtime import wire
 from turtletui.runtime.host import CallbackTracking
+from turtletui.runtime.scheduler import Scheduler
 
 OWNER = "child"
 """Immutable types whose very same objects always serialise the same way."""
@@ -59,6 +62,8 @@ class ChildGraph(Graph):
                 out[key] = value
         for key in out:
             self.out[key] = []
+        if self.logs_dropped:
+            out["logs_dropped"] = self.logs_dropped
         return out
 
     # -- declarations --------------------------------------------------------
@@ -88,8 +93,15 @@ class ChildGraph(Graph):
         sub = super().add_subscription(node, name, msg_type, depth, callback)
         sub.wire_id = next(self._ids)
         self._subs[sub.wire_id] = sub
-        self.out["decl"].append(["sub", sub.wire_id, node.wire_id, name, sub.topic.type_name, depth])
+        label = getattr(callback, "label", "")
+        self.out["decl"].append(["sub", sub.wire_id, node.wire_id, name, sub.topic.type_name, depth, label])
         return sub
+
+    def add_timer(self, node: NodeRecord, period_ns: int, callback: Callable[[], None]) -> Any:
+        timer = super().add_timer(node, period_ns, callback)
+        # named in the parent's report of a controller too slow for its timer
+        self.out["decl"].append(["timer", node.wire_id, period_ns, getattr(callback, "label", "")])
+        return timer
 
     def remove_endpoint(self, endpoint: Publisher | Subscription) -> None:
         super().remove_endpoint(endpoint)
@@ -153,10 +165,15 @@ class ChildGraph(Graph):
     """Log records still worth sending: the parent keeps only Limits.log_lines
     (and notices one more), so a log flood costs no more than that."""
 
+    logs_dropped = 0
+    """Log records not sent for being over the budget (the parent says how many)."""
+
     def log(self, node: str, level: int, msg: str) -> LogRecord:
         if self.log_budget > 0:
             self.log_budget -= 1
             self.out["log"].append([level, node, msg])
+        else:
+            self.logs_dropped += 1
         return LogRecord(self.epoch_ns + self.now_ns, self.now_ns / 1e9, level, node, msg)
 
     # -- what the parent sent ---------------------------------------------------------
@@ -221,7 +238,12 @@ class ChildGraph(Graph):
 
 
 class ChildHost(CallbackTracking):
-    """The compat Host inside the sandbox: waiting means asking the parent."""
+    """The compat Host inside the sandbox: waiting means asking the parent.
+
+    The controller's threads take turns (turtletui.runtime.scheduler): a
+    thread that waits lets the others run, and when none can, the exchange
+    with the parent moves simulated time on.
+    """
 
     owner = OWNER
 
@@ -230,11 +252,17 @@ class ChildHost(CallbackTracking):
         self.fd_in = fd_in
         self.fd_out = fd_out
         self.running = True
+        self.scheduler = Scheduler(graph, self.exchange, lambda: self.running)
 
     def spin(self, stop: Callable[[], bool]) -> None:
         """Run every callback as it becomes ready until ``stop()`` or the end."""
         graph = self.graph
         ready = graph.ready
+        scheduler = self.scheduler
+
+        def work() -> bool:
+            return bool(ready) or stop()
+
         while self.running:
             while ready:
                 ready.popleft()[1]()
@@ -242,7 +270,10 @@ class ChildHost(CallbackTracking):
                     return
             if stop():
                 return
-            self.exchange(graph.next_due())
+            if scheduler.alone():
+                self.exchange(graph.next_due())  # what wait() does then, on the hottest path
+            else:
+                scheduler.wait(work, None, spinning=True)
 
     def exchange(self, wake_ns: int | None, **extra: Any) -> None:
         """Report to the parent and wait for the next instant it gives us."""
@@ -261,41 +292,41 @@ class ChildHost(CallbackTracking):
             pass
         graph.now_ns = now
 
-    def _wake(self, deadline: int | None) -> int | None:
-        due = self.graph.next_due()
-        if deadline is None:
-            return due
-        return deadline if due is None else min(due, deadline)
-
     def spin_once(self, timeout_ns: int | None) -> bool:
-        graph = self.graph
-        deadline = None if timeout_ns is None else graph.now_ns + max(timeout_ns, 0)
-        while self.running:
-            if graph.ready:
-                graph.ready.popleft()[1]()
-                return True
-            if deadline is not None and graph.now_ns >= deadline and timeout_ns:
-                return False
-            self.exchange(self._wake(deadline))
-            if timeout_ns == 0 and not graph.ready:
-                return False
+        ready = self.graph.ready
+        if not ready and self.running:
+            if timeout_ns == 0:
+                self.scheduler.poll()
+            else:
+                deadline = None if timeout_ns is None else self.graph.now_ns + max(timeout_ns, 0)
+                self.scheduler.wait(lambda: bool(ready), deadline, spinning=True)
+        if ready and self.running:
+            ready.popleft()[1]()
+            return True
         return False
 
     def spin_until(self, done: Callable[[], bool], timeout_ns: int | None, *, callbacks: bool = True) -> bool:
         graph = self.graph
+        ready = graph.ready
         deadline = None if timeout_ns is None else graph.now_ns + max(timeout_ns, 0)
+
+        def go_on() -> bool:
+            return done() or (callbacks and bool(ready))
+
         while not done():
             if not self.running or (deadline is not None and graph.now_ns >= deadline):
                 return False
-            if callbacks and graph.ready:
-                graph.ready.popleft()[1]()
+            if callbacks and ready:
+                ready.popleft()[1]()
                 continue
-            self.exchange(self._wake(deadline) if callbacks else deadline)
+            self.scheduler.wait(go_on, deadline, spinning=callbacks)
         return True
 
     def sleep_until(self, t_ns: int) -> bool:
-        while self.running and self.graph.now_ns < t_ns:
-            self.exchange(t_ns)
+        if self.graph.now_ns < t_ns:
+            self.scheduler.wait(None, t_ns)  # after the run: passes at once
+        elif self.running:
+            self.scheduler.pause()  # time.sleep(0): let the other threads run
         return self.running
 
 
@@ -316,20 +347,26 @@ def _address_space() -> int:
         return 0
 
 
+CPU_GRACE_SECONDS = 5
+"""The hard CPU limit is this much above the soft one: SIGXCPU at the soft
+limit ends the child (and says why), SIGKILL at the hard one if it is ignored."""
+
+
 def _apply_limits(limits: dict[str, int]) -> None:
     import resource
 
-    for name, value in (
-        ("RLIMIT_CPU", limits.get("cpu_seconds")),
-        ("RLIMIT_AS", limits.get("memory_bytes")),
-        ("RLIMIT_FSIZE", limits.get("file_bytes")),
-        ("RLIMIT_CORE", 0),
+    cpu = limits.get("cpu_seconds")
+    for name, value, grace in (
+        ("RLIMIT_CPU", cpu, CPU_GRACE_SECONDS),
+        ("RLIMIT_AS", limits.get("memory_bytes"), 0),
+        ("RLIMIT_FSIZE", limits.get("file_bytes"), 0),
+        ("RLIMIT_CORE", 0, 0),
     ):
         if value is None or not hasattr(resource, name):
             continue
         kind = getattr(resource, name)
         soft, hard = resource.getrlimit(kind)
-        new_hard = value if hard == resource.RLIM_INFINITY else min(value, hard)
+        new_hard = value + grace if hard == resource.RLIM_INFINITY else min(value + grace, hard)
         try:
             resource.setrlimit(kind, (min(value, new_hard), new_hard))
         except (ValueError, OSError):
@@ -352,13 +389,10 @@ def _become_subreaper() -> None:
 def _wait_to_be_ended(fd_in: int, seconds: float = 10.0) -> None:
     """After the last report: stay alive until the parent has killed everything
     this process started (it ends us with them), or it went away."""
-    import select
-    import time
-
-    deadline = time.monotonic() + seconds
-    while (remaining := deadline - time.monotonic()) > 0:
+    deadline = _monotonic() + seconds
+    while (remaining := deadline - _monotonic()) > 0:
         try:
-            readable, _, _ = select.select([fd_in], [], [], remaining)
+            readable, _, _ = _select([fd_in], [], [], remaining)
             if readable and not os.read(fd_in, 65536):
                 return
         except BlockingIOError:
@@ -379,17 +413,16 @@ def main(config: dict[str, Any] | None = None) -> None:
     _apply_limits(config.get("limits", {}))
     from turtletui import compat
     from turtletui.compat import context as compat_context
+    from turtletui.runtime import scheduler, virtual_time
     from turtletui.runtime.loader import (
         ControllerError,
         ControllerSpec,
-        entry_point,
-        load_module,
         resolve_factory,
+        run_controller,
         seed_numpy,
         spin_nodes,
         user_frames,
     )
-    from turtletui.runtime.virtual_time import install_simulated_sleep
 
     compat.install()
     graph = ChildGraph()
@@ -400,11 +433,16 @@ def main(config: dict[str, Any] | None = None) -> None:
     host = ChildHost(graph, fd_in, fd_out)
     compat_context.reset_default_context()
     compat_context.bind_host(host)
-    install_simulated_sleep(host)
+    scheduler.install(host.scheduler)
+    virtual_time.install_simulated_sleep(host)
+    virtual_time.install_simulated_select(host)
+    if not config.get("realtime"):
+        virtual_time.patch_clocks(graph, host.scheduler.clock_read)
     spec = ControllerSpec(
         name=config["name"],
         path=None if config.get("path") is None else __import__("pathlib").Path(config["path"]),
         module=config.get("module"),
+        function=config.get("function"),
     )
     sys.argv = [spec.label, *config.get("ros_args", [])]
     random.seed(config.get("seed", 0))
@@ -420,9 +458,9 @@ def main(config: dict[str, Any] | None = None) -> None:
             seed_numpy(config.get("seed", 0))
             spin_nodes(list(factory()))
         else:
-            module = load_module(spec)
             seed_numpy(config.get("seed", 0))
-            entry_point(module, spec.label, config.get("function"))()
+            run_controller(spec)
+        host.scheduler.join_threads()  # as Python does before it exits
     except ControllerError as err:
         crash = {"kind": "load", "message": str(err), "frames": []}
     except SystemExit as exc:

@@ -55,9 +55,14 @@ def serve(sock_fd: int) -> None:
     """The server's loop: one request (a JSON config and three descriptors:
     the child's input, its answers, its output) forks one run child."""
     # What every run would import: done once, before the first fork.
+    import datetime  # noqa: F401  (the child's simulated clocks and waits patch these)
+    import queue  # noqa: F401
+    import selectors  # noqa: F401
+
     import turtletui.compat  # noqa: F401
     import turtletui.compat.context  # noqa: F401
     import turtletui.runtime.loader  # noqa: F401
+    import turtletui.runtime.scheduler  # noqa: F401
     import turtletui.runtime.virtual_time  # noqa: F401
     from turtletui.runtime import child
 

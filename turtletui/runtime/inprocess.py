@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import random
 import sys
-import time
+import threading
 from collections.abc import Callable
 
 from turtletui import compat
@@ -19,13 +19,13 @@ from turtletui.runtime.host import CallbackTracking
 from turtletui.runtime.loader import (
     ControllerError,
     ControllerSpec,
-    entry_point,
-    load_module,
+    run_controller,
     seed_numpy,
 )
 from turtletui.runtime.report import CrashReport, crash_from_exception, stop_turtles
+from turtletui.runtime.scheduler import CLOCK_READS_PER_STEP, CLOCK_STEP_NS
 from turtletui.runtime.simulation import MAX_ROUNDS_PER_INSTANT, Simulation
-from turtletui.runtime.virtual_time import simulated_sleep
+from turtletui.runtime.virtual_time import simulated_time
 
 
 class InProcessHost(CallbackTracking):
@@ -39,6 +39,28 @@ class InProcessHost(CallbackTracking):
         self._ended = False
         self._instant = -1
         self._rounds = 0
+        self._reads_instant = -1
+        self._reads = 0
+        self._thread = threading.get_ident()
+
+    def _one_thread(self) -> None:
+        """Only the thread that runs the controller may wait here: threads that
+        take turns need a process of their own (the sandbox)."""
+        if threading.get_ident() != self._thread:
+            raise RuntimeError(
+                "a controller run in-process can spin and sleep on its main thread only; "
+                "run it sandboxed (without --in-process) to use threads"
+            )
+
+    def clock_read(self) -> None:
+        """A reading of a simulated clock: every CLOCK_READS_PER_STEP at one
+        instant let CLOCK_STEP_NS pass (turtletui.runtime.scheduler)."""
+        now = self.graph.now_ns
+        if now != self._reads_instant:
+            self._reads_instant, self._reads = now, 0
+        self._reads += 1
+        if self._reads >= CLOCK_READS_PER_STEP:
+            self.sleep_until(now + CLOCK_STEP_NS)
 
     @property
     def running(self) -> bool:
@@ -46,6 +68,7 @@ class InProcessHost(CallbackTracking):
 
     def spin(self, stop: Callable[[], bool]) -> None:
         """Run every callback as it becomes ready until ``stop()`` or the end."""
+        self._one_thread()
         if not self._ended:
             self.sim.pump(None, self.end_ns, until=stop)
             self._check_end()
@@ -60,6 +83,7 @@ class InProcessHost(CallbackTracking):
             self._ended = True
 
     def spin_once(self, timeout_ns: int | None) -> bool:
+        self._one_thread()
         if self._ended:
             return False
         outcome = self.sim.pump(self.owner, self.end_ns if timeout_ns is None else self._limit(timeout_ns))
@@ -68,6 +92,7 @@ class InProcessHost(CallbackTracking):
         return outcome == "own" or not self._ended
 
     def spin_until(self, done: Callable[[], bool], timeout_ns: int | None, *, callbacks: bool = True) -> bool:
+        self._one_thread()
         now = self.graph.now_ns
         if now != self._instant:
             self._instant, self._rounds = now, 0
@@ -87,6 +112,7 @@ class InProcessHost(CallbackTracking):
         return True
 
     def sleep_until(self, t_ns: int) -> bool:
+        self._one_thread()
         if not self._ended:
             self.sim.pump(self.owner, min(t_ns, self.end_ns), run_own=False)
             self._check_end()
@@ -107,18 +133,16 @@ def run_in_process(
     sys.argv = [spec.label, *ros_args]
     random.seed(seed)
     crash = None
-    started = time.perf_counter()
     try:
         if spec.factory is not None:
             from turtletui.runtime.loader import spin_nodes
 
-            with simulated_sleep(host):
+            with simulated_time(host, clocks=not sim.realtime):
                 spin_nodes(list(spec.factory()))
         else:
-            with simulated_sleep(host):
-                module = load_module(spec)
+            with simulated_time(host, clocks=not sim.realtime):
                 seed_numpy(seed)
-                entry_point(module, spec.label, spec.function)()
+                run_controller(spec)
     except (ControllerError, KeyboardInterrupt):
         raise
     except SystemExit as exc:
@@ -134,5 +158,4 @@ def run_in_process(
         sim.graph.remove_owner(owner)
         compat_context.get_default_context().try_shutdown()
         compat_context.bind_host(None)
-    del started
     return crash

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import ast
+import importlib.abc
 import importlib.util
 import inspect
 import sys
@@ -57,8 +58,67 @@ def check_source(path: Path) -> str:
     return text
 
 
+def run_controller(spec: ControllerSpec) -> None:
+    """Run a controller file as ``python3 FILE`` would (as ``__main__``, so an
+    ``if __name__ == "__main__":`` block runs, and so does code at its top
+    level; a file inside a package runs as ``python3 -m package.module``
+    would, relative imports included); then, if the file never calls its
+    ``main()`` and running it started no node, do what ``ros2 run`` does:
+    call ``main()``, or create and spin every Node subclass it defines. A
+    console_scripts entry (``spec.function``) or an importable module is
+    started as ``ros2 run`` starts one: imported, then its function called.
+
+    Runs inside a bound compat host (turtletui.compat.context.bind_host)."""
+    if spec.module or spec.function:
+        entry_point(load_module(spec), spec.label, spec.function)()
+        return
+    assert spec.path is not None
+    path = spec.path.resolve()
+    source = check_source(path)
+    code = compile(source, str(path), "exec")  # see load_module
+    module = types.ModuleType("__main__")
+    module.__file__ = str(path)
+    packages = _import_packages(path)
+    if packages:
+        module.__package__ = ".".join(packages)
+        module.__spec__ = importlib.util.spec_from_file_location(".".join([*packages, path.stem]), path)
+    from turtletui.compat import context
+
+    graph = context.current_host().graph
+    started = (graph.now_ns, context.Context.inits)
+    previous = sys.modules.get("__main__")
+    sys.modules["__main__"] = module
+    try:
+        exec(code, module.__dict__)
+        if _calls_main(source) or graph.now_ns != started[0]:
+            return  # it ran itself (``main()``, guarded or not, or a script)
+        if context.Context.inits != started[1] and not callable(getattr(module, "main", None)):
+            return  # a script that used rclpy and ended at once
+        entry_point(module, spec.label)()
+    finally:
+        if previous is not None:
+            sys.modules["__main__"] = previous
+
+
+def _calls_main(source: str) -> bool:
+    """Whether the file calls ``main`` in its top-level code (also inside
+    ``if __name__ == "__main__":`` or ``sys.exit(main())``), not only in
+    functions and classes."""
+    tree = ast.parse(source)
+    pending: list[ast.AST] = list(tree.body)
+    while pending:
+        node = pending.pop()
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda)):
+            continue
+        if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id == "main":
+            return True
+        pending.extend(ast.iter_child_nodes(node))
+    return False
+
+
 def load_module(spec: ControllerSpec) -> types.ModuleType:
-    """Import the controller's module (its top level runs now).
+    """Import the controller's module, as ``ros2 run`` imports the module of a
+    console_scripts entry (its top level runs now, not as ``__main__``).
 
     A file inside a Python package (folders with ``__init__.py``, as in a ROS 2
     ament_python package) is imported as ``package.module`` with the package's
@@ -72,16 +132,9 @@ def load_module(spec: ControllerSpec) -> types.ModuleType:
     # edited twice within a second at the same size would look unchanged to
     # the bytecode cache, and a hot reload would run the old code.
     code = compile(check_source(path), str(path), "exec")
-    packages, root = _enclosing_packages(path)
-    for folder in (str(path.parent), str(root)):
-        if folder not in sys.path:
-            sys.path.insert(1, folder)
+    packages = _import_packages(path)
     if packages:
         name = ".".join([*packages, path.stem])
-        try:
-            importlib.import_module(".".join(packages))
-        except Exception as err:  # the student's package __init__.py failed: report it as theirs
-            raise ControllerError(f"{path}: importing its package {'.'.join(packages)} failed: {type(err).__name__}: {err}") from err
         module = importlib.util.module_from_spec(importlib.util.spec_from_file_location(name, path))
     else:
         name = f"__turtletui_controller_{abs(hash(str(path))):x}"
@@ -90,6 +143,21 @@ def load_module(spec: ControllerSpec) -> types.ModuleType:
     sys.modules[name] = module
     exec(code, module.__dict__)
     return module
+
+
+def _import_packages(path: Path) -> list[str]:
+    """Put the file's folder (and, for a file inside packages, the folder above
+    them) on ``sys.path`` and import its packages; their names, outermost first."""
+    packages, root = _enclosing_packages(path)
+    for folder in (str(path.parent), str(root)):
+        if folder not in sys.path:
+            sys.path.insert(1, folder)
+    if packages:
+        try:
+            importlib.import_module(".".join(packages))
+        except Exception as err:  # the student's package __init__.py failed: report it as theirs
+            raise ControllerError(f"{path}: importing its package {'.'.join(packages)} failed: {type(err).__name__}: {err}") from err
+    return packages
 
 
 def _enclosing_packages(path: Path) -> tuple[list[str], Path]:
@@ -103,9 +171,9 @@ def _enclosing_packages(path: Path) -> tuple[list[str], Path]:
 
 
 def entry_point(module: types.ModuleType, label: str, function: str | None = None) -> Callable[[], Any]:
-    """What to call to start the controller: ``function`` when a console_scripts
-    entry names one, else ``main()``, or a function that creates every Node
-    subclass the module defines."""
+    """What ``ros2 run`` would call to start the controller: ``function`` when
+    a console_scripts entry names one, else ``main()``, or a function that
+    creates and spins every Node subclass the module defines."""
     if function is not None:
         named = getattr(module, function, None)
         if not callable(named):
@@ -132,7 +200,8 @@ def spin_nodes(classes: list[type]) -> None:
     """Run Node classes the way a ROS main() would: init, create, spin, shut down."""
     import rclpy
 
-    rclpy.init()
+    if not rclpy.ok():
+        rclpy.init()
     nodes = [cls() for cls in classes]
     executor = rclpy.executors.SingleThreadedExecutor()
     for node in nodes:
@@ -174,10 +243,38 @@ def resolve_factory(reference: str) -> Callable[[], Any]:
 
 
 def seed_numpy(seed: int) -> None:
-    """Seed numpy's global generator if the controller imported numpy."""
+    """Seed numpy's global generator now if numpy is imported, else as soon
+    as the controller imports it (before its code can draw a number)."""
     numpy = sys.modules.get("numpy")
     if numpy is not None:
         numpy.random.seed(seed % 2**32)
+        return
+    sys.meta_path.insert(0, _AfterImport("numpy", lambda module: module.random.seed(seed % 2**32)))
+
+
+class _AfterImport(importlib.abc.MetaPathFinder):
+    """Calls ``then(module)`` once the module ``name`` has been imported (once)."""
+
+    def __init__(self, name: str, then: Callable[[types.ModuleType], None]) -> None:
+        self.name = name
+        self.then = then
+
+    def find_spec(self, fullname: str, path: Any, target: Any = None) -> Any:
+        if fullname != self.name:
+            return None
+        sys.meta_path.remove(self)
+        spec = importlib.util.find_spec(fullname)
+        if spec is None or spec.loader is None or not hasattr(spec.loader, "exec_module"):
+            return spec
+        exec_module = spec.loader.exec_module
+        then = self.then
+
+        def run(module: types.ModuleType) -> None:
+            exec_module(module)
+            then(module)
+
+        spec.loader.exec_module = run  # type: ignore[method-assign]
+        return spec
 
 
 def user_frames(tb: Any, path: Path | None) -> list[str]:

@@ -105,3 +105,44 @@ def reap_zombie_children() -> None:
                 os.waitpid(pid, os.WNOHANG)
             except ChildProcessError:
                 pass
+
+
+def has_exited(pid: int) -> bool:
+    """Whether this process's child ``pid`` has ended, without reaping it (its
+    CPU time can still be read then); True if it is gone already."""
+    try:
+        return os.waitid(os.P_PID, pid, os.WEXITED | os.WNOHANG | os.WNOWAIT) is not None
+    except ChildProcessError:
+        return True
+    except (AttributeError, OSError):  # no waitid (not POSIX)
+        return False
+
+
+def cpu_seconds(pid: int) -> float | None:
+    """CPU time (user and system) process ``pid`` has used, also once it has
+    ended and until it is reaped (Linux /proc); None if it cannot be read."""
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as f:
+            fields = f.read().rpartition(b")")[2].split()
+        return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+    except (OSError, ValueError, IndexError):
+        return None
+
+
+def run_queue_seconds(pid: int | str) -> float | None:
+    """Seconds the threads of process ``pid`` ("self" for this one) have spent
+    ready to run, waiting for a CPU that other processes held (Linux
+    schedstat); None if it cannot be read. Threads that ended are not counted."""
+    folder = f"/proc/{pid}/task"
+    try:
+        threads = os.listdir(folder)
+    except OSError:
+        return None
+    total = 0
+    for thread in threads:
+        try:
+            with open(f"{folder}/{thread}/schedstat", "rb") as f:
+                total += int(f.read().split()[1])
+        except (OSError, ValueError, IndexError):
+            continue
+    return total / 1e9

@@ -17,7 +17,8 @@ if TYPE_CHECKING:
 class CrashReport:
     """A controller that stopped abnormally.
 
-    ``kind`` is "exception", "exit", "timeout", "memory", "cpu" or "killed";
+    ``kind`` is "exception", "exit", "timeout", "memory", "cpu", "killed",
+    "slow" (too slow for real time) or "time" (over the run's time limit);
     ``frames`` are traceback lines from the controller's own file.
     """
 
@@ -45,6 +46,8 @@ _VERB = {
     "timeout": "was stopped",
     "memory": "was stopped",
     "cpu": "was stopped",
+    "slow": "was stopped",
+    "time": "was stopped",
     "killed": "died",
 }
 

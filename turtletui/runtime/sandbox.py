@@ -17,17 +17,25 @@ import select
 import signal
 import subprocess
 import sys
-import time
 from dataclasses import dataclass
 from pathlib import Path
+from time import monotonic as _monotonic  # bound at import: an in-process run simulates time's
+from time import perf_counter as _perf_counter
 from typing import Any
 
 from turtletui.graph.core import GraphError, NodeRecord
-from turtletui.graph.logs import ERROR, INFO
+from turtletui.graph.logs import ERROR, INFO, WARN
 from turtletui.interfaces import InterfaceError, from_values, get_interface, to_values
 from turtletui.runtime import forkserver, wire
+from turtletui.runtime.budget import CALLS, WAKE, OutputBudget, Pace, size_text
 from turtletui.runtime.loader import ControllerSpec, check_source, factory_reference, import_root
-from turtletui.runtime.processes import TOKEN_VAR, kill_tree
+from turtletui.runtime.processes import (
+    TOKEN_VAR,
+    cpu_seconds,
+    has_exited,
+    kill_tree,
+    run_queue_seconds,
+)
 from turtletui.runtime.report import CrashReport, log_crash, stop_turtles
 from turtletui.runtime.simulation import MAX_ROUNDS_PER_INSTANT, Simulation
 
@@ -47,14 +55,29 @@ class Limits:
     start_timeout: float = 10.0
     """Wall seconds for start-up and loading the controller's module."""
     cpu_seconds: int | None = 120
-    """CPU seconds the child may use (RLIMIT_CPU); None: no cap (the app's
-    controllers live as long as the app)."""
+    """CPU seconds the child may use (RLIMIT_CPU: SIGXCPU, then SIGKILL a few
+    seconds later if it is ignored); None: no cap (the app's controllers live
+    as long as the app)."""
     memory_bytes: int = 2 * 1024**3
     file_bytes: int = 64 * 1024**2
+    realtime_lag: float | None = 3.0
+    """Lockstep: wall seconds the controller may fall behind real time (its
+    answers take more wall time than the simulated time they cover) before it
+    is stopped as too slow for a robot; None: never."""
+    run_seconds: float | None = None
+    """Lockstep: wall seconds the run may take after start-up; None: no limit."""
+    run_seconds_reason: str = ""
+    """Why the run has ``run_seconds`` (said when the limit stops it)."""
+    output_bytes: int = 1_000_000
+    """Bytes of print() output shown per run; the rest is counted and dropped."""
     output_lines: int = 10_000
-    """Lines of print() output kept; the rest is dropped with a notice."""
+    """Lines of print() output shown per run; the rest is counted and dropped."""
+    output_line_chars: int = 1000
+    """Characters of one line of print() output shown; the rest is cut."""
     log_lines: int = 20_000
     """Log records (get_logger()) kept per run; the rest is dropped with a notice."""
+    log_bytes: int = 4_000_000
+    """Bytes of log messages kept per run; the rest is dropped with a notice."""
     run_as: tuple[int, int] | None = None
     """(uid, gid) the child runs as, with no supplementary groups: a grader
     running as root drops the student's code to an unprivileged user."""
@@ -96,9 +119,23 @@ class SandboxHost:
         self._known_services: tuple = ()
         self._known_keys: tuple = (None, None)
         self._read_buffer = b""
-        self._output_lines = 0
-        self._output_buffer = b""
+        self._output = OutputBudget(
+            self._show_output,
+            max_bytes=limits.output_bytes,
+            max_lines=limits.output_lines,
+            line_chars=limits.output_line_chars,
+        )
         self._log_lines = 0
+        self._log_bytes = 0
+        self._log_dropped = 0
+        self._child_dropped = 0
+        """Log records the child did not send (over the budget), as it counts them."""
+        self._pace = Pace(start_ns=0)
+        """The wall time the child takes to answer (lockstep, after start-up)."""
+        self._metering = False
+        self._wall_start = 0.0
+        self._queued_at_start = 0.0
+        self._recheck = 0.0
         self._stdout_open = True
         self._started = False
         self._token = ""
@@ -124,6 +161,11 @@ class SandboxHost:
             return host  # it failed to start; host.crash says why
         host._started = True
         host.exchange(timeout=host.limits.start_timeout, wait=True)
+        if not sim.realtime and not host.finished:
+            host._pace.start_ns = host.graph.now_ns
+            host._queued_at_start = host._queued()
+            host._wall_start = _perf_counter()
+            host._metering = True
         return host
 
     def _spawn(self, ros_args: list[str], seed: int) -> None:
@@ -141,6 +183,7 @@ class SandboxHost:
             "ros_args": ros_args,
             "seed": seed,
             "epoch_ns": self.graph.epoch_ns,
+            "realtime": self.sim.realtime,
             "limits": {
                 "cpu_seconds": self.limits.cpu_seconds,
                 "memory_bytes": self.limits.memory_bytes,
@@ -215,7 +258,7 @@ class SandboxHost:
                 self._collect(self.limits.step_timeout)
         if self.proc is not None and not self.finished:
             try:
-                wire.send_to_child(self._to_child, {"end": True}, time.monotonic() + 1.0)
+                wire.send_to_child(self._to_child, {"end": True}, _monotonic() + 1.0)
                 self._receive(1.0, final=True)
             except (OSError, wire.WireError, _Stop):
                 pass
@@ -236,6 +279,7 @@ class SandboxHost:
         except subprocess.TimeoutExpired:
             pass
         self._drain_output(final=True)
+        self._report_dropped()
         for fd in (self._to_child, self._from_child):
             try:
                 os.close(fd)
@@ -289,16 +333,23 @@ class SandboxHost:
             return self._collect(0.0)
         self._rounds += 1
         message: dict[str, Any] = {"now": self.graph.now_ns}
-        if self._inbox:
-            message["msgs"], self._inbox = self._inbox, []
+        cause: Any = WAKE
         if self._responses:
             message["responses"], self._responses = self._responses, []
+            cause = CALLS
         if self._goal_events:
             message["goals"], self._goal_events = self._goal_events, []
+            cause = CALLS
         if self._requests:
             message["requests"], self._requests = self._requests, []
+            cause = CALLS
         if self._params:
             message["params"], self._params = self._params, []
+            cause = CALLS
+        inbox = self._inbox
+        if inbox:
+            message["msgs"], self._inbox = inbox, []
+            cause = inbox[0][0] if len(inbox) == 1 else _subscriptions(inbox)
         graph = self.graph
         keys = graph.services.keys(), graph.action_servers.keys()
         known = self._known_keys
@@ -314,8 +365,9 @@ class SandboxHost:
             message["actions"] = list(services[1])
             message["action_types"] = {n: a.type_name for n, a in self.graph.action_servers.items()}
         timeout = timeout or self.limits.step_timeout
+        sent = _perf_counter()
         try:
-            wire.send_to_child(self._to_child, message, time.monotonic() + timeout)
+            wire.send_to_child(self._to_child, message, _monotonic() + timeout)
         except wire.WireTimeout:
             self._fail(
                 "timeout",
@@ -327,19 +379,47 @@ class SandboxHost:
             self._child_died()
             return True
         if self.sim.realtime and not wait:
-            self._awaiting = time.monotonic()
+            self._awaiting = _monotonic()
             self._collect(min(self.sim.wall_budget(), timeout))
             return True
         try:
             self._receive(timeout)
         except _Stop:
-            pass
+            return True
+        if self._metering:
+            answered = _perf_counter()
+            self._meter(cause, answered - sent, answered)
         return True
+
+    def _meter(self, cause: Any, seconds: float, answered: float) -> None:
+        """Charge one answer's wall time (it came at ``answered``, perf_counter);
+        stop a child that fell too far behind real time, or a run over its
+        wall-clock limit."""
+        pace = self._pace
+        now = self.graph.now_ns
+        behind = pace.charge(cause, seconds, now)
+        limits = self.limits
+        if limits.realtime_lag is not None and behind > limits.realtime_lag and pace.busy >= self._recheck:
+            # Before stopping it, take off the time a busy machine kept it (or
+            # this process) from a CPU: only its own slowness counts.
+            behind = pace.excuse(self._queued() - self._queued_at_start, now)
+            self._recheck = pace.busy + _RECHECK_SECONDS
+        if limits.realtime_lag is not None and behind > limits.realtime_lag:
+            self._fail("slow", pace.report(now))
+        elif limits.run_seconds is not None and answered - self._wall_start > limits.run_seconds:
+            why = limits.run_seconds_reason or f"the run's limit is {limits.run_seconds:g} s"
+            self._fail("time", f"ran out of time after {answered - self._wall_start:.1f} s of wall time: {why}")
+
+    def _queued(self) -> float:
+        """Seconds the child's threads and this process's have waited for a CPU."""
+        child = run_queue_seconds(self.proc.pid) if self.proc is not None else None
+        own = run_queue_seconds("self")
+        return (child or 0.0) + (own or 0.0)
 
     def _collect(self, budget: float) -> bool:
         """Real time: apply the pending answer if it arrives within ``budget``
         seconds; stop the child once it is later than the step deadline."""
-        deadline = time.monotonic() + budget
+        deadline = _monotonic() + budget
         fd = self._from_child
         try:
             while True:
@@ -347,14 +427,14 @@ class SandboxHost:
                     self._awaiting = None
                     self._receive(0.0)
                     return True
-                remaining = deadline - time.monotonic()
+                remaining = deadline - _monotonic()
                 if remaining <= 0:
                     break
                 select.select([fd], [], [], remaining)
         except _Stop:
             return True
         assert self._awaiting is not None
-        if time.monotonic() - self._awaiting > self.limits.step_timeout:
+        if _monotonic() - self._awaiting > self.limits.step_timeout:
             self._fail(
                 "timeout",
                 f"did not answer within {self.limits.step_timeout:g} s of wall time "
@@ -390,7 +470,7 @@ class SandboxHost:
 
     # -- receiving ---------------------------------------------------------------
     def _receive(self, timeout: float, *, first: bool = False, final: bool = False) -> None:
-        deadline = time.monotonic() + timeout
+        deadline = _monotonic() + timeout
         buffer = self._read_buffer
         if len(buffer) < 4:
             buffer = self._read_more(buffer, 4, deadline)
@@ -431,7 +511,7 @@ class SandboxHost:
         stdout = self._stdout
         watch = [fd, stdout] if self._stdout_open else [fd]
         while have < total:
-            remaining = deadline - time.monotonic()
+            remaining = deadline - _monotonic()
             if remaining <= 0:
                 self._read_buffer = b"".join(chunks)
                 self._fail(
@@ -451,7 +531,7 @@ class SandboxHost:
                     if not self._stdout_open and stdout in watch:
                         watch.remove(stdout)
                 if fd not in readable:
-                    if not readable and self.proc is not None and self.proc.poll() is not None:
+                    if not readable and self.proc is not None and has_exited(self.proc.pid):
                         self._child_died()
                         raise _Stop
                     continue
@@ -472,6 +552,8 @@ class SandboxHost:
 
     def _child_died(self) -> None:
         proc = self.proc
+        # read before it is reaped: a child the CPU limit killed has used it all
+        cpu = cpu_seconds(proc.pid) if proc is not None and proc.returncode is None else None
         try:
             code = proc.wait(timeout=1) if proc is not None else None
         except subprocess.TimeoutExpired:
@@ -480,9 +562,13 @@ class SandboxHost:
             return
         if code is not None and code < 0:
             sig = -code
+            over_cpu = ("cpu", f"used more than its CPU limit of {self.limits.cpu_seconds} s")
+            limit = self.limits.cpu_seconds
+            if sig == signal.SIGKILL and cpu is not None and limit is not None and cpu >= limit:
+                sig = signal.SIGXCPU  # it ignored SIGXCPU: the hard limit's SIGKILL came
             kind, why = {
-                signal.SIGXCPU: ("cpu", f"used more than its {self.limits.cpu_seconds} s CPU limit"),
-                signal.SIGKILL: ("killed", "was killed (SIGKILL): out of memory, or killed by someone"),
+                signal.SIGXCPU: over_cpu,
+                signal.SIGKILL: ("killed", "was killed (SIGKILL): by someone, or the system ran out of memory"),
                 signal.SIGSEGV: ("killed", "crashed the interpreter (SIGSEGV)"),
             }.get(sig, ("killed", f"was killed by signal {_signal_name(sig)}"))
             self._fail(kind, why)
@@ -496,9 +582,7 @@ class SandboxHost:
             return
         if not final and not self._stdout_poll.poll(0):
             return  # nothing printed (POLLHUP when closed counts as something)
-        truncated = self._output_lines > self.limits.output_lines
-        buffer = self._output_buffer
-        chunks = [buffer] if buffer else []
+        chunks = []
         read = 0
         try:
             while read < _OUTPUT_READ_LIMIT:
@@ -507,31 +591,29 @@ class SandboxHost:
                     self._stdout_open = False
                     break
                 read += len(data)
-                if not truncated:
-                    chunks.append(data)
+                chunks.append(data)
         except (BlockingIOError, OSError, ValueError):
             pass
-        if truncated:
-            self._output_buffer = b""
-            return  # past the limit: read (so the child never blocks) and drop
-        *lines, buffer = b"".join(chunks).split(b"\n")
-        if (final or not self._stdout_open) and buffer:
-            lines.append(buffer)
-            buffer = b""
-        while len(buffer) > 65536:  # a line without end: cut it in pieces
-            lines.append(buffer[:65536])
-            buffer = buffer[65536:]
-        self._output_buffer = buffer
-        name = f"{self.spec.name}:stdout"
-        cap = self.limits.output_lines
-        for line in lines:
-            self._output_lines += 1
-            if self._output_lines <= cap:
-                self.graph.log(name, INFO, line[:4096].decode("utf-8", "replace"))
-            else:
-                self._output_buffer = b""
-                self.graph.log("turtletui", ERROR, f"{self.spec.label}: output truncated after {cap} lines")
-                break
+        # past the budget the output is still read (so the child never blocks), then dropped
+        if self._output.feed(b"".join(chunks), final=final or not self._stdout_open):
+            self.graph.log(
+                "turtletui",
+                WARN,
+                f"{self.spec.label}: output over its budget of {size_text(self.limits.output_bytes)} or "
+                f"{self.limits.output_lines:,} lines per run: the rest is dropped",
+            )
+
+    def _show_output(self, line: str) -> None:
+        self.graph.log(f"{self.spec.name}:stdout", INFO, line)
+
+    def _report_dropped(self) -> None:
+        """One line at the end of the run saying how much was not shown."""
+        dropped = self._output.dropped()
+        if dropped:
+            self.graph.log("turtletui", WARN, f"{self.spec.label}: {dropped}")
+        dropped = self._log_dropped + self._child_dropped
+        if dropped:
+            self.graph.log("turtletui", WARN, f"{self.spec.label}: {dropped:,} log messages over its budget dropped")
 
     # -- applying what the child did ------------------------------------------------
     def _apply(self, reply: dict) -> None:
@@ -539,15 +621,23 @@ class SandboxHost:
         for decl in reply.get("decl", ()):
             self._declare(decl)
         for level, node, msg in reply.get("log", ()):
+            text = str(msg)[:10_000]
             self._log_lines += 1
-            if self._log_lines <= self.limits.log_lines:
-                graph.log(str(node)[:200], int(level), str(msg)[:10_000])
-            elif self._log_lines == self.limits.log_lines + 1:
+            self._log_bytes += len(text) + 1
+            if self._log_lines <= self.limits.log_lines and self._log_bytes <= self.limits.log_bytes:
+                graph.log(str(node)[:200], int(level), text)
+                continue
+            self._log_dropped += 1
+            if self._log_dropped == 1:
                 graph.log(
                     "turtletui",
                     ERROR,
-                    f"{self.spec.label}: log truncated after {self.limits.log_lines} log lines",
+                    f"{self.spec.label}: log over its budget of {self.limits.log_lines:,} messages or "
+                    f"{size_text(self.limits.log_bytes)} per run: the rest is dropped",
                 )
+        dropped = reply.get("logs_dropped")
+        if isinstance(dropped, int) and dropped > self._child_dropped:
+            self._child_dropped = dropped  # the child's own count: only ever shown
         for name, fields in reply.get("pub", ()):
             topic = graph.topics.get(name)
             if topic is None:
@@ -650,13 +740,18 @@ class SandboxHost:
                 self._nodes[node_id], str(topic), get_interface(type_name), int(depth)
             )
         elif kind == "sub":
-            _, wire_id, node_id, topic, type_name, depth = decl
+            _, wire_id, node_id, topic, type_name, depth, *label = decl
+            self._pace.subscriptions[wire_id] = (_label(label), str(topic)[:200])
+
             def forward(msg: Any, wire_id: int = wire_id) -> None:
                 self._inbox.append((wire_id, to_values(msg)))
 
             self._endpoints[wire_id] = graph.add_subscription(
                 self._nodes[node_id], str(topic), get_interface(type_name), int(depth), forward
             )
+        elif kind == "timer":
+            if len(self._pace.timers) < 100:
+                self._pace.timers.append((int(decl[2]), _label(decl[3:])))
         elif kind == "rm":
             endpoint = self._endpoints.pop(decl[1], None)
             if endpoint is not None:
@@ -708,8 +803,25 @@ class _Stop(Exception):
     """The child finished or failed during an exchange."""
 
 
+_RECHECK_SECONDS = 0.5
+"""Wall seconds of a controller's answers between two looks at how long the
+machine kept it waiting for a CPU (a look reads /proc: not at every answer)."""
 _LIVENESS_SECONDS = 0.1
 """How often a parent waiting for an answer checks that the child is still alive."""
+
+
+def _subscriptions(inbox: list) -> Any:
+    """What an exchange delivered messages for: one subscription's wire id, or
+    a tuple of several."""
+    ids = sorted({wire_id for wire_id, _ in inbox})
+    return ids[0] if len(ids) == 1 else tuple(ids)
+
+
+def _label(rest: list) -> str:
+    """A callback's name as the child declared it (only ever shown, so only a
+    short identifier is kept)."""
+    label = rest[0] if rest else ""
+    return label if isinstance(label, str) and label.isidentifier() and len(label) <= 60 else ""
 
 
 def _is_scalar(value: Any) -> bool:

@@ -10,9 +10,13 @@ from __future__ import annotations
 import json
 import marshal
 import os
-import select
 import struct
-import time
+from select import select as _select
+from time import monotonic as _monotonic
+from time import perf_counter as _perf_counter
+
+# Bound at import: a sandboxed child replaces time's clocks and select.select
+# with simulated ones for the controller, never for its own pipe to the parent.
 
 _HEADER = struct.Struct(">I")
 MAX_REPLY_BYTES = 8 * 1024 * 1024
@@ -58,7 +62,7 @@ def spin_read(fd: int, size: int, spin: float) -> bytes | None:
         pass
     if spin <= 0:
         return None
-    clock = time.perf_counter
+    clock = _perf_counter
     end = clock() + spin
     read = os.read
     while clock() < end:
@@ -94,10 +98,10 @@ def _write_all(fd: int, data: bytes | memoryview, deadline: float | None = None)
         try:
             written = os.write(fd, view)
         except BlockingIOError:  # a non-blocking fd with a full pipe: wait, up to deadline
-            remaining = None if deadline is None else deadline - time.monotonic()
+            remaining = None if deadline is None else deadline - _monotonic()
             if remaining is not None and remaining <= 0:
                 raise WireTimeout("the other side did not read what was sent") from None
-            select.select([], [fd], [], remaining)
+            _select([], [fd], [], remaining)
             continue
         view = view[written:]
 
@@ -146,7 +150,7 @@ class FrameReader:
         else:
             chunk = spin_read(fd, size, self.spin)
         while chunk is None:
-            select.select([fd], [], [])
+            _select([fd], [], [])
             try:
                 chunk = os.read(fd, size)
             except BlockingIOError:

@@ -53,9 +53,16 @@ TELEOP_HEADINGS = {
 _OWNER = "app"
 
 UNCAPPED = 1 << 62
-"""A line count no controller reaches."""
+"""A line or byte count no controller reaches."""
 
-APP_LIMITS = Limits(start_timeout=3.0, cpu_seconds=None, output_lines=UNCAPPED, log_lines=UNCAPPED)
+APP_LIMITS = Limits(
+    start_timeout=3.0,
+    cpu_seconds=None,
+    output_lines=UNCAPPED,
+    output_bytes=UNCAPPED,
+    log_lines=UNCAPPED,
+    log_bytes=UNCAPPED,
+)
 """Controllers in the app live as long as the app: no CPU cap and no cap on
 what they log (the log panel keeps a window of its own); memory, files and
 the per-step deadline stay limited as when grading."""
