@@ -45,6 +45,7 @@ from turtletui.worlds import WorldError, WorldSpec, resolve_world
 if TYPE_CHECKING:
     from turtletui.lessons.model import Lesson
     from turtletui.runtime.replay import Recording
+    from turtletui.runtime.turtlesim_args import TurtlesimArgs
 
 TICK_SECONDS = 0.016
 """The simulation advances every 16 ms of wall time, like turtlesim's timer."""
@@ -145,12 +146,15 @@ class TurtleApp(App):
         graphics: str | None = None,
         record: str | None = None,
         foxglove: str | None = None,
+        turtlesim: TurtlesimArgs | None = None,
     ) -> None:
         super().__init__()
         self._record = record
         """Where to record the session (--record), or None."""
         self._foxglove = foxglove
         """HOST:PORT to serve the session to Foxglove on (--foxglove), or None."""
+        self._turtlesim = turtlesim
+        """turtlesim's own --ros-args (turtletui sim): its node name and parameters."""
         self._replay = replay
         """A recorded run to play instead of controllers (turtletui replay)."""
         self._controllers = list(controllers)
@@ -258,6 +262,7 @@ class TurtleApp(App):
             start=False,
             record=self._record,
             foxglove=self._foxglove,
+            turtlesim=self._turtlesim,
         )
         if problem is not None:
             self.session.sim.graph.log("turtletui", ERROR, problem)
