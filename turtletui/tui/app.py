@@ -104,6 +104,8 @@ class TurtleApp(App):
         Binding("ctrl+c", "interrupt", "Stop command", show=False, priority=True,
                 tooltip="stop the running ros2 command, as in a terminal (q quits)"),
         Binding("k", "check_lesson", "Check", tooltip="run the open lesson's checks on your controller file"),
+        Binding("E", "editor", "Editor",
+                tooltip="edit the controller file beside the arena (ctrl+s saves, the node reloads)"),
         Binding("l", "lessons", "Lessons", show=False, tooltip="choose a lesson (your progress is shown)"),
         *(Binding(key, f"drive({x}, {z})", name, show=False,
                   tooltip="drive: one Twist each, linear.x = +-2.0, angular.z = +-2.0 (turtle_teleop_key)")
@@ -293,6 +295,8 @@ class TurtleApp(App):
         self._render_frame()
         self.call_after_refresh(self.session.start_controllers)
         self.set_timer(1.0, _freeze_startup_heap)
+        if self.is_web and self._editable_file() is not None:
+            self.call_later(self.action_editor)  # a browser user has no other editor
 
     def on_unmount(self) -> None:
         if self._ticker is not None:
@@ -535,6 +539,27 @@ class TurtleApp(App):
         self.query_one(ContentSwitcher).current = name
         self._side_open = True
         self._layout_side()
+
+    def _editable_file(self) -> Path | None:
+        return next((spec.path for spec in self._controllers if spec.path is not None), None)
+
+    async def action_editor(self) -> None:
+        """Show or hide the editor on the controller file (ctrl+s saves; the node reloads)."""
+        path = self._editable_file()
+        if path is None:
+            self.notify("Nothing to edit: no controller file is running.", severity="warning")
+            return
+        switcher = self.query_one(ContentSwitcher)
+        if not switcher.query_children("#editor"):
+            # TextArea and its parser load only when the editor is first opened
+            from turtletui.tui.widgets.editor import EditorPanel
+
+            await switcher.mount(EditorPanel(path, id="editor"))
+        self.action_panel("editor")
+        if switcher.display and switcher.current == "editor":
+            self.query_one("#editor-text").focus()
+        else:
+            self.query_one(ArenaView).focus()
 
     def action_check_lesson(self) -> None:
         """Grade the running controller file against the open lesson, in another
