@@ -11,6 +11,7 @@ import textwrap
 from pathlib import Path
 
 from support.pilot import SIZE, pilot_test, wait_for
+from textual import events
 from textual.widgets import ContentSwitcher, Static
 from textual.widgets.text_area import Selection
 
@@ -77,6 +78,25 @@ async def test_type_save_and_the_node_reloads_with_the_new_code(tmp_path: Path) 
         await wait_for(pilot, lambda: "version two" in logged(app))
         assert "talker.py changed: reloading its node" in logged(app)
         assert not list(tmp_path.glob(".*.tmp"))
+
+
+@pilot_test
+async def test_keys_arriving_together_are_applied_in_order_and_saved(tmp_path: Path) -> None:
+    """As from a browser, where a WebSocket can deliver keys in one burst."""
+    app, path = started(tmp_path, "SPEED = 0.0\n" + NODE)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("E")
+        for key in ("end", "backspace", "backspace", "backspace", "1", "full_stop", "5", "ctrl+s"):
+            character = {"1": "1", "5": "5", "full_stop": "."}.get(key)
+            app.post_message(events.Key(key, character))  # all queued before any is handled
+        await wait_for(pilot, lambda: "SPEED = 1.5\n" in path.read_text(encoding="utf-8"))
+        assert path.read_text(encoding="utf-8") == "SPEED = 1.5\n" + NODE
+        assert not app.query_one(EditorPanel).modified
+        for key in ("escape", "space"):  # Esc, then a key for the app at once
+            app.post_message(events.Key(key, " " if key == "space" else None))
+        await wait_for(pilot, lambda: app.session.paused)
+        assert path.read_text(encoding="utf-8") == app.query_one(EditorPanel).code.text
+        assert isinstance(app.focused, ArenaView)
 
 
 @pilot_test

@@ -17,6 +17,7 @@ from turtletui.cli import (
     plugins_cmd,
     replay_cmd,
     run_cmd,
+    serve_cmd,
     sim_cmd,
 )
 
@@ -30,6 +31,7 @@ app = typer.Typer(
 )
 app.command("run", context_settings={"allow_extra_args": False})(run_cmd.run)
 app.command("sim")(sim_cmd.sim)
+app.command("serve")(serve_cmd.serve)
 app.command("plugins")(plugins_cmd.plugins)
 app.command("lessons")(lessons_cmd.lessons)
 app.command("lesson")(lessons_cmd.lesson)

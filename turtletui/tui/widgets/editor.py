@@ -21,23 +21,48 @@ DISK_CHECK_SECONDS = 1.0
 
 
 class CodeArea(TextArea):
-    """A code TextArea whose Esc goes back to the app (the arena) instead of
-    moving the focus to the next widget."""
+    """A code TextArea that keeps keys in the order they were typed, saves on
+    ctrl+s, and lets Esc go back to the app (the arena) instead of moving the
+    focus to the next widget."""
+
+    BINDINGS = [Binding("ctrl+s", "save", "Save")]
 
     async def _on_key(self, event: events.Key) -> None:
+        # prevent_default() below keeps TextArea's own handler from the key,
+        # which Textual would call next; the key still bubbles up to the app.
+        if self.screen.focused is not self:
+            event.prevent_default()  # typed after Esc, though sent here before Esc was handled
+            return
         if event.key == "escape":
-            return  # not handled here: the app's escape binding returns to the arena
+            # Let go of the keys now (keys already on their way here see it
+            # above); the app's escape binding, which this key bubbles up to,
+            # then gives them to the arena.
+            self.screen.set_focus(None)
+            event.prevent_default()
+            return
+        # Textual runs a widget's key bindings only once the key has bubbled up
+        # to the app, while typed characters go in at once: keys that arrive
+        # close together (a browser's, over a WebSocket) would be applied out of
+        # order ("x", backspace, "y" giving "yx" or a cursor move landing late),
+        # and a save could miss the last characters. Bound keys run here instead.
+        for binding in self._bindings.key_to_bindings.get(event.key, ()):
+            if await self.app.run_action(binding.action, self):
+                event.stop()
+                event.prevent_default()
+                return
         await super()._on_key(event)
+
+    def action_save(self) -> None:
+        self.query_ancestor(EditorPanel).action_save()
 
 
 class EditorPanel(Vertical):
     """Edit and save one controller file; the first line says what happened."""
 
-    BINDINGS = [Binding("ctrl+s", "save", "Save", priority=True)]
-
     DEFAULT_CSS = """
     EditorPanel > #editor-status {
-        height: 1;
+        height: auto;
+        max-height: 4;
         background: $primary-background;
     }
     EditorPanel > #editor-status.problem {
@@ -58,7 +83,8 @@ class EditorPanel(Vertical):
 
     def compose(self) -> ComposeResult:
         yield Static(id="editor-status")
-        yield CodeArea.code_editor(language="python", theme="monokai", soft_wrap=False, id="editor-text")
+        # Wrapped, not cut at the pane's edge: every character of the file stays in view.
+        yield CodeArea.code_editor(language="python", theme="monokai", soft_wrap=True, id="editor-text")
 
     def on_mount(self) -> None:
         self._load()
@@ -108,6 +134,8 @@ class EditorPanel(Vertical):
         self._dirty = False
         stamp = time.strftime("%H:%M:%S")
         if problem is not None:
+            # The pane is narrow: the file's name says enough, its folder is known.
+            problem = problem.replace(str(self.source.path), self.source.path.name, 1)
             self._status(f"saved {stamp}, but {problem}: the running version is kept", problem=True)
         else:
             self._status(f"saved {stamp}: the node restarts with it")
