@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import ipaddress
 import shlex
+import socket
 import sys
 from pathlib import Path
 
@@ -57,6 +58,9 @@ def serve(
         command.append("--ascii")
     for path in plugin or ():
         command += ["--plugin", str(path.resolve())]
+    problem = _cannot_listen(host, port)
+    if problem is not None:
+        fail(f"cannot serve on {host}:{port}: {problem}")
     from turtletui.tui.web import ServedApp
 
     server = ServedApp(
@@ -101,6 +105,26 @@ def _lesson_and_file(lesson: str | None, file: Path | None, plugins: list[Path] 
             fail(f"cannot write {file}: {err.strerror or err}")
         sys.stderr.write(f"turtletui serve: wrote {file} (starter of lesson {found.id})\n")
     return (None if found is None else found.path), file
+
+
+def _cannot_listen(host: str, port: int) -> str | None:
+    """Why the server could not listen on host:port (unknown host, port in use), or None.
+
+    Tried before the server starts, so that the error is one line and comes
+    before the server announces its address.
+    """
+    try:
+        addresses = socket.getaddrinfo(host, port, type=socket.SOCK_STREAM, flags=socket.AI_PASSIVE)
+    except socket.gaierror as err:
+        return err.strerror or str(err)
+    for family, kind, proto, _, address in addresses:
+        with socket.socket(family, kind, proto) as probe:
+            probe.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)  # as aiohttp does
+            try:
+                probe.bind(address)
+            except OSError as err:
+                return err.strerror or str(err)
+    return None
 
 
 def _is_loopback(host: str) -> bool:
