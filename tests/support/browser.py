@@ -61,10 +61,10 @@ def free_port() -> int:
 
 
 @contextmanager
-def served(*args: str, cwd: Path, timeout: float = 30.0) -> Iterator[str]:
+def served(*args: str, cwd: Path, timeout: float = 30.0, port: int | None = None) -> Iterator[str]:
     """Run ``turtletui serve ARGS --port P`` in ``cwd``; yields the page's URL
     once the server accepts connections, and stops the server after."""
-    port = free_port()
+    port = port or free_port()
     env = dict(os.environ, PYTHONPATH=os.pathsep.join(filter(None, [str(REPO), os.environ.get("PYTHONPATH")])))
     proc = subprocess.Popen(
         [sys.executable, "-m", "turtletui", "serve", *args, "--port", str(port)],
@@ -191,3 +191,64 @@ def count_pixels(png: bytes, colour: tuple[int, int, int], tolerance: int = 8) -
     pixels = np.asarray(Image.open(io.BytesIO(png)).convert("RGB"), dtype=np.int16)
     close = np.abs(pixels - np.array(colour, dtype=np.int16)).max(axis=2) <= tolerance
     return int(close.sum())
+
+
+@contextmanager
+def prefix_proxy(prefix: str, target_port: int) -> Iterator[int]:
+    """A reverse proxy on a free port that serves ``http://127.0.0.1:TARGET``
+    under ``prefix`` (stripped before forwarding), WebSockets included: what
+    JupyterHub's jupyter-server-proxy does for a student's server. Yields its port."""
+    import asyncio
+    import threading
+
+    import aiohttp
+    from aiohttp import web
+
+    async def forward(request: web.Request) -> web.StreamResponse:
+        path = request.path_qs[len(prefix.rstrip("/")):] or "/"
+        url = f"http://127.0.0.1:{target_port}{path}"
+        async with aiohttp.ClientSession() as session:
+            if request.headers.get("Upgrade", "").lower() == "websocket":
+                browser_side = web.WebSocketResponse()
+                await browser_side.prepare(request)
+                async with session.ws_connect(url) as server_side:
+
+                    async def pipe(source, sink) -> None:
+                        async for message in source:
+                            if message.type == aiohttp.WSMsgType.TEXT:
+                                await sink.send_str(message.data)
+                            elif message.type == aiohttp.WSMsgType.BINARY:
+                                await sink.send_bytes(message.data)
+                            else:
+                                break
+                        await sink.close()
+
+                    await asyncio.gather(pipe(browser_side, server_side), pipe(server_side, browser_side))
+                return browser_side
+            async with session.get(url) as upstream:
+                return web.Response(body=await upstream.read(), status=upstream.status,
+                                    content_type=upstream.content_type)
+
+    port = free_port()
+    loop = asyncio.new_event_loop()
+    runner_ready = threading.Event()
+    app = web.Application()
+    app.router.add_route("GET", prefix.rstrip("/") + "/{tail:.*}", forward)
+    runner = web.AppRunner(app)
+
+    def serve() -> None:
+        asyncio.set_event_loop(loop)
+        loop.run_until_complete(runner.setup())
+        loop.run_until_complete(web.TCPSite(runner, "127.0.0.1", port).start())
+        runner_ready.set()
+        loop.run_forever()
+
+    thread = threading.Thread(target=serve, daemon=True)
+    thread.start()
+    runner_ready.wait(10)
+    try:
+        yield port
+    finally:
+        asyncio.run_coroutine_threadsafe(runner.cleanup(), loop).result(10)
+        loop.call_soon_threadsafe(loop.stop)
+        thread.join(10)

@@ -17,6 +17,8 @@ from support.browser import (
     BrowserTerminal,
     chromium,
     count_pixels,
+    free_port,
+    prefix_proxy,
     served,
     shows_the_arena,
 )
@@ -68,9 +70,12 @@ def open_app(browser, url: str, width: int = 1280, height: int = 800):
     terminal = BrowserTerminal(page)
     page.goto(url)
     terminal.wait_for(shows_the_arena, "the arena")
+    # The page's terminal takes the keys (xterm.js reads them from this
+    # textarea, as after a click): the app hears it has the focus again.
+    page.evaluate("document.activeElement && document.activeElement.blur()")
+    page.focus(".xterm-helper-textarea")
     # The editor opens with the app and takes the keys (its ctrl+s shows in the footer).
     terminal.wait_for(lambda text: "Save" in text.splitlines()[-1], "the editor's keys in the footer")
-    page.focus(".xterm-helper-textarea")  # xterm.js takes the keys here, as after a click
     return page, terminal
 
 
@@ -161,3 +166,15 @@ def test_small_windows_and_ascii_in_the_browser(browser, tmp_path: Path) -> None
         page.set_viewport_size({"width": 1280, "height": 800})
         terminal.wait_for(shows_the_arena, "the arena again")
         assert terminal.screen.columns > 120
+
+
+def test_behind_a_proxy_that_serves_it_under_a_path(browser, tmp_path: Path) -> None:
+    """The JupyterHub recipe: a proxy serves the app under /user/ann/turtletui/
+    (jupyter-server-proxy's shape), and --public-url names that address."""
+    (tmp_path / "idle.py").write_text(IDLE, encoding="utf-8")
+    port = free_port()
+    with prefix_proxy("/user/ann/turtletui/", port) as proxy_port:
+        public = f"http://127.0.0.1:{proxy_port}/user/ann/turtletui"
+        with served("idle.py", "--public-url", public, cwd=tmp_path, port=port):
+            page, terminal = open_app(browser, public + "/")
+            assert "idle.py" in terminal.text

@@ -296,7 +296,8 @@ class TurtleApp(App):
         self.call_after_refresh(self.session.start_controllers)
         self.set_timer(1.0, _freeze_startup_heap)
         if self.is_web and self._editable_file() is not None:
-            self.call_later(self.action_editor)  # a browser user has no other editor
+            # A browser user has no other editor; it opens once the first frame is out.
+            self.call_after_refresh(self.action_editor)
 
     def on_unmount(self) -> None:
         if self._ticker is not None:
