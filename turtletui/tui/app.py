@@ -556,9 +556,12 @@ class TurtleApp(App):
             from turtletui.tui.widgets.editor import EditorPanel
 
             await switcher.mount(EditorPanel(path, id="editor"))
+        editor = self.query("#editor-text")
+        if not editor:
+            return  # the app is closing (the editor was asked for as a tab opened and closed)
         self.action_panel("editor")
         if switcher.display and switcher.current == "editor":
-            self.query_one("#editor-text").focus()
+            editor.first().focus()
         else:
             self.query_one(ArenaView).focus()
 
