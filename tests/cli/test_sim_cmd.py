@@ -77,6 +77,7 @@ def test_headless_runs_until_ctrl_c_and_ends_cleanly(tmp_path: Path) -> None:
         (["--headless", "--duration", "-1"], "--duration must be a positive number"),
         (["--headless", "--world", "no-such-world"], "no-such-world"),
         (["--duration", "5"], "--duration is for --headless runs"),
+        (["--pixels", "nope"], "--pixels: expected one of auto, half, braille, graphics"),
         ([], "no terminal to draw the app in; run headless instead: turtletui sim --headless"),
     ],
 )

@@ -27,6 +27,9 @@ def sim(
         None, "--duration", "-d", help="Headless: wall-clock seconds to run (default: until Ctrl-C)."
     ),
     ascii_only: bool = typer.Option(False, "--ascii", help="Draw with plain ASCII and no colour."),
+    pixels: str = typer.Option(
+        "auto", "--pixels", help="How the app draws the arena: half, braille, graphics or auto (as turtletui run)."
+    ),
     world: str = typer.Option(
         None,
         "--world",
@@ -40,7 +43,8 @@ def sim(
 
     turtlesim's ROS arguments go last: turtletui sim --ros-args -p background_r:=0 -p holonomic:=true
     """
-    from turtletui.cli.run_cmd import _resolve_world
+    # the same --world and --pixels as run
+    from turtletui.cli.run_cmd import _drawing, _resolve_world
     from turtletui.compat.ros_args import RosArgsError
     from turtletui.runtime.turtlesim_args import parse_turtlesim_args
 
@@ -54,10 +58,19 @@ def sim(
     if not headless:
         if duration is not None:
             fail("--duration is for --headless runs; the app runs until you quit it (q)")
+        drawing = _drawing(pixels, ascii_only)
         require_screen("run headless instead: turtletui sim --headless")
         from turtletui.tui.app import TurtleApp
 
-        TurtleApp([], ascii=ascii_only, seed=seed, world=world_spec, turtlesim=args).run()
+        TurtleApp(
+            [],
+            ascii=ascii_only,
+            seed=seed,
+            world=world_spec,
+            turtlesim=args,
+            pixels=drawing.pixels,
+            graphics=drawing.graphics,
+        ).run()
         return
     from turtletui.graph.core import NS_PER_S
     from turtletui.runtime.simulation import Simulation
