@@ -8,9 +8,6 @@ node reload.
 
 from __future__ import annotations
 
-import ipaddress
-import shlex
-import socket
 import sys
 from pathlib import Path
 
@@ -24,7 +21,7 @@ DEFAULT_LESSON = "part6-closed-loop"
 def serve(
     file: Path = typer.Argument(
         None,
-        metavar="[FILE]",
+        metavar="FILE",
         help="The controller file to edit and run; written from the lesson's starter if it does not exist."
         " Default: LESSON.py in this folder (part6_closed_loop.py for the default lesson).",
     ),
@@ -48,6 +45,8 @@ def serve(
     The served app runs FILE, and whatever code is saved into it, as you:
     keep the default --host 127.0.0.1 unless a proxy in front checks who connects.
     """
+    import shlex  # here, not at the top: turtletui --help stays quick
+
     if not 0 < port < 65536:
         fail(f"--port must be in 1..65535, got {port}")
     lesson_path, file = _lesson_and_file(lesson, file, plugin)
@@ -113,6 +112,8 @@ def _cannot_listen(host: str, port: int) -> str | None:
     Tried before the server starts, so that the error is one line and comes
     before the server announces its address.
     """
+    import socket
+
     try:
         addresses = socket.getaddrinfo(host, port, type=socket.SOCK_STREAM, flags=socket.AI_PASSIVE)
     except socket.gaierror as err:
@@ -128,6 +129,8 @@ def _cannot_listen(host: str, port: int) -> str | None:
 
 
 def _is_loopback(host: str) -> bool:
+    import ipaddress
+
     if host == "localhost":
         return True
     try:
