@@ -118,22 +118,27 @@ async def test_a_syntax_error_is_shown_and_the_running_version_kept(tmp_path: Pa
 
 
 @pilot_test
-async def test_escape_returns_the_keys_to_the_arena_and_E_toggles_the_pane(tmp_path: Path) -> None:
+async def test_escape_returns_the_keys_to_the_arena_and_E_takes_them_back(tmp_path: Path) -> None:
     app, _ = started(tmp_path)
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("E")
         panel = app.query_one(EditorPanel)
+        assert status(app).startswith("Esc: back to the arena | ")
         await pilot.press("escape")
         assert isinstance(app.focused, ArenaView)
+        assert status(app).startswith("E: edit here | ")  # the pane says where the keys go
         turtle = app.session.sim.world.turtles["turtle1"]
         start = turtle.x
         await pilot.press("up")  # drives again, types nothing
         await wait_for(pilot, lambda: turtle.x > start + 0.3)
         assert panel.code.text == NODE
-        await pilot.press("E")  # the pane is open: E hides it
-        assert not app.query_one(ContentSwitcher).display
-        await pilot.press("E")
-        assert app.query_one(ContentSwitcher).display and app.focused is panel.code
+        await pilot.press("E")  # the pane is open: E gives it the keys again
+        assert app.focused is panel.code
+        await pilot.press("escape", "1")  # another panel in its place
+        switcher = app.query_one(ContentSwitcher)
+        assert switcher.current == "log"
+        await pilot.press("E")  # back, with the edits and the cursor where they were
+        assert switcher.current == "editor" and app.focused is panel.code
         assert len(app.query(EditorPanel)) == 1
 
 
@@ -159,7 +164,7 @@ async def test_a_failed_save_keeps_the_edits_and_says_why(tmp_path: Path) -> Non
         await pilot.press(*"two")
         shutil.rmtree(folder)  # the folder went away under the editor
         await pilot.press("ctrl+s")
-        assert status(app).startswith("not saved: ") and "your edits are still here" in status(app)
+        assert "| not saved: " in status(app) and "your edits are still here" in status(app)
         assert "version two" in panel.code.text and panel.modified
 
 
@@ -187,7 +192,7 @@ async def test_a_file_that_is_not_text_is_shown_read_only_with_the_reason(tmp_pa
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("E")
         panel = app.query_one(EditorPanel)
-        assert panel.code.read_only and status(app).startswith(f"cannot edit {path}")
+        assert panel.code.read_only and f"cannot edit {path}" in status(app)
         await pilot.press("ctrl+s")
         assert path.read_bytes() == b"\xff\xfe not utf-8"
 

@@ -545,7 +545,8 @@ class TurtleApp(App):
         return next((spec.path for spec in self._controllers if spec.path is not None), None)
 
     async def action_editor(self) -> None:
-        """Show or hide the editor on the controller file (ctrl+s saves; the node reloads)."""
+        """Show the editor on the controller file and give it the keys (ctrl+s
+        saves and the node reloads; Esc gives the keys back to the arena)."""
         path = self._editable_file()
         if path is None:
             self.notify("Nothing to edit: no controller file is running.", severity="warning")
@@ -559,11 +560,8 @@ class TurtleApp(App):
         editor = self.query("#editor-text")
         if not editor:
             return  # the app is closing (the editor was asked for as a tab opened and closed)
-        self.action_panel("editor")
-        if switcher.display and switcher.current == "editor":
-            editor.first().focus()
-        else:
-            self.query_one(ArenaView).focus()
+        self._show_side("editor")
+        editor.first().focus()
 
     def action_check_lesson(self) -> None:
         """Grade the running controller file against the open lesson, in another

@@ -80,6 +80,9 @@ class EditorPanel(Vertical):
         super().__init__(id=id)
         self.source = SourceFile(path)
         self._dirty = False
+        self._message = ""
+        self._problem = False
+        self._editing = False
 
     def compose(self) -> ComposeResult:
         yield Static(id="editor-status")
@@ -113,7 +116,7 @@ class EditorPanel(Vertical):
         if cursor[0] < area.document.line_count:
             area.cursor_location = cursor
         self._dirty = False
-        self._status(f"{self.source.path.name}   ctrl+s saves and reloads the node   Esc: back to the arena")
+        self._status(f"{self.source.path.name}   ctrl+s saves and reloads the node")
 
     def on_text_area_changed(self, event: TextArea.Changed) -> None:
         dirty = event.text_area.text != self.source.saved_text
@@ -150,10 +153,24 @@ class EditorPanel(Vertical):
         self._load()
         self._status(f"{self.source.path.name} changed on disk: reloaded")
 
+    def on_descendant_focus(self) -> None:
+        self._editing = True
+        self._show_status()
+
+    def on_descendant_blur(self) -> None:
+        self._editing = False
+        self._show_status()
+
     def _status(self, text: str, *, problem: bool = False) -> None:
+        self._message, self._problem = text, problem
+        self._show_status()
+
+    def _show_status(self) -> None:
+        # Whether keys go to the editor or drive the turtle, said where the eyes are.
+        where = "Esc: back to the arena" if self._editing else "E: edit here"
         status = self.query_one("#editor-status", Static)
-        status.update(text)
-        status.set_class(problem, "problem")
+        status.update(f"{where} | {self._message}")
+        status.set_class(self._problem, "problem")
 
 
 def _reason(err: Exception) -> str:
