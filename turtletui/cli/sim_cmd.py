@@ -79,15 +79,15 @@ def sim(
         sys.stdout.write(record.format() + "\n")
         sys.stdout.flush()  # a live log: a pipe must not hold lines back
 
-    simulation = Simulation(
-        world=None if world_spec is None else world_spec.build(seed),
-        realtime=True,
-        log_sinks=[args.log_filter(print_log)],
-        turtlesim_name=args.name,
-    )
-    args.apply(simulation)
     limit_ns = round(duration * NS_PER_S) if duration is not None else 2**62
-    try:
+    try:  # from the first line turtlesim logs: Ctrl-C may come at any point after it
+        simulation = Simulation(
+            world=None if world_spec is None else world_spec.build(seed),
+            realtime=True,
+            log_sinks=[args.log_filter(print_log)],
+            turtlesim_name=args.name,
+        )
+        args.apply(simulation)
         simulation.run_until(limit_ns)
     except KeyboardInterrupt:
         pass  # Ctrl-C is how turtlesim_node ends
