@@ -94,6 +94,22 @@ def test_grading_a_class_never_imports_textual(tmp_path):
     assert imported_after(code, ["textual"]) == []
 
 
+def test_headless_sim_never_imports_textual():
+    code = """
+        import contextlib, io, sys
+        import turtletui.cli
+
+        sys.argv = ["turtletui", "sim", "--headless", "--duration", "0.1", "--ros-args", "-p", "holonomic:=true"]
+        with contextlib.redirect_stdout(io.StringIO()) as out:
+            try:
+                turtletui.cli.main()
+            except SystemExit as exc:
+                assert exc.code in (None, 0), exc.code
+        assert "Starting turtlesim" in out.getvalue(), out.getvalue()
+    """
+    assert imported_after(code, ["textual"]) == []
+
+
 @pytest.mark.parametrize("module", CORE)
 def test_core_imports_no_front_end(module):
     assert imported_after(f"import {module}", FRONT_ENDS) == []

@@ -340,15 +340,13 @@ world = "{world}"
 def app_launches(monkeypatch) -> list:
     """``turtletui run`` in the app mode, as from a terminal, with the app's
     run() recorded instead of started."""
-    import types
 
-    import turtletui.cli.run_cmd as run_cmd
+    import turtletui.cli.screen as screen
     from turtletui.tui.app import TurtleApp
 
     launched: list = []
     monkeypatch.setattr(TurtleApp, "run", lambda self: launched.append(self))
-    terminal = types.SimpleNamespace(isatty=lambda: True)
-    monkeypatch.setattr(run_cmd, "sys", types.SimpleNamespace(stdin=terminal, stdout=terminal))
+    monkeypatch.setattr(screen, "has_screen", lambda: True)
     return launched
 
 

@@ -10,7 +10,16 @@ import sys
 
 import typer
 
-from turtletui.cli import autograder_cmd, grade_cmd, lessons_cmd, plugins_cmd, replay_cmd, run_cmd
+from turtletui.cli import (
+    autograder_cmd,
+    grade_cmd,
+    lessons_cmd,
+    plugins_cmd,
+    replay_cmd,
+    run_cmd,
+    serve_cmd,
+    sim_cmd,
+)
 
 app = typer.Typer(
     name="turtletui",
@@ -21,6 +30,8 @@ app = typer.Typer(
     rich_markup_mode=None,
 )
 app.command("run", context_settings={"allow_extra_args": False})(run_cmd.run)
+app.command("sim")(sim_cmd.sim)
+app.command("serve")(serve_cmd.serve)
 app.command("plugins")(plugins_cmd.plugins)
 app.command("lessons")(lessons_cmd.lessons)
 app.command("lesson")(lessons_cmd.lesson)
@@ -61,5 +72,5 @@ def split_ros_args(argv: list[str]) -> tuple[list[str], list[str]]:
 def main() -> None:
     """Console-script entry point."""
     argv, ros_args = split_ros_args(sys.argv[1:])
-    run_cmd.ROS_ARGS[:] = ros_args
+    run_cmd.ROS_ARGS[:] = sim_cmd.ROS_ARGS[:] = ros_args
     app(args=run_cmd.with_foxglove_default(argv), prog_name="turtletui")

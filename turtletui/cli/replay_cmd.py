@@ -9,6 +9,7 @@ from pathlib import Path
 import typer
 
 from turtletui.cli.errors import fail
+from turtletui.cli.screen import require_screen
 
 
 def replay(
@@ -33,8 +34,8 @@ def replay(
     if png is not None:
         _picture(found, _world(found.header.get("world")), png)
         return
-    if not headless and (not sys.stdout.isatty() or not sys.stdin.isatty()):
-        fail(f"no terminal to draw the app in; replay headless instead: turtletui replay {recording} --headless")
+    if not headless:
+        require_screen(f"replay headless instead: turtletui replay {recording} --headless")
     header = found.header
     if header:
         start = ", ".join(f"{v:.3f}" for v in found.start or ())

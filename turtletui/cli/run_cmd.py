@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING
 import typer
 
 from turtletui.cli.errors import fail
+from turtletui.cli.screen import require_screen
 
 if TYPE_CHECKING:
     from turtletui.worlds import WorldSpec
@@ -67,11 +68,7 @@ def run(
     ROS arguments go last: turtletui run node.py --headless --ros-args -p speed:=2.0
     """
     if not headless:
-        if not sys.stdout.isatty() or not sys.stdin.isatty():
-            fail(
-                "no terminal to draw the app in; run headless instead: "
-                "turtletui run FILE.py --headless --duration 60"
-            )
+        require_screen("run headless instead: turtletui run FILE.py --headless --duration 60")
         _run_app(controllers, plugin, lesson, ascii_only, seed, world, pixels, record, foxglove)
         return
     from turtletui.api import run as run_controllers

@@ -46,7 +46,25 @@ QOS_DEPTH = 7
 _F32 = struct.Struct("5f")
 _F32_pack = _F32.pack
 _F32_unpack = _F32.unpack
-_PARAMETERS = ("background_r", "background_g", "background_b", "holonomic")
+PARAMETERS = ("background_r", "background_g", "background_b", "holonomic")
+"""The parameters turtlesim declares (besides use_sim_time, which every node has)."""
+
+
+def parameter_problem(name: str, value: Any, node: str = "/turtlesim") -> str | None:
+    """Why turtlesim refuses to set ``name`` to ``value`` (None: it accepts it).
+
+    The colours are integers with turtlesim's descriptor range 0..255,
+    ``holonomic`` is a bool: the types and ranges ``ros2 param set`` and
+    ``--ros-args -p`` are held to.
+    """
+    if name not in PARAMETERS:
+        return f"parameter '{name}' is not declared by {node}"
+    if name == "holonomic":
+        if not isinstance(value, bool):
+            return f"parameter 'holonomic' must be a bool, got {value!r}"
+    elif isinstance(value, bool) or not isinstance(value, int) or not 0 <= value <= 255:
+        return f"parameter '{name}' must be an integer in 0..255, got {value!r}"
+    return None
 
 
 @functools.cache
@@ -88,9 +106,11 @@ class TurtlesimNode:
 
     NAME = "turtlesim"
 
-    def __init__(self, graph: Graph, world: World | None = None) -> None:
+    def __init__(self, graph: Graph, world: World | None = None, *, name: str = NAME) -> None:
         self.graph = graph
-        self.node = graph.add_node(self.NAME, owner="sim")
+        self.name = name
+        """The node's name: turtlesim's own, or what ``-r __node:=NAME`` made it."""
+        self.node = graph.add_node(name, owner="sim")
         self.node.parameter_setter = self.set_parameter
         self.world = world if world is not None else World(spawn_turtle1=False)
         self._turtles: dict[str, _TurtleEndpoints] = {}
@@ -210,15 +230,12 @@ class TurtlesimNode:
     # -- parameters -----------------------------------------------------------
     def set_parameter(self, name: str, value: Any) -> str | None:
         """Set one of turtlesim's parameters; returns a reason if refused."""
-        if name not in _PARAMETERS:
-            return f"parameter '{name}' is not declared by {self.node.fqn}"
+        problem = parameter_problem(name, value, self.node.fqn)
+        if problem is not None:
+            return problem
         if name == "holonomic":
-            if not isinstance(value, bool):
-                return f"parameter 'holonomic' must be a bool, got {value!r}"
             self.world.holonomic = value
         else:
-            if isinstance(value, bool) or not isinstance(value, int) or not 0 <= value <= 255:
-                return f"parameter '{name}' must be an integer in 0..255, got {value!r}"
             self.node.parameters[name] = value
             params = self.node.parameters
             self.world.set_background((params["background_r"], params["background_g"], params["background_b"]))
@@ -355,4 +372,4 @@ class TurtlesimNode:
                 self._log(WARN, event.text)
 
     def _log(self, level: int, msg: str) -> None:
-        self.graph.log(self.NAME, level, msg)
+        self.graph.log(self.name, level, msg)

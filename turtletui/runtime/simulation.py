@@ -57,12 +57,13 @@ class Simulation:
         speed: float = 1.0,
         paced: bool = True,
         log_sinks: Sequence[Callable[[LogRecord], None]] = (),
+        turtlesim_name: str = TurtlesimNode.NAME,
     ) -> None:
         epoch = time.time_ns() if realtime else LOCKSTEP_EPOCH_NS
         self.graph = Graph(epoch_ns=epoch, type_name=interface_name)
         self.graph.log_sinks.extend(log_sinks)
         self.world = world if world is not None else World(spawn_turtle1=False)
-        self.turtlesim = TurtlesimNode(self.graph, self.world)
+        self.turtlesim = TurtlesimNode(self.graph, self.world, name=turtlesim_name)
         self.remotes: list[RemoteHost] = []
         self._typo_check = self.graph.add_timer(
             self.turtlesim.node, TOPIC_CHECK_AFTER_NS, self._warn_dangling_topics

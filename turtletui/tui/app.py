@@ -45,6 +45,7 @@ from turtletui.worlds import WorldError, WorldSpec, resolve_world
 if TYPE_CHECKING:
     from turtletui.lessons.model import Lesson
     from turtletui.runtime.replay import Recording
+    from turtletui.runtime.turtlesim_args import TurtlesimArgs
 
 TICK_SECONDS = 0.016
 """The simulation advances every 16 ms of wall time, like turtlesim's timer."""
@@ -103,6 +104,8 @@ class TurtleApp(App):
         Binding("ctrl+c", "interrupt", "Stop command", show=False, priority=True,
                 tooltip="stop the running ros2 command, as in a terminal (q quits)"),
         Binding("k", "check_lesson", "Check", tooltip="run the open lesson's checks on your controller file"),
+        Binding("E", "editor", "Editor",
+                tooltip="edit the controller file beside the arena (ctrl+s saves, the node reloads)"),
         Binding("l", "lessons", "Lessons", show=False, tooltip="choose a lesson (your progress is shown)"),
         *(Binding(key, f"drive({x}, {z})", name, show=False,
                   tooltip="drive: one Twist each, linear.x = +-2.0, angular.z = +-2.0 (turtle_teleop_key)")
@@ -145,12 +148,15 @@ class TurtleApp(App):
         graphics: str | None = None,
         record: str | None = None,
         foxglove: str | None = None,
+        turtlesim: TurtlesimArgs | None = None,
     ) -> None:
         super().__init__()
         self._record = record
         """Where to record the session (--record), or None."""
         self._foxglove = foxglove
         """HOST:PORT to serve the session to Foxglove on (--foxglove), or None."""
+        self._turtlesim = turtlesim
+        """turtlesim's own --ros-args (turtletui sim): its node name and parameters."""
         self._replay = replay
         """A recorded run to play instead of controllers (turtletui replay)."""
         self._controllers = list(controllers)
@@ -258,6 +264,7 @@ class TurtleApp(App):
             start=False,
             record=self._record,
             foxglove=self._foxglove,
+            turtlesim=self._turtlesim,
         )
         if problem is not None:
             self.session.sim.graph.log("turtletui", ERROR, problem)
@@ -288,6 +295,9 @@ class TurtleApp(App):
         self._render_frame()
         self.call_after_refresh(self.session.start_controllers)
         self.set_timer(1.0, _freeze_startup_heap)
+        if self.is_web and self._editable_file() is not None:
+            # A browser user has no other editor; it opens once the first frame is out.
+            self.call_after_refresh(self.action_editor)
 
     def on_unmount(self) -> None:
         if self._ticker is not None:
@@ -530,6 +540,28 @@ class TurtleApp(App):
         self.query_one(ContentSwitcher).current = name
         self._side_open = True
         self._layout_side()
+
+    def _editable_file(self) -> Path | None:
+        return next((spec.path for spec in self._controllers if spec.path is not None), None)
+
+    async def action_editor(self) -> None:
+        """Show the editor on the controller file and give it the keys (ctrl+s
+        saves and the node reloads; Esc gives the keys back to the arena)."""
+        path = self._editable_file()
+        if path is None:
+            self.notify("Nothing to edit: no controller file is running.", severity="warning")
+            return
+        switcher = self.query_one(ContentSwitcher)
+        if not switcher.query_children("#editor"):
+            # TextArea and its parser load only when the editor is first opened
+            from turtletui.tui.widgets.editor import EditorPanel
+
+            await switcher.mount(EditorPanel(path, id="editor"))
+        editor = self.query("#editor-text")
+        if not editor:
+            return  # the app is closing (the editor was asked for as a tab opened and closed)
+        self._show_side("editor")
+        editor.first().focus()
 
     def action_check_lesson(self) -> None:
         """Grade the running controller file against the open lesson, in another

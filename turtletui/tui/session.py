@@ -23,6 +23,7 @@ from turtletui.interfaces.turtlesim import RotateAbsolute
 from turtletui.runtime.loader import ControllerError, ControllerSpec, check_source
 from turtletui.runtime.sandbox import Limits, SandboxHost
 from turtletui.runtime.simulation import Simulation
+from turtletui.runtime.turtlesim_args import TurtlesimArgs
 from turtletui.sim import DT
 from turtletui.tui.marks import HitMarks
 from turtletui.worlds import WorldSpec
@@ -159,6 +160,7 @@ class LiveSession:
         start: bool = True,
         record: str | None = None,
         foxglove: str | None = None,
+        turtlesim: TurtlesimArgs | None = None,
     ) -> None:
         """``start``: start the controllers now (else with start_controllers())."""
         self.lock = threading.RLock()
@@ -175,7 +177,15 @@ class LiveSession:
         self.world_spec = world
         """The world the simulation runs in (obstacles, LiDAR); None: turtlesim's empty arena."""
         built = None if world is None else world.build(seed)
-        self.sim = Simulation(world=built, realtime=True, paced=False, log_sinks=[self._on_log])
+        turtlesim = turtlesim or TurtlesimArgs()
+        self.sim = Simulation(
+            world=built,
+            realtime=True,
+            paced=False,
+            log_sinks=[turtlesim.log_filter(self._on_log)],
+            turtlesim_name=turtlesim.name,
+        )
+        turtlesim.apply(self.sim)
         self.teleop = Teleop(self.sim, lock=self.lock)
         self.hits = HitMarks()
         """Where turtles ran into walls and obstacles lately (the arena marks them)."""

@@ -1,0 +1,124 @@
+"""``turtletui sim``: turtlesim alone, headless (real time, its log in ROS's
+console format) and in the app (driven with the keys and the ros2 command line)."""
+
+from __future__ import annotations
+
+import os
+import re
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+from support.pilot import SIZE, pilot_test, wait_for
+from textual.widgets import Input
+
+import turtletui
+from turtletui.runtime.turtlesim_args import parse_turtlesim_args
+from turtletui.tui.app import TurtleApp
+
+REPO = Path(turtletui.__file__).resolve().parents[1]
+LOG_LINE = re.compile(r"\[(INFO|WARN|ERROR)\] \[\d{10}\.\d{9}\] \[([a-z_]+)\]: (.*)\Z")
+
+
+def sim_process(*args: str, cwd: Path) -> subprocess.Popen[str]:
+    """``python -m turtletui sim ARGS`` with no terminal."""
+    return subprocess.Popen(
+        [sys.executable, "-m", "turtletui", "sim", *args],
+        cwd=cwd,
+        env=dict(os.environ, PYTHONPATH=str(REPO)),
+        stdin=subprocess.DEVNULL,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+
+
+def test_headless_keeps_running_without_a_duration(tmp_path: Path) -> None:
+    proc = sim_process("--headless", cwd=tmp_path)
+    try:
+        proc.stdout.readline()
+        time.sleep(1.0)
+        assert proc.poll() is None
+    finally:
+        proc.kill()
+        proc.communicate()
+
+
+def test_headless_prints_turtlesims_log_with_its_parameters_and_name(tmp_path: Path) -> None:
+    proc = sim_process(
+        "--headless", "--duration", "0.5",
+        "--ros-args", "-p", "background_r:=0", "-p", "holonomic:=true", "-r", "__node:=my_sim",
+        cwd=tmp_path,
+    )
+    out, err = proc.communicate(timeout=30)
+    assert proc.returncode == 0 and err == ""
+    lines = [LOG_LINE.match(line).groups() for line in out.splitlines()]
+    assert lines == [
+        ("INFO", "my_sim", "Starting turtlesim with node name /my_sim"),
+        ("INFO", "my_sim", "Spawning turtle [turtle1] at x=[5.544445], y=[5.544445], theta=[0.000000]"),
+    ]
+    # Real time: ROS stamps from the wall clock, not the lockstep epoch.
+    stamp = float(out.split("] [")[1].split("]")[0])
+    assert abs(stamp - time.time()) < 60
+
+
+def test_headless_runs_until_ctrl_c_and_ends_cleanly(tmp_path: Path) -> None:
+    proc = sim_process("--headless", cwd=tmp_path)
+    first = proc.stdout.readline()  # turtlesim is up
+    assert "Starting turtlesim with node name /turtlesim" in first
+    proc.send_signal(signal.SIGINT)  # at once: Ctrl-C right as it starts ends it cleanly too
+    out, err = proc.communicate(timeout=10)
+    assert proc.returncode == 0
+    assert "Traceback" not in err and err == ""
+    assert all(LOG_LINE.match(line) for line in out.splitlines())  # whole log lines only
+
+
+@pytest.mark.parametrize(
+    ("args", "expected"),
+    [
+        (["--headless", "--ros-args", "-p", "background_r:=256"], "background_r:=256"),
+        (["--headless", "--ros-args", "-p", "holonomic:=yes please"], "holonomic"),
+        (["--headless", "--ros-args", "-r", "__node:=bad-name"], "'bad-name' is not a valid node name"),
+        (["--headless", "--ros-args", "-r", "/turtle1/pose:=/p"], "-r /turtle1/pose:=/p"),
+        (["--headless", "--duration", "-1"], "--duration must be a positive number"),
+        (["--headless", "--world", "no-such-world"], "no-such-world"),
+        (["--duration", "5"], "--duration is for --headless runs"),
+        (["--pixels", "nope"], "--pixels: expected one of auto, half, braille, graphics"),
+        ([], "no terminal to draw the app in; run headless instead: turtletui sim --headless"),
+    ],
+)
+def test_bad_input_is_a_one_line_error(tmp_path: Path, args: list[str], expected: str) -> None:
+    proc = sim_process(*args, cwd=tmp_path)
+    out, err = proc.communicate(timeout=30)
+    assert proc.returncode == 2, err
+    assert out == "" and "Traceback" not in err
+    [line] = err.splitlines()
+    assert line.startswith("turtletui: error: ") and expected in line
+
+
+@pilot_test
+async def test_the_app_runs_turtlesim_alone_driven_by_keys_and_ros2_commands() -> None:
+    args = parse_turtlesim_args(["-p", "holonomic:=true", "-r", "__node:=my_sim", "-p", "background_r:=0"])
+    app = TurtleApp([], turtlesim=args)
+    async with app.run_test(size=SIZE) as pilot:
+        sim = app.session.sim
+        assert app.session.slots == [] and "no controller" in app._status()
+        assert sim.world.background == (0, 86, 255)
+        turtle = sim.world.turtles["turtle1"]
+        start = turtle.x
+        await pilot.press("up")  # turtle_teleop_key: one Twist of linear.x 2.0
+        await wait_for(pilot, lambda: turtle.x > start + 0.5)
+        # holonomic:=true: a sideways command moves the turtle sideways.
+        y = turtle.y
+        await pilot.press("colon")
+        command = app.focused
+        assert isinstance(command, Input)
+        # Typed key by key, a long command takes Pilot seconds: the first is pasted.
+        command.value = 'ros2 topic pub --once /turtle1/cmd_vel geometry_msgs/msg/Twist "{linear: {y: 1.5}}"'
+        await pilot.press("enter")
+        await wait_for(pilot, lambda: turtle.y > y + 0.3)
+        await pilot.press(*"ros2 param set /my_sim background_g 0", "enter")
+        await wait_for(pilot, lambda: sim.world.background == (0, 0, 255))

@@ -1,0 +1,93 @@
+"""``turtletui sim``: turtlesim alone, with no controller: the drop-in for
+``ros2 run turtlesim turtlesim_node``, in the app (drive it with the keys and
+the ros2 command line) or headless (real time, its log on stdout).
+
+Both front ends run one Simulation in real time; a bridge onto a real ROS 2
+graph (``turtletui sim --ros``) would attach to that simulation's graph, the
+headless loop and the app staying as they are.
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import typer
+
+from turtletui.cli.errors import fail
+from turtletui.cli.screen import require_screen
+
+ROS_ARGS: list[str] = []
+"""The ``--ros-args`` section of the command line, cut off before Typer parses."""
+
+
+def sim(
+    headless: bool = typer.Option(False, "--headless", help="Run without the app and print turtlesim's log."),
+    duration: float = typer.Option(
+        None, "--duration", "-d", help="Headless: wall-clock seconds to run (default: until Ctrl-C)."
+    ),
+    ascii_only: bool = typer.Option(False, "--ascii", help="Draw with plain ASCII and no colour."),
+    pixels: str = typer.Option(
+        "auto", "--pixels", help="How the app draws the arena: half, braille, graphics or auto (as turtletui run)."
+    ),
+    world: str = typer.Option(
+        None,
+        "--world",
+        help="World to run in: a registered name (see turtletui plugins) or a .toml world file."
+        " Default: turtlesim's empty arena.",
+    ),
+    seed: int = typer.Option(0, "--seed", help="Seed for everything random in the world."),
+    plugin: list[Path] = typer.Option(None, "--plugin", help="Load a plugin file or folder (repeatable)."),
+) -> None:
+    """Run turtlesim alone, as ros2 run turtlesim turtlesim_node does.
+
+    turtlesim's ROS arguments go last: turtletui sim --ros-args -p background_r:=0 -p holonomic:=true
+    """
+    # the same --world and --pixels as run
+    from turtletui.cli.run_cmd import _drawing, _resolve_world
+    from turtletui.compat.ros_args import RosArgsError
+    from turtletui.runtime.turtlesim_args import parse_turtlesim_args
+
+    try:
+        args = parse_turtlesim_args(ROS_ARGS)
+    except RosArgsError as err:
+        fail(str(err))
+    if duration is not None and not 0 < duration < 1e7:
+        fail(f"--duration must be a positive number of seconds, got {duration}")
+    world_spec = None if world is None else _resolve_world(world, plugin)
+    if not headless:
+        if duration is not None:
+            fail("--duration is for --headless runs; the app runs until you quit it (q)")
+        drawing = _drawing(pixels, ascii_only)
+        require_screen("run headless instead: turtletui sim --headless")
+        from turtletui.tui.app import TurtleApp
+
+        TurtleApp(
+            [],
+            ascii=ascii_only,
+            seed=seed,
+            world=world_spec,
+            turtlesim=args,
+            pixels=drawing.pixels,
+            graphics=drawing.graphics,
+        ).run()
+        return
+    from turtletui.graph.core import NS_PER_S
+    from turtletui.runtime.simulation import Simulation
+
+    def print_log(record) -> None:
+        sys.stdout.write(record.format() + "\n")
+        sys.stdout.flush()  # a live log: a pipe must not hold lines back
+
+    limit_ns = round(duration * NS_PER_S) if duration is not None else 2**62
+    try:  # from the first line turtlesim logs: Ctrl-C may come at any point after it
+        simulation = Simulation(
+            world=None if world_spec is None else world_spec.build(seed),
+            realtime=True,
+            log_sinks=[args.log_filter(print_log)],
+            turtlesim_name=args.name,
+        )
+        args.apply(simulation)
+        simulation.run_until(limit_ns)
+    except KeyboardInterrupt:
+        pass  # Ctrl-C is how turtlesim_node ends
