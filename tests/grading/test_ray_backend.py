@@ -27,7 +27,12 @@ from typer.testing import CliRunner
 
 from turtletui.cli import app
 from turtletui.grading.bundles import BundleError, pack, unpack
-from turtletui.grading.ray_backend import LessonBundle, SubmissionBundle, WorkerMismatch, grade_remotely
+from turtletui.grading.ray_backend import (
+    LessonBundle,
+    SubmissionBundle,
+    WorkerMismatch,
+    grade_remotely,
+)
 from turtletui.grading.store import KEY_ENV
 
 KEY = "a secret of this grading"

@@ -181,7 +181,7 @@ def test_students_of_a_missing_or_unfinished_part_are_named_and_fail_the_merge(g
     last = graded.part_reports[2]["submissions"][-1]["student"]
     (parts[2] / f"{last}.json").unlink()
     error = one_line_error(merge(*parts))
-    assert f"1 student of 5 have no result: {last} (part 3/3 in {parts[2]}: not graded (did it stop?))" in error
+    assert f"1 student of 5 has no result: {last} (part 3/3 in {parts[2]}: not graded (did it stop?))" in error
 
 
 def test_parts_given_twice_split_otherwise_or_graded_differently_are_refused(
@@ -214,6 +214,12 @@ def test_parts_given_twice_split_otherwise_or_graded_differently_are_refused(
     bigger = _manifest_only(graded, secret, klass, tmp_path / "bigger", Shard(3, 3))
     error = one_line_error(merge(*graded.parts[:2], bigger))
     assert "graded different classes: only the first has fay" in error
+    # ...or on the same class in another folder (the reports would name it otherwise)
+    moved = tmp_path / "moved"
+    shutil.copytree(graded.klass, moved)
+    elsewhere = _manifest_only(graded, secret, moved, tmp_path / "elsewhere", Shard(3, 3))
+    error = one_line_error(merge(*graded.parts[:2], elsewhere))
+    assert f"ann's submission is {moved / 'ann'} in the first and {graded.klass / 'ann'} in the second" in error
 
 
 def _manifest_only(graded: Graded, secret: bytes, klass: Path, folder: Path, shard: Shard) -> Path:

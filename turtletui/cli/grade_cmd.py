@@ -113,26 +113,13 @@ def grade(
     turtletui grade merge DIR... writes one report from the results folders
     of a class graded in parts (--shard K/N); see turtletui grade merge --help.
     """
-    from turtletui.grading.reports import (
-        FORMATS,
-        HIDDEN_CHOICES,
-        ROSTER_FORMATS,
-        SINGLE_SUBMISSION_FORMATS,
-        ReportOptions,
-    )
+    from turtletui.grading.reports import SINGLE_SUBMISSION_FORMATS, ReportOptions
 
-    if fmt not in FORMATS:
-        fail(f"--format {fmt!r}: choose one of {', '.join(FORMATS)}")
+    check_report_options(fmt, roster, hidden_tests)
     from turtletui.grading.engine import RECORDING_FORMATS
 
     if recording_format not in RECORDING_FORMATS:
         fail(f"--recording-format {recording_format!r}: choose {' or '.join(RECORDING_FORMATS)}")
-    if hidden_tests not in HIDDEN_CHOICES:
-        fail(f"--hidden-tests {hidden_tests!r}: choose one of {', '.join(HIDDEN_CHOICES)}")
-    if fmt == "canvas" and roster is None:
-        fail("--format canvas needs --roster EXPORT.csv: the gradebook exported from Canvas")
-    if roster is not None and fmt not in ROSTER_FORMATS:
-        fail(f"--roster is for --format {' or '.join(ROSTER_FORMATS)}, not {fmt}")
     if time_limit is not None and not time_limit > 0:
         fail(f"--time-limit must be a positive number of seconds, got {time_limit:g}")
     if backend not in BACKENDS:
@@ -174,6 +161,21 @@ def grade(
         raise SystemExit(EXIT_INTERNAL) from None
     if fail_under is not None and any(s.score < fail_under for s in report.submissions):
         raise SystemExit(EXIT_BELOW)
+
+
+def check_report_options(fmt: str, roster: Path | None, hidden_tests: str) -> None:
+    """A one-line error and exit 2 for --format, --roster and --hidden-tests
+    that name nothing or do not go together."""
+    from turtletui.grading.reports import FORMATS, HIDDEN_CHOICES, ROSTER_FORMATS
+
+    if fmt not in FORMATS:
+        fail(f"--format {fmt!r}: choose one of {', '.join(FORMATS)}")
+    if hidden_tests not in HIDDEN_CHOICES:
+        fail(f"--hidden-tests {hidden_tests!r}: choose one of {', '.join(HIDDEN_CHOICES)}")
+    if fmt == "canvas" and roster is None:
+        fail("--format canvas needs --roster EXPORT.csv: the gradebook exported from Canvas")
+    if roster is not None and fmt not in ROSTER_FORMATS:
+        fail(f"--roster is for --format {' or '.join(ROSTER_FORMATS)}, not {fmt}")
 
 
 def read_roster_option(path: Path | None):

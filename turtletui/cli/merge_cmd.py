@@ -17,7 +17,13 @@ import typer
 from typer.core import TyperCommand
 
 from turtletui.cli.errors import fail
-from turtletui.cli.grade_cmd import EXIT_BELOW, check_output, read_roster_option, write_output
+from turtletui.cli.grade_cmd import (
+    EXIT_BELOW,
+    check_output,
+    check_report_options,
+    read_roster_option,
+    write_output,
+)
 
 
 def merge(
@@ -44,16 +50,9 @@ def merge(
     machine grading it all would write it. Every part and the merge share the
     results key ($TURTLETUI_RESULTS_KEY)."""
     from turtletui.grading.merge import merge_results
-    from turtletui.grading.reports import FORMATS, HIDDEN_CHOICES, ROSTER_FORMATS, ReportOptions
+    from turtletui.grading.reports import ReportOptions
 
-    if fmt not in FORMATS:
-        fail(f"--format {fmt!r}: choose one of {', '.join(FORMATS)}")
-    if hidden_tests not in HIDDEN_CHOICES:
-        fail(f"--hidden-tests {hidden_tests!r}: choose one of {', '.join(HIDDEN_CHOICES)}")
-    if fmt == "canvas" and roster is None:
-        fail("--format canvas needs --roster EXPORT.csv: the gradebook exported from Canvas")
-    if roster is not None and fmt not in ROSTER_FORMATS:
-        fail(f"--roster is for --format {' or '.join(ROSTER_FORMATS)}, not {fmt}")
+    check_report_options(fmt, roster, hidden_tests)
     try:
         options = ReportOptions(roster=read_roster_option(roster), hidden=hidden_tests)
         check_output(output)

@@ -60,7 +60,8 @@ class Merged:
             groups.setdefault(why, []).append(student)
         count = len(self.missing)
         said = "; ".join(f"{_names(students)} ({why})" for why, students in groups.items())
-        return f"{count} student{'s' if count != 1 else ''} of {len(self.parts[0].manifest.members)} have no result: {said}"
+        whom = "1 student" if count == 1 else f"{count} students"
+        return f"{whom} of {len(self.parts[0].manifest.members)} {'has' if count == 1 else 'have'} no result: {said}"
 
 
 def _names(students: list[str]) -> str:
@@ -195,9 +196,16 @@ def _class_difference(a: ClassManifest, b: ClassManifest) -> str:
         if only_a:
             said.append(f"only the second has {_names(only_a)}")
         return ", ".join(said)
-    changed = [s for s in mine if mine[s] != theirs[s]]
-    if changed:
-        return f"the files or paths of {_names(changed)} differ"
+    files = [s for s in mine if mine[s].fingerprint != theirs[s].fingerprint]
+    if files:
+        return f"the files of {_names(files)} differ"
+    paths = [s for s in mine if mine[s].submission != theirs[s].submission]
+    if paths:
+        first = paths[0]
+        return (
+            f"{first}'s submission is {theirs[first].submission} in the first and {mine[first].submission} "
+            "in the second (reports name it: grade every part from the same folder)"
+        )
     return "the students are in another order"
 
 

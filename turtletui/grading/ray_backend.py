@@ -26,7 +26,6 @@ then that run fails as in the local pool.
 
 from __future__ import annotations
 
-import atexit
 import logging
 import os
 import shutil
@@ -263,11 +262,11 @@ class WorkerMismatch(ValueError):
     """This worker would not grade as the driver does; one line saying how."""
 
 
-_lessons: dict[str, tuple[str, list[str], Path]] = {}
-"""Lesson bundles unpacked in this worker: digest -> (lesson file, plugins, folder)."""
 _lesson_keys: dict[str, str] = {}
-_submission: tuple[str, Path] | None = None
-"""The submission unpacked last in this worker: (digest, base folder)."""
+"""The key of each lesson bundle's plan in this worker (by digest)."""
+_RUN_FOLDER = "turtletui-ray-run-"
+"""Each run's files are in a temporary folder ``turtletui-ray-run-PID-...``,
+removed when it ends, or by the next run on the machine if its worker died."""
 
 
 def grade_remotely(
@@ -290,9 +289,11 @@ def grade_remotely(
     run_as = _run_as(same_user)
     limits = replace(limits or Limits(), run_as=run_as)
     _set_up(lesson, limits)
-    base = _unpacked(submission, readable=run_as is not None)
-    recordings = Path(tempfile.mkdtemp(prefix="turtletui-ray-run-")) if record else None
-    try:
+    _remove_left_over()
+    with tempfile.TemporaryDirectory(prefix=f"{_RUN_FOLDER}{os.getpid()}-") as folder:
+        base = Path(folder).resolve()
+        _unpack_submission(submission, base, readable=run_as is not None)
+        recordings = base / "recordings" if record else None
         with _working_folder(base, submission.cwd):
             path = str(_mirror(base, controller)) if Path(controller).is_absolute() else controller
             student, outcome, seconds = batch.run_task(
@@ -304,9 +305,6 @@ def grade_remotely(
             data = Path(outcome.recording).read_bytes()
             outcome = replace(outcome, recording=Path(outcome.recording).name)
         return student, _as_on_the_driver(outcome, base), seconds, data
-    finally:
-        if recordings is not None:
-            shutil.rmtree(recordings, ignore_errors=True)
 
 
 def _run_as(same_user: bool) -> tuple[int, int] | None:
@@ -331,44 +329,68 @@ def _set_up(lesson: LessonBundle, limits: Limits) -> None:
             f"the Ray workers have turtletui {__version__}, the driver {lesson.version}: install the same on both"
         )
     name = digest(lesson.files)
-    if name not in _lessons:
-        folder = Path(tempfile.mkdtemp(prefix="turtletui-ray-lesson-")).resolve()  # 0700: students cannot read it
-        atexit.register(shutil.rmtree, folder, True)
-        unpack(lesson.files, folder)
-        _lessons[name] = (str(folder / lesson.lesson), [str(folder / p) for p in lesson.plugins], folder)
-    lesson_path, plugins, folder = _lessons[name]
+    folder = _lesson_folder(lesson, name)
     worlds = folder / "cwd"
     with _working_folder(worlds if worlds.is_dir() else None, None):
-        plan = batch.set_up_worker(lesson_path, plugins, limits, shared_cpus=True)
+        plan = batch.set_up_worker(
+            str(folder / lesson.lesson), [str(folder / p) for p in lesson.plugins], limits, shared_cpus=True
+        )
     if name not in _lesson_keys:
-        _lesson_keys[name] = store_key(plan, plugins=plugins)
+        _lesson_keys[name] = store_key(plan, plugins=[folder / p for p in lesson.plugins])
     if _lesson_keys[name] != lesson.key:
         raise WorkerMismatch(
             "the Ray workers' checks or plugins differ from the driver's: install the same turtletui and plugins on both"
         )
 
 
-def _unpacked(submission: SubmissionBundle, *, readable: bool) -> Path:
-    """A base folder holding the submission at its driver's path (kept for the
-    next run of the same files; the one before is removed)."""
-    global _submission
+def _lesson_folder(lesson: LessonBundle, name: str) -> Path:
+    """The lesson bundle unpacked, once per machine and content, in a folder
+    only this user can enter (student code run as ``nobody`` cannot read a
+    lesson's hidden scenarios): kept between gradings, as a cache."""
+    root = Path(tempfile.gettempdir()) / f"turtletui-ray-lessons-{os.getuid()}"
+    try:
+        root.mkdir(mode=0o700, exist_ok=True)
+        mine = root.lstat()
+        if mine.st_uid != os.getuid() or mine.st_mode & 0o077 or not root.is_dir():
+            raise OSError(f"{root} is not this user's own")  # someone else made it: not to be trusted
+    except OSError:
+        root = Path(tempfile.mkdtemp(prefix="turtletui-ray-lessons-"))
+    folder = root / name
+    if not folder.is_dir():
+        fresh = Path(tempfile.mkdtemp(dir=root))
+        unpack(lesson.files, fresh)
+        try:
+            os.rename(fresh, folder)
+        except OSError:  # another worker unpacked it meanwhile
+            shutil.rmtree(fresh, ignore_errors=True)
+    return folder.resolve()
+
+
+def _remove_left_over() -> None:
+    """Remove the run folders of this user's workers that died in a run."""
+    for folder in Path(tempfile.gettempdir()).glob(f"{_RUN_FOLDER}*-*"):
+        pid = folder.name[len(_RUN_FOLDER) :].split("-")[0]
+        try:
+            if not pid.isdigit() or folder.lstat().st_uid != os.getuid():
+                continue
+            os.kill(int(pid), 0)
+        except ProcessLookupError:
+            shutil.rmtree(folder, ignore_errors=True)
+        except OSError:
+            continue
+
+
+def _unpack_submission(submission: SubmissionBundle, base: Path, *, readable: bool) -> None:
+    """The submission under ``base`` at its driver's path, and the driver's
+    working folder there (a relative controller path starts in it)."""
     from turtletui.grading.integrity import readable_not_writable
 
-    name = digest(submission.files)
-    if _submission is not None and _submission[0] == name:
-        return _submission[1]
-    if _submission is not None:
-        shutil.rmtree(_submission[1], ignore_errors=True)
-    base = Path(tempfile.mkdtemp(prefix="turtletui-ray-")).resolve()
-    atexit.register(shutil.rmtree, base, True)
     target = _mirror(base, submission.root)
     target.parent.mkdir(parents=True, exist_ok=True)
     unpack(submission.files, target.parent)
-    Path(_mirror(base, submission.cwd)).mkdir(parents=True, exist_ok=True)
+    _mirror(base, submission.cwd).mkdir(parents=True, exist_ok=True)
     if readable:
         readable_not_writable(base)
-    _submission = (name, base)
-    return base
 
 
 def _mirror(base: Path, driver_path: str) -> Path:
