@@ -20,6 +20,7 @@ from turtletui.cli import (
     serve_cmd,
     sim_cmd,
 )
+from turtletui.cli.merge_cmd import GradeCommand
 
 app = typer.Typer(
     name="turtletui",
@@ -36,7 +37,7 @@ app.command("plugins")(plugins_cmd.plugins)
 app.command("lessons")(lessons_cmd.lessons)
 app.command("lesson")(lessons_cmd.lesson)
 app.command("new")(lessons_cmd.new)
-app.command("grade")(grade_cmd.grade)
+app.command("grade", cls=GradeCommand)(grade_cmd.grade)  # and grade merge
 app.command("checks")(grade_cmd.checks)
 app.command("replay")(replay_cmd.replay)
 app.add_typer(autograder_cmd.app, name="autograder")

@@ -16,6 +16,7 @@ import typer
 
 from turtletui.cli.errors import fail
 
+BACKENDS = ("local", "ray")
 EXIT_BELOW = 1
 EXIT_INTERNAL = 3
 EXIT_INTERRUPTED = 130
@@ -87,27 +88,49 @@ def grade(
         help="gradescope: summary (one test, the student sees their total) or a visibility for each:"
         " after_published, after_due_date, hidden, visible.",
     ),
+    shard: str = typer.Option(
+        None,
+        "--shard",
+        metavar="K/N",
+        help="Grade part K of N of the class (one of N machines); turtletui grade merge puts the parts together.",
+    ),
+    backend: str = typer.Option(
+        "local",
+        "--backend",
+        metavar="NAME",
+        help="Where the runs run: local (this machine) or ray (a Ray cluster, with the extra turtletui[ray]).",
+    ),
+    address: str = typer.Option(
+        None,
+        "--address",
+        metavar="ADDR",
+        help="ray: the cluster, as Ray names it (auto, local, ray://HOST:10001;"
+        " default: $RAY_ADDRESS, else one on this machine, else a new one).",
+    ),
 ) -> None:
-    """Grade submissions against a lesson's scenarios and checks."""
-    from turtletui.grading.reports import FORMATS, HIDDEN_CHOICES, ROSTER_FORMATS, ReportOptions
+    """Grade submissions against a lesson's scenarios and checks.
 
-    if fmt not in FORMATS:
-        fail(f"--format {fmt!r}: choose one of {', '.join(FORMATS)}")
+    turtletui grade merge DIR... writes one report from the results folders
+    of a class graded in parts (--shard K/N); see turtletui grade merge --help.
+    """
+    from turtletui.grading.reports import SINGLE_SUBMISSION_FORMATS, ReportOptions
+
+    check_report_options(fmt, roster, hidden_tests)
     from turtletui.grading.engine import RECORDING_FORMATS
 
     if recording_format not in RECORDING_FORMATS:
         fail(f"--recording-format {recording_format!r}: choose {' or '.join(RECORDING_FORMATS)}")
-    if hidden_tests not in HIDDEN_CHOICES:
-        fail(f"--hidden-tests {hidden_tests!r}: choose one of {', '.join(HIDDEN_CHOICES)}")
-    if fmt == "canvas" and roster is None:
-        fail("--format canvas needs --roster EXPORT.csv: the gradebook exported from Canvas")
-    if roster is not None and fmt not in ROSTER_FORMATS:
-        fail(f"--roster is for --format {' or '.join(ROSTER_FORMATS)}, not {fmt}")
     if time_limit is not None and not time_limit > 0:
         fail(f"--time-limit must be a positive number of seconds, got {time_limit:g}")
+    if backend not in BACKENDS:
+        fail(f"--backend {backend!r}: choose {' or '.join(BACKENDS)}")
+    if address is not None and backend != "ray":
+        fail("--address is the Ray cluster's: give it with --backend ray")
+    if shard is not None and fmt in SINGLE_SUBMISSION_FORMATS:
+        fail(f"--shard splits a class; --format {fmt} grades one submission")
     try:
-        options = ReportOptions(roster=_roster(roster), hidden=hidden_tests)
-        _check_output(output)
+        options = ReportOptions(roster=read_roster_option(roster), hidden=hidden_tests)
+        check_output(output)
         report = _grade(
             submissions,
             lesson_id,
@@ -122,8 +145,11 @@ def grade(
             recording_format,
             executable,
             time_limit,
+            shard,
+            backend,
+            address,
         )
-        _write(report, fmt, output, options)
+        write_output(report, fmt, output, options)
     except KeyboardInterrupt:
         sys.stderr.write("turtletui: interrupted: finished results are kept; run the same command to resume\n")
         raise SystemExit(EXIT_INTERRUPTED) from None
@@ -137,7 +163,23 @@ def grade(
         raise SystemExit(EXIT_BELOW)
 
 
-def _roster(path: Path | None):
+def check_report_options(fmt: str, roster: Path | None, hidden_tests: str) -> None:
+    """A one-line error and exit 2 for --format, --roster and --hidden-tests
+    that name nothing or do not go together."""
+    from turtletui.grading.reports import FORMATS, HIDDEN_CHOICES, ROSTER_FORMATS
+
+    if fmt not in FORMATS:
+        fail(f"--format {fmt!r}: choose one of {', '.join(FORMATS)}")
+    if hidden_tests not in HIDDEN_CHOICES:
+        fail(f"--hidden-tests {hidden_tests!r}: choose one of {', '.join(HIDDEN_CHOICES)}")
+    if fmt == "canvas" and roster is None:
+        fail("--format canvas needs --roster EXPORT.csv: the gradebook exported from Canvas")
+    if roster is not None and fmt not in ROSTER_FORMATS:
+        fail(f"--roster is for --format {' or '.join(ROSTER_FORMATS)}, not {fmt}")
+
+
+def read_roster_option(path: Path | None):
+    """The class list of ``--roster`` (None without it)."""
     if path is None:
         return None
     from turtletui.grading.formats.roster import read_roster
@@ -159,19 +201,31 @@ def _grade(
     recording_format,
     executable,
     time_limit,
+    shard_text,
+    backend_name,
+    address,
 ):
+    from contextlib import nullcontext
     from dataclasses import replace
 
     from turtletui.grading.batch import grade_submissions
     from turtletui.grading.engine import prepare
     from turtletui.grading.integrity import PrivateCopies, check_runtime_readable, unprivileged_ids
     from turtletui.grading.reports import SINGLE_SUBMISSION_FORMATS
+    from turtletui.grading.shards import (
+        WHOLE_CLASS,
+        grading_conditions,
+        parse_shard,
+        part_of,
+        write_manifest,
+    )
     from turtletui.grading.store import ResultStore, checkout_of, store_key
     from turtletui.grading.submissions import find_submissions
     from turtletui.lessons.loader import find_lesson
     from turtletui.runtime import container
     from turtletui.runtime.sandbox import Limits
 
+    shard = parse_shard(shard_text) if shard_text else WHOLE_CLASS
     lesson = find_lesson(lesson_id, folders, plugins)
     plan = prepare(lesson, plugins=plugins)
     single = fmt in SINGLE_SUBMISSION_FORMATS
@@ -186,11 +240,12 @@ def _grade(
         raise ValueError(
             f"--format {fmt} reports one submission (the platform grades one per container), got {len(found)}"
         )
-    # Runs side by side fit the container's CPUs and memory (a run that could
-    # use more than the container has would get the whole container killed).
-    jobs = container.fitting_jobs(jobs or container.available_cpus())
     limits = Limits()
-    limits = replace(limits, memory_bytes=container.run_memory(jobs, limits.memory_bytes))
+    if backend_name == "local":
+        # Runs side by side fit the container's CPUs and memory (a run that could
+        # use more than the container has would get the whole container killed).
+        jobs = container.fitting_jobs(jobs or container.available_cpus())
+        limits = replace(limits, memory_bytes=container.run_memory(jobs, limits.memory_bytes))
     # Stored results inside a submission, or inside the checkout a submission
     # named here comes from, could have been written by the student: never reused.
     named = [checkout_of(path) for path in submissions if path.is_file() or path in {s.path for s in found}]
@@ -199,8 +254,14 @@ def _grade(
         store_key(plan, plugins=plugins, limits=(limits, time_limit)),  # a new --time-limit grades again
         untrusted=[*named, *(s.path for s in found)],
     )
+    write_manifest(store, plan, found, shard, grading_conditions(plan, limits, time_limit))
+    everyone = len(found)
+    found = part_of(found, shard)
+    if shard != WHOLE_CLASS and not quiet:
+        sys.stderr.write(f"part {shard} of the class: {len(found)} of {everyone} students\n")
     copies = None
-    ids = None if same_user else unprivileged_ids()
+    # on Ray, each worker decides whom student code runs as, and copies it
+    ids = None if same_user or backend_name == "ray" else unprivileged_ids()
     if ids is not None:
         check_runtime_readable()
         limits = replace(limits, run_as=ids)
@@ -223,27 +284,34 @@ def _grade(
     def slow(student: str, text: str) -> None:
         sys.stderr.write(f"[{finished}/{total}] {student}: {text}\n")
 
+    cluster = nullcontext()
+    if backend_name == "ray":
+        from turtletui.grading.ray_backend import RayBackend
+
+        cluster = RayBackend(address, plugins=plugins, same_user=same_user, jobs=jobs)
     try:
-        return grade_submissions(
-            plan,
-            found,
-            store=store,
-            jobs=jobs,
-            force=force,
-            limits=limits,
-            plugins=plugins,
-            on_result=progress,
-            workdir=copies,
-            recording_format=recording_format,
-            time_limit=time_limit,
-            on_progress=None if quiet else slow,
-        )
+        with cluster as backend:
+            return grade_submissions(
+                plan,
+                found,
+                store=store,
+                jobs=jobs,
+                force=force,
+                limits=limits,
+                plugins=plugins,
+                on_result=progress,
+                workdir=copies,
+                recording_format=recording_format,
+                time_limit=time_limit,
+                on_progress=None if quiet else slow,
+                backend=backend,
+            )
     finally:
         if copies is not None:
             copies.close()
 
 
-def _check_output(output: Path | None) -> None:
+def check_output(output: Path | None) -> None:
     """Refuse an output path that cannot be written before grading a class, not after."""
     if output is None:
         return
@@ -255,7 +323,8 @@ def _check_output(output: Path | None) -> None:
         raise ValueError(f"cannot write {output}: permission denied")
 
 
-def _write(report, fmt: str, output: Path | None, options) -> None:
+def write_output(report, fmt: str, output: Path | None, options) -> None:
+    """The report in ``fmt`` to ``output`` (atomically), or to the terminal."""
     from turtletui.grading.reports import (
         github_output_line,
         print_table,

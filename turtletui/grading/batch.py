@@ -23,7 +23,7 @@ from concurrent.futures.process import BrokenProcessPool
 from contextlib import contextmanager
 from dataclasses import dataclass, field, replace
 from pathlib import Path
-from typing import Any
+from typing import Any, Protocol
 
 from turtletui.grading.engine import (
     GradingPlan,
@@ -48,6 +48,31 @@ An honest controller needs a few seconds; a run of each scenario may besides
 take at most its own simulated duration."""
 PROGRESS_EVERY = 10.0
 """Seconds between progress lines about a submission still being graded."""
+KILLED_RUN = "not judged: the process grading this run was killed (by the controller?)"
+"""What the tests of a run say when the process running it died twice."""
+
+Task = tuple[Any, ...]
+"""One scenario run of one submission: the first arguments of :func:`run_task`."""
+
+
+class RunBackend(Protocol):
+    """Runs a batch's scenario runs somewhere else than in this machine's pool
+    of workers (:mod:`turtletui.grading.ray_backend`)."""
+
+    def run(
+        self,
+        plan: GradingPlan,
+        tasks: list[Task],
+        submissions: dict[str, Submission],
+        limits: Limits | None,
+        start: Callable[[Task], Task | None],
+        done: Callable[[str, RunOutcome, float], None],
+        tick: Callable[[], None],
+    ) -> None:
+        """Run every task of the ``submissions`` (student -> submission) through
+        :func:`run_task`: ``start(task)`` gives its arguments (None: it is not
+        run), ``done(*answer)`` takes each answer, ``tick()`` is called about
+        once a second."""
 
 
 @dataclass
@@ -89,7 +114,6 @@ def default_jobs() -> int:
 def _init_worker(
     lesson_path: str, plugins: Sequence[str], limits: Limits | None, parent: int | None = None, next_cpu: Any = None
 ) -> None:
-    global _worker_plan, _worker_limits
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent handles Ctrl-C
     # A grader killed outright (SIGKILL) must not leave its workers waiting for
     # tasks forever, holding its output pipes: they get SIGTERM when it dies (Linux).
@@ -104,15 +128,28 @@ def _init_worker(
     if parent is not None and os.getppid() != parent:
         os._exit(1)  # it died before the line above
     if next_cpu is not None:
-        # More runs than pairs of CPUs: a reader polling for its child's answer
-        # would take the CPU that child needs (the children read the variable too).
+        _pin_to_one_cpu(next_cpu)
+    set_up_worker(lesson_path, plugins, limits, shared_cpus=next_cpu is not None)
+
+
+def set_up_worker(
+    lesson_path: str, plugins: Sequence[str | Path], limits: Limits | None, *, shared_cpus: bool = False
+) -> GradingPlan:
+    """Make this process ready to :func:`run_task` the runs of a lesson (a
+    worker of the local pool, or of a cluster): its plan (kept while the
+    lesson file is the same), the sandbox's limits, fork servers.
+    ``shared_cpus``: more runs than pairs of CPUs run side by side."""
+    global _worker_plan, _worker_limits
+    if shared_cpus:
+        # A reader polling for its child's answer would take the CPU that
+        # child needs (the children read the variable too).
         wire.SPIN_SECONDS = 0.0
         os.environ[wire.SPIN_ENV] = "0"
-        _pin_to_one_cpu(next_cpu)
     forkserver.enable()
     if _worker_plan is None or str(_worker_plan.lesson.path) != lesson_path:
         _worker_plan = prepare(load_lesson(lesson_path), plugins=plugins)
     _worker_limits = limits
+    return _worker_plan
 
 
 def _pin_to_one_cpu(counter: Any) -> None:
@@ -134,7 +171,7 @@ def _pin_to_one_cpu(counter: Any) -> None:
         pass
 
 
-def _run_task(
+def run_task(
     student: str,
     controller: str,
     run_index: int,
@@ -144,6 +181,11 @@ def _run_task(
     run_seconds: float | None = None,
     why: str = "",
 ) -> tuple[str, RunOutcome, float]:
+    """Run ``run_index`` of the plan :func:`set_up_worker` prepared with one
+    submission's controller, in its sandbox (at most ``run_seconds`` of wall
+    time, for the reason ``why``); its failed visible run recorded in the
+    folder ``recordings``. Returns the student, the outcome and the wall
+    seconds it took. Every backend runs every run through this."""
     global _in_task
     assert _worker_plan is not None
     started = time.perf_counter()
@@ -184,6 +226,7 @@ def grade_submissions(
     time_limit: float | None = None,
     on_progress: Callable[[str, str], None] | None = None,
     progress_every: float = PROGRESS_EVERY,
+    backend: RunBackend | None = None,
 ) -> GradeReport:
     """Grade every submission (reusing stored results unless ``force``).
 
@@ -196,8 +239,9 @@ def grade_submissions(
     (default: the lesson's ``time_limit``, else :data:`DEFAULT_TIME_LIMIT`);
     each run besides may take its simulated duration. ``on_progress(student,
     text)`` is told every ``progress_every`` seconds about a submission still
-    being graded. KeyboardInterrupt propagates after the workers are stopped;
-    every result finished before it is already saved.
+    being graded. ``backend`` runs the runs instead of ``jobs`` local workers.
+    KeyboardInterrupt propagates after the workers are stopped; every result
+    finished before it is already saved.
     """
     results: dict[str, SubmissionResult] = {}
     pending: dict[str, _Pending] = {}
@@ -267,14 +311,17 @@ def grade_submissions(
     frozen_before = gc.get_freeze_count()
     gc.freeze()
     try:
-        if jobs <= 1 or len(tasks) <= 1:
+        if backend is not None:
+            submitted = {student: item.submission for student, item in pending.items()}
+            backend.run(plan, tasks, submitted, limits, start, done, clock.tick)
+        elif jobs <= 1 or len(tasks) <= 1:
             global _worker_plan, _worker_limits
             _worker_plan, _worker_limits = plan, limits
             with forkserver.serving(), clock.ticking():
                 for task in tasks:
                     started = start(task)
                     if started is not None:
-                        done(*_run_task(*started))
+                        done(*run_task(*started))
         else:
             _run_parallel(plan, tasks, jobs, limits, plugins, start, done, clock.tick)
     finally:
@@ -399,7 +446,7 @@ def _run_parallel(
         # so that only the one that kills its worker again is failed for it.
         for task in _run_pool(plan, queue, jobs, limits, plugins, start, done, tick):
             if _run_pool(plan, [task], 1, limits, plugins, start, done, tick):
-                lost = failed_run(plan, task[2], "not judged: the process grading this run was killed (by the controller?)")
+                lost = failed_run(plan, task[2], KILLED_RUN)
                 done(task[0], lost, 0.0)
 
 
@@ -443,7 +490,7 @@ def _run_pool(
                 if started is None:
                     continue
                 try:
-                    running[executor.submit(_run_task, *started)] = task
+                    running[executor.submit(run_task, *started)] = task
                 except BrokenProcessPool:
                     queue.append(task)
                     broken = True

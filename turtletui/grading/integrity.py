@@ -63,6 +63,16 @@ def check_runtime_readable() -> None:
             )
 
 
+def readable_not_writable(root: Path) -> None:
+    """Let every user read ``root`` and what is in it, and only its owner write."""
+    for folder, _dirs, files in os.walk(root):
+        os.chmod(folder, 0o755)
+        for name in files:
+            file = os.path.join(folder, name)
+            if not os.path.islink(file):
+                os.chmod(file, 0o644)
+
+
 class PrivateCopies:
     """Copies of submissions in a fresh folder the student's user can read but
     not write: one student's code cannot touch another's files or the originals."""
@@ -83,12 +93,7 @@ class PrivateCopies:
             target.mkdir()
             controller = target / submission.controller.name
             shutil.copy2(submission.controller, controller, follow_symlinks=False)
-        for folder, _dirs, files in os.walk(target):
-            os.chmod(folder, 0o755)
-            for name in files:
-                file = os.path.join(folder, name)
-                if not os.path.islink(file):
-                    os.chmod(file, 0o644)
+        readable_not_writable(target)
         return replace(submission, path=target, controller=controller)
 
     def close(self) -> None:

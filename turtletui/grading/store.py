@@ -46,16 +46,13 @@ def signing_key() -> bytes:
     """The key stored results are signed with (see the module's docstring). A
     key file that cannot be made gives a key for this process only: results
     are then kept for the run but not reused by the next one."""
-    secret = os.environ.get(KEY_ENV)
-    if secret:
-        return hashlib.sha256(secret.encode("utf-8")).digest()
-    path = data_home() / KEY_FILE
     try:
-        return _read_key(path)
-    except FileNotFoundError:
-        pass
+        existing = existing_signing_key()
     except OSError:
         return secrets.token_bytes(32)
+    if existing is not None:
+        return existing
+    path = data_home() / KEY_FILE
     try:
         path.parent.mkdir(parents=True, exist_ok=True, mode=0o700)
         fd = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600)
@@ -69,6 +66,19 @@ def signing_key() -> bytes:
     return key
 
 
+def existing_signing_key() -> bytes | None:
+    """The key from ``$TURTLETUI_RESULTS_KEY`` or the key file, None when
+    there is neither (nothing is made); OSError for a key file that cannot be
+    trusted or read."""
+    secret = os.environ.get(KEY_ENV)
+    if secret:
+        return hashlib.sha256(secret.encode("utf-8")).digest()
+    try:
+        return _read_key(data_home() / KEY_FILE)
+    except FileNotFoundError:
+        return None
+
+
 def _read_key(path: Path) -> bytes:
     if path.stat().st_mode & 0o077:
         raise OSError(f"{path} is readable by others")  # not a key to trust
@@ -76,6 +86,45 @@ def _read_key(path: Path) -> bytes:
     if len(key) < 16:
         raise OSError(f"{path} is too short to be a key")
     return key
+
+
+def signature(secret: bytes, data: dict[str, Any]) -> str:
+    """The HMAC-SHA256 every stored file carries: of ``data`` as canonical JSON."""
+    body = json.dumps(data, sort_keys=True, separators=(",", ":")).encode("utf-8")
+    return hmac.new(secret, body, hashlib.sha256).hexdigest()
+
+
+class SignatureError(ValueError):
+    """A stored file that is not as the grader signed it; one line naming it."""
+
+
+def read_signed(path: Path, secret: bytes) -> dict[str, Any]:
+    """The data of a signed file (its signature taken off). OSError when it
+    cannot be read, :class:`SignatureError` when it is not JSON or its
+    signature is not ``secret``'s: edited, forged, or signed with another key."""
+    return parse_signed(path.read_text(encoding="utf-8"), secret, path)
+
+
+def parse_signed(raw: str, secret: bytes, path: Path) -> dict[str, Any]:
+    """:func:`read_signed` of the text ``raw`` read from ``path``."""
+    try:
+        data = json.loads(raw)
+        given = data.pop("signature")
+    except (ValueError, TypeError, KeyError, AttributeError):
+        raise SignatureError(f"{path}: not a signed turtletui results file") from None
+    if not hmac.compare_digest(str(given), signature(secret, data)):
+        raise SignatureError(f"{path}: its signature does not match the results key")
+    return data
+
+
+def result_path(folder: Path, student: str) -> Path:
+    """Where a results folder keeps ``student``'s result."""
+    return folder / f"{_safe(student)}.json"
+
+
+def recordings_folder(folder: Path, student: str) -> Path:
+    """Where a results folder keeps the recordings of ``student``'s failed runs."""
+    return folder / "recordings" / _safe(student)
 
 
 def checkout_of(path: Path) -> Path:
@@ -158,14 +207,10 @@ class ResultStore:
         """The text of every file this store wrote or reused, for :meth:`restore`."""
 
     def path(self, student: str) -> Path:
-        return self.folder / f"{_safe(student)}.json"
+        return result_path(self.folder, student)
 
     def recordings(self, student: str) -> Path:
-        return self.folder / "recordings" / _safe(student)
-
-    def _signature(self, data: dict[str, Any]) -> str:
-        body = json.dumps(data, sort_keys=True, separators=(",", ":")).encode("utf-8")
-        return hmac.new(self._secret, body, hashlib.sha256).hexdigest()
+        return recordings_folder(self.folder, student)
 
     def load(self, submission: Submission) -> SubmissionResult | None:
         """The stored result of the same files under the same lesson, signed by
@@ -175,10 +220,7 @@ class ResultStore:
         path = self.path(submission.student)
         try:
             raw = path.read_text(encoding="utf-8")
-            data = json.loads(raw)
-            signature = data.pop("signature")
-            if not hmac.compare_digest(str(signature), self._signature(data)):
-                return None
+            data = parse_signed(raw, self._secret, path)
             if data.get("store") != STORE_VERSION or data.get("key") != self.key:
                 return None
             if data.get("student") != submission.student or data.get("fingerprint") != submission.fingerprint():
@@ -198,9 +240,11 @@ class ResultStore:
             "fingerprint": submission.fingerprint(),
             "result": result.as_dict(),
         }
-        data["signature"] = self._signature(data)
-        target = self.path(submission.student)
-        payload = json.dumps(data, indent=1)
+        self.write_signed(self.path(submission.student), data)
+
+    def write_signed(self, target: Path, data: dict[str, Any]) -> None:
+        """Sign ``data`` and write it to ``target`` (in this folder) atomically."""
+        payload = json.dumps({**data, "signature": signature(self._secret, data)}, indent=1)
         write_text_atomic(target, payload)
         self._kept[target] = payload
 

@@ -125,7 +125,9 @@ class Candidate:
 # -- a student's folder ------------------------------------------------------------------
 
 
-def _skipped(path: Path) -> bool:
+def ignored(path: Path) -> bool:
+    """Whether a file or folder in a submission holds no source of the
+    student's: hidden, a cache, build output, an environment."""
     name = path.name
     return name.startswith((".", "__")) or name in _NOT_SOURCE_FOLDERS or name.endswith(".egg-info")
 
@@ -142,7 +144,7 @@ def _walk(folder: Path, depth: int = 0):
     if depth >= MAX_DEPTH:
         return
     for entry in entries:
-        if entry.is_dir() and not entry.is_symlink() and not _skipped(entry):
+        if entry.is_dir() and not entry.is_symlink() and not ignored(entry):
             yield from _walk(entry, depth + 1)
 
 
@@ -417,7 +419,7 @@ def _is_one_student(folder: Path) -> bool:
     """A folder is one student's work (not a class) when it holds Python files
     or a package of its own at its top level, or a workspace's ``src/``."""
     for entry in folder.iterdir():
-        if _skipped(entry):
+        if ignored(entry):
             continue
         if entry.is_file() and (entry.suffix == ".py" or entry.name in _PACKAGE_FILES):
             return True
@@ -447,8 +449,8 @@ def find_submissions(
         if path.is_file() or single or _is_one_student(path):
             found.append(_single(path, choice) if single else _student(path, choice))
             continue
-        students = sorted(p for p in path.iterdir() if p.is_dir() and not _skipped(p))
-        loose = sorted(p for p in path.iterdir() if p.is_file() and p.suffix == ".py" and not _skipped(p))
+        students = sorted(p for p in path.iterdir() if p.is_dir() and not ignored(p))
+        loose = sorted(p for p in path.iterdir() if p.is_file() and p.suffix == ".py" and not ignored(p))
         if not students and not loose:
             raise SubmissionError(f"{path}: empty folder: no submissions to grade")
         # Files that are not Python next to the students' folders (notes.txt, a
@@ -460,7 +462,7 @@ def find_submissions(
 def _single(path: Path, choice: _Choice) -> Submission:
     """One upload, as a platform hands it over (a zip comes unpacked)."""
     name = path.stem if path.is_file() else path.name
-    if path.is_dir() and not any(not _skipped(p) for p in path.iterdir()):
+    if path.is_dir() and not any(not ignored(p) for p in path.iterdir()):
         return Submission(name, path, None, f"{path}: the upload is empty: submit your controller (.py file or ROS package)")
     return _student(path, choice, name)
 
