@@ -119,6 +119,18 @@ def test_a_run_over_its_wall_clock_limit_is_stopped(tmp_path: Path) -> None:
     assert crash.t < 5.0
 
 
+def test_a_run_stopped_by_its_limit_while_behind_real_time_is_told_why(tmp_path: Path) -> None:
+    """On a busy machine the run's limit may come first: the verdict still
+    says the controller could not keep up, and what took the time."""
+    path = pose_node(tmp_path, "work(0.03)")
+    limits = Limits(realtime_lag=None, run_seconds=8.0, run_seconds_reason="as a test says")
+    [crash] = run([path], duration=60.0, limits=limits).crashes
+    assert crash.kind == "time"
+    assert "s of wall time: as a test says; it could not keep up with real time (" in crash.message
+    assert "your pose_callback takes" in crash.message
+    assert crash.message.endswith("on a real robot this node falls behind")
+
+
 def test_the_report_names_the_busiest_cause() -> None:
     pace = Pace(start_ns=0, subscriptions={1: ("pose_callback", "/turtle1/pose"), 2: ("", "/turtle1/scan")})
     for i in range(10):

@@ -954,3 +954,25 @@ def test_limits_reach_the_child(tmp_path: Path) -> None:
     go(path, memory_bytes=700 * 1024**2, duration=0.5)
     soft, hard = json.loads((tmp_path / "limit").read_text())
     assert soft == 700 * 1024**2
+
+
+def test_the_graders_secrets_never_reach_student_code(tmp_path: Path, monkeypatch) -> None:
+    """Student code sees the variables a program needs (PATH, locale, ROS's
+    own) and none of the grader's: the results key, CI tokens, credentials."""
+    monkeypatch.setenv("TURTLETUI_RESULTS_KEY", "0123456789abcdef")
+    monkeypatch.setenv("GITHUB_TOKEN", "ghp_secret")
+    monkeypatch.setenv("AWS_SECRET_ACCESS_KEY", "aws_secret")
+    monkeypatch.setenv("ROS_DOMAIN_ID", "17")
+    path = write(tmp_path, """
+        import json
+        note("environ", json.dumps(dict(os.environ)))
+
+        def misbehave(node):
+            pass
+    """)
+    go(path, duration=0.5)
+    seen = json.loads((tmp_path / "environ").read_text())
+    assert not {"TURTLETUI_RESULTS_KEY", "GITHUB_TOKEN", "AWS_SECRET_ACCESS_KEY"} & set(seen)
+    assert not any("secret" in value or "0123456789abcdef" in value for value in seen.values())
+    assert seen["ROS_DOMAIN_ID"] == "17"
+    assert seen["PATH"] == os.environ["PATH"]

@@ -408,7 +408,12 @@ class SandboxHost:
             self._fail("slow", pace.report(now))
         elif limits.run_seconds is not None and answered - self._wall_start > limits.run_seconds:
             why = limits.run_seconds_reason or f"the run's limit is {limits.run_seconds:g} s"
-            self._fail("time", f"ran out of time after {answered - self._wall_start:.1f} s of wall time: {why}")
+            message = f"ran out of time after {answered - self._wall_start:.1f} s of wall time: {why}"
+            # On a busy machine the run's limit can come before the pace's
+            # verdict: if the controller is well behind real time, still say why.
+            if pace.excuse(self._queued() - self._queued_at_start, now) > _BEHIND_WORTH_SAYING:
+                message += f"; it {pace.report(now)}"
+            self._fail("time", message)
 
     def _queued(self) -> float:
         """Seconds the child's threads and this process's have waited for a CPU."""
@@ -783,10 +788,13 @@ def _new_token() -> str:
 
 def _child_environment(token: str) -> dict[str, str]:
     """The environment of a sandbox child (and of a fork server)."""
+    # Only what a program needs to run is passed on: the grader's own
+    # environment may hold secrets (the results key, CI tokens, cloud
+    # credentials) that student code must never read, let alone log.
     # No -I/-E: they would also drop PYTHONHASHSEED, and a fixed hash seed
     # keeps the iteration order of the student's sets and dicts of strings
-    # the same in every run. Python's other variables are cleared instead.
-    env = {k: v for k, v in os.environ.items() if not k.startswith("PYTHON")}
+    # the same in every run. Python's own variables are set below instead.
+    env = {k: v for k, v in os.environ.items() if _passed_to_children(k)}
     env.update(
         OPENBLAS_NUM_THREADS="1",
         OMP_NUM_THREADS="1",
@@ -799,10 +807,24 @@ def _child_environment(token: str) -> dict[str, str]:
     return env
 
 
+_PASSED_NAMES = frozenset(
+    {"PATH", "HOME", "USER", "LOGNAME", "LANG", "LANGUAGE", "TZ", "TERM", "TMPDIR", "LD_LIBRARY_PATH", wire.SPIN_ENV}
+)
+_PASSED_PREFIXES = ("LC_", "ROS_", "RCUTILS_", "RMW_")
+"""Locale, and the variables ROS 2 itself reads (ROS_DOMAIN_ID, RCUTILS_CONSOLE_OUTPUT_FORMAT...)."""
+
+
+def _passed_to_children(name: str) -> bool:
+    return name in _PASSED_NAMES or name.startswith(_PASSED_PREFIXES)
+
+
 class _Stop(Exception):
     """The child finished or failed during an exchange."""
 
 
+_BEHIND_WORTH_SAYING = 0.5
+"""Wall seconds behind real time from which a run stopped by its time limit
+is also told that it could not keep up."""
 _RECHECK_SECONDS = 0.5
 """Wall seconds of a controller's answers between two looks at how long the
 machine kept it waiting for a CPU (a look reads /proc: not at every answer)."""
