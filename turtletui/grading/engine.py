@@ -10,10 +10,13 @@ grader's own trusted simulation and returns a :class:`SubmissionResult`.
 from __future__ import annotations
 
 import math
+import os
 import random
 import time
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
+from fnmatch import fnmatchcase
+from functools import cached_property
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -27,6 +30,7 @@ from turtletui.lessons.model import CheckSpec, Lesson, Scenario
 from turtletui.messages import did_you_mean
 from turtletui.runtime.loader import ControllerSpec
 from turtletui.runtime.recorder import open_recorder
+from turtletui.runtime.report import CrashReport
 
 if TYPE_CHECKING:
     from turtletui.runtime.sandbox import Limits
@@ -83,6 +87,42 @@ class GradingPlan:
         """The scenario runs a check judges."""
         return [r for r in self.runs if not spec.scenarios or r.scenario.name in spec.scenarios]
 
+    @cached_property
+    def gates(self) -> tuple[dict[str, tuple[int, ...]], ...]:
+        """Per check, each name of its ``requires`` -> the indices of the checks it means."""
+        specs = [spec for spec, _ in self.checks]
+        return tuple(
+            {name: tuple(j for j, other in enumerate(specs) if other.is_named(name)) for name in spec.requires}
+            for spec in specs
+        )
+
+    @cached_property
+    def order(self) -> tuple[int, ...]:
+        """Check indices with every check after those it requires (the loader
+        refused loops), otherwise in the lesson's order."""
+        done: list[int] = []
+
+        def visit(index: int) -> None:
+            if index in done:
+                return
+            for needed in self.gates[index].values():
+                for other in needed:
+                    visit(other)
+            done.append(index)
+
+        for index in range(len(self.checks)):
+            visit(index)
+        return tuple(done)
+
+    def twin_window(self, run: ScenarioRun) -> float | None:
+        """Seconds of twin run the checks judging ``run`` need (None: no twin)."""
+        windows = [
+            window
+            for spec, check in self.checks
+            if run in self.runs_for(spec) and (window := check.twin_window(spec.thresholds)) is not None
+        ]
+        return min(max(windows), run.scenario.duration) if windows else None
+
 
 def random_start(
     seed: int, margin: float = RANDOM_START_MARGIN, obstacles: Sequence[Any] = ()
@@ -127,6 +167,18 @@ def scenario_runs(
                 start = (pose["x"], pose["y"], pose.get("theta", 0.0))
             runs.append(ScenarioRun(scenario, seed, label, start))
     return runs
+
+
+def twin_start(
+    run: ScenarioRun, obstacles: Sequence[Any] = (), *, apart: float = 2.0
+) -> tuple[float, float, float]:
+    """The start of ``run``'s twin (:attr:`Check.twin`): a random start drawn
+    from the run's seed, at least ``apart`` metres from the run's own start."""
+    for attempt in range(1, 1000):
+        start = random_start(run.seed * 1_000_003 + attempt, obstacles=obstacles)
+        if math.hypot(start[0] - run.start[0], start[1] - run.start[1]) >= apart:
+            return start
+    raise GradingError(f"no twin start {apart} m from the start of {run.label}")
 
 
 def available_checks(plugins: Sequence[str | Path] = ()) -> dict[str, Check]:
@@ -192,6 +244,24 @@ def _world_spec(name: str, plugins: Sequence[str | Path], shown: str) -> WorldSp
         raise GradingError(f"{shown}: {err}") from None
 
 
+class ScenarioDriver:
+    """Drives turtle1 for a scenario with a ``drive`` (linear, angular): the
+    same Twist every 16 ms, as a person holding a teleop key would, so that a
+    node that only watches sees the turtle move."""
+
+    PERIOD_NS = 16_000_000
+
+    def __init__(self, sim: Simulation, drive: tuple[float, float]) -> None:
+        from turtletui.interfaces.geometry_msgs import Twist, Vector3
+
+        graph = sim.graph
+        node = graph.add_node("scenario_teleop", owner="scenario")
+        self.msg = Twist(linear=Vector3(x=drive[0]), angular=Vector3(z=drive[1]))
+        """The one message it publishes (the trace tells it from the controller's)."""
+        publisher = graph.add_publisher(node, "/turtle1/cmd_vel", Twist, 10)
+        graph.add_timer(node, self.PERIOD_NS, lambda: graph.publish(publisher.topic, self.msg))
+
+
 def place_turtle(sim: Simulation, start: tuple[float, float, float], label: str) -> None:
     """Put turtle1 at a scenario's start before anything has run (nothing drawn)."""
     sim.world.place("turtle1", *start)
@@ -210,13 +280,18 @@ def run_scenario(
     *,
     limits: Limits | None = None,
     record: str | Path | None = None,
+    start: tuple[float, float, float] | None = None,
+    duration: float | None = None,
 ) -> tuple[Trace, Any]:
     """Run one scenario in the grader's own simulation: its trace and, with
     ``record``, its recording in memory (the caller closes it, keeping the
-    file or not). Raises KeyboardInterrupt if Ctrl-C cut the run short."""
+    file or not). ``start`` and ``duration`` replace the run's own (a twin
+    run). Raises KeyboardInterrupt if Ctrl-C cut the run short."""
     from turtletui.api import run as run_controllers
 
     scenario = run.scenario
+    start = run.start if start is None else start
+    duration = scenario.duration if duration is None else duration
     world_name = scenario.world or plan.lesson.world
     collector: list[TraceCollector] = []
     recorder: list[Any] = []
@@ -228,19 +303,24 @@ def run_scenario(
                 "lesson": plan.lesson.id,
                 "scenario": run.label,
                 "seed": run.seed,
-                "duration": scenario.duration,
+                "duration": duration,
                 "world": world_name,
-                "start": list(run.start),
+                "start": list(start),
                 "ros_args": list(scenario.ros_args),
             }
             recorder.append(open_recorder(sim, record, start_logs, header, buffered=True))
-        place_turtle(sim, run.start, run.label)
-        collector.append(TraceCollector(sim, scenario=run.label, seed=run.seed, duration=scenario.duration))
+        place_turtle(sim, start, run.label)
+        driver = ScenarioDriver(sim, scenario.drive) if scenario.drive is not None else None
+        collector.append(
+            TraceCollector(
+                sim, scenario=run.label, seed=run.seed, duration=duration, scripted=driver and driver.msg
+            )
+        )
 
     try:
         result = run_controllers(
             controllers,
-            duration=scenario.duration,
+            duration=duration,
             seed=run.seed,
             ros_args=scenario.ros_args,
             setup=setup,
@@ -267,11 +347,37 @@ def judge(check: Check, trace: Trace, thresholds: dict[str, Any]) -> Verdict:
 
 
 def _output(spec: CheckSpec, verdict: Verdict, hidden: bool) -> str:
-    # what was measured in a hidden run could tell where it starts
+    # a check that was not judged says why (never with a number in a hidden
+    # run), and gives no advice about what it judges; what was measured in a
+    # hidden run could tell where it starts
+    if not verdict.judged:
+        return verdict.measured
     lines = [verdict.measured] if verdict.measured and not hidden else []
     if not verdict.passed and spec.feedback:
         lines.append(spec.feedback)
     return "\n".join(lines)
+
+
+def forbidden_call(plan: GradingPlan, trace: Trace, *, hidden: bool = False) -> str | None:
+    """Why the run broke the lesson's rules (its first call of a forbidden service), or None."""
+    patterns = plan.lesson.forbidden_services
+    for call in trace.service_calls if patterns else ():
+        if any(fnmatchcase(call.service, pattern) for pattern in patterns):
+            when = "" if hidden else f" at t={call.t:.3f} s"
+            return f"the controller called {call.service}{when}, a service this lesson forbids"
+    return None
+
+
+def as_the_student_sees_it(crash: CrashReport, controllers: Sequence[ControllerSpec]) -> CrashReport:
+    """The crash with the controller's file named as the student knows it: by
+    its name (and files beside it by their paths from its folder), never by
+    the folder the grader ran it from (a private copy when grading as root)."""
+    text = [crash.controller, crash.message, *crash.frames]
+    for spec in controllers:
+        if spec.path is not None:
+            folder = str(spec.path.parent)
+            text = [line.replace(str(spec.path), spec.path.name).replace(folder + os.sep, "") for line in text]
+    return replace(crash, controller=text[0], message=text[1], frames=text[2:])
 
 
 @dataclass
@@ -309,12 +415,24 @@ def grade_run(
     if path is not None:
         recordings.mkdir(parents=True, exist_ok=True)
     trace, recorder = run_scenario(plan, run, controllers, limits=limits, record=path)
+    trace.crashes = [as_the_student_sees_it(crash, controllers) for crash in trace.crashes]
+    broken = forbidden_call(plan, trace, hidden=run.hidden)
+    window = plan.twin_window(run)
+    if window is not None and broken is None and not trace.crashes:
+        world_name = run.scenario.world or plan.lesson.world
+        obstacles = getattr(plan.worlds[world_name](run.seed), "obstacles", ())
+        trace.twin, _ = run_scenario(
+            plan, run, controllers, limits=limits, start=twin_start(run, obstacles), duration=window
+        )
 
     def verdict_of(check: Check, thresholds: dict[str, Any]) -> Verdict:
+        if broken is not None:
+            return Verdict(False, f"not judged: {broken}", judged=False)
         if trace.crashes and check.name != "no_crash":
             # a turtle that stopped with its node cannot hit a wall: not a pass
             crash = trace.crashes[0]
-            return Verdict(False, f"not judged: the controller stopped at t={crash.t:.3f} s ({crash.kind})")
+            when = "before the end of the run" if run.hidden else f"at t={crash.t:.3f} s"
+            return Verdict(False, f"not judged: the controller stopped {when} ({crash.kind})", judged=False)
         return judge(check, trace, thresholds)
 
     tests = _judge_run(plan, run, verdict_of)
@@ -328,14 +446,28 @@ def grade_run(
 def _judge_run(
     plan: GradingPlan, run: ScenarioRun, verdict_of: Callable[[Check, dict[str, Any]], Verdict]
 ) -> list[tuple[int, TestResult]]:
-    """The tests of one run, each with the index of its check in the lesson."""
-    tests = []
-    for index, (spec, check) in enumerate(plan.checks):
-        runs = plan.runs_for(spec)
-        if run not in runs:
+    """The tests of one run, each with the index of its check in the lesson. A
+    check that passed while a check it requires did not pass in this run
+    earns nothing: it is shown as not judged."""
+    verdicts: dict[int, Verdict] = {}
+    for index in plan.order:
+        spec, check = plan.checks[index]
+        if run not in plan.runs_for(spec):
             continue
         verdict = verdict_of(check, spec.thresholds)
-        points = spec.weight / len(runs)
+        if verdict.passed:
+            failed = [
+                name
+                for name, needed in plan.gates[index].items()
+                if not all(verdicts[j].passed for j in needed if j in verdicts)
+            ]
+            if failed:
+                verdict = _gated(spec, failed)
+        verdicts[index] = verdict
+    tests = []
+    for index, verdict in sorted(verdicts.items()):
+        spec, _ = plan.checks[index]
+        points = spec.weight / len(plan.runs_for(spec))
         test = TestResult(
             name=f"{spec.title} [{run.label}]",
             check=spec.title,
@@ -350,9 +482,20 @@ def _judge_run(
     return tests
 
 
+def _gated(spec: CheckSpec, failed: Sequence[str]) -> Verdict:
+    """The verdict of a check whose required checks ``failed`` in this run."""
+    needs = " and ".join(spec.requires)
+    verb = "passes" if len(spec.requires) == 1 else "pass"
+    which = "it" if len(spec.requires) == 1 else " and ".join(failed)
+    return Verdict(
+        False, f"not judged: {spec.title} counts only in runs where {needs} {verb}; here {which} did not", judged=False
+    )
+
+
 def failed_run(plan: GradingPlan, run_index: int, reason: str) -> RunOutcome:
     """Every test of a run failed for ``reason`` (the run could not be judged)."""
-    return RunOutcome(run_index, _judge_run(plan, plan.runs[run_index], lambda check, th: Verdict(False, reason)))
+    run = plan.runs[run_index]
+    return RunOutcome(run_index, _judge_run(plan, run, lambda check, th: Verdict(False, reason, judged=False)))
 
 
 def assemble(
