@@ -8,6 +8,7 @@ from pathlib import Path
 from turtletui.grading.engine import GradingPlan, grade_controllers, prepare
 from turtletui.grading.results import SubmissionResult
 from turtletui.lessons.loader import find_lesson
+from turtletui.runtime.loader import ControllerSpec
 from turtletui.runtime.resolve import resolve_controllers
 
 SOLUTIONS = Path(__file__).parents[1] / "lessons" / "solutions"
@@ -26,11 +27,15 @@ class Grader:
             self._plans[lesson_id] = prepare(find_lesson(lesson_id))
         return self._plans[lesson_id]
 
-    def __call__(self, lesson_id: str, controller: str | Path) -> SubmissionResult:
-        """Grade a registered controller name (the reference) or a file (sandboxed)."""
-        key = (lesson_id, str(controller))
+    def __call__(self, lesson_id: str, controller: str | Path, *, in_process: bool = False) -> SubmissionResult:
+        """Grade a registered controller name (the reference) or a file: sandboxed,
+        as students' files are, or ``in_process`` (trusted test code only: faster)."""
+        key = (lesson_id, str(controller), in_process)
         if key not in self._results:
-            specs = resolve_controllers([controller])
+            if in_process:
+                specs = [ControllerSpec(name=Path(controller).stem, path=Path(controller), trusted=True)]
+            else:
+                specs = resolve_controllers([controller])
             self._results[key] = grade_controllers(self.plan(lesson_id), specs)
         return self._results[key]
 

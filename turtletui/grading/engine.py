@@ -63,6 +63,8 @@ class ScenarioRun:
     label: str
     """How results name it: the scenario's name (and seed), or ``hidden N``."""
     start: tuple[float, float, float]
+    twin_start: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    """Where its twin run starts (:attr:`Check.twin`): see :func:`twin_start`."""
 
     @property
     def hidden(self) -> bool:
@@ -160,25 +162,30 @@ def scenario_runs(
                 label = f"{scenario.name}, seed {seed}"
             else:
                 label = scenario.name
+            blocked = obstacles(scenario.world or lesson.world)
             if scenario.start == "random":
-                start = random_start(seed, obstacles=obstacles(scenario.world or lesson.world))
+                start = random_start(seed, obstacles=blocked)
             else:
                 pose = scenario.start
                 start = (pose["x"], pose["y"], pose.get("theta", 0.0))
-            runs.append(ScenarioRun(scenario, seed, label, start))
+            runs.append(ScenarioRun(scenario, seed, label, start, twin_start(seed, start, blocked)))
     return runs
 
 
+TWIN_APART = 2.0
+"""Metres at least between a run's start and its twin's."""
+
+
 def twin_start(
-    run: ScenarioRun, obstacles: Sequence[Any] = (), *, apart: float = 2.0
+    seed: int, start: tuple[float, float, float], obstacles: Sequence[Any] = ()
 ) -> tuple[float, float, float]:
-    """The start of ``run``'s twin (:attr:`Check.twin`): a random start drawn
-    from the run's seed, at least ``apart`` metres from the run's own start."""
+    """Where the twin of a run with this seed and start begins: a random start
+    drawn from the seed, at least :data:`TWIN_APART` metres from ``start``."""
     for attempt in range(1, 1000):
-        start = random_start(run.seed * 1_000_003 + attempt, obstacles=obstacles)
-        if math.hypot(start[0] - run.start[0], start[1] - run.start[1]) >= apart:
-            return start
-    raise GradingError(f"no twin start {apart} m from the start of {run.label}")
+        twin = random_start(seed * 1_000_003 + attempt, obstacles=obstacles)
+        if math.hypot(twin[0] - start[0], twin[1] - start[1]) >= TWIN_APART:
+            return twin
+    raise GradingError(f"no start {TWIN_APART} m from ({start[0]:.2f}, {start[1]:.2f}) for a twin run (seed {seed})")
 
 
 def available_checks(plugins: Sequence[str | Path] = ()) -> dict[str, Check]:
@@ -419,11 +426,7 @@ def grade_run(
     broken = forbidden_call(plan, trace, hidden=run.hidden)
     window = plan.twin_window(run)
     if window is not None and broken is None and not trace.crashes:
-        world_name = run.scenario.world or plan.lesson.world
-        obstacles = getattr(plan.worlds[world_name](run.seed), "obstacles", ())
-        trace.twin, _ = run_scenario(
-            plan, run, controllers, limits=limits, start=twin_start(run, obstacles), duration=window
-        )
+        trace.twin, _ = run_scenario(plan, run, controllers, limits=limits, start=run.twin_start, duration=window)
 
     def verdict_of(check: Check, thresholds: dict[str, Any]) -> Verdict:
         if broken is not None:
