@@ -381,9 +381,10 @@ def as_the_student_sees_it(crash: CrashReport, controllers: Sequence[ControllerS
     the folder the grader ran it from (a private copy when grading as root)."""
     text = [crash.controller, crash.message, *crash.frames]
     for spec in controllers:
-        if spec.path is not None:
-            folder = str(spec.path.parent)
-            text = [line.replace(str(spec.path), spec.path.name).replace(folder + os.sep, "") for line in text]
+        # the absolute path first: the path as given may be part of it
+        for path in dict.fromkeys([spec.path.resolve(), spec.path]) if spec.path is not None else ():
+            folder = str(path.parent) + os.sep
+            text = [line.replace(str(path), path.name).replace(folder, "") for line in text]
     return replace(crash, controller=text[0], message=text[1], frames=text[2:])
 
 
