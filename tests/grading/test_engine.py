@@ -342,3 +342,32 @@ def test_a_twin_run_starts_elsewhere_with_the_same_seed(tmp_path):
     turning = "self.pub.publish(Twist(angular=__import__('geometry_msgs.msg').msg.Vector3(z=pose.x)))"
     ((_, test),) = grade_run(plan, 0, [driver(tmp_path, turning, name="turning.py")]).tests
     assert test.passed and "differed from t=0.032 s" in test.output
+
+
+def test_a_crash_is_still_reported_by_a_no_crash_that_requires_other_checks(tmp_path):
+    plan = prepare(load_lesson(lesson(tmp_path, SCENARIOS + GATED)))
+    result = grade_controllers(plan, [driver(tmp_path, "1 / 0", name="crasher.py")])
+    by_name = {t.name: t for t in result.tests}
+    assert "ZeroDivisionError" in by_name["no_crash [east]"].output
+    assert by_name["wall_hits [east]"].output.startswith("not judged: the controller stopped at t=")
+
+
+def test_the_twin_run_is_run_only_where_a_check_that_needs_it_is_judged(tmp_path, monkeypatch):
+    from turtletui.grading import engine
+
+    checks = '\n[[checks]]\nname = "distance"\nthresholds = {min = 3.0}\n'
+    checks += '\n[[checks]]\nname = "closed_loop"\nrequires = ["distance"]\nthresholds = {window = 1.0}\n'
+    plan = prepare(load_lesson(lesson(tmp_path, SCENARIOS + checks)))
+    starts = []
+    real = engine.run_scenario
+
+    def counting(plan, run, controllers, **options):
+        starts.append(options.get("start"))
+        return real(plan, run, controllers, **options)
+
+    monkeypatch.setattr(engine, "run_scenario", counting)
+    outcome = engine.grade_run(plan, 0, [driver(tmp_path, "return")])  # stands still: distance fails
+    assert starts == [None]
+    assert all(not test.passed for _, test in outcome.tests)
+    engine.grade_run(plan, 0, [driver(tmp_path)])  # drives: the loop is judged against its twin
+    assert starts[1:] == [None, plan.runs[0].twin_start]

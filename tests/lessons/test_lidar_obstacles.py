@@ -68,10 +68,11 @@ def test_stopping_in_front_of_an_obstacle_without_turning_fails_distance_only(gr
     assert len(failed(result)["distance"]) == len(grade.plan(LESSON).runs)  # in every run
     assert "turn toward the more open side" in feedback_of(result, "distance")[0]
     # a turtle that stopped cannot hit anything: the safety checks earn nothing
-    # then, and only the closed loop (it did stop because of the scan) scores
+    # then, and its loop is not judged (it stopped because of the scan, but
+    # a node that does not drive earns nothing for its loop)
     gated = not_judged(result)
-    assert {"obstacle_hits", "wall_hits", "min_clearance", "no_crash"} <= set(gated)
-    assert result.score == 1.5
+    assert {"obstacle_hits", "wall_hits", "min_clearance", "no_crash", "closed_loop"} <= set(gated)
+    assert result.score == 0.0
 
 
 def test_reading_inf_as_zero_spins_in_place(grade):
@@ -98,8 +99,8 @@ def test_the_starter_runs_and_logs_but_drives_blind(grade):
     result = grade(LESSON, STARTER)
     failures = failed(result)
     assert "no_crash" not in failures
-    # it creeps ahead whatever the scan says: no closed loop, and too slow to
-    # count as driving, so nothing else is judged
-    assert {"closed_loop", "distance"} <= set(failures)
-    assert "no_crash" in not_judged(result)
+    # it creeps ahead whatever the scan says, too slowly to count as driving:
+    # nothing else earns points
+    assert "distance" in failures
+    assert {"closed_loop", "no_crash"} <= set(not_judged(result))
     assert result.score == 0.0

@@ -425,11 +425,10 @@ def grade_run(
     trace, recorder = run_scenario(plan, run, controllers, limits=limits, record=path)
     trace.crashes = [as_the_student_sees_it(crash, controllers) for crash in trace.crashes]
     broken = forbidden_call(plan, trace, hidden=run.hidden)
-    window = plan.twin_window(run)
-    if window is not None and broken is None and not trace.crashes:
-        trace.twin, _ = run_scenario(plan, run, controllers, limits=limits, start=run.twin_start, duration=window)
 
-    def verdict_of(check: Check, thresholds: dict[str, Any]) -> Verdict:
+    def problem(check: Check) -> Verdict | None:
+        """Why this run judges no check (a broken rule, a crash: then only
+        no_crash is judged), or None."""
         if broken is not None:
             return Verdict(False, f"not judged: {broken}", judged=False)
         if trace.crashes and check.name != "no_crash":
@@ -437,9 +436,16 @@ def grade_run(
             crash = trace.crashes[0]
             when = "before the end of the run" if run.hidden else f"at t={crash.t:.3f} s"
             return Verdict(False, f"not judged: the controller stopped {when} ({crash.kind})", judged=False)
+        return None
+
+    def verdict_of(check: Check, thresholds: dict[str, Any]) -> Verdict:
+        if check.twin and trace.twin is None:
+            # run only when a check that compares with it is judged
+            window = plan.twin_window(run)
+            trace.twin, _ = run_scenario(plan, run, controllers, limits=limits, start=run.twin_start, duration=window)
         return judge(check, trace, thresholds)
 
-    tests = _judge_run(plan, run, verdict_of)
+    tests = _judge_run(plan, run, verdict_of, problem)
     failed = not all(test.passed for _, test in tests)
     if recorder is not None:
         recorder.close(keep=failed)
@@ -448,24 +454,41 @@ def grade_run(
 
 
 def _judge_run(
-    plan: GradingPlan, run: ScenarioRun, verdict_of: Callable[[Check, dict[str, Any]], Verdict]
+    plan: GradingPlan,
+    run: ScenarioRun,
+    verdict_of: Callable[[Check, dict[str, Any]], Verdict],
+    problem: Callable[[Check], Verdict | None] = lambda check: None,
 ) -> list[tuple[int, TestResult]]:
-    """The tests of one run, each with the index of its check in the lesson. A
-    check that passed while a check it requires did not pass in this run
-    earns nothing: it is shown as not judged."""
+    """The tests of one run, each with the index of its check in the lesson.
+    ``problem`` gives the verdict of a check the run itself cannot judge (a
+    crash, a broken rule). A check that passed while a check it requires
+    did not pass in this run earns nothing and is shown as not judged; one
+    that failed shows its own failure and advice. A check that compares with
+    a twin run is not judged at all then (the twin would be a run for
+    nothing)."""
     verdicts: dict[int, Verdict] = {}
+    run_level: set[int] = set()
     for index in plan.order:
         spec, check = plan.checks[index]
         if run not in plan.runs_for(spec):
             continue
-        verdict = verdict_of(check, spec.thresholds)
-        if verdict.passed:
-            failed = [
-                name
-                for name, needed in plan.gates[index].items()
-                if not all(verdicts[j].passed for j in needed if j in verdicts)
-            ]
-            if failed:
+        verdict = problem(check)
+        if verdict is not None:
+            run_level.add(index)
+            verdicts[index] = verdict
+            continue
+        # requirements that failed for the run's own problem do not gate:
+        # no_crash still reports the crash
+        failed = [
+            name
+            for name, needed in plan.gates[index].items()
+            if not all(verdicts[j].passed or j in run_level for j in needed if j in verdicts)
+        ]
+        if failed and check.twin:
+            verdict = _gated(spec, failed)
+        else:
+            verdict = verdict_of(check, spec.thresholds)
+            if verdict.passed and failed:
                 verdict = _gated(spec, failed)
         verdicts[index] = verdict
     tests = []
@@ -498,8 +521,8 @@ def _gated(spec: CheckSpec, failed: Sequence[str]) -> Verdict:
 
 def failed_run(plan: GradingPlan, run_index: int, reason: str) -> RunOutcome:
     """Every test of a run failed for ``reason`` (the run could not be judged)."""
-    run = plan.runs[run_index]
-    return RunOutcome(run_index, _judge_run(plan, run, lambda check, th: Verdict(False, reason, judged=False)))
+    failure = Verdict(False, reason, judged=False)
+    return RunOutcome(run_index, _judge_run(plan, plan.runs[run_index], lambda check, th: failure, lambda check: failure))
 
 
 def assemble(
