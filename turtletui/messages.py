@@ -15,3 +15,8 @@ def did_you_mean(word: str, known: Iterable[str], cutoff: float = 0.6) -> str:
     """`` (did you mean 'x'?)`` for the closest of ``known``, or "" when none is close."""
     close = difflib.get_close_matches(word, list(known), n=1, cutoff=cutoff)
     return f" (did you mean {close[0]!r}?)" if close else ""
+
+
+def plural(count: int, noun: str) -> str:
+    """``1 check``, ``2 checks``, ``0 runs``: a count with its noun."""
+    return f"{count} {noun}" if count == 1 else f"{count} {noun}s"

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 import textwrap
 from pathlib import Path
 
@@ -162,8 +163,12 @@ def test_a_crash_fails_the_runs_other_checks_too(tmp_path):
     walls = [t for t in result.tests if t.check == "wall_hits"]
     assert all(not t.passed for t in walls)
     assert all("not judged: the controller stopped" in t.output for t in walls if not t.hidden)
-    # a hidden run's feedback is the lesson's hint only: no measurement to read its start from
-    assert [t.output for t in walls if t.hidden] == ["Stop before the wall."] * 2
+    # a check that was not judged gives no advice on what it judges, and in a
+    # hidden run no reason that could tell where (or when) the run went wrong
+    assert not any("Stop before the wall." in t.output for t in walls)
+    assert {t.output for t in walls if t.hidden} == {
+        "not judged: the controller stopped before the end of the run (exception)"
+    }
     crash = next(t for t in result.tests if t.check == "no_crash")
     assert "ZeroDivisionError" in crash.output and "crasher.py" in crash.output
 
@@ -208,3 +213,161 @@ def test_random_starts_keep_clear_of_a_worlds_obstacles():
     # a start that was clear already stays where the seed put it
     free = [seed for seed in range(100) if nearest_distance(pillar, *random_start(seed)[:2]) >= 0.5]
     assert free and all(random_start(seed, obstacles=pillar) == random_start(seed) for seed in free)
+
+
+GATED = """
+[[checks]]
+name = "distance"
+thresholds = {min = 3.0}
+
+[[checks]]
+name = "wall_hits"
+weight = 2.0
+requires = ["distance"]
+feedback = "Stop before the wall."
+
+[[checks]]
+name = "no_crash"
+requires = ["distance"]
+"""
+
+
+def test_a_check_whose_requirement_failed_earns_nothing_and_gives_no_advice(tmp_path):
+    plan = prepare(load_lesson(lesson(tmp_path, SCENARIOS + GATED)))
+    # it stands still: no wall hit, no crash, but no task either
+    result = grade_controllers(plan, [driver(tmp_path, "return")])
+    assert result.score == 0.0
+    walls = {t.scenario: t for t in result.tests if t.check == "wall_hits"}
+    assert not walls["east"].passed
+    assert walls["east"].output == "not judged: wall_hits counts only in runs where distance passes; here it did not"
+    assert all("Stop before the wall." not in t.output for t in walls.values())
+    # the reason holds no measurement, so a hidden run shows it too
+    assert walls["hidden 1"].output == walls["east"].output
+
+
+def test_a_check_whose_requirements_passed_is_judged_as_usual(tmp_path):
+    plan = prepare(load_lesson(lesson(tmp_path, SCENARIOS + GATED)))
+    result = grade_controllers(plan, [driver(tmp_path)])  # 2 m/s east from x = 2 for 6 s: a wall
+    by_name = {t.name: t for t in result.tests}
+    assert by_name["distance [east]"].passed and by_name["no_crash [east]"].passed
+    assert not by_name["wall_hits [east]"].passed
+    assert "Stop before the wall." in by_name["wall_hits [east]"].output
+
+
+FORBIDDEN = """forbidden_services = ["/*/teleport_*"]
+""" + SCENARIOS + """
+[[checks]]
+name = "no_crash"
+
+[[checks]]
+name = "distance"
+"""
+
+
+def test_calling_a_forbidden_service_fails_every_check_of_the_run(tmp_path):
+    plan = prepare(load_lesson(lesson(tmp_path, FORBIDDEN)))
+    body = "self.create_client(__import__('turtlesim.srv').srv.TeleportRelative, '/turtle1/teleport_relative').call_async(__import__('turtlesim.srv').srv.TeleportRelative.Request(linear=0.1))"
+    result = grade_controllers(plan, [driver(tmp_path, body)])
+    assert result.score == 0.0
+    shown = {t.output for t in result.tests if not t.hidden}
+    assert shown == {"not judged: the controller called /turtle1/teleport_relative at t=0.032 s, a service this lesson forbids"}
+    hidden = {t.output for t in result.tests if t.hidden}
+    assert hidden == {"not judged: the controller called /turtle1/teleport_relative, a service this lesson forbids"}
+
+
+def test_a_crash_names_the_students_file_not_the_folder_it_ran_from(tmp_path):
+    private = tmp_path / "turtletui-grade-x1y2" / "00000"
+    private.mkdir(parents=True)
+    plan = prepare(load_lesson(lesson(tmp_path, SCENARIOS + CHECKS)))
+    spec = driver(private, "speed = spede * 2", name="alice_node.py")
+    result = grade_controllers(plan, [spec])
+    crash = next(t for t in result.tests if t.check == "no_crash" and not t.hidden)
+    assert str(private) not in crash.output and "turtletui-grade" not in crash.output
+    assert "controller alice_node.py crashed" in crash.output
+    assert 'File "alice_node.py", line 14, in on_pose' in crash.output
+    assert "speed = spede * 2" in crash.output  # the line itself
+
+
+DRIVEN = """
+[[scenarios]]
+name = "driven"
+start = {x = 5.0, y = 5.0, theta = 0.0}
+duration = 2.0
+drive = {linear = 1.0, angular = 0.0}
+
+[[checks]]
+name = "distance"
+thresholds = {min = 1.9}
+
+[[checks]]
+name = "commands_per_pose"
+thresholds = {max = 0}
+"""
+
+WATCHER = """\
+import rclpy
+from rclpy.node import Node
+
+
+def main():
+    rclpy.init()
+    rclpy.spin(Node("watcher"))
+"""
+
+
+def test_a_scenario_can_drive_the_turtle_for_a_node_that_only_watches(tmp_path):
+    plan = prepare(load_lesson(lesson(tmp_path, DRIVEN)))
+    path = tmp_path / "watcher.py"
+    path.write_text(WATCHER)
+    result = grade_controllers(plan, [ControllerSpec(name="watcher", path=path)])
+    by_name = {t.check: t for t in result.tests}
+    assert by_name["distance"].passed, by_name["distance"].output  # 1 m/s for 2 s
+    # the scenario's own commands are not the controller's
+    assert by_name["commands_per_pose"].passed and "commands per pose: 0" in by_name["commands_per_pose"].output
+
+
+def test_a_twin_run_starts_elsewhere_with_the_same_seed(tmp_path):
+    from turtletui.grading.engine import grade_run, twin_start
+
+    twin = '\n[[checks]]\nname = "closed_loop"\nthresholds = {window = 1.0}\n'
+    plan = prepare(load_lesson(lesson(tmp_path, SCENARIOS + twin)))
+    run = plan.runs[0]
+    assert run.twin_start == twin_start(run.seed, run.start) and math.dist(run.twin_start[:2], run.start[:2]) >= 2.0
+    assert twin_start(run.seed + 1, run.start) != run.twin_start
+    assert plan.twin_window(run) == 1.0
+    # a node that ignores the pose: its commands are the same from the twin's start
+    outcome = grade_run(plan, 0, [driver(tmp_path)])
+    ((_, test),) = outcome.tests
+    assert not test.passed and "the same 61 commands" in test.output
+    turning = "self.pub.publish(Twist(angular=__import__('geometry_msgs.msg').msg.Vector3(z=pose.x)))"
+    ((_, test),) = grade_run(plan, 0, [driver(tmp_path, turning, name="turning.py")]).tests
+    assert test.passed and "differed from t=0.032 s" in test.output
+
+
+def test_a_crash_is_still_reported_by_a_no_crash_that_requires_other_checks(tmp_path):
+    plan = prepare(load_lesson(lesson(tmp_path, SCENARIOS + GATED)))
+    result = grade_controllers(plan, [driver(tmp_path, "1 / 0", name="crasher.py")])
+    by_name = {t.name: t for t in result.tests}
+    assert "ZeroDivisionError" in by_name["no_crash [east]"].output
+    assert by_name["wall_hits [east]"].output.startswith("not judged: the controller stopped at t=")
+
+
+def test_the_twin_run_is_run_only_where_a_check_that_needs_it_is_judged(tmp_path, monkeypatch):
+    from turtletui.grading import engine
+
+    checks = '\n[[checks]]\nname = "distance"\nthresholds = {min = 3.0}\n'
+    checks += '\n[[checks]]\nname = "closed_loop"\nrequires = ["distance"]\nthresholds = {window = 1.0}\n'
+    plan = prepare(load_lesson(lesson(tmp_path, SCENARIOS + checks)))
+    starts = []
+    real = engine.run_scenario
+
+    def counting(plan, run, controllers, **options):
+        starts.append(options.get("start"))
+        return real(plan, run, controllers, **options)
+
+    monkeypatch.setattr(engine, "run_scenario", counting)
+    outcome = engine.grade_run(plan, 0, [driver(tmp_path, "return")])  # stands still: distance fails
+    assert starts == [None]
+    assert all(not test.passed for _, test in outcome.tests)
+    engine.grade_run(plan, 0, [driver(tmp_path)])  # drives: the loop is judged against its twin
+    assert starts[1:] == [None, plan.runs[0].twin_start]

@@ -147,7 +147,8 @@ def test_gradescope_hidden_scenarios_are_shown_only_after_publishing_and_stay_ge
     for secret in ("random starts", "seed", "x=", "theta", "centre"):
         assert secret not in text
     assert hidden[0]["output"] == HIDDEN_OUTPUT
-    assert data["output"].startswith(f"<p>Lesson {LESSON}: 2 of 2 checks passed")  # visible ones
+    # the visible ones, each check counted once (not once per scenario run)
+    assert data["output"].startswith(f"<p>Lesson {LESSON}: 2 of 2 checks passed")
     assert "Hidden scenarios were graded too." in data["output"]
 
 
@@ -290,6 +291,18 @@ def test_table_shows_scores_failing_checks_and_a_summary():
     assert "[bold]markup[/bold]" in text  # student text is not read as rich markup
     # A log line cannot send escape sequences to the instructor's terminal.
     assert "\x1b" not in text and "\\x1b[31mred" in text
+
+
+def test_table_counts_checks_not_check_and_scenario_runs_in_the_right_number():
+    text = reports.render_table(batch(), width=120)
+    # alice's two checks ran in two scenarios each: one of them failed once
+    assert "1 of 2 checks failed" in text
+    lone = SubmissionResult(
+        submission="subs/carol.py", student="carol", score=0.0, max_score=1.0,
+        tests=[make_test("circle", "centre", 0.0, 0.5), make_test("circle", "hidden 1", 0.0, 0.5, hidden=True)],
+    )
+    text = reports.render_table(single(lone), width=120)
+    assert "1 of 1 check failed" in text and "1 submission, mean score" in text
 
 
 def test_table_fits_the_width_and_print_table_uses_the_console():

@@ -5,7 +5,7 @@ from __future__ import annotations
 import dataclasses
 from pathlib import Path
 
-from support.lessons import SOLUTIONS, failed, failed_checks, feedback_of
+from support.lessons import SOLUTIONS, failed, failed_checks, feedback_of, not_judged
 
 from turtletui.grading.engine import grade_controllers
 from turtletui.grading.engine import random_start as random_start_pose
@@ -67,15 +67,25 @@ def test_stopping_in_front_of_an_obstacle_without_turning_fails_distance_only(gr
     assert failed_checks(result) == {"distance"}
     assert len(failed(result)["distance"]) == len(grade.plan(LESSON).runs)  # in every run
     assert "turn toward the more open side" in feedback_of(result, "distance")[0]
-    assert result.score == 8.0
+    # a turtle that stopped cannot hit anything: the safety checks earn nothing
+    # then, and its loop is not judged (it stopped because of the scan, but
+    # a node that does not drive earns nothing for its loop)
+    gated = not_judged(result)
+    assert {"obstacle_hits", "wall_hits", "min_clearance", "no_crash", "closed_loop"} <= set(gated)
+    assert result.score == 0.0
 
 
 def test_reading_inf_as_zero_spins_in_place(grade):
     result = grade(LESSON, HERE / "inf_as_zero.py")
-    assert failed_checks(result) == {"distance"}
+    assert "distance" in failed_checks(result)
     text = feedback_of(result, "distance")[0]
     assert "distance driven: 0 m" in text
     assert "inf means nothing within range_max" in text
+    # every reading looks like an obstacle and it turns on the spot: its turns
+    # follow the scan (a closed loop), but a turtle that never drives earns
+    # nothing for missing the obstacles
+    assert {"obstacle_hits", "wall_hits", "min_clearance", "no_crash"} <= set(not_judged(result))
+    assert result.score < 1.5
 
 
 def test_one_beam_misses_no_obstacle_but_scrapes_past_them(grade):
@@ -89,5 +99,8 @@ def test_the_starter_runs_and_logs_but_drives_blind(grade):
     result = grade(LESSON, STARTER)
     failures = failed(result)
     assert "no_crash" not in failures
-    assert "obstacle_hits" in failures
-    assert 0 < result.score < result.max_score
+    # it creeps ahead whatever the scan says, too slowly to count as driving:
+    # nothing else earns points
+    assert "distance" in failures
+    assert {"closed_loop", "no_crash"} <= set(not_judged(result))
+    assert result.score == 0.0

@@ -49,8 +49,10 @@ def test_the_part6_lesson_loads():
     assert "+++" not in lesson.body
     assert lesson.starter_path == PART6.parent / "part6_starter.py"
     assert lesson.starter_path.is_file()
-    assert [c.name for c in lesson.checks] == ["wall_hits", "no_crash", "commands_per_pose"]
-    assert lesson.checks[0].thresholds == {"max": 0} and lesson.checks[0].weight == 6.0
+    assert [c.name for c in lesson.checks] == ["wall_hits", "no_crash", "closed_loop", "distance"]
+    assert lesson.checks[0].thresholds == {"max": 0} and lesson.checks[0].weight == 5.0
+    assert lesson.checks[0].requires == ("distance", "closed_loop")
+    assert "/*/teleport_absolute" in lesson.forbidden_services
     assert lesson.checks[0].line > 1
     by_name = {s.name: s for s in lesson.scenarios}
     centre, random_starts = by_name["centre"], by_name["random starts"]
@@ -265,6 +267,80 @@ def test_overlay_field_errors(tmp_path):
     )
     assert "overlays[0]: unknown field 'colour' (did you mean 'color'?)" in error(
         "x0 = 1.0\ny0 = 1.0\nx1 = 2.0\ny1 = 2.0\ncolour = [1, 2, 3]\n"
+    )
+
+
+TWO_SCENARIOS = '[[scenarios]]\nname = "a"\n[[scenarios]]\nname = "b"\n'
+
+
+def test_requires_names_the_checks_a_check_is_gated_on(tmp_path):
+    path = write(
+        tmp_path,
+        "x.md",
+        GOOD_FRONT
+        + TWO_SCENARIOS
+        + '[[checks]]\nname = "distance"\nlabel = "far"\n'
+        + '[[checks]]\nname = "wall_hits"\nrequires = ["far", "distance"]\n',
+    )
+    lesson = load_lesson(path)
+    assert lesson.checks[1].requires == ("far", "distance")
+    assert lesson.checks[0].is_named("far") and lesson.checks[0].is_named("distance")
+
+
+@pytest.mark.parametrize(
+    ("checks", "line", "expected"),
+    [
+        (
+            '[[checks]]\nname = "distance"\n[[checks]]\nname = "wall_hits"\nrequires = ["distanse"]\n',
+            13,
+            "checks[1].requires names no check 'distanse' (did you mean 'distance'?)",
+        ),
+        (
+            '[[checks]]\nname = "wall_hits"\nrequires = "distance"\n',
+            11,
+            "checks[0].requires must be a list of check names like [\"distance\"], got 'distance'",
+        ),
+        (
+            '[[checks]]\nname = "distance"\nscenarios = ["a"]\n[[checks]]\nname = "wall_hits"\n'
+            'scenarios = ["b"]\nrequires = ["distance"]\n',
+            15,
+            "checks[1].requires 'distance', which judges none of its scenarios",
+        ),
+        (
+            '[[checks]]\nname = "distance"\nscenarios = ["a"]\n[[checks]]\nname = "wall_hits"\n'
+            'requires = ["distance"]\n',
+            14,
+            "checks[1] judges scenario 'b', where none of the checks it requires (distance) is judged",
+        ),
+        (
+            '[[checks]]\nname = "distance"\nrequires = ["wall_hits"]\n'
+            '[[checks]]\nname = "wall_hits"\nrequires = ["distance"]\n',
+            14,
+            "checks[1].requires makes a loop (distance -> wall_hits -> distance): a check cannot require itself",
+        ),
+        (
+            '[[checks]]\nname = "distance"\nrequires = ["distance"]\n',
+            11,
+            "checks[0].requires makes a loop (distance -> distance): a check cannot require itself",
+        ),
+    ],
+)
+def test_requires_errors(tmp_path, checks, line, expected):
+    path = write(tmp_path, "x.md", GOOD_FRONT + TWO_SCENARIOS + checks)
+    assert error_of(path) == f"{path}:{line}: {expected}"
+
+
+def test_forbidden_services_and_a_scenarios_drive(tmp_path):
+    front = GOOD_FRONT + 'forbidden_services = ["/*/teleport_absolute", "/reset"]\n'
+    path = write(tmp_path, "x.md", front + '[[scenarios]]\nname = "a"\ndrive = {linear = 1.0, angular = -0.5}\n')
+    lesson = load_lesson(path)
+    assert lesson.forbidden_services == ("/*/teleport_absolute", "/reset")
+    assert lesson.scenarios[0].drive == (1.0, -0.5)
+    path = write(tmp_path, "y.md", GOOD_FRONT + 'forbidden_services = "teleport"\n')
+    assert error_of(path).startswith(f"{path}:5: field 'forbidden_services' must be a list of service names")
+    path = write(tmp_path, "z.md", GOOD_FRONT + '[[scenarios]]\nname = "a"\ndrive = {speed = 1.0}\n')
+    assert error_of(path) == (
+        f"{path}:7: scenarios[0].drive must be a table {{linear = m/s, angular = rad/s}}, got {{'speed': 1.0}}"
     )
 
 

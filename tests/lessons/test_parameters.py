@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from support.lessons import SOLUTIONS, failed, feedback
+from support.lessons import SOLUTIONS, failed, feedback, not_judged
 
 LESSON = "parameters"
 HERE = SOLUTIONS / "parameters"
@@ -29,6 +29,10 @@ def test_declared_but_ignored_parameters_change_nothing(grade):
     assert "small box" in failures["min_clearance"] and "tight turns" in failures["min_clearance"]
     assert "no_crash" not in failures and "wall_hits" not in failures
     assert 'self.get_parameter("speed").value' in feedback(result, "mean_speed")
+    # it keeps off the walls only with Part 6's numbers: where it ignored the
+    # run's parameters, keeping off the walls earns nothing
+    assert {"slow", "small box", "tight turns"} <= not_judged(result)["wall_hits"]
+    assert result.score <= 3.0
 
 
 def test_an_integer_default_refuses_a_float_override(grade):
@@ -43,3 +47,4 @@ def test_the_starter_runs_with_speed_done_and_the_rest_to_do(grade):
     result = grade(LESSON, STARTER)
     failures = failed(result)
     assert set(failures) == {"min_clearance"}
+    assert result.score <= 3.0  # the points are for the parameters it leaves to do

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from support.lessons import SOLUTIONS, failed_checks, feedback_of
+from support.lessons import SOLUTIONS, failed_checks, feedback_of, not_judged
 
 LESSON = "part6-closed-loop"
 HERE = SOLUTIONS / "part6"
@@ -31,8 +31,12 @@ def test_the_slow_turn_passes_the_centre_start_but_hits_a_wall_from_others(grade
 
 def test_an_open_loop_timer_fails_the_closed_loop_check(grade):
     result = grade(LESSON, HERE / "open_loop_timer.py")
-    assert "commands_per_pose" in failed_checks(result)
-    assert any("pose callback" in text for text in feedback_of(result, "commands_per_pose"))
+    assert "closed_loop" in failed_checks(result)
+    text = feedback_of(result, "closed_loop")[0]
+    assert "the same" in text and "at the same times" in text and "an open loop" in text
+    assert "pose callback" in text
+    # running without a crash is not the task: only the distance it drove scores
+    assert "no_crash" in not_judged(result) and result.score == 1.0
 
 
 def test_a_crash_near_the_wall_fails_no_crash_with_the_students_line(grade):

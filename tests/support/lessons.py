@@ -8,6 +8,7 @@ from pathlib import Path
 from turtletui.grading.engine import GradingPlan, grade_controllers, prepare
 from turtletui.grading.results import SubmissionResult
 from turtletui.lessons.loader import find_lesson
+from turtletui.runtime.loader import ControllerSpec
 from turtletui.runtime.resolve import resolve_controllers
 
 SOLUTIONS = Path(__file__).parents[1] / "lessons" / "solutions"
@@ -26,21 +27,40 @@ class Grader:
             self._plans[lesson_id] = prepare(find_lesson(lesson_id))
         return self._plans[lesson_id]
 
-    def __call__(self, lesson_id: str, controller: str | Path) -> SubmissionResult:
-        """Grade a registered controller name (the reference) or a file (sandboxed)."""
-        key = (lesson_id, str(controller))
+    def __call__(self, lesson_id: str, controller: str | Path, *, in_process: bool = False) -> SubmissionResult:
+        """Grade a registered controller name (the reference) or a file: sandboxed,
+        as students' files are, or ``in_process`` (trusted test code only: faster)."""
+        key = (lesson_id, str(controller), in_process)
         if key not in self._results:
-            specs = resolve_controllers([controller])
+            if in_process:
+                specs = [ControllerSpec(name=Path(controller).stem, path=Path(controller), trusted=True)]
+            else:
+                specs = resolve_controllers([controller])
             self._results[key] = grade_controllers(self.plan(lesson_id), specs)
         return self._results[key]
 
 
+def judged(test) -> bool:
+    """Whether a test was judged (not gated by a failed requirement, a crash or a broken rule)."""
+    return not test.output.startswith("not judged")
+
+
 def failed_checks(result: SubmissionResult) -> set[str]:
-    return {test.check for test in result.tests if not test.passed}
+    """Checks (by title) that were judged and failed in some run."""
+    return {test.check for test in result.tests if not test.passed and judged(test)}
+
+
+def not_judged(result: SubmissionResult) -> dict[str, set[str]]:
+    """Check title -> scenarios where it was not judged."""
+    out: dict[str, set[str]] = {}
+    for test in result.tests:
+        if not judged(test):
+            out.setdefault(test.check, set()).add(test.scenario)
+    return out
 
 
 def feedback_of(result: SubmissionResult, check: str) -> list[str]:
-    return [test.output for test in result.tests if test.check == check and not test.passed]
+    return [test.output for test in result.tests if test.check == check and not test.passed and judged(test)]
 
 
 def check_of(test) -> str:
@@ -49,14 +69,14 @@ def check_of(test) -> str:
 
 
 def failed(result: SubmissionResult) -> dict[str, set[str]]:
-    """Check name -> scenarios where it failed."""
+    """Check name -> scenarios where it was judged and failed."""
     out: dict[str, set[str]] = {}
     for test in result.tests:
-        if not test.passed:
+        if not test.passed and judged(test):
             out.setdefault(check_of(test), set()).add(test.scenario)
     return out
 
 
 def feedback(result: SubmissionResult, check: str) -> str:
-    """The feedback of every failed test of ``check`` (any label), one per line."""
-    return "\n".join(t.output for t in result.tests if check_of(t) == check and not t.passed)
+    """The feedback of every judged, failed test of ``check`` (any label), one per line."""
+    return "\n".join(t.output for t in result.tests if check_of(t) == check and not t.passed and judged(t))

@@ -73,7 +73,7 @@ def test_describe_groups_failures_by_check_with_the_first_feedback():
     assert "**Score: 1 / 2**" in text
     assert "- ✗ `wall_hits`: failed in 1 of 2 runs (b)" in text
     assert "  > wall hits: 2\n  >\n  > Turn earlier." in text
-    assert "- ✓ `no_crash`: passed in all 1 runs" in text
+    assert "- ✓ `no_crash`: passed in its only run" in text
     assert "- `turtletui replay r/b.jsonl`" in text
 
 
@@ -92,6 +92,17 @@ def test_progress_is_read_line_by_line_and_says_why_checks_could_not_run():
     crashed.feed("MemoryError")
     assert "**The checks could not run:** MemoryError" in crashed.result(1)
     assert "not readable" in describe_report({"lesson": "x"})
+
+
+def test_describe_counts_runs_in_the_singular_and_the_plural():
+    tests = [
+        {"check": "circle", "scenario": "a", "status": "failed", "output": "no circle"},
+        {"check": "no_crash", "scenario": "a", "status": "passed", "output": ""},
+        {"check": "no_crash", "scenario": "b", "status": "passed", "output": ""},
+    ]
+    text = describe_report(report(tests))
+    assert "- ✗ `circle`: failed in 1 of 1 run (a)" in text
+    assert "- ✓ `no_crash`: passed in all 2 runs" in text
 
 
 def test_check_results_are_kept_in_the_users_cache(tmp_path: Path, monkeypatch) -> None:

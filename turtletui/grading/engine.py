@@ -10,10 +10,13 @@ grader's own trusted simulation and returns a :class:`SubmissionResult`.
 from __future__ import annotations
 
 import math
+import os
 import random
 import time
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
+from fnmatch import fnmatchcase
+from functools import cached_property
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -27,6 +30,7 @@ from turtletui.lessons.model import CheckSpec, Lesson, Scenario
 from turtletui.messages import did_you_mean
 from turtletui.runtime.loader import ControllerSpec
 from turtletui.runtime.recorder import open_recorder
+from turtletui.runtime.report import CrashReport
 
 if TYPE_CHECKING:
     from turtletui.runtime.sandbox import Limits
@@ -59,6 +63,8 @@ class ScenarioRun:
     label: str
     """How results name it: the scenario's name (and seed), or ``hidden N``."""
     start: tuple[float, float, float]
+    twin_start: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    """Where its twin run starts (:attr:`Check.twin`): see :func:`twin_start`."""
 
     @property
     def hidden(self) -> bool:
@@ -82,6 +88,42 @@ class GradingPlan:
     def runs_for(self, spec: CheckSpec) -> list[ScenarioRun]:
         """The scenario runs a check judges."""
         return [r for r in self.runs if not spec.scenarios or r.scenario.name in spec.scenarios]
+
+    @cached_property
+    def gates(self) -> tuple[dict[str, tuple[int, ...]], ...]:
+        """Per check, each name of its ``requires`` -> the indices of the checks it means."""
+        specs = [spec for spec, _ in self.checks]
+        return tuple(
+            {name: tuple(j for j, other in enumerate(specs) if other.is_named(name)) for name in spec.requires}
+            for spec in specs
+        )
+
+    @cached_property
+    def order(self) -> tuple[int, ...]:
+        """Check indices with every check after those it requires (the loader
+        refused loops), otherwise in the lesson's order."""
+        done: list[int] = []
+
+        def visit(index: int) -> None:
+            if index in done:
+                return
+            for needed in self.gates[index].values():
+                for other in needed:
+                    visit(other)
+            done.append(index)
+
+        for index in range(len(self.checks)):
+            visit(index)
+        return tuple(done)
+
+    def twin_window(self, run: ScenarioRun) -> float | None:
+        """Seconds of twin run the checks judging ``run`` need (None: no twin)."""
+        windows = [
+            window
+            for spec, check in self.checks
+            if run in self.runs_for(spec) and (window := check.twin_window(spec.thresholds)) is not None
+        ]
+        return min(max(windows), run.scenario.duration) if windows else None
 
 
 def random_start(
@@ -120,13 +162,30 @@ def scenario_runs(
                 label = f"{scenario.name}, seed {seed}"
             else:
                 label = scenario.name
+            blocked = obstacles(scenario.world or lesson.world)
             if scenario.start == "random":
-                start = random_start(seed, obstacles=obstacles(scenario.world or lesson.world))
+                start = random_start(seed, obstacles=blocked)
             else:
                 pose = scenario.start
                 start = (pose["x"], pose["y"], pose.get("theta", 0.0))
-            runs.append(ScenarioRun(scenario, seed, label, start))
+            runs.append(ScenarioRun(scenario, seed, label, start, twin_start(seed, start, blocked)))
     return runs
+
+
+TWIN_APART = 2.0
+"""Metres at least between a run's start and its twin's."""
+
+
+def twin_start(
+    seed: int, start: tuple[float, float, float], obstacles: Sequence[Any] = ()
+) -> tuple[float, float, float]:
+    """Where the twin of a run with this seed and start begins: a random start
+    drawn from the seed, at least :data:`TWIN_APART` metres from ``start``."""
+    for attempt in range(1, 1000):
+        twin = random_start(seed * 1_000_003 + attempt, obstacles=obstacles)
+        if math.hypot(twin[0] - start[0], twin[1] - start[1]) >= TWIN_APART:
+            return twin
+    raise GradingError(f"no start {TWIN_APART} m from ({start[0]:.2f}, {start[1]:.2f}) for a twin run (seed {seed})")
 
 
 def available_checks(plugins: Sequence[str | Path] = ()) -> dict[str, Check]:
@@ -192,6 +251,24 @@ def _world_spec(name: str, plugins: Sequence[str | Path], shown: str) -> WorldSp
         raise GradingError(f"{shown}: {err}") from None
 
 
+class ScenarioDriver:
+    """Drives turtle1 for a scenario with a ``drive`` (linear, angular): the
+    same Twist every 16 ms, as a person holding a teleop key would, so that a
+    node that only watches sees the turtle move."""
+
+    PERIOD_NS = 16_000_000
+
+    def __init__(self, sim: Simulation, drive: tuple[float, float]) -> None:
+        from turtletui.interfaces.geometry_msgs import Twist, Vector3
+
+        graph = sim.graph
+        node = graph.add_node("scenario_teleop", owner="scenario")
+        self.msg = Twist(linear=Vector3(x=drive[0]), angular=Vector3(z=drive[1]))
+        """The one message it publishes (the trace tells it from the controller's)."""
+        publisher = graph.add_publisher(node, "/turtle1/cmd_vel", Twist, 10)
+        graph.add_timer(node, self.PERIOD_NS, lambda: graph.publish(publisher.topic, self.msg))
+
+
 def place_turtle(sim: Simulation, start: tuple[float, float, float], label: str) -> None:
     """Put turtle1 at a scenario's start before anything has run (nothing drawn)."""
     sim.world.place("turtle1", *start)
@@ -210,13 +287,18 @@ def run_scenario(
     *,
     limits: Limits | None = None,
     record: str | Path | None = None,
+    start: tuple[float, float, float] | None = None,
+    duration: float | None = None,
 ) -> tuple[Trace, Any]:
     """Run one scenario in the grader's own simulation: its trace and, with
     ``record``, its recording in memory (the caller closes it, keeping the
-    file or not). Raises KeyboardInterrupt if Ctrl-C cut the run short."""
+    file or not). ``start`` and ``duration`` replace the run's own (a twin
+    run). Raises KeyboardInterrupt if Ctrl-C cut the run short."""
     from turtletui.api import run as run_controllers
 
     scenario = run.scenario
+    start = run.start if start is None else start
+    duration = scenario.duration if duration is None else duration
     world_name = scenario.world or plan.lesson.world
     collector: list[TraceCollector] = []
     recorder: list[Any] = []
@@ -228,19 +310,24 @@ def run_scenario(
                 "lesson": plan.lesson.id,
                 "scenario": run.label,
                 "seed": run.seed,
-                "duration": scenario.duration,
+                "duration": duration,
                 "world": world_name,
-                "start": list(run.start),
+                "start": list(start),
                 "ros_args": list(scenario.ros_args),
             }
             recorder.append(open_recorder(sim, record, start_logs, header, buffered=True))
-        place_turtle(sim, run.start, run.label)
-        collector.append(TraceCollector(sim, scenario=run.label, seed=run.seed, duration=scenario.duration))
+        place_turtle(sim, start, run.label)
+        driver = ScenarioDriver(sim, scenario.drive) if scenario.drive is not None else None
+        collector.append(
+            TraceCollector(
+                sim, scenario=run.label, seed=run.seed, duration=duration, scripted=driver and driver.msg
+            )
+        )
 
     try:
         result = run_controllers(
             controllers,
-            duration=scenario.duration,
+            duration=duration,
             seed=run.seed,
             ros_args=scenario.ros_args,
             setup=setup,
@@ -267,11 +354,38 @@ def judge(check: Check, trace: Trace, thresholds: dict[str, Any]) -> Verdict:
 
 
 def _output(spec: CheckSpec, verdict: Verdict, hidden: bool) -> str:
-    # what was measured in a hidden run could tell where it starts
+    # a check that was not judged says why (never with a number in a hidden
+    # run), and gives no advice about what it judges; what was measured in a
+    # hidden run could tell where it starts
+    if not verdict.judged:
+        return verdict.measured
     lines = [verdict.measured] if verdict.measured and not hidden else []
     if not verdict.passed and spec.feedback:
         lines.append(spec.feedback)
     return "\n".join(lines)
+
+
+def forbidden_call(plan: GradingPlan, trace: Trace, *, hidden: bool = False) -> str | None:
+    """Why the run broke the lesson's rules (its first call of a forbidden service), or None."""
+    patterns = plan.lesson.forbidden_services
+    for call in trace.service_calls if patterns else ():
+        if any(fnmatchcase(call.service, pattern) for pattern in patterns):
+            when = "" if hidden else f" at t={call.t:.3f} s"
+            return f"the controller called {call.service}{when}, a service this lesson forbids"
+    return None
+
+
+def as_the_student_sees_it(crash: CrashReport, controllers: Sequence[ControllerSpec]) -> CrashReport:
+    """The crash with the controller's file named as the student knows it: by
+    its name (and files beside it by their paths from its folder), never by
+    the folder the grader ran it from (a private copy when grading as root)."""
+    text = [crash.controller, crash.message, *crash.frames]
+    for spec in controllers:
+        # the absolute path first: the path as given may be part of it
+        for path in dict.fromkeys([spec.path.resolve(), spec.path]) if spec.path is not None else ():
+            folder = str(path.parent) + os.sep
+            text = [line.replace(str(path), path.name).replace(folder, "") for line in text]
+    return replace(crash, controller=text[0], message=text[1], frames=text[2:])
 
 
 @dataclass
@@ -309,15 +423,29 @@ def grade_run(
     if path is not None:
         recordings.mkdir(parents=True, exist_ok=True)
     trace, recorder = run_scenario(plan, run, controllers, limits=limits, record=path)
+    trace.crashes = [as_the_student_sees_it(crash, controllers) for crash in trace.crashes]
+    broken = forbidden_call(plan, trace, hidden=run.hidden)
 
-    def verdict_of(check: Check, thresholds: dict[str, Any]) -> Verdict:
+    def problem(check: Check) -> Verdict | None:
+        """Why this run judges no check (a broken rule, a crash: then only
+        no_crash is judged), or None."""
+        if broken is not None:
+            return Verdict(False, f"not judged: {broken}", judged=False)
         if trace.crashes and check.name != "no_crash":
             # a turtle that stopped with its node cannot hit a wall: not a pass
             crash = trace.crashes[0]
-            return Verdict(False, f"not judged: the controller stopped at t={crash.t:.3f} s ({crash.kind})")
+            when = "before the end of the run" if run.hidden else f"at t={crash.t:.3f} s"
+            return Verdict(False, f"not judged: the controller stopped {when} ({crash.kind})", judged=False)
+        return None
+
+    def verdict_of(check: Check, thresholds: dict[str, Any]) -> Verdict:
+        if check.twin and trace.twin is None:
+            # run only when a check that compares with it is judged
+            window = plan.twin_window(run)
+            trace.twin, _ = run_scenario(plan, run, controllers, limits=limits, start=run.twin_start, duration=window)
         return judge(check, trace, thresholds)
 
-    tests = _judge_run(plan, run, verdict_of)
+    tests = _judge_run(plan, run, verdict_of, problem)
     failed = not all(test.passed for _, test in tests)
     if recorder is not None:
         recorder.close(keep=failed)
@@ -326,16 +454,47 @@ def grade_run(
 
 
 def _judge_run(
-    plan: GradingPlan, run: ScenarioRun, verdict_of: Callable[[Check, dict[str, Any]], Verdict]
+    plan: GradingPlan,
+    run: ScenarioRun,
+    verdict_of: Callable[[Check, dict[str, Any]], Verdict],
+    problem: Callable[[Check], Verdict | None] = lambda check: None,
 ) -> list[tuple[int, TestResult]]:
-    """The tests of one run, each with the index of its check in the lesson."""
-    tests = []
-    for index, (spec, check) in enumerate(plan.checks):
-        runs = plan.runs_for(spec)
-        if run not in runs:
+    """The tests of one run, each with the index of its check in the lesson.
+    ``problem`` gives the verdict of a check the run itself cannot judge (a
+    crash, a broken rule). A check that passed while a check it requires
+    did not pass in this run earns nothing and is shown as not judged; one
+    that failed shows its own failure and advice. A check that compares with
+    a twin run is not judged at all then (the twin would be a run for
+    nothing)."""
+    verdicts: dict[int, Verdict] = {}
+    run_level: set[int] = set()
+    for index in plan.order:
+        spec, check = plan.checks[index]
+        if run not in plan.runs_for(spec):
             continue
-        verdict = verdict_of(check, spec.thresholds)
-        points = spec.weight / len(runs)
+        verdict = problem(check)
+        if verdict is not None:
+            run_level.add(index)
+            verdicts[index] = verdict
+            continue
+        # requirements that failed for the run's own problem do not gate:
+        # no_crash still reports the crash
+        failed = [
+            name
+            for name, needed in plan.gates[index].items()
+            if not all(verdicts[j].passed or j in run_level for j in needed if j in verdicts)
+        ]
+        if failed and check.twin:
+            verdict = _gated(spec, failed)
+        else:
+            verdict = verdict_of(check, spec.thresholds)
+            if verdict.passed and failed:
+                verdict = _gated(spec, failed)
+        verdicts[index] = verdict
+    tests = []
+    for index, verdict in sorted(verdicts.items()):
+        spec, _ = plan.checks[index]
+        points = spec.weight / len(plan.runs_for(spec))
         test = TestResult(
             name=f"{spec.title} [{run.label}]",
             check=spec.title,
@@ -350,9 +509,20 @@ def _judge_run(
     return tests
 
 
+def _gated(spec: CheckSpec, failed: Sequence[str]) -> Verdict:
+    """The verdict of a check whose required checks ``failed`` in this run."""
+    needs = " and ".join(spec.requires)
+    verb = "passes" if len(spec.requires) == 1 else "pass"
+    which = "it" if len(spec.requires) == 1 else " and ".join(failed)
+    return Verdict(
+        False, f"not judged: {spec.title} counts only in runs where {needs} {verb}; here {which} did not", judged=False
+    )
+
+
 def failed_run(plan: GradingPlan, run_index: int, reason: str) -> RunOutcome:
     """Every test of a run failed for ``reason`` (the run could not be judged)."""
-    return RunOutcome(run_index, _judge_run(plan, plan.runs[run_index], lambda check, th: Verdict(False, reason)))
+    failure = Verdict(False, reason, judged=False)
+    return RunOutcome(run_index, _judge_run(plan, plan.runs[run_index], lambda check, th: failure, lambda check: failure))
 
 
 def assemble(

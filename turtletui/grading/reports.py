@@ -41,13 +41,13 @@ import re
 import socket
 import tempfile
 import xml.etree.ElementTree as ET
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from turtletui.grading.results import GradeReport, SubmissionResult, TestResult
-from turtletui.messages import one_line
+from turtletui.messages import one_line, plural
 
 if TYPE_CHECKING:  # rich is imported only when a table is drawn
     from rich.console import Console
@@ -145,6 +145,11 @@ def hidden_summary(tests: Sequence[TestResult]) -> tuple[str, float, float] | No
     return name, sum(t.score for t in hidden), sum(t.max_score for t in hidden)
 
 
+def _checks_of(tests: Iterable[TestResult]) -> list[str]:
+    """The checks (not check x scenario runs) these tests judge, in order."""
+    return list(dict.fromkeys(test.check for test in tests))
+
+
 def _test_seconds(submission: SubmissionResult) -> float:
     """Seconds per test: :class:`SubmissionResult` records only the submission's
     wall time, so it is shared evenly among its tests."""
@@ -227,9 +232,11 @@ def render_gradescope(report: GradeReport, hidden: str = "summary") -> str:
     else:
         # Counts of visible tests only: the summary must not describe hidden scenarios.
         visible = [test for test in sub.tests if not test.hidden]
+        checks = _checks_of(visible)
+        passed = [check for check in checks if check not in _checks_of(t for t in visible if not t.passed)]
         output = html.escape(
-            f"Lesson {report.lesson}: {sum(t.passed for t in visible)} of {len(visible)} "
-            f"checks passed in the scenarios you can see. Graded: {sub.graded}."
+            f"Lesson {report.lesson}: {len(passed)} of {plural(len(checks), 'check')} passed "
+            f"in every scenario you can see. Graded: {sub.graded}."
         )
         if len(visible) < len(sub.tests):
             output += " Hidden scenarios were graded too."
@@ -495,11 +502,12 @@ def _table(report: GradeReport) -> Any:
                 Text(f"error: {_printable(sub.error)}", style="red"),
             )
             continue
-        failed = [test for test in sub.tests if not test.passed]
+        checks = _checks_of(sub.tests)
+        failed = _checks_of(test for test in sub.tests if not test.passed)
         summary = (
             Text("all checks passed", style="green")
             if not failed
-            else Text(f"{len(failed)} of {len(sub.tests)} checks failed", style="yellow")
+            else Text(f"{len(failed)} of {plural(len(checks), 'check')} failed", style="yellow")
         )
         if sub.graded:
             summary.append(f" ({_printable(sub.graded)})", style="dim")
@@ -516,7 +524,7 @@ def _table(report: GradeReport) -> Any:
     count = len(report.submissions)
     mean = sum(0.0 if s.error else s.score for s in report.submissions) / count if count else 0.0
     summary = Text(
-        f"{count} submission{'s' if count != 1 else ''}, mean score "
+        f"{plural(count, 'submission')}, mean score "
         f"{mean:.2f}/{_points(report.max_score):g}"
     )
     return Group(table, summary)

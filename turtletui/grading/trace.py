@@ -20,6 +20,8 @@ from turtletui.sim.constants import ARENA_SIZE
 
 POSE_COLUMNS = ("t", "x", "y", "theta", "speed", "r", "g", "b", "pen_off")
 """Columns of :attr:`Trace.poses` arrays, one row per pose turtlesim published."""
+JUMPING_SERVICES = ("teleport_absolute", "teleport_relative")
+"""A turtle's own services that move it without driving (and /reset moves them all)."""
 
 
 @dataclass(frozen=True)
@@ -53,6 +55,9 @@ class Trace:
     """turtle1's start pose (x, y, theta)."""
     poses: dict[str, np.ndarray] = field(default_factory=dict)
     """Per turtle, an (n, 9) float array of :data:`POSE_COLUMNS`."""
+    jumps: dict[str, np.ndarray] = field(default_factory=dict)
+    """Per turtle, a bool per pose row: a teleport or /reset moved it there
+    since the pose before (it did not drive that step)."""
     commands: dict[str, np.ndarray] = field(default_factory=dict)
     """Per turtle, an (n, 4) array of (t, linear.x, linear.y, angular.z) of every
     Twist a controller published on its cmd_vel."""
@@ -71,10 +76,19 @@ class Trace:
     arena_size: float = ARENA_SIZE
     sim_time: float = 0.0
     """Simulated seconds the run actually lasted."""
+    twin: Trace | None = None
+    """The twin run, for checks that compare with one
+    (:attr:`turtletui.grading.checks.Check.twin`): the same scenario and seed
+    from another start, usually shorter; None when no check asked for it."""
 
     def pose_array(self, turtle: str = "turtle1") -> np.ndarray:
         """The turtle's pose rows; an empty (0, 9) array when it never moved."""
         return self.poses.get(turtle, np.empty((0, len(POSE_COLUMNS))))
+
+    def jumped(self, turtle: str = "turtle1") -> np.ndarray:
+        """Which of the turtle's poses a teleport or /reset put it at (see :attr:`jumps`)."""
+        jumps = self.jumps.get(turtle)
+        return jumps if jumps is not None else np.zeros(len(self.pose_array(turtle)), dtype=bool)
 
     def command_array(self, turtle: str = "turtle1") -> np.ndarray:
         return self.commands.get(turtle, np.empty((0, 4)))
@@ -83,8 +97,14 @@ class Trace:
 class TraceCollector:
     """Taps a simulation's graph and builds the :class:`Trace` of the run."""
 
-    def __init__(self, sim: Simulation, *, scenario: str, seed: int, duration: float) -> None:
+    def __init__(
+        self, sim: Simulation, *, scenario: str, seed: int, duration: float, scripted: Any = None
+    ) -> None:
+        """``scripted``: a Twist object the scenario itself publishes (it is not the controller's)."""
         self.sim = sim
+        self._scripted = scripted
+        self._jumped: set[str] = set()
+        self._jumps: dict[str, list[int]] = {}
         self._poses: dict[str, list[tuple[float, ...]]] = {}
         self._commands: dict[str, list[tuple[float, float, float, float]]] = {}
         self._calls: list[ServiceCall] = []
@@ -103,7 +123,7 @@ class TraceCollector:
             name = topic.name
             if name.endswith("/pose"):
                 self._pose(name[1:-5], msg)
-            elif name.endswith("/cmd_vel"):
+            elif name.endswith("/cmd_vel") and msg is not self._scripted:
                 turtle = name[1:-8]
                 self._commands.setdefault(turtle, []).append(
                     (self.sim.t, msg.linear.x, msg.linear.y, msg.angular.z)
@@ -111,6 +131,10 @@ class TraceCollector:
         elif kind == "service":
             name, request, response = payload
             self._calls.append(ServiceCall(self.sim.t, name, request, response))
+            if name == "/reset":
+                self._jumped.update(self.sim.world.turtles)
+            elif name.rsplit("/", 1)[-1] in JUMPING_SERVICES:
+                self._jumped.add(name.strip("/").split("/")[0])
             # answered after the request took effect: a kill that worked leaves
             # no turtle of that name, a spawn that worked answers its name
             if name == "/kill" and request.name in self._alive and request.name not in self.sim.world.turtles:
@@ -131,6 +155,9 @@ class TraceCollector:
         self._poses.setdefault(name, []).append(
             (self.sim.t, turtle.x, turtle.y, turtle.theta, msg.linear_velocity, r, g, b, 0.0 if turtle.pen_on else 1.0)
         )
+        if name in self._jumped:
+            self._jumped.discard(name)
+            self._jumps.setdefault(name, []).append(len(self._poses[name]) - 1)
 
     def finish(self, *, logs: list[LogRecord], crashes: list[CrashReport]) -> Trace:
         """Stop tapping and return the trace."""
@@ -146,6 +173,7 @@ class TraceCollector:
             duration=duration,
             start=self._start,
             poses={k: np.array(v, dtype=float).reshape(-1, width) for k, v in self._poses.items()},
+            jumps={k: np.isin(np.arange(len(self._poses[k])), v) for k, v in self._jumps.items()},
             commands={k: np.array(v, dtype=float).reshape(-1, 4) for k, v in self._commands.items()},
             service_calls=self._calls,
             goals=self._goals,

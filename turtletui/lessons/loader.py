@@ -42,10 +42,12 @@ LESSON_FIELDS = (
     "scenarios",
     "checks",
     "overlays",
+    "forbidden_services",
 )
-SCENARIO_FIELDS = ("name", "start", "duration", "seed", "seeds", "hidden", "world", "ros_args")
+SCENARIO_FIELDS = ("name", "start", "duration", "seed", "seeds", "hidden", "world", "ros_args", "drive")
 START_FIELDS = ("x", "y", "theta")
-CHECK_FIELDS = ("name", "label", "weight", "feedback", "thresholds", "scenarios")
+DRIVE_FIELDS = ("linear", "angular")
+CHECK_FIELDS = ("name", "label", "weight", "feedback", "thresholds", "scenarios", "requires")
 OVERLAY_FIELDS = ("x0", "y0", "x1", "y1", "color")
 
 
@@ -245,6 +247,17 @@ class _Validator:
         checks = tuple(
             self._check(i, item, seen) for i, item in enumerate(self._tables(data, "checks", top))
         )
+        self._gates(checks, tuple(seen))
+        forbidden = data.get("forbidden_services", [])
+        if not isinstance(forbidden, list) or not all(
+            isinstance(f, str) and f.startswith("/") for f in forbidden
+        ):
+            raise self._error(
+                "field 'forbidden_services' must be a list of service names or patterns like"
+                f' "/turtle1/teleport_absolute" or "/*/teleport_*", got {_show(forbidden)}',
+                "forbidden_services",
+                top,
+            )
         # a check may repeat (other thresholds per scenario), but results name
         # each by its label and scenario: those pairs must be unique
         every = set(seen)
@@ -277,7 +290,62 @@ class _Validator:
             scenarios=scenarios,
             checks=checks,
             overlays=overlays,
+            forbidden_services=tuple(forbidden),
         )
+
+    def _gates(self, checks: tuple[CheckSpec, ...], every: tuple[str, ...]) -> None:
+        """Each name in a check's ``requires`` names checks judged in some of
+        its scenarios, each of its scenarios is gated by one of them at least,
+        and no chain of requirements comes back to where it started."""
+        needs: dict[int, list[int]] = {}
+        for i, check in enumerate(checks):
+            needs[i] = []
+            mine = check.scenarios or every
+            for name in check.requires:
+                matched = [j for j, other in enumerate(checks) if other.is_named(name)]
+                if not matched:
+                    known = sorted({c.title for c in checks} | {c.name for c in checks})
+                    raise self._error(
+                        f"checks[{i}].requires names no check {name!r}{did_you_mean(name, known)}",
+                        "requires",
+                        self._section("checks", i),
+                    )
+                if not any(set(mine) & set(checks[j].scenarios or every) for j in matched):
+                    raise self._error(
+                        f"checks[{i}].requires {name!r}, which judges none of its scenarios",
+                        "requires",
+                        self._section("checks", i),
+                    )
+                needs[i].extend(matched)
+            if check.requires:
+                for scenario in mine:
+                    if not any(scenario in (checks[j].scenarios or every) for j in needs[i]):
+                        raise self._error(
+                            f"checks[{i}] judges scenario {scenario!r}, where none of the checks it"
+                            f" requires ({', '.join(check.requires)}) is judged",
+                            "requires",
+                            self._section("checks", i),
+                        )
+        state: dict[int, str] = {}
+
+        def visit(i: int, path: list[int]) -> None:
+            state[i] = "open"
+            for j in needs[i]:
+                if state.get(j) == "open":  # on the path being walked: a loop
+                    loop = [*path[path.index(j) :], j]
+                    names = " -> ".join(checks[k].title for k in loop)
+                    raise self._error(
+                        f"checks[{i}].requires makes a loop ({names}): a check cannot require itself",
+                        "requires",
+                        self._section("checks", i),
+                    )
+                if j not in state:
+                    visit(j, [*path, j])
+            state[i] = "done"
+
+        for i in needs:
+            if i not in state:
+                visit(i, [i])
 
     def _required_text(self, data: dict[str, Any], key: str, top: tuple[int, int]) -> str:
         if key not in data:
@@ -360,6 +428,15 @@ class _Validator:
         ros_args = item.get("ros_args", [])
         if not isinstance(ros_args, list) or not all(isinstance(a, str) for a in ros_args):
             raise bad("ros_args", f'must be a list of strings like ["-p", "speed:=2.0"], got {_show(ros_args)}')
+        drive = item.get("drive")
+        if drive is not None:
+            if (
+                not isinstance(drive, dict)
+                or set(drive) - set(DRIVE_FIELDS)
+                or not all(_is_number(v) for v in drive.values())
+            ):
+                raise bad("drive", f"must be a table {{linear = m/s, angular = rad/s}}, got {_show(drive)}")
+            drive = (float(drive.get("linear", 0.0)), float(drive.get("angular", 0.0)))
         return Scenario(
             name=name,
             start=start,
@@ -368,6 +445,7 @@ class _Validator:
             hidden=hidden,
             world=world,
             ros_args=tuple(ros_args),
+            drive=drive,
         )
 
     def _overlay(self, i: int, item: dict[str, Any]) -> ArenaOverlay:
@@ -449,6 +527,9 @@ class _Validator:
         label = item.get("label", "")
         if not isinstance(label, str):
             raise bad("label", f"must be a string, got {_show(label)}")
+        requires = item.get("requires", [])
+        if not isinstance(requires, list) or not all(isinstance(n, str) and n.strip() for n in requires):
+            raise bad("requires", f'must be a list of check names like ["distance"], got {_show(requires)}')
         return CheckSpec(
             name=name,
             label=label.strip(),
@@ -456,6 +537,7 @@ class _Validator:
             feedback=feedback,
             thresholds=dict(thresholds),
             scenarios=tuple(scenarios),
+            requires=tuple(requires),
             line=self._file_line(self._section("checks", i)[0]),
         )
 

@@ -28,6 +28,10 @@ class Scenario:
     """A registered world's name; None means the lesson's world."""
     ros_args: tuple[str, ...] = ()
     """Arguments after ``--ros-args`` given to the controller (``-p speed:=2.0``)."""
+    drive: tuple[float, float] | None = None
+    """(linear.x m/s, angular.z rad/s) the scenario itself drives turtle1 with,
+    as a person at turtle_teleop_key would, for lessons whose node only watches;
+    None: only the controller moves the turtle."""
 
     @property
     def seed(self) -> int:
@@ -47,8 +51,16 @@ class CheckSpec:
     thresholds: dict[str, Any] = field(default_factory=dict)
     scenarios: tuple[str, ...] = ()
     """Names of the scenarios it judges; empty means every scenario."""
+    requires: tuple[str, ...] = ()
+    """Checks (by label or name) that must pass in a run for this one to earn
+    its points there: a gate, so that, say, ``wall_hits`` earns nothing while
+    the turtle stands still."""
     line: int = 0
     """Line of its ``[[checks]]`` table in the lesson file (for error messages)."""
+
+    def is_named(self, name: str) -> bool:
+        """Whether ``name`` (in a ``requires`` list) means this check: its label or its name."""
+        return name in (self.label, self.name)
 
     @property
     def title(self) -> str:
@@ -97,6 +109,9 @@ class Lesson:
     checks: tuple[CheckSpec, ...] = ()
     overlays: tuple[ArenaOverlay, ...] = ()
     """Rectangles drawn on the arena while the lesson is open."""
+    forbidden_services: tuple[str, ...] = ()
+    """Services (shell-style patterns such as ``/*/teleport_absolute``) the
+    controller must not call: a run in which it does fails every check."""
 
     @property
     def starter_path(self) -> Path | None:

@@ -22,6 +22,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from turtletui.messages import plural
+
 RUNNING = "## Your checks\n\n*Running the lesson's scenarios...*\n"
 
 
@@ -213,10 +215,10 @@ def describe_report(report: dict) -> str:
     for check, group in by_check.items():
         failed = [t for t in group if t["status"] != "passed"]
         if not failed:
-            lines.append(f"- ✓ `{check}`: passed in all {len(group)} runs")
+            lines.append(f"- ✓ `{check}`: passed in {'its only run' if len(group) == 1 else f'all {len(group)} runs'}")
             continue
         where = ", ".join(t["scenario"] for t in failed)
-        lines.append(f"- ✗ `{check}`: failed in {len(failed)} of {len(group)} runs ({where})")
+        lines.append(f"- ✗ `{check}`: failed in {len(failed)} of {plural(len(group), 'run')} ({where})")
         # each line its own quoted paragraph: Markdown would run them together
         lines.append("\n  >\n".join(f"  > {line}" for line in (failed[0].get("output") or "").splitlines()))
     if submission.get("recordings"):

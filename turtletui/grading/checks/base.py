@@ -19,6 +19,9 @@ from turtletui.grading.trace import Trace
 
 CheckFunction = Callable[[Trace, Mapping[str, Any]], "Verdict"]
 
+TWIN_WINDOW = 10.0
+"""Simulated seconds of a twin run (:attr:`Check.twin`) unless a lesson says otherwise."""
+
 
 @dataclass(frozen=True)
 class Verdict:
@@ -27,6 +30,9 @@ class Verdict:
     passed: bool
     measured: str
     """What was measured and what was asked, e.g. ``closest to a wall 0.31 m (needs >= 0.5 m)``."""
+    judged: bool = True
+    """False when the check was not judged at all (the controller crashed, or a
+    check it requires failed): feedback then gives the reason, never advice."""
 
 
 @dataclass(frozen=True)
@@ -40,6 +46,14 @@ class Check:
     """Threshold name -> kind ("number", "integer", "text", "point", "colour",
     "pattern"); None when unknown (a plugin's check: thresholds are passed as given)."""
     required: tuple[str, ...] = ()
+    twin: bool = False
+    """Whether it compares the run with a *twin run*: the same scenario and
+    seed from another start, for ``window`` seconds (threshold, default
+    :data:`TWIN_WINDOW`); the engine then sets ``trace.twin``."""
+
+    def twin_window(self, thresholds: Mapping[str, Any]) -> float | None:
+        """Seconds of twin run this check needs with these thresholds; None: none."""
+        return float(thresholds.get("window", TWIN_WINDOW)) if self.twin else None
 
     def judge(self, trace: Trace, thresholds: Mapping[str, Any]) -> Verdict:
         """Run the check; a plugin's answer is normalised to a Verdict."""
@@ -72,8 +86,10 @@ class Check:
 
 def kind_problem(kind: str, value: Any) -> str | None:
     """Why ``value`` is not a threshold of ``kind`` ("number", "integer", "text",
-    "pattern", "numbers", "point", "colour"), or None."""
+    "pattern", "numbers", "point", "points", "colour", "boolean"), or None."""
     number = isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
+    if kind == "boolean":
+        return None if isinstance(value, bool) else "must be true or false"
     if kind == "number":
         return None if number else "must be a number"
     if kind == "integer":
@@ -94,6 +110,9 @@ def kind_problem(kind: str, value: Any) -> str | None:
     if kind == "point":
         ok = isinstance(value, list) and len(value) == 2 and all(kind_problem("number", v) is None for v in value)
         return None if ok else "must be [x, y] in metres"
+    if kind == "points":
+        ok = isinstance(value, list) and value and all(kind_problem("point", v) is None for v in value)
+        return None if ok else "must be a non-empty list of [x, y] points in metres"
     if kind == "colour":
         ok = (
             isinstance(value, list)
@@ -107,11 +126,13 @@ def kind_problem(kind: str, value: Any) -> str | None:
 BUILTIN_CHECKS: dict[str, Check] = {}
 
 
-def check(name: str, description: str, params: Mapping[str, str], required: tuple[str, ...] = ()):
-    """Register a function as a built-in check."""
+def check(
+    name: str, description: str, params: Mapping[str, str], required: tuple[str, ...] = (), *, twin: bool = False
+):
+    """Register a function as a built-in check (``twin``: see :attr:`Check.twin`)."""
 
     def decorate(function: Callable[[Trace, Mapping[str, Any]], Verdict]) -> Callable[..., Verdict]:
-        BUILTIN_CHECKS[name] = Check(name, function, description, dict(params), required)
+        BUILTIN_CHECKS[name] = Check(name, function, description, dict(params), required, twin)
         return function
 
     return decorate

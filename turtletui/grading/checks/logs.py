@@ -6,7 +6,18 @@ import re
 from collections.abc import Mapping
 from typing import Any
 
-from turtletui.grading.checks.base import MINMAX, Verdict, bounds, check, measured, number_text
+import numpy as np
+
+from turtletui.grading.checks.base import (
+    MINMAX,
+    TURTLE,
+    Verdict,
+    bounds,
+    check,
+    measured,
+    number_text,
+    turtle_of,
+)
 from turtletui.grading.trace import Trace
 from turtletui.graph.logs import LEVEL_NAMES
 
@@ -48,17 +59,30 @@ def log_lines(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     return measured(f"{what}:", verdict)
 
 
+def _counter(pattern: re.Pattern[str], text: str) -> int | None:
+    """The counter a log line carries: the pattern's first group if it has
+    one, else the first integer from where the pattern matched on."""
+    match = pattern.search(text)
+    if match is None:
+        return None
+    found = re.search(r"-?\d+", match.group(1) if pattern.groups else text[match.start() :])
+    return int(found.group()) if found else None
+
+
 @check(
     "log_counter",
-    "The matching log lines carry a counter that goes up by one each line (at least `min` lines).",
+    "The matching log lines carry a counter that goes up by one each line (at least `min` lines); "
+    "the counter is the first group of `pattern` (e.g. '(\\d+)\\W*$': the number that ends the "
+    "line), or else the first integer from where the pattern matches.",
     {**_LOG, "min": "number"},
 )
 def log_counter(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    pattern = re.compile(th.get("pattern", ""))
     numbers = []
     for record in _matching_logs(trace, th):
-        found = re.search(r"-?\d+", record.msg)
-        if found:
-            numbers.append(int(found.group()))
+        number = _counter(pattern, record.msg)
+        if number is not None:
+            numbers.append(number)
     need = th.get("min", 3)
     if len(numbers) < need:
         return Verdict(False, f"{len(numbers)} log lines with a number (needs >= {number_text(need)})")
@@ -67,3 +91,93 @@ def log_counter(trace: Trace, th: Mapping[str, Any]) -> Verdict:
         bad = next(i for i, step in enumerate(steps) if step != 1)
         return Verdict(False, f"the counter went from {numbers[bad]} to {numbers[bad + 1]}: it should go up by one")
     return Verdict(True, f"counter logged {len(numbers)} times, {numbers[0]} to {numbers[-1]}")
+
+
+@check(
+    "log_period",
+    "The matching log lines come one per period, as a timer's do: at least `min` of them "
+    "(default 3), every gap within `tolerance` (a fraction, default 0.1) of the median gap, "
+    "which must lie between `min_period` and `max_period` seconds when given.",
+    {**_LOG, "min": "number", "tolerance": "number", "min_period": "number", "max_period": "number"},
+)
+def log_period(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    times = np.array([record.t for record in _matching_logs(trace, th)], dtype=float)
+    need = th.get("min", 3)
+    what = f"log lines matching {th['pattern']!r}" if "pattern" in th else "log lines"
+    if len(times) < max(need, 2):
+        return Verdict(False, f"{len(times)} {what} (needs >= {number_text(max(need, 2))})")
+    gaps = np.diff(times)
+    period = float(np.median(gaps))
+    if period <= 0.0:
+        return Verdict(False, f"{what} come in bursts: most of them at the same moment, not one per period")
+    off = np.abs(gaps - period) > th.get("tolerance", 0.1) * period
+    if off.any():
+        first = int(np.nonzero(off)[0][0])
+        return Verdict(
+            False,
+            f"{what} are not one per period: mostly {period:.3g} s apart, but {gaps[first]:.3g} s"
+            f" between t={times[first]:.3f} s and t={times[first + 1]:.3f} s",
+        )
+    verdict = bounds(period, {"min": th.get("min_period"), "max": th.get("max_period")}, " s")
+    return Verdict(verdict.passed, f"{len(times)} {what}, one every {verdict.measured}")
+
+
+_NUMBER = re.compile(r"[-+]?(?:\d+\.\d*|\.\d+|\d+)(?:[eE][-+]?\d+)?")
+POSE_TOLERANCE = 0.001
+"""Metres: the least a logged coordinate may differ from the pose (float32
+messages, and numbers printed with many digits)."""
+
+
+def _logged_numbers(text: str) -> list[tuple[float, float]]:
+    """(value, tolerance) of every number in a log line: a number matches what
+    it printed to the digits it shows (5.5 stands for 5.45 to 5.55)."""
+    numbers = []
+    for match in _NUMBER.finditer(text):
+        token = match.group()
+        mantissa, _, exponent = token.lower().partition("e")
+        decimals = len(mantissa.partition(".")[2])
+        step = 10.0 ** (int(exponent or 0) - decimals)
+        numbers.append((float(token), max(step / 2, POSE_TOLERANCE)))
+    return numbers
+
+
+def _shows(numbers: list[tuple[float, float]], x: float, y: float) -> bool:
+    """Whether the numbers hold x and, after it, y."""
+    for i, (value, tolerance) in enumerate(numbers):
+        if abs(value - x) <= tolerance:
+            return any(abs(v - y) <= tol for v, tol in numbers[i + 1 :])
+    return False
+
+
+@check(
+    "log_pose",
+    "The matching log lines (default: lines with two numbers or more) carry the turtle's x and "
+    "then y as they were when the line was logged (the pose of the last `max_age` seconds, "
+    "default 0.1), to the digits they print: share of such lines, threshold `min` (default 0.9).",
+    {**_LOG, **TURTLE, "min": "number", "max_age": "number"},
+)
+def log_pose(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    poses = trace.pose_array(turtle_of(th))
+    max_age = th.get("max_age", 0.1)
+    lines = [(r, _logged_numbers(r.msg)) for r in _matching_logs(trace, th)]
+    if "pattern" not in th:
+        lines = [(r, numbers) for r, numbers in lines if len(numbers) >= 2]
+    if not lines:
+        return Verdict(False, "no log lines with the pose's numbers")
+    times = poses[:, 0]
+    right = 0
+    wrong = None
+    for record, numbers in lines:
+        recent = poses[(times <= record.t + 1e-9) & (times >= record.t - max_age - 1e-9)]
+        if any(_shows(numbers, x, y) for x, y in recent[:, 1:3].tolist()):
+            right += 1
+        elif wrong is None:
+            wrong = (record, recent[-1] if len(recent) else None)
+    share = right / len(lines)
+    verdict = bounds(share, {"min": th.get("min", 0.9)})
+    text = f"{right} of {len(lines)} log lines carry the pose of the moment ({share:.0%}, needs >= {th.get('min', 0.9):.0%})"
+    if wrong is not None:
+        record, pose = wrong
+        where = f"the turtle was at x={pose[1]:.3f}, y={pose[2]:.3f}" if pose is not None else "no pose yet"
+        text += f"; at t={record.t:.3f} s the line said {record.msg[:80]!r} but {where}"
+    return Verdict(verdict.passed, text)

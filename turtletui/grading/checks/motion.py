@@ -38,10 +38,13 @@ def coverage(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     return measured("arena covered:", bounds(visited / (cells * cells), th))
 
 
-def _distance(poses: np.ndarray) -> float:
+def _distance(trace: Trace, turtle: str) -> float:
+    """Metres driven: teleports and resets move the turtle without driving it."""
+    poses = trace.pose_array(turtle)
     if len(poses) < 2:
         return 0.0
-    return float(np.hypot(np.diff(poses[:, 1]), np.diff(poses[:, 2])).sum())
+    steps = np.hypot(np.diff(poses[:, 1]), np.diff(poses[:, 2]))
+    return float(steps[~trace.jumped(turtle)[1:]].sum())
 
 
 @check("mean_speed", "Mean forward speed over the run, in m/s.", {**MINMAX, **TURTLE})
@@ -49,20 +52,21 @@ def mean_speed(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     poses = trace.pose_array(turtle_of(th))
     if len(poses) < 2:
         return Verdict(False, "the turtle never moved")
-    speed = _distance(poses) / (poses[-1, 0] - poses[0, 0])
+    speed = _distance(trace, turtle_of(th)) / (poses[-1, 0] - poses[0, 0])
     return measured("mean speed:", bounds(speed, th, " m/s"))
 
 
 @check("distance", "Metres the turtle drove.", {**MINMAX, **TURTLE})
 def distance(trace: Trace, th: Mapping[str, Any]) -> Verdict:
-    return measured("distance driven:", bounds(_distance(trace.pose_array(turtle_of(th))), th, " m"))
+    return measured("distance driven:", bounds(_distance(trace, turtle_of(th)), th, " m"))
 
 
 @check(
     "time_moving",
-    "Fraction of the run the turtle was moving (driving or turning), thresholds min and max "
-    "(0..1): turtlesim stops a turtle 1 s after its last velocity command.",
-    {**MINMAX, **TURTLE},
+    "Fraction of the run the turtle was moving, thresholds min and max (0..1): turtlesim stops "
+    "a turtle 1 s after its last velocity command. Turning in place counts as moving unless "
+    "`turning` is false.",
+    {**MINMAX, **TURTLE, "turning": "boolean"},
 )
 def time_moving(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     poses = trace.pose_array(turtle_of(th))
@@ -70,8 +74,9 @@ def time_moving(trace: Trace, th: Mapping[str, Any]) -> Verdict:
         return Verdict(False, "the turtle never published a pose")
     # the pose's linear_velocity stays up while a wall holds the turtle back:
     # that is still a driving turtle; a turn in place shows in theta
-    turning = np.abs(np.diff(np.unwrap(poses[:, 3]))) > 1e-6
-    moving = (poses[1:, 4] > 1e-6) | turning
+    moving = poses[1:, 4] > 1e-6
+    if th.get("turning", True):
+        moving |= np.abs(np.diff(np.unwrap(poses[:, 3]))) > 1e-6
     share = float(moving.mean())
     verdict = bounds(share, th)
     wanted = []
@@ -79,8 +84,12 @@ def time_moving(trace: Trace, th: Mapping[str, Any]) -> Verdict:
         wanted.append(f">= {th['min']:.0%}")
     if "max" in th:
         wanted.append(f"<= {th['max']:.0%}")
-    need = f" (needs {' and '.join(wanted)})" if wanted else ""
-    return Verdict(verdict.passed, f"moving {share:.0%} of the run{need}")
+    notes = [f"needs {' and '.join(wanted)}"] if wanted else []
+    if not th.get("turning", True):
+        notes.append("turning in place does not count")
+    need = f" ({'; '.join(notes)})" if notes else ""
+    what = "moving" if th.get("turning", True) else "driving"
+    return Verdict(verdict.passed, f"{what} {share:.0%} of the run{need}")
 
 
 @check(
@@ -95,6 +104,56 @@ def commands_per_pose(trace: Trace, th: Mapping[str, Any]) -> Verdict:
         return Verdict(False, "the turtle never published a pose")
     ratio = len(trace.command_array(turtle)) / poses
     return measured("commands per pose:", bounds(ratio, th))
+
+
+@check(
+    "closed_loop",
+    "The velocity commands depend on where the turtle is, as a closed loop's do: from another "
+    "start (a twin run of the same scenario and seed, the first `window` seconds, default 10) "
+    "the node sends other commands. An open loop (a timer, or a pose callback that ignores "
+    "the pose) sends the very same ones at the same times.",
+    {**TURTLE, "window": "number"},
+    twin=True,
+)
+def closed_loop(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    """A counterfactual test: would the commands have been different had the
+    turtle been somewhere else? Runs are deterministic (same seed, same
+    simulated times), so a controller whose commands do not depend on what it
+    senses sends exactly the same stream from any start, and one that
+    computes each command from the latest pose (in the pose callback, or in
+    a timer that reads the pose the callback stored) does not. No threshold
+    on gains, rates or shapes: any loop that follows the pose passes, any
+    stream that does not fails, and the feedback says which it saw."""
+    twin = trace.twin
+    if twin is None:
+        return Verdict(False, "not judged: no twin run to compare with", judged=False)
+    turtle = turtle_of(th)
+    end = twin.sim_time
+    note = ""
+    if twin.crashes:
+        end = min(end, twin.crashes[0].t)
+        note = f", until it crashed at t={end:.3f} s"
+    mine = trace.command_array(turtle)
+    other = twin.command_array(turtle)
+    mine, other = mine[mine[:, 0] <= end], other[other[:, 0] <= end]
+    topic = f"/{turtle}/cmd_vel"
+    if len(mine) == 0 and len(other) == 0:
+        return Verdict(False, f"no velocity commands on {topic} in the first {end:.0f} s")
+    same = min(len(mine), len(other))
+    differs = np.nonzero(np.any(mine[:same] != other[:same], axis=1))[0]
+    if differs.size:
+        t = float(mine[differs[0], 0])
+    elif len(mine) != len(other):
+        t = float((mine if len(mine) > same else other)[same, 0])
+    else:
+        x, y, _ = twin.start
+        return Verdict(
+            False,
+            f"from another start (x={x:.2f}, y={y:.2f}) the node sent the same {len(mine)} commands on "
+            f"{topic} at the same times{note}: they do not depend on where the turtle is or what it"
+            " senses (an open loop)",
+        )
+    return Verdict(True, f"the commands depend on where the turtle is: from another start they differed from t={t:.3f} s")
 
 
 def fit_circle(x: np.ndarray, y: np.ndarray) -> tuple[float, float, float, float]:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Mapping
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -17,13 +18,22 @@ from turtletui.grading.checks.base import (
     turtle_of,
 )
 from turtletui.grading.trace import Trace
+from turtletui.runtime.report import CrashReport
+
+SHOWN_FRAMES = 3
+"""Lines of the student's own file a crash shows (the innermost calls)."""
+
+
+def crash_text(crash: CrashReport) -> str:
+    """What happened, then the lines of the student's file it happened in."""
+    return "\n".join([replace(crash, frames=[]).summary(), *crash.frames[-SHOWN_FRAMES:]])
 
 
 @check("no_crash", "The controller ran the whole scenario without crashing or being stopped.", {})
 def no_crash(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     if not trace.crashes:
         return Verdict(True, "ran to the end without crashing")
-    return Verdict(False, "; ".join(c.summary() for c in trace.crashes))
+    return Verdict(False, "\n".join(crash_text(c) for c in trace.crashes))
 
 
 @check("wall_hits", "Times a turtle ran into a wall (default: at most 0).", {**MINMAX, **TURTLE})

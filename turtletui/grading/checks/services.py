@@ -175,21 +175,33 @@ def headings_faced(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     return Verdict(True, f"stopped facing {wanted} rad in this order (stopped at {shown} rad)")
 
 
+TARGET_TOLERANCE = 0.05
+"""Metres between a Spawn request's x, y and the target it stands for."""
+
+
 @check(
     "turtles_caught",
     "Turtles killed through /kill while the chasing `turtle` (default turtle1) was within "
     "`radius` metres of them (default 1.0); a kill of a turtle that does not exist or is far "
-    "away does not count (thresholds min and max).",
-    {**MINMAX, **TURTLE, "radius": "number"},
+    "away does not count. With `targets` ([x, y] points the scenario gives the node), only a "
+    "turtle spawned on one of them counts, each target once, and the chaser must be within "
+    "`radius` of that point: the scenario, not the node, decides where the prey are "
+    "(thresholds min and max).",
+    {**MINMAX, **TURTLE, "radius": "number", "targets": "points"},
 )
 def turtles_caught(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     chaser = turtle_of(th)
     radius = th.get("radius", 1.0)
+    targets = [tuple(point) for point in th.get("targets", [])]
+    left = list(targets)
     hunter = trace.pose_array(chaser)
-    caught = missing = far = 0
+    caught = missing = far = elsewhere = 0
     notes = []
     killed_at: dict[str, float] = {}
+    spawned_at: dict[str, tuple[float, float]] = {}
     for call in trace.service_calls:
+        if call.service == "/spawn" and call.response.name:
+            spawned_at[call.response.name] = (call.request.x, call.request.y)
         if call.service != "/kill":
             continue
         name = call.request.name
@@ -207,13 +219,25 @@ def turtles_caught(trace: Trace, th: Mapping[str, Any]) -> Verdict:
             missing += 1
             continue
         killed_at[name] = call.t
+        prey = (before[-1, 1], before[-1, 2])
+        if targets:
+            spawn = spawned_at.get(name, (math.inf, math.inf))
+            place = next((p for p in left if math.dist(p, spawn) <= TARGET_TOLERANCE), None)
+            if place is None:
+                elsewhere += 1
+                continue
+            prey = place
         near = hunter[hunter[:, 0] <= call.t] if len(hunter) else hunter
-        if len(near) and math.hypot(near[-1, 1] - before[-1, 1], near[-1, 2] - before[-1, 2]) <= radius:
+        if len(near) and math.hypot(near[-1, 1] - prey[0], near[-1, 2] - prey[1]) <= radius:
             caught += 1
+            if targets:
+                left.remove(prey)
         else:
             far += 1
     if missing:
         notes.append(f"{missing} kills of turtles that did not exist")
+    if elsewhere:
+        notes.append(f"{elsewhere} kills of turtles not spawned on a target the scenario gave (or caught already)")
     if far:
         notes.append(f"{far} turtles killed from more than {number_text(radius)} m away")
     verdict = measured("turtles caught:", bounds(caught, th))

@@ -2,7 +2,6 @@
 example, instead of the name /spawn answered. The first catch works; after
 that every kill asks for a turtle that no longer exists."""
 import math
-import random
 from functools import partial
 
 import rclpy
@@ -12,13 +11,18 @@ from turtlesim.msg import Pose
 from turtlesim.srv import Kill, Spawn
 
 
+# Where the targets appear, in order: the game decides, not the chaser.
+TARGETS_X = [8.0, 5.0, 2.5, 3.5, 7.0, 9.0, 6.5, 3.0]
+TARGETS_Y = [7.5, 9.0, 6.5, 3.0, 2.5, 5.0, 6.0, 8.5]
+
+
 class TurtleChaserNode(Node):
     def __init__(self):
         super().__init__("turtle_chaser")
-        self.declare_parameter("seed", 0)
+        self.declare_parameter("targets_x", TARGETS_X)
+        self.declare_parameter("targets_y", TARGETS_Y)
         self.declare_parameter("catch_distance", 0.5)
-        # a seeded generator: the same targets on every run with the same seed
-        self.random_ = random.Random(self.get_parameter("seed").value)
+        self.targets_ = list(zip(self.get_parameter("targets_x").value, self.get_parameter("targets_y").value))
         self.catch_distance_ = self.get_parameter("catch_distance").value
         self.target_ = None  # (name, x, y) of the turtle being chased
         self.cmd_vel_publisher_ = self.create_publisher(Twist, "/turtle1/cmd_vel", 10)
@@ -30,10 +34,12 @@ class TurtleChaserNode(Node):
         self.spawn_target()
 
     def spawn_target(self):
+        if not self.targets_:
+            self.get_logger().info("Every target caught!")
+            return
         request = Spawn.Request()
-        request.x = self.random_.uniform(1.0, 10.0)
-        request.y = self.random_.uniform(1.0, 10.0)
-        request.theta = self.random_.uniform(-math.pi, math.pi)
+        request.x, request.y = self.targets_.pop(0)
+        request.theta = 0.0
         request.name = ""  # turtlesim picks the next free turtleN
         future = self.spawn_client_.call_async(request)
         future.add_done_callback(partial(self.callback_spawn, x=request.x, y=request.y))

@@ -1,5 +1,5 @@
-"""Right, another way: a fixed list of targets, each spawned with a name of its
-own choosing, and the chase driven by the target's own pose topic."""
+"""Right, another way: each target spawned with a name of its own choosing,
+and the chase driven by the target's own pose topic."""
 import math
 
 import rclpy
@@ -8,12 +8,16 @@ from geometry_msgs.msg import Twist
 from turtlesim.msg import Pose
 from turtlesim.srv import Kill, Spawn
 
-TARGETS = [(2.0, 2.0), (9.0, 3.0), (8.0, 9.0), (2.5, 8.5), (5.5, 5.5), (9.5, 9.5), (1.5, 5.0)]
+TARGETS_X = [8.0, 5.0, 2.5, 3.5, 7.0, 9.0, 6.5, 3.0]
+TARGETS_Y = [7.5, 9.0, 6.5, 3.0, 2.5, 5.0, 6.0, 8.5]
 
 
 class Hunter(Node):
     def __init__(self):
         super().__init__("hunter")
+        self.declare_parameter("targets_x", TARGETS_X)
+        self.declare_parameter("targets_y", TARGETS_Y)
+        self.targets_ = list(zip(self.get_parameter("targets_x").value, self.get_parameter("targets_y").value))
         self.index_ = 0
         self.prey_ = None
         self.prey_pose_ = None
@@ -26,7 +30,9 @@ class Hunter(Node):
         self.next_prey()
 
     def next_prey(self):
-        x, y = TARGETS[self.index_ % len(TARGETS)]
+        if self.index_ == len(self.targets_):
+            return
+        x, y = self.targets_[self.index_]
         self.index_ += 1
         name = f"prey{self.index_}"
         self.spawn_.call_async(Spawn.Request(x=x, y=y, theta=0.0, name=name)).add_done_callback(self.on_spawned)
