@@ -162,6 +162,26 @@ def test_trusted_constructor():
         TURTLE_POSE._trusted(1.0, 2.0)
 
 
+def test_copier_copies_everything_mutable_and_nothing_more():
+    scan = LaserScan(ranges=[1.0, 2.0], intensities=[0.5])
+    scan.header.frame_id = "turtle1"
+    scan.header.stamp.sec = 7
+    twin = I.copier(LaserScan)(scan)
+    assert twin == scan and type(twin) is LaserScan
+    assert twin.header is not scan.header and twin.header.stamp is not scan.header.stamp
+    assert twin.ranges is not scan.ranges and twin.ranges.typecode == "f"
+    scan.ranges[0] = 9.0
+    scan.header.stamp.sec = 8
+    twist = Twist(linear=Vector3(x=2.0))
+    copied = I.copier(Twist)(twist)
+    twist.linear.x = 0.0
+    assert (twin.ranges[0], twin.header.stamp.sec, copied.linear.x) == (1.0, 7, 2.0)
+    log = Log(name="n", msg="m")
+    assert I.copier(Log)(log) == log
+    with pytest.raises(I.InterfaceError, match="needs a message class"):
+        I.copier(int)
+
+
 # ---------------------------------------------------------------------------
 # type checks on assignment and construction
 # ---------------------------------------------------------------------------
