@@ -72,7 +72,9 @@ class World:
         """Timer ticks so far; the first only records the time, as in turtlesim."""
         self.events: list[Event] = []
         self._id_counter = 0
-        self._order: list[Turtle] = []
+        self.turtles_in_order: list[Turtle] = []
+        """The turtles in the order they update (by name, as turtlesim's
+        std::map); read-only: the world replaces the list when it changes."""
         if spawn_turtle1:
             self.spawn(CENTER, CENTER, 0.0)
 
@@ -84,7 +86,6 @@ class World:
     @property
     def background(self) -> tuple[int, int, int]:
         return self.canvas.background
-
     @property
     def rng(self) -> np.random.Generator:
         """The world's random generator (the LiDAR's noise), seeded with ``seed``."""
@@ -115,7 +116,7 @@ class World:
         canvas = self.canvas
         draw = canvas.draw_segment
         obstacles = self.obstacles
-        for turtle in self._order:
+        for turtle in self.turtles_in_order:
             if turtle.teleports:
                 # turtlesim takes old_pos for the step's segment after teleports.
                 turtle.apply_teleports(draw)
@@ -198,7 +199,7 @@ class World:
             self._abort_rotation(turtle)
             self.events.append(Killed(turtle.name))
         self.turtles.clear()
-        self._order = []
+        self.turtles_in_order = []
         self._id_counter = 0
         self.spawn(CENTER, CENTER, 0.0)
         self.clear()
@@ -277,7 +278,7 @@ class World:
 
     def _reorder(self) -> None:
         # turtlesim keeps its turtles in a std::map, so they update by name order.
-        self._order = [self.turtles[key] for key in sorted(self.turtles)]
+        self.turtles_in_order = [self.turtles[key] for key in sorted(self.turtles)]
 
 
 def _require_finite(service: str, name: str, **values: float) -> None:
