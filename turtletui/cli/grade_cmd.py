@@ -15,6 +15,7 @@ from pathlib import Path
 import typer
 
 from turtletui.cli.errors import fail
+from turtletui.cli.plugin_manager import plugins_of
 
 EXIT_BELOW = 1
 EXIT_INTERNAL = 3
@@ -172,6 +173,7 @@ def _grade(
     from turtletui.runtime import container
     from turtletui.runtime.sandbox import Limits
 
+    plugins = plugins_of(plugins)
     lesson = find_lesson(lesson_id, folders, plugins)
     plan = prepare(lesson, plugins=plugins)
     single = fmt in SINGLE_SUBMISSION_FORMATS
@@ -295,6 +297,6 @@ def checks(
     """List the checks a lesson can name, with their thresholds."""
     from turtletui.grading.engine import available_checks
 
-    for name, check in sorted(available_checks(plugin or ()).items()):
+    for name, check in sorted(available_checks(plugins_of(plugin)).items()):
         params = "?" if check.params is None else ", ".join(check.params) or "none"
         print(f"{name}\n    {check.description or '(no description)'}\n    thresholds: {params}")

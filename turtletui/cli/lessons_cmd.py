@@ -11,6 +11,7 @@ from pathlib import Path
 import typer
 
 from turtletui.cli.errors import fail
+from turtletui.cli.plugin_manager import plugins_of
 
 _FOLDER_HELP = "Also look for lessons in this folder (every *.md but README.md; repeatable)."
 _PLUGIN_HELP = "Also load this plugin file, or every .py in this folder (repeatable)."
@@ -27,12 +28,13 @@ def lessons(
     from turtletui.grading.engine import GradingError, available_checks, validate
     from turtletui.lessons.loader import LessonError, discover_lessons
 
+    plugins = plugins_of(plugin)
     try:
-        found = discover_lessons(folder or (), plugin or ())
+        found = discover_lessons(folder or (), plugins)
         # a misspelt check or world is found now, not when a class is graded
-        known = available_checks(plugin or ())
+        known = available_checks(plugins)
         for item in found:
-            validate(item, plugins=plugin or (), checks=known)
+            validate(item, plugins=plugins, checks=known)
     except (LessonError, GradingError) as err:
         fail(str(err))
     if as_json:
@@ -69,7 +71,7 @@ def _find(lesson_id: str, folder: list[Path] | None, plugin: list[Path] | None):
     from turtletui.lessons.loader import LessonError, find_lesson
 
     try:
-        return find_lesson(lesson_id, folder or (), plugin or ())
+        return find_lesson(lesson_id, folder or (), plugins_of(plugin))
     except LessonError as err:
         fail(str(err))
 

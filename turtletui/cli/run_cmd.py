@@ -11,8 +11,10 @@ import typer
 
 from turtletui.cli.errors import fail
 from turtletui.cli.screen import require_screen
+from turtletui.cli.plugin_manager import plugins_of
 
 if TYPE_CHECKING:
+    from turtletui.plugins.manager import Plugins
     from turtletui.worlds import WorldSpec
 
 ROS_ARGS: list[str] = []
@@ -69,20 +71,21 @@ def run(
     """
     if not headless:
         require_screen("run headless instead: turtletui run FILE.py --headless --duration 60")
-        _run_app(controllers, plugin, lesson, ascii_only, seed, world, pixels, record, foxglove)
+        _run_app(controllers, plugins_of(plugin), lesson, ascii_only, seed, world, pixels, record, foxglove)
         return
     from turtletui.api import run as run_controllers
     from turtletui.compat.ros_args import RosArgsError
     from turtletui.runtime.loader import ControllerError
     from turtletui.runtime.resolve import resolve_controllers
 
+    plugins = plugins_of(plugin)
     try:
-        specs = resolve_controllers(controllers or ["part6_wall_avoider"], plugins=plugin or ())
+        specs = resolve_controllers(controllers or ["part6_wall_avoider"], plugins=plugins)
     except ControllerError as err:
         fail(str(err))
     if not duration > 0:
         fail(f"--duration must be a positive number of seconds, got {duration}")
-    sim_world = None if world is None else _resolve_world(world, plugin).build(seed)
+    sim_world = None if world is None else _resolve_world(world, plugins).build(seed)
 
     def print_log(record) -> None:
         if not quiet:
@@ -120,19 +123,19 @@ def run(
         raise SystemExit(1)
 
 
-def _resolve_world(name: str, plugins: list[Path] | None, what: str = "--world") -> WorldSpec:
+def _resolve_world(name: str, plugins: Plugins, what: str = "--world") -> WorldSpec:
     """The WorldSpec ``--world`` (or a lesson) names; a clean exit if there is none."""
     from turtletui.worlds import WorldError, resolve_world
 
     try:
-        return resolve_world(name, plugins=plugins or ())
+        return resolve_world(name, plugins=plugins)
     except WorldError as err:
         fail(f"{what}: {err}")
 
 
 def _run_app(
     controllers: list[str] | None,
-    plugins: list[Path] | None,
+    plugins: Plugins,
     lesson: str | None,
     ascii_only: bool,
     seed: int,
@@ -153,7 +156,7 @@ def _run_app(
     lesson_path = None
     if lesson is not None:
         try:
-            found = find_lesson(lesson, plugins=plugins or ())
+            found = find_lesson(lesson, plugins=plugins)
         except LessonError as err:
             fail(f"--lesson: {err}")
         lesson_path = found.path
@@ -162,7 +165,7 @@ def _run_app(
         world, what = found.world, f"lesson {found.id}: world"
     world_spec = None if world is None else _resolve_world(world, plugins, what)
     try:
-        specs = resolve_controllers(controllers, plugins=plugins or ())
+        specs = resolve_controllers(controllers, plugins=plugins)
     except ControllerError as err:
         fail(str(err))
     drawing = _drawing(pixels, ascii_only)

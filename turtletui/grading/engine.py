@@ -13,11 +13,11 @@ import math
 import random
 import time
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from turtletui.grading.checks import BUILTIN_CHECKS, Check, Verdict
+from turtletui.grading.checks import Check, Verdict
 from turtletui.grading.pictures import picture_of_trace
 from turtletui.grading.results import FAILED, PASSED, Picture, SubmissionResult, TestResult
 from turtletui.grading.trace import Trace, TraceCollector
@@ -25,6 +25,7 @@ from turtletui.graph.logs import INFO, LogRecord
 from turtletui.lessons.loader import display_path
 from turtletui.lessons.model import CheckSpec, Lesson, Scenario
 from turtletui.messages import did_you_mean
+from turtletui.plugins.manager import Plugins, collect_checks, plugin_manager
 from turtletui.runtime.loader import ControllerSpec
 from turtletui.runtime.recorder import open_recorder
 
@@ -129,18 +130,20 @@ def scenario_runs(
     return runs
 
 
-def available_checks(plugins: Sequence[str | Path] = ()) -> dict[str, Check]:
-    """The built-in checks and those plugins register (a plugin's wins)."""
-    from turtletui.plugins.manager import collect_checks, get_plugin_manager
-
-    checks = dict(BUILTIN_CHECKS)
-    for name, entry in collect_checks(get_plugin_manager(extra=plugins)).items():
-        checks[name] = Check(name, entry.object, entry.description)
+def available_checks(plugins: Plugins = ()) -> dict[str, Check]:
+    """The checks plugins register, the built-in plugin's among them (a later
+    plugin's wins); ``plugins`` is the plugin manager, or extra plugin paths."""
+    checks = {}
+    for name, entry in collect_checks(plugin_manager(plugins)).items():
+        if isinstance(entry.object, Check):
+            checks[name] = replace(entry.object, name=name, description=entry.description or entry.object.description)
+        else:
+            checks[name] = Check(name, entry.object, entry.description)
     return checks
 
 
 def prepare(
-    lesson: Lesson, *, plugins: Sequence[str | Path] = (), checks: dict[str, Check] | None = None
+    lesson: Lesson, *, plugins: Plugins = (), checks: dict[str, Check] | None = None
 ) -> GradingPlan:
     """Check that every check a lesson names exists and takes its thresholds,
     and lay out its scenario runs."""
@@ -149,6 +152,7 @@ def prepare(
         raise GradingError(f"{shown}: lesson {lesson.id!r} has no [[scenarios]] to grade")
     if not lesson.checks:
         raise GradingError(f"{shown}: lesson {lesson.id!r} has no [[checks]] to grade")
+    plugins = plugin_manager(plugins)
     resolved, specs = validate(lesson, plugins=plugins, checks=checks)
     worlds = {name: (lambda seed: None) if spec is None else spec.build for name, spec in specs.items()}
     runs = scenario_runs(lesson, lambda name: () if specs[name] is None else specs[name].obstacles)
@@ -156,11 +160,12 @@ def prepare(
 
 
 def validate(
-    lesson: Lesson, *, plugins: Sequence[str | Path] = (), checks: dict[str, Check] | None = None
+    lesson: Lesson, *, plugins: Plugins = (), checks: dict[str, Check] | None = None
 ) -> tuple[tuple[tuple[CheckSpec, Check], ...], dict[str, WorldSpec | None]]:
     """The lesson's checks resolved against the registered ones, and the worlds
     its scenarios name; GradingError (one line, file:line) for an unknown check,
     a threshold it does not take, or an unknown world."""
+    plugins = plugin_manager(plugins)
     known = available_checks(plugins) if checks is None else checks
     shown = display_path(lesson.path)
     resolved = []
@@ -180,7 +185,7 @@ def validate(
     return tuple(resolved), {name: _world_spec(name, plugins, shown) for name in names}
 
 
-def _world_spec(name: str, plugins: Sequence[str | Path], shown: str) -> WorldSpec | None:
+def _world_spec(name: str, plugins: Plugins, shown: str) -> WorldSpec | None:
     """The named world's description; None for turtlesim's own empty arena."""
     if name == "empty":
         return None

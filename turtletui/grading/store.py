@@ -26,6 +26,7 @@ from typing import TYPE_CHECKING, Any
 from turtletui.grading.reports import write_text_atomic
 from turtletui.grading.results import SubmissionResult
 from turtletui.grading.submissions import Submission
+from turtletui.plugins.manager import Plugins, extra_paths
 
 if TYPE_CHECKING:
     from turtletui.grading.engine import GradingPlan
@@ -88,9 +89,7 @@ def checkout_of(path: Path) -> Path:
     return path
 
 
-def store_key(
-    plan: GradingPlan, *, plugins: Sequence[str | Path] = (), limits: Any = None
-) -> str:
+def store_key(plan: GradingPlan, *, plugins: Plugins = (), limits: Any = None) -> str:
     """What a stored result depends on besides the student's files: the lesson
     file, the code and thresholds of its checks, the plugins, the sandbox's
     limits and turtletui's version."""
@@ -101,7 +100,7 @@ def store_key(
     for spec, check in plan.checks:
         digest.update(repr((spec.name, spec.weight, sorted(spec.thresholds.items(), key=str))).encode())
         digest.update(_code_of(check.function))
-    for plugin in plugins:
+    for plugin in extra_paths(plugins):
         digest.update(_files_of(Path(plugin)))
     digest.update(repr(limits).encode())
     return f"{plan.lesson.id}:{digest.hexdigest()[:32]}"

@@ -41,6 +41,11 @@ class Check:
     "pattern"); None when unknown (a plugin's check: thresholds are passed as given)."""
     required: tuple[str, ...] = ()
 
+    def __call__(self, trace: Trace, thresholds: Mapping[str, Any]) -> Any:
+        """What the function answers (a plugin may register a Check object itself,
+        with the thresholds it takes)."""
+        return self.function(trace, thresholds)
+
     def judge(self, trace: Trace, thresholds: Mapping[str, Any]) -> Verdict:
         """Run the check; a plugin's answer is normalised to a Verdict."""
         answer = self.function(trace, thresholds)
