@@ -25,18 +25,15 @@ def lessons(
     plugin: list[Path] = typer.Option(None, "--plugin", metavar="PATH", help=_PLUGIN_HELP),
 ) -> None:
     """List the lessons turtletui found (bundled, from plugins, from --folder)."""
-    from turtletui.grading.engine import GradingError, available_checks, validate
-    from turtletui.lessons.loader import LessonError, discover_lessons
+    from turtletui.grading.engine import available_checks, validate
+    from turtletui.lessons.loader import discover_lessons
 
     plugins = plugins_of(plugin)
-    try:
-        found = discover_lessons(folder or (), plugins)
-        # a misspelt check or world is found now, not when a class is graded
-        known = available_checks(plugins)
-        for item in found:
-            validate(item, plugins=plugins, checks=known)
-    except (LessonError, GradingError) as err:
-        fail(str(err))
+    found = discover_lessons(folder or (), plugins)
+    # a misspelt check or world is found now, not when a class is graded
+    known = available_checks(plugins)
+    for item in found:
+        validate(item, plugins=plugins, checks=known)
     if as_json:
         import json
 
@@ -67,13 +64,10 @@ def lessons(
 
 
 def _find(lesson_id: str, folder: list[Path] | None, plugin: list[Path] | None):
-    """The lesson named by id or path, or a one-line error and exit 2."""
-    from turtletui.lessons.loader import LessonError, find_lesson
+    """The lesson named by id or path (a LessonError if there is none)."""
+    from turtletui.lessons.loader import find_lesson
 
-    try:
-        return find_lesson(lesson_id, folder or (), plugins_of(plugin))
-    except LessonError as err:
-        fail(str(err))
+    return find_lesson(lesson_id, folder or (), plugins_of(plugin))
 
 
 def lesson(

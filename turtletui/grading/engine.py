@@ -17,6 +17,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from turtletui.errors import TurtletuiError, UsageError
 from turtletui.grading.checks import Check, Verdict
 from turtletui.grading.pictures import picture_of_trace
 from turtletui.grading.results import FAILED, PASSED, Picture, SubmissionResult, TestResult
@@ -42,7 +43,7 @@ OBSTACLE_START_CLEARANCE = 0.5
 """...and this many from every obstacle."""
 
 
-class GradingError(ValueError):
+class GradingError(TurtletuiError, ValueError):
     """A lesson that cannot be graded; the message is one line naming the file."""
 
 
@@ -306,7 +307,7 @@ def grade_run(
     ``recording_format``) for ``turtletui replay``, Foxglove or ros2 bag.
     """
     if recording_format not in RECORDING_FORMATS:
-        raise ValueError(f"recording format {recording_format!r}: choose one of {', '.join(RECORDING_FORMATS)}")
+        raise UsageError(f"recording format {recording_format!r}: choose one of {', '.join(RECORDING_FORMATS)}")
     run = plan.runs[run_index]
     # hidden runs are not recorded: a recording would show where they start
     name = f"{_file_name(run.label)}.{recording_format}"

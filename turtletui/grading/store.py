@@ -23,7 +23,7 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from turtletui.grading.reports import write_text_atomic
+from turtletui.grading.reports import ReportError, write_text_atomic
 from turtletui.grading.results import SubmissionResult
 from turtletui.grading.submissions import Submission
 from turtletui.plugins.manager import Plugins, extra_paths
@@ -146,7 +146,7 @@ class ResultStore:
             probe.write_text("")
             probe.unlink()
         except OSError as err:
-            raise OSError(f"{folder}: cannot write results there ({err.strerror or err})") from None
+            raise ReportError(f"{folder}: cannot write results there ({err.strerror or err})") from None
         here = folder.resolve()
         self.trusted = not any(
             here == place or place in here.parents for place in (Path(p).resolve() for p in untrusted)

@@ -18,6 +18,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any, Literal
 
+from turtletui.errors import TurtletuiError
 from turtletui.graph.logs import INFO, LogRecord
 
 NS_PER_S = 1_000_000_000
@@ -30,7 +31,7 @@ EndpointKind = Literal["publishers", "subscriptions", "services", "clients", "ac
 """What ``Graph.names_and_types_by_node`` lists."""
 
 
-class GraphError(Exception):
+class GraphError(TurtletuiError):
     """A request the middleware refuses (wrong type on a topic, unknown service...)."""
 
 

@@ -21,6 +21,8 @@ from array import array as _array
 from math import isinf as _isinf
 from operator import attrgetter as _attrgetter
 
+from turtletui.errors import TurtletuiError
+
 TYPE_CHECKING = False
 if TYPE_CHECKING:
     from collections.abc import Callable
@@ -31,7 +33,7 @@ _F64_BOUND = 1.7976931348623157e+308
 _new = object.__new__
 
 
-class InterfaceError(ValueError):
+class InterfaceError(TurtletuiError, ValueError):
     """Bad interface name or bad message data (e.g. in ``from_dict``).
 
     ``type_name`` is the full ROS name involved (or ``''``), ``path`` the field

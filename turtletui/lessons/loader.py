@@ -23,6 +23,7 @@ try:
 except ModuleNotFoundError:  # Python 3.10
     import tomli as tomllib
 
+from turtletui.errors import TurtletuiError
 from turtletui.lessons.model import DEFAULT_START, ArenaOverlay, CheckSpec, Lesson, Scenario
 from turtletui.messages import did_you_mean, one_line
 
@@ -52,7 +53,7 @@ CHECK_FIELDS = ("name", "label", "weight", "feedback", "thresholds", "scenarios"
 OVERLAY_FIELDS = ("x0", "y0", "x1", "y1", "color")
 
 
-class LessonError(ValueError):
+class LessonError(TurtletuiError, ValueError):
     """A lesson file that cannot be used; the message is one line, ``FILE:LINE: ...``."""
 
 

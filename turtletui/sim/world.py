@@ -9,6 +9,7 @@ from collections.abc import Iterable
 
 import numpy as np
 
+from turtletui.errors import TurtletuiError
 from turtletui.sim.canvas import PenCanvas
 from turtletui.sim.constants import BACKGROUND, CENTER, DT
 from turtletui.sim.events import (
@@ -28,7 +29,7 @@ _hypot = math.hypot
 _F32 = struct.Struct("3f")
 
 
-class SimError(ValueError):
+class SimError(TurtletuiError, ValueError):
     """A request turtlesim refuses; the message is the line turtlesim logs."""
 
 
