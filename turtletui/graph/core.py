@@ -668,11 +668,13 @@ class Graph:
     # -- logs ---------------------------------------------------------------
     def log(self, node: str, level: int, msg: str) -> LogRecord:
         record = LogRecord(self.epoch_ns + self.now_ns, self.now_ns / NS_PER_S, level, node, msg)
-        for sink in self.log_sinks:
-            sink(record)
+        # Taps (the recorder) first: a line a Ctrl-C cuts short after it was
+        # shown (sinks print it) is in the record too.
         if self.taps:
             for tap in self.taps:
                 tap("log", record)
+        for sink in self.log_sinks:
+            sink(record)
         return record
 
     def info(self, node: str, msg: str) -> LogRecord:
