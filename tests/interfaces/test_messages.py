@@ -14,7 +14,6 @@ import pickle
 import re
 import subprocess
 import sys
-import time
 
 import pytest
 
@@ -679,29 +678,12 @@ def test_definition_text_nested_levels_and_comment_flags():
 # start-up and speed
 # ---------------------------------------------------------------------------
 
-def test_import_is_stdlib_only_and_quick():
-    code = ('import sys, time; t = time.perf_counter(); import turtletui.interfaces; '
-            'print(time.perf_counter() - t); print("numpy" in sys.modules)')
+def test_import_is_stdlib_only():
+    # (how long it takes is bench/bench_messages.py's to say)
+    code = 'import sys; import turtletui.interfaces; print("numpy" in sys.modules)'
     out = subprocess.run([sys.executable, '-c', code], capture_output=True, text=True,
-                         check=True).stdout.split()
-    assert out[1] == 'False'
-    assert float(out[0]) < 1.0  # generous: ~5 ms with bytecode, ~13 ms without
-
-
-def test_hot_paths_are_fast():
-    Twist()
-    TURTLE_POSE._trusted(1.0, 2.0, 3.0, 0.0, 0.0)
-    n = 20000
-    start = time.perf_counter()
-    for _ in range(n):
-        Twist()
-    twist_us = (time.perf_counter() - start) / n * 1e6
-    start = time.perf_counter()
-    for _ in range(n):
-        TURTLE_POSE._trusted(1.0, 2.0, 3.0, 0.0, 0.0)
-    trusted_us = (time.perf_counter() - start) / n * 1e6
-    # measured ~0.4 us and ~0.13 us; bounds leave room for slow CI machines
-    assert twist_us < 20 and trusted_us < 10
+                         check=True).stdout
+    assert out.split() == ['False']
 
 
 # -- to_values / from_values: the sandbox's positional wire format ------------------------------
