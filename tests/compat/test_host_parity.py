@@ -1,7 +1,8 @@
 """One rclpy program, the same behaviour in both hosts (in-process and sandboxed).
 
 Each expectation is what the real rclpy does (Kilted, Fast DDS); the ones the
-sandbox does not meet yet are marked ``differs_in_sandbox``.
+sandbox does not meet yet are marked ``differs_in_sandbox``. A program that
+is one Node subclass has no main(): turtletui creates and spins it.
 """
 
 from __future__ import annotations
@@ -35,10 +36,6 @@ class Driver(Node):
         self.msg.linear.x = 2.0
         self.pub.publish(self.msg)
         self.msg.linear.x = 0.0
-
-def main():
-    rclpy.init()
-    rclpy.spin(Driver())
 """,
         duration=2.0,
     )
@@ -64,10 +61,6 @@ class Two(Node):
         if not self.done:
             self.done = True
             self.get_logger().info(f"x={msg.x:.3f}")
-
-def main():
-    rclpy.init()
-    rclpy.spin(Two())
 """,
         duration=0.2,
     )
@@ -90,10 +83,6 @@ class Loop(Node):
     def spoil(self, msg):
         msg.angular.z = 5.0
         self.get_logger().info(f"sent {self.sent.angular.z}, got {msg.angular.z}")
-
-def main():
-    rclpy.init()
-    rclpy.spin(Loop())
 """,
         duration=0.1,
     )
@@ -195,10 +184,6 @@ class Owner(Node):
                 log(f"{what} worked")
             except InvalidHandle as err:
                 log(f"{what}: {err}")
-
-def main():
-    rclpy.init()
-    rclpy.spin(Owner())
 """,
         duration=0.5,
     )
@@ -310,10 +295,6 @@ class Watcher(Node):
         from rclpy.action import get_action_names_and_types
         log(f"actions {get_action_names_and_types(self)}")
         raise SystemExit
-
-def main():
-    rclpy.init()
-    rclpy.spin(Watcher())
 """
 )
 

@@ -137,7 +137,8 @@ def available_checks(plugins: Plugins = ()) -> dict[str, Check]:
     checks = {}
     for name, entry in collect_checks(plugin_manager(plugins)).items():
         if isinstance(entry.object, Check):
-            checks[name] = replace(entry.object, name=name, description=entry.description or entry.object.description)
+            description = entry.description or entry.object.description
+            checks[name] = replace(entry.object, name=name, description=description)
         else:
             checks[name] = Check(name, entry.object, entry.description)
     return checks
