@@ -6,7 +6,6 @@ from collections.abc import Callable
 from typing import Any
 
 from turtletui.compat.destroyable import Destroyable
-from turtletui.compat.graph_info import NodeNameNonExistentError
 from turtletui.compat.qos import (
     QoSProfile,
     qos_profile_action_status_default,
@@ -210,21 +209,11 @@ def get_action_server_names_and_types_by_node(
     node: Any, remote_node_name: str, remote_node_namespace: str
 ) -> list[tuple[str, list[str]]]:
     """The actions the node ``remote_node_namespace/remote_node_name`` serves."""
-    return _by_node(node, remote_node_name, remote_node_namespace, "action_servers")
+    return node._names_and_types_by_node(remote_node_name, remote_node_namespace, "action_servers", "action server")
 
 
 def get_action_client_names_and_types_by_node(
     node: Any, remote_node_name: str, remote_node_namespace: str
 ) -> list[tuple[str, list[str]]]:
     """The actions the node ``remote_node_namespace/remote_node_name`` is a client of."""
-    return _by_node(node, remote_node_name, remote_node_namespace, "action_clients")
-
-
-def _by_node(node: Any, name: str, namespace: str, kind: Any) -> list[tuple[str, list[str]]]:
-    node._require_alive()
-    record = node._graph.find_node(name, namespace)
-    if record is None:
-        raise NodeNameNonExistentError(
-            f"cannot get action names and types for nonexistent node: {namespace.rstrip('/')}/{name}"
-        )
-    return node._graph.names_and_types_by_node(record, kind)
+    return node._names_and_types_by_node(remote_node_name, remote_node_namespace, "action_clients", "action client")

@@ -381,10 +381,10 @@ class Node(Destroyable):
         remaps = {} if only_expand else self._remaps
         if isinstance(topic, str) and topic in remaps:
             topic = remaps[topic]
-        name = self._expand(topic)
+        name = self._expand_topic_name(topic)
         return _checked_topic(remaps.get(name, name), topic)
 
-    def _expand(self, topic: str) -> str:
+    def _expand_topic_name(self, topic: str) -> str:
         """``topic`` as a fully qualified name, not remapped (what graph queries use)."""
         if not isinstance(topic, str) or not topic:
             raise ValueError(f"Invalid topic name {topic!r}: it must be a non-empty string")
@@ -527,24 +527,24 @@ class Node(Destroyable):
     # False otherwise (another node's, or destroyed already); using it after
     # raises InvalidHandle.
     def destroy_publisher(self, publisher: Publisher) -> bool:
-        return self._destroy(publisher, self._graph.remove_endpoint)
+        return self._destroy_entity(publisher, self._graph.remove_endpoint)
 
     def destroy_subscription(self, subscription: Subscription) -> bool:
-        return self._destroy(subscription, self._graph.remove_endpoint)
+        return self._destroy_entity(subscription, self._graph.remove_endpoint)
 
     def destroy_timer(self, timer: Timer) -> bool:
-        return self._destroy(timer, self._graph.cancel_timer)
+        return self._destroy_entity(timer, self._graph.cancel_timer)
 
     def destroy_client(self, client: Client) -> bool:
-        return self._destroy(client, self._graph.remove_client)
+        return self._destroy_entity(client, self._graph.remove_client)
 
     def destroy_service(self, service: Service) -> bool:
-        return self._destroy(service, self._graph.remove_service)
+        return self._destroy_entity(service, self._graph.remove_service)
 
     def destroy_rate(self, rate: Rate) -> bool:
         return True
 
-    def _destroy(self, entity: Any, remove: Callable[[Any], Any]) -> bool:
+    def _destroy_entity(self, entity: Any, remove: Callable[[Any], Any]) -> bool:
         if entity not in self._entities:
             return False
         self._entities.remove(entity)
@@ -568,37 +568,37 @@ class Node(Destroyable):
     # *_info_by_topic ones, which remap too).
     def count_publishers(self, topic_name: str) -> int:
         self._require_alive()
-        return self._graph.count_publishers(self._expand(topic_name))
+        return self._graph.count_publishers(self._expand_topic_name(topic_name))
 
     def count_subscribers(self, topic_name: str) -> int:
         self._require_alive()
-        return self._graph.count_subscribers(self._expand(topic_name))
+        return self._graph.count_subscribers(self._expand_topic_name(topic_name))
 
     def count_clients(self, service_name: str) -> int:
         self._require_alive()
-        return self._graph.count_clients(self._expand(service_name))
+        return self._graph.count_clients(self._expand_topic_name(service_name))
 
     def count_services(self, service_name: str) -> int:
         self._require_alive()
-        return self._graph.count_services(self._expand(service_name))
+        return self._graph.count_services(self._expand_topic_name(service_name))
 
     def get_publishers_info_by_topic(self, topic_name: str, no_mangle: bool = False) -> list[TopicEndpointInfo]:
         """A TopicEndpointInfo per publisher on the topic."""
-        name = self._info_topic(topic_name, no_mangle)
+        name = self._info_topic_name(topic_name, no_mangle)
         return endpoints_info(self._graph.publishers_of(name), TopicEndpointTypeEnum.PUBLISHER)
 
     def get_subscriptions_info_by_topic(
         self, topic_name: str, no_mangle: bool = False
     ) -> list[TopicEndpointInfo]:
         """A TopicEndpointInfo per subscription of the topic."""
-        name = self._info_topic(topic_name, no_mangle)
+        name = self._info_topic_name(topic_name, no_mangle)
         return endpoints_info(self._graph.subscriptions_of(name), TopicEndpointTypeEnum.SUBSCRIPTION)
 
-    def _info_topic(self, topic_name: str, no_mangle: bool) -> str:
+    def _info_topic_name(self, topic_name: str, no_mangle: bool) -> str:
         self._require_alive()
         if no_mangle:
             return topic_name
-        name = self._expand(topic_name)
+        name = self._expand_topic_name(topic_name)
         return self._remaps.get(name, name)
 
     def get_topic_names_and_types(self, no_demangle: bool = False) -> list[tuple[str, list[str]]]:
