@@ -14,30 +14,30 @@ from typer.testing import CliRunner
 from turtletui.cli import app
 from turtletui.errors import TurtletuiError
 
-USER_ERRORS = {
-    "turtletui.lessons.loader": "LessonError",
-    "turtletui.runtime.recorder": "RecordingError",
-    "turtletui.runtime.replay": "RecordingError",
-    "turtletui.runtime.loader": "ControllerError",
-    "turtletui.graph.core": "GraphError",
-    "turtletui.interfaces": "InterfaceError",
-    "turtletui.worlds.spec": "WorldError",
-    "turtletui.sim.world": "SimError",
-    "turtletui.compat.ros_args": "RosArgsError",
-    "turtletui.grading.integrity": "IntegrityError",
-    "turtletui.grading.engine": "GradingError",
-    "turtletui.grading.autograder": "AutograderError",
-    "turtletui.grading.reports": "ReportError",
-    "turtletui.grading.submissions": "SubmissionError",
-    "turtletui.errors": "UsageError",
-    "turtletui.recording.errors": "RecordingWriteError",
-    "turtletui.recording.errors ": "FoxgloveError",
-    "turtletui.recording.bag": "BagError",
-    "turtletui.recording.read": "McapReadError",
-    "turtletui.grading.wheel": "WheelError",
-    "turtletui.grading.formats.roster": "RosterError",
-    "turtletui.tui.terminal": "TerminalError",
-}
+USER_ERRORS = [
+    ("turtletui.lessons.loader", "LessonError"),
+    ("turtletui.runtime.recorder", "RecordingError"),
+    ("turtletui.runtime.replay", "RecordingError"),
+    ("turtletui.runtime.loader", "ControllerError"),
+    ("turtletui.graph.core", "GraphError"),
+    ("turtletui.interfaces", "InterfaceError"),
+    ("turtletui.worlds.spec", "WorldError"),
+    ("turtletui.sim.world", "SimError"),
+    ("turtletui.compat.ros_args", "RosArgsError"),
+    ("turtletui.grading.integrity", "IntegrityError"),
+    ("turtletui.grading.engine", "GradingError"),
+    ("turtletui.grading.autograder", "AutograderError"),
+    ("turtletui.grading.reports", "ReportError"),
+    ("turtletui.grading.submissions", "SubmissionError"),
+    ("turtletui.errors", "UsageError"),
+    ("turtletui.recording.errors", "RecordingWriteError"),
+    ("turtletui.recording.errors", "FoxgloveError"),
+    ("turtletui.recording.bag", "BagError"),
+    ("turtletui.recording.read", "McapReadError"),
+    ("turtletui.grading.wheel", "WheelError"),
+    ("turtletui.grading.formats.roster", "RosterError"),
+    ("turtletui.tui.terminal", "TerminalError"),
+]
 
 
 @pytest.fixture(autouse=True)
@@ -47,9 +47,9 @@ def _cache(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
     return tmp_path / "cache"
 
 
-@pytest.mark.parametrize(("module", "name"), sorted(USER_ERRORS.items()))
+@pytest.mark.parametrize(("module", "name"), USER_ERRORS)
 def test_every_user_facing_error_is_a_turtletui_error(module: str, name: str):
-    error = getattr(importlib.import_module(module.strip()), name)
+    error = getattr(importlib.import_module(module), name)
     assert issubclass(error, TurtletuiError)
 
 
