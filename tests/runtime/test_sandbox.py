@@ -160,10 +160,15 @@ def _alarm(signum, frame):
     raise Hang("the run hung")
 
 
+HANG_SECONDS = 180
+"""A run that takes this long has hung: a deadline no busy machine reaches
+(a run here takes a second or two of wall time when the machine is quiet)."""
+
+
 def go(path: Path, duration: float = 2.0, **limits: float) -> RunResult:
     """Run ``path`` sandboxed; a hang fails the test (SIGALRM) instead of stalling it."""
     previous = signal.signal(signal.SIGALRM, _alarm)
-    signal.alarm(20)
+    signal.alarm(HANG_SECONDS)
     try:
         result = run([path], duration=duration, keep_poses=True, limits=Limits(**limits) if limits else None)
     finally:
