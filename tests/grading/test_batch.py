@@ -296,7 +296,7 @@ def test_ctrl_c_keeps_finished_results_and_a_rerun_resumes(tmp_path: Path, lesso
     proc = grade_subprocess(*args)
     wait_for_first_result(results, proc)
     proc.send_signal(signal.SIGINT)
-    out, err = proc.communicate(timeout=20)
+    out, err = proc.communicate(timeout=120)
     assert proc.returncode == 130, err
     assert "Traceback" not in err
     assert err.rstrip().endswith("interrupted: finished results are kept; run the same command to resume")
@@ -323,7 +323,7 @@ def test_a_killed_grader_leaves_finished_results_and_no_student_processes(tmp_pa
     proc = grade_subprocess(*args)
     wait_for_first_result(results, proc)
     proc.send_signal(signal.SIGKILL)
-    proc.communicate(timeout=20)
+    proc.communicate(timeout=120)
     assert proc.returncode == -signal.SIGKILL
     kept = stored_results(results)
     assert 1 <= len(kept) < 6 and all(r["score"] == 3.0 for r in kept.values())
