@@ -15,6 +15,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from turtletui.compat.ros_args import RosArgsError, parse_ros_args
+from turtletui.errors import TurtletuiError, UsageError
 from turtletui.graph.core import NS_PER_S
 from turtletui.graph.logs import LogRecord
 from turtletui.runtime.loader import ControllerError, ControllerSpec, check_source
@@ -106,8 +107,9 @@ def run(
 
     Files are sandboxed in a child process unless ``sandbox=False``; specs
     marked trusted run in this process. ``ros_args`` is a ``--ros-args``
-    section (``["-p", "goal_x:=3.0"]``) given to every controller. Raises
-    ControllerError or RosArgsError (one-line messages) for bad input.
+    section (``["-p", "goal_x:=3.0"]``) given to every controller. Bad input
+    raises a TurtletuiError with a one-line message (ControllerError,
+    RosArgsError, RecordingError for ``record``, UsageError for ``duration``).
     ``limits`` (turtletui.runtime.sandbox.Limits) bounds what sandboxed
     controllers may use; the defaults when None. ``world`` is a fresh World
     to run in (turtlesim's empty arena when None). ``record`` names a
@@ -115,7 +117,7 @@ def run(
     ``foxglove`` (``HOST:PORT``) serves the run live to Foxglove, in real time.
     """
     if not (duration > 0 and duration < 1e7):
-        raise ValueError(f"duration must be a positive number of seconds, got {duration}")
+        raise UsageError(f"duration must be a positive number of seconds, got {duration}")
     args = list(ros_args)
     if args and args[0] != "--ros-args":
         args = ["--ros-args", *args]
@@ -189,4 +191,13 @@ def run(
     return RunResult(sim.t, wall, turtles, logs, outcome.crashes, calls, poses, outcome.interrupted)
 
 
-__all__ = ["ControllerError", "ControllerSpec", "RosArgsError", "RunResult", "Simulation", "run"]
+__all__ = [
+    "ControllerError",
+    "ControllerSpec",
+    "RosArgsError",
+    "RunResult",
+    "Simulation",
+    "TurtletuiError",
+    "UsageError",
+    "run",
+]

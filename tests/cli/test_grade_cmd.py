@@ -82,6 +82,23 @@ def test_an_internal_error_is_status_3_with_one_line_and_the_details_in_a_file(
 # -- bad input -----------------------------------------------------------------------------
 
 
+def test_a_plugin_file_runs_once_per_command_however_many_runs(klass: Path, lesson: Path, tmp_path: Path):
+    log = tmp_path / "imports.log"
+    plugin = tmp_path / "my_checks.py"
+    plugin.write_text(
+        "from turtletui.plugins import hookimpl\n"
+        f"open({str(log)!r}, 'a').write('imported\\n')\n"
+        "@hookimpl\n"
+        "def turtletui_register_checks(register):\n"
+        "    register('always', lambda trace, thresholds: True)\n",
+        encoding="utf-8",
+    )
+    graded = grade_class(klass, lesson, "--plugin", plugin, "--format", "csv")
+    assert graded.exit_code == 0, graded.stderr
+    assert "ann,3,3," in graded.stdout
+    assert log.read_text() == "imported\n"  # 4 runs on 2 workers: the workers fork with it
+
+
 def test_a_missing_lesson_is_a_one_line_error(klass: Path):
     stderr = one_line_error(grade_cli(klass, "--lesson", "no-such-lesson", "--same-user"))
     assert "no-such-lesson" in stderr

@@ -219,7 +219,7 @@ def test_duration_must_be_positive(tmp_path):
 @pytest.mark.parametrize("args", [[], ["node.py"]], ids=["default", "file"])
 def test_without_terminal_and_headless_says_how_to_run_headless(tmp_path, args):
     write(tmp_path, "node.py", PARAM_NODE)
-    proc = turtletui_cli("run", *args, cwd=tmp_path, timeout=20)
+    proc = turtletui_cli("run", *args, cwd=tmp_path, timeout=120)
     line = assert_one_line_error(proc)
     assert "--headless" in line
     assert proc.stdout == ""

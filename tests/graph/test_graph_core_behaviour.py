@@ -6,7 +6,7 @@ import pytest
 
 from turtletui.graph.core import LOCKSTEP_EPOCH_NS, NS_PER_S, Graph, GraphError
 from turtletui.graph.logs import INFO, WARN, LogRecord, parse_level
-from turtletui.interfaces import interface_name
+from turtletui.interfaces import copier, interface_name
 from turtletui.interfaces.geometry_msgs import Twist, Vector3
 from turtletui.interfaces.std_msgs import String
 from turtletui.interfaces.std_srvs import Empty
@@ -246,3 +246,117 @@ def test_twist_is_delivered_as_the_same_object_type():
     graph.publish(graph.topics["/turtle1/cmd_vel"], msg)
     graph.run_ready()
     assert got == [msg] and type(got[0]) is Twist
+
+
+def test_a_subscription_with_a_copy_function_gets_its_own_copy():
+    graph = make_graph()
+    node = graph.add_node("n")
+    shared: list[object] = []
+    own: list[object] = []
+    graph.add_subscription(node, "/cmd", Twist, 7, shared.append)
+    graph.add_subscription(node, "/cmd", Twist, 7, own.append, copy=copier(Twist))
+    msg = Twist(linear=Vector3(x=1.0))
+    graph.publish(graph.topic("/cmd", Twist), msg)
+    msg.linear.x = 3.0
+    graph.run_ready()
+    assert shared[0] is msg
+    assert own[0] is not msg and own[0].linear.x == 1.0
+
+
+def test_endpoints_come_off_the_graph_once():
+    graph = make_graph()
+    node = graph.add_node("n")
+    got: list[str] = []
+    pub = graph.add_publisher(node, "/chat", String, 10)
+    sub = graph.add_subscription(node, "/chat", String, 10, lambda m: got.append(m.data))
+    service = graph.add_service(node, "/svc", Empty, lambda r, respond: respond(Empty.Response()))
+    client = graph.add_client(node, "/svc", Empty)
+    server = graph.add_action_server(node, "/act", RotateAbsolute, lambda handle: None)
+    action_client = graph.add_action_client(node, "/act", RotateAbsolute)
+    graph.publish(pub.topic, String(data="queued"))
+    assert (graph.count_publishers("/chat"), graph.count_subscribers("/chat")) == (1, 1)
+    assert (graph.count_services("/svc"), graph.count_clients("/svc")) == (1, 1)
+    for remove, record in (
+        (graph.remove_endpoint, pub),
+        (graph.remove_endpoint, sub),
+        (graph.remove_service, service),
+        (graph.remove_client, client),
+        (graph.remove_action_server, server),
+        (graph.remove_action_client, action_client),
+    ):
+        assert remove(record) is True
+        assert remove(record) is False
+    graph.run_ready()
+    assert got == []  # a destroyed subscription's queue goes with it
+    assert (graph.count_publishers("/chat"), graph.count_subscribers("/chat")) == (0, 0)
+    assert (graph.count_services("/svc"), graph.count_clients("/svc")) == (0, 0)
+    assert not graph.has_service("/svc") and not graph.has_action_server("/act")
+    assert graph.topic_names_and_types() == graph.service_names_and_types() == []
+    assert graph.action_names_and_types() == []
+
+
+def test_a_service_removed_before_its_queued_call_runs_never_answers():
+    graph = make_graph()
+    node = graph.add_node("n")
+    handled: list[str] = []
+    service = graph.add_service(node, "/svc", Empty, lambda r, respond: handled.append("handled"))
+    graph.call("/svc", Empty.Request(), lambda response: handled.append("answered"), "client")
+    graph.remove_service(service)
+    graph.run_ready()
+    assert handled == []
+
+
+def test_a_removed_service_name_can_be_provided_again():
+    graph = make_graph()
+    node = graph.add_node("n")
+    first = graph.add_service(node, "/svc", Empty, lambda r, respond: None)
+    graph.remove_service(first)
+    second = graph.add_service(node, "/svc", Empty, lambda r, respond: None)
+    assert graph.remove_service(first) is False and graph.has_service("/svc")
+    assert graph.remove_service(second) is True
+
+
+def test_graph_queries_list_names_types_and_endpoints_by_node():
+    graph = make_graph()
+    sim = graph.add_node("turtlesim", owner="sim")
+    ctl = graph.add_node("ctl", "/lab")
+    graph.add_publisher(sim, "/turtle1/pose", Pose, 7)
+    graph.add_subscription(ctl, "/turtle1/pose", Pose, 5, lambda m: None, qos="sensor")
+    graph.add_publisher(ctl, "/turtle1/cmd_vel", Twist, 10)
+    graph.add_service(sim, "/spawn", Empty, lambda r, respond: None)
+    graph.add_client(ctl, "/spawn", Empty)
+    graph.add_action_client(ctl, "/turtle1/rotate_absolute", RotateAbsolute)
+    assert graph.node_names_and_namespaces() == [("turtlesim", "/"), ("ctl", "/lab")]
+    assert graph.find_node("ctl", "/lab/") is ctl and graph.find_node("ctl", "/") is None
+    assert graph.topic_names_and_types() == [
+        ("/turtle1/cmd_vel", ["geometry_msgs/msg/Twist"]),
+        ("/turtle1/pose", ["turtlesim/msg/Pose"]),
+    ]
+    [sub] = graph.subscriptions_of("/turtle1/pose")
+    assert (sub.node, sub.depth, sub.qos) == (ctl, 5, "sensor")
+    assert graph.publishers_of("/nothing") == []
+    assert graph.service_names_and_types() == [("/spawn", ["std_srvs/srv/Empty"])]
+    assert graph.action_names_and_types() == [("/turtle1/rotate_absolute", ["turtlesim/action/RotateAbsolute"])]
+    assert graph.names_and_types_by_node(ctl, "publishers") == [("/turtle1/cmd_vel", ["geometry_msgs/msg/Twist"])]
+    assert graph.names_and_types_by_node(ctl, "subscriptions") == [("/turtle1/pose", ["turtlesim/msg/Pose"])]
+    assert graph.names_and_types_by_node(ctl, "clients") == [("/spawn", ["std_srvs/srv/Empty"])]
+    assert graph.names_and_types_by_node(sim, "services") == [("/spawn", ["std_srvs/srv/Empty"])]
+    assert graph.names_and_types_by_node(ctl, "action_clients") == [
+        ("/turtle1/rotate_absolute", ["turtlesim/action/RotateAbsolute"])
+    ]
+    assert graph.names_and_types_by_node(ctl, "action_servers") == []
+
+
+def test_a_timer_made_without_autostart_waits_for_a_reset():
+    graph = make_graph()
+    node = graph.add_node("n")
+    fired: list[int] = []
+    timer = graph.add_timer(node, 100, lambda: fired.append(graph.now_ns), autostart=False)
+    assert timer.canceled and graph.next_due() is None
+    graph.now_ns = 50
+    graph.reset_timer(timer)
+    graph.advance()
+    graph.run_ready()
+    assert fired == [150]
+    graph.cancel_timer(timer)
+    assert graph.advance(until_ns=1000) is False and fired == [150]

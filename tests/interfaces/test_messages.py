@@ -14,7 +14,6 @@ import pickle
 import re
 import subprocess
 import sys
-import time
 
 import pytest
 
@@ -160,6 +159,26 @@ def test_trusted_constructor():
     assert t.linear.x == 1.0
     with pytest.raises(TypeError):
         TURTLE_POSE._trusted(1.0, 2.0)
+
+
+def test_copier_copies_everything_mutable_and_nothing_more():
+    scan = LaserScan(ranges=[1.0, 2.0], intensities=[0.5])
+    scan.header.frame_id = "turtle1"
+    scan.header.stamp.sec = 7
+    twin = I.copier(LaserScan)(scan)
+    assert twin == scan and type(twin) is LaserScan
+    assert twin.header is not scan.header and twin.header.stamp is not scan.header.stamp
+    assert twin.ranges is not scan.ranges and twin.ranges.typecode == "f"
+    scan.ranges[0] = 9.0
+    scan.header.stamp.sec = 8
+    twist = Twist(linear=Vector3(x=2.0))
+    copied = I.copier(Twist)(twist)
+    twist.linear.x = 0.0
+    assert (twin.ranges[0], twin.header.stamp.sec, copied.linear.x) == (1.0, 7, 2.0)
+    log = Log(name="n", msg="m")
+    assert I.copier(Log)(log) == log
+    with pytest.raises(I.InterfaceError, match="needs a message class"):
+        I.copier(int)
 
 
 # ---------------------------------------------------------------------------
@@ -659,29 +678,12 @@ def test_definition_text_nested_levels_and_comment_flags():
 # start-up and speed
 # ---------------------------------------------------------------------------
 
-def test_import_is_stdlib_only_and_quick():
-    code = ('import sys, time; t = time.perf_counter(); import turtletui.interfaces; '
-            'print(time.perf_counter() - t); print("numpy" in sys.modules)')
+def test_import_is_stdlib_only():
+    # (how long it takes is bench/bench_messages.py's to say)
+    code = 'import sys; import turtletui.interfaces; print("numpy" in sys.modules)'
     out = subprocess.run([sys.executable, '-c', code], capture_output=True, text=True,
-                         check=True).stdout.split()
-    assert out[1] == 'False'
-    assert float(out[0]) < 1.0  # generous: ~5 ms with bytecode, ~13 ms without
-
-
-def test_hot_paths_are_fast():
-    Twist()
-    TURTLE_POSE._trusted(1.0, 2.0, 3.0, 0.0, 0.0)
-    n = 20000
-    start = time.perf_counter()
-    for _ in range(n):
-        Twist()
-    twist_us = (time.perf_counter() - start) / n * 1e6
-    start = time.perf_counter()
-    for _ in range(n):
-        TURTLE_POSE._trusted(1.0, 2.0, 3.0, 0.0, 0.0)
-    trusted_us = (time.perf_counter() - start) / n * 1e6
-    # measured ~0.4 us and ~0.13 us; bounds leave room for slow CI machines
-    assert twist_us < 20 and trusted_us < 10
+                         check=True).stdout
+    assert out.split() == ['False']
 
 
 # -- to_values / from_values: the sandbox's positional wire format ------------------------------

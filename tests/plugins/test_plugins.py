@@ -140,11 +140,11 @@ def test_builtin_reference_controllers(pm):
         assert (entry.plugin, entry.source) == ("turtletui.plugins.builtin", "builtin")
 
 
-def test_builtin_registers_bundled_lessons_folder(pm, monkeypatch, tmp_path):
+def test_builtin_registers_bundled_lessons_folder(monkeypatch, tmp_path):
     monkeypatch.setattr(builtin_plugin, "lessons_dir", lambda: tmp_path)
-    assert collect_lessons(pm) == [tmp_path]
+    assert collect_lessons(get_plugin_manager(load_entrypoints=False)) == [tmp_path]
     monkeypatch.setattr(builtin_plugin, "lessons_dir", lambda: None)
-    assert collect_lessons(pm) == []
+    assert collect_lessons(get_plugin_manager(load_entrypoints=False)) == []
 
 
 def test_lessons_dir_is_the_top_level_lessons_folder_when_present():
@@ -155,10 +155,15 @@ def test_lessons_dir_is_the_top_level_lessons_folder_when_present():
         assert folder.is_dir()
 
 
-def test_builtin_registers_the_bundled_worlds_and_no_plugin_checks(pm):
-    # the built-in checks belong to the grading engine, not to a plugin
+def test_builtin_registers_the_bundled_worlds_and_the_grading_checks(pm):
+    from turtletui.grading.checks import BUILTIN_CHECKS
+
     assert "lidar-course" in collect_worlds(pm)
-    assert collect_checks(pm) == {}
+    checks = collect_checks(pm)
+    assert list(checks) == list(BUILTIN_CHECKS)
+    for name, entry in checks.items():
+        assert entry.object is BUILTIN_CHECKS[name]
+        assert (entry.plugin, entry.source) == ("turtletui.grading.builtin_checks", "builtin")
 
 
 def test_manager_is_built_fresh_by_the_factory():
@@ -169,6 +174,89 @@ def test_manager_is_built_fresh_by_the_factory():
     assert first is not second
     builtins = {importlib.import_module(name) for name in BUILTIN_PLUGINS}
     assert first.get_plugins() == second.get_plugins() == builtins
+
+
+def test_a_manager_calls_each_hook_once_through_pluggy_until_its_plugins_change(pm, temporary_plugin):
+    calls: list[str] = []
+
+    class Counting:
+        @hookimpl
+        def turtletui_register_worlds(self, register):
+            calls.append("worlds")
+            register("counted", lambda: {}, "")
+
+    temporary_plugin(Counting(), name="counting")
+    # pluggy's monitoring sees the calls: they go through pluggy, one plugin at a time
+    undo = pm.add_hookcall_monitoring(
+        lambda hook, impls, kwargs: calls.append(f"{hook}: {', '.join(i.plugin_name for i in impls)}"),
+        lambda outcome, hook, impls, kwargs: None,
+    )
+    try:
+        assert "counted" in collect_worlds(pm) and "counted" in collect_worlds(pm)
+    finally:
+        undo()
+    assert calls.count("worlds") == 1
+    assert "turtletui_register_worlds: counting" in calls
+    temporary_plugin(type("Late", (), {})(), name="late")
+    collect_worlds(pm)
+    assert calls.count("worlds") == 2
+
+
+def test_a_duplicate_name_is_reported_once_per_manager(pm, temporary_plugin, capsys):
+    class Twice:
+        @hookimpl
+        def turtletui_register_worlds(self, register):
+            register("lidar-course", lambda: {}, "again")
+
+    temporary_plugin(Twice(), name="twice")
+    for _ in range(3):
+        collect_worlds(pm)
+    plugin_infos(pm)
+    assert capsys.readouterr().err.count("replaces") == 1
+
+
+def test_a_registered_check_object_keeps_its_thresholds(pm, temporary_plugin):
+    from turtletui.grading.checks import Check
+    from turtletui.grading.engine import available_checks
+
+    strict = Check("strict", lambda trace, thresholds: True, "takes one threshold", {"limit": "number"})
+
+    class Checks:
+        @hookimpl
+        def turtletui_register_checks(self, register):
+            register("strict", strict)
+
+    temporary_plugin(Checks(), name="checks")
+    check = available_checks(pm)["strict"]
+    assert check.params == {"limit": "number"} and check.description == "takes one threshold"
+    assert check.problem({"other": 1}) == "check 'strict' takes no threshold 'other' (it takes: limit)"
+
+
+COUNTING_PLUGIN = """
+    from pathlib import Path
+
+    from turtletui.plugins import hookimpl
+
+    with open({log!r}, "a") as log:
+        log.write("imported\\n")
+
+
+    @hookimpl
+    def turtletui_register_worlds(register):
+        register("counted", lambda: {{"name": "counted"}}, "a world from a plugin file")
+"""
+
+
+def test_one_command_imports_a_plugin_file_once(cli_app, tmp_path, forget_modules):
+    from typer.testing import CliRunner
+
+    log = tmp_path / "imports.log"
+    plugin = write(tmp_path / "counting.py", COUNTING_PLUGIN.format(log=str(log)))
+    args = ["lessons", "--plugin", str(plugin)]
+    result = CliRunner().invoke(cli_app, args, env={DISABLE_AUTOLOAD_ENV: "1"})
+    assert result.exit_code == 0, result.output
+    assert result.stderr == ""
+    assert log.read_text() == "imported\n"
 
 
 # -- one test per hook (the meta-test below insists) ---------------------------------
@@ -290,7 +378,7 @@ def test_hook_turtletui_register_checks(pm, temporary_plugin):
 
     temporary_plugin(Checks(), name="checks")
     checks = collect_checks(pm)
-    assert list(checks) == ["reaches_goal"]
+    assert list(checks)[-1] == "reaches_goal"
     assert checks["reaches_goal"].object is reaches_goal
     assert checks["reaches_goal"].description == "the turtle ends within 0.5 m of the goal"
     assert checks["reaches_goal"].source == "registered directly"
@@ -489,7 +577,7 @@ def test_broken_plugin_files_are_reported_one_line_each(tmp_path, forget_modules
 
     pm = get_plugin_manager(extra=[folder, missing], load_entrypoints=False)
     assert set(collect_controllers(pm)) == {*REFERENCE_CONTROLLERS, "still_here"}
-    assert collect_checks(pm) == {}
+    assert "wall_hits" in collect_checks(pm)  # the built-in checks still count
 
     err = capsys.readouterr().err.splitlines()
     expected = {

@@ -117,7 +117,7 @@ def _alive(pid: int) -> bool:
     return state not in ("Z", "X")
 
 
-def assert_gone(pid: int, timeout: float = 2.0) -> None:
+def assert_gone(pid: int, timeout: float = 30.0) -> None:
     deadline = time.monotonic() + timeout
     while _alive(pid):
         if time.monotonic() > deadline:
@@ -160,10 +160,15 @@ def _alarm(signum, frame):
     raise Hang("the run hung")
 
 
+HANG_SECONDS = 180
+"""A run that takes this long has hung: a deadline no busy machine reaches
+(a run here takes a second or two of wall time when the machine is quiet)."""
+
+
 def go(path: Path, duration: float = 2.0, **limits: float) -> RunResult:
     """Run ``path`` sandboxed; a hang fails the test (SIGALRM) instead of stalling it."""
     previous = signal.signal(signal.SIGALRM, _alarm)
-    signal.alarm(20)
+    signal.alarm(HANG_SECONDS)
     try:
         result = run([path], duration=duration, keep_poses=True, limits=Limits(**limits) if limits else None)
     finally:
@@ -304,13 +309,10 @@ def test_multi_line_message_gives_a_one_line_summary(tmp_path: Path) -> None:
 )
 def test_hung_callback_times_out(tmp_path: Path, body: str) -> None:
     path = write(tmp_path, body)
-    started = time.monotonic()
     result = go(path, step_timeout=0.5)
-    wall = time.monotonic() - started
-    crash = only_crash(result, "timeout", path)
+    crash = only_crash(result, "timeout", path)  # the step deadline, not the CPU limit, stopped it
     assert "did not answer within 0.5 s" in crash.message
     assert crash.t == pytest.approx(CRASH_T)
-    assert wall < 0.5 + 2.0, f"took {wall:.2f} s to stop a hung callback"
     assert_stopped(result, CRASH_T)
     assert_gone(read_pid(tmp_path))
 
@@ -324,12 +326,12 @@ def test_sleep_in_a_callback_blocks_the_node_in_simulated_time(tmp_path: Path) -
             time.sleep(1.5)
             node.get_logger().info("awake")
     """)
-    started = time.monotonic()
     result = go(path, duration=3.0)
-    assert time.monotonic() - started < 2.0, "a simulated sleep took wall time"
     assert result.crashes == []
     lines = {r.msg: r.t for r in result.logs if r.node == "driver"}
     assert lines["sleeping"] == pytest.approx(CRASH_T)
+    # simulated time passed during the sleep: a sleep in wall time would have
+    # held lockstep's clock, and the node would wake at the same instant
     assert lines["awake"] == pytest.approx(CRASH_T + 1.5)
     # The last command before the sleep times out after 1 s: the turtle stops
     # before the node wakes up.
@@ -347,12 +349,9 @@ def test_endless_loop_in_main_before_spin(tmp_path: Path) -> None:
         def misbehave(node):
             pass
     """)
-    started = time.monotonic()
     result = go(path, step_timeout=0.5, start_timeout=2.0)
-    wall = time.monotonic() - started
     crash = only_crash(result, "timeout", path)
     assert "did not answer" in crash.message
-    assert wall < 2.0 + 2.0
     assert result.turtles["turtle1"].distance == 0.0
     assert_gone(read_pid(tmp_path))
 
@@ -450,8 +449,7 @@ def test_closing_the_reply_pipe_and_looping(tmp_path: Path) -> None:
                 pass
     """)
     result = go(path)
-    assert result.wall_time < 3.0
-    crash = only_crash(result, "exception", path)
+    crash = only_crash(result, "exception", path)  # noticed at once, not at the step deadline
     assert "closed its connection" in crash.message
     assert_stopped(result, CRASH_T)
     assert_gone(read_pid(tmp_path))
@@ -616,11 +614,11 @@ def test_unbounded_allocation_is_stopped(tmp_path: Path) -> None:
     ids=["fork", "fork-setsid", "popen", "popen-new-session", "daemon-clean-env"],
 )
 def test_started_processes_are_killed(tmp_path: Path, body: str) -> None:
-    path = write(tmp_path, body)
+    path = write(tmp_path, body.replace("60", "600"))
     started = time.monotonic()
     result = go(path)
-    assert time.monotonic() - started < 10
-    grandchild = read_pid(tmp_path, "grandchild_pid", timeout=1.0)
+    assert time.monotonic() - started < 300, "the run waited for what the controller started"
+    grandchild = read_pid(tmp_path, "grandchild_pid", timeout=30.0)
     assert grandchild != read_pid(tmp_path)
     assert_gone(read_pid(tmp_path))
     assert_gone(grandchild)
@@ -659,12 +657,11 @@ def test_fork_then_exit_is_reported_promptly(tmp_path: Path) -> None:
                 os._exit(0)
             os._exit(4)
     """)
-    result = go(path, step_timeout=5.0)
-    crash = only_crash(result, "exit", path)
+    result = go(path, step_timeout=60.0)
+    crash = only_crash(result, "exit", path)  # not a timeout: its death was noticed
     assert "status 4" in crash.message
-    assert result.wall_time < 3.0
     assert_gone(read_pid(tmp_path))
-    assert_gone(read_pid(tmp_path, "grandchild_pid", timeout=1.0))
+    assert_gone(read_pid(tmp_path, "grandchild_pid", timeout=30.0))
 
 
 # -- tampering with turtletui from inside the sandbox -------------------------------------------
@@ -815,9 +812,7 @@ FORGED = {
 def test_forged_reply_on_the_pipe(tmp_path: Path, case: str) -> None:
     forged, kind, says = FORGED[case]
     path = write(tmp_path, FORGE.replace("FRAME", repr(forged)))
-    started = time.monotonic()
     result = go(path)
-    assert time.monotonic() - started < 10, "a forged reply must not hang the run"
     assert not any("Traceback" in r.msg for r in result.logs)
     assert_gone(read_pid(tmp_path))
     if kind is None:
@@ -839,7 +834,7 @@ def test_forged_reply_then_not_reading(tmp_path: Path) -> None:
 
         def forge_and_hang():
             os.write(context.current_host().fd_out, struct.pack(">I", 2) + b"{}")
-            block(30)
+            block(600)
 
         def misbehave(node):
             for _ in range(3000):
@@ -848,7 +843,7 @@ def test_forged_reply_then_not_reading(tmp_path: Path) -> None:
     """)
     started = time.monotonic()
     result = go(path, step_timeout=1.0)
-    assert time.monotonic() - started < 6
+    assert time.monotonic() - started < 300, "the parent waited for the child to read"
     crash = only_crash(result, "timeout", path)
     assert CRASH_T + 0.1 <= crash.t < CRASH_T + 0.2
     assert_gone(read_pid(tmp_path))

@@ -239,7 +239,7 @@ def sandbox_processes(marks: Iterable[str | Path]) -> list[str]:
     return found
 
 
-def wait_until_gone(marks: Iterable[str], seconds: float = 5.0) -> list[str]:
+def wait_until_gone(marks: Iterable[str], seconds: float = 30.0) -> list[str]:
     """The processes of :func:`sandbox_processes` still there after ``seconds``."""
     deadline = time.monotonic() + seconds
     while True:

@@ -8,6 +8,7 @@ from pathlib import Path
 from turtletui.grading.engine import GradingPlan, grade_controllers, prepare
 from turtletui.grading.results import SubmissionResult
 from turtletui.lessons.loader import find_lesson
+from turtletui.runtime import forkserver
 from turtletui.runtime.loader import ControllerSpec
 from turtletui.runtime.resolve import resolve_controllers
 
@@ -36,7 +37,9 @@ class Grader:
                 specs = [ControllerSpec(name=Path(controller).stem, path=Path(controller), trusted=True)]
             else:
                 specs = resolve_controllers([controller])
-            self._results[key] = grade_controllers(self.plan(lesson_id), specs)
+            # a file's runs fork from one warm interpreter, as `turtletui grade` does
+            with forkserver.serving():
+                self._results[key] = grade_controllers(self.plan(lesson_id), specs)
         return self._results[key]
 
 

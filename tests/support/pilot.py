@@ -5,7 +5,9 @@ from __future__ import annotations
 
 import asyncio
 import functools
+import os
 import time
+from pathlib import Path
 
 from turtletui.tui.app import TurtleApp
 from turtletui.tui.widgets.textlog import TextLog
@@ -28,7 +30,17 @@ def log_text(app: TurtleApp, selector: str = "#log-lines") -> str:
     return "\n".join(app.query_one(selector, TextLog).entries)
 
 
-async def wait_for(pilot, condition, timeout: float = 5.0) -> None:
+def rewrite(path: Path, text: str) -> None:
+    """Save ``path`` again with a modification time a second later than before,
+    as an editor saving a file later would (no sleep to make the clock move)."""
+    before = path.stat().st_mtime_ns
+    path.write_text(text)
+    later = before + 1_000_000_000
+    os.utime(path, ns=(later, later))
+
+
+async def wait_for(pilot, condition, timeout: float = 30.0) -> None:
+    """Let the app run until ``condition()`` (a generous deadline: busy machines)."""
     deadline = time.monotonic() + timeout
     while not condition():
         assert time.monotonic() < deadline, "timed out waiting for the app"

@@ -4,11 +4,10 @@ ros2 command line, teleop, hot reload, and a misbehaving controller."""
 from __future__ import annotations
 
 import textwrap
-import time
 from pathlib import Path
 
 import pytest
-from support.pilot import SIZE, log_text, pilot_test, wait_for
+from support.pilot import SIZE, log_text, pilot_test, rewrite, wait_for
 from textual.widgets import ContentSwitcher, Input
 
 from turtletui.runtime.loader import ControllerSpec
@@ -108,11 +107,10 @@ async def test_hot_reload_restarts_the_node_and_survives_a_syntax_error(tmp_path
     app = TurtleApp([ControllerSpec("node", path=path)])
     async with app.run_test(size=SIZE) as pilot:
         await wait_for(pilot, lambda: "version 1" in log_text(app))
-        time.sleep(0.01)
-        path.write_text(node.format(v=2))
+        rewrite(path, node.format(v=2))
         await wait_for(pilot, lambda: "version 2" in log_text(app))
         assert "node.py changed: reloading its node" in log_text(app)
-        path.write_text("def main(:\n")
+        rewrite(path, "def main(:\n")
         await wait_for(pilot, lambda: "SyntaxError" in log_text(app))
         assert "node.py:1" in log_text(app) and "previous version keeps running" in log_text(app)
         assert app.session.slots[0].status == "running"
@@ -142,7 +140,7 @@ async def test_a_hung_controller_leaves_the_app_responsive(tmp_path: Path) -> No
     async with app.run_test(size=SIZE) as pilot:
         await wait_for(pilot, lambda: app.session.t > 0.2)
         app.tick_gaps.clear()
-        await wait_for(pilot, lambda: app.session.slots[0].status == "failed", timeout=8.0)
+        await wait_for(pilot, lambda: app.session.slots[0].status == "failed", timeout=60)
         # While the controller hung (2 s until its step deadline), the loop
         # kept its beat: had it waited for the controller, a gap would be 2 s.
         # (The 100 ms target itself is measured by bench/bench_app.py.)
@@ -178,8 +176,7 @@ async def test_a_broken_file_is_reported_and_runs_once_fixed(tmp_path: Path) -> 
         await wait_for(pilot, lambda: "SyntaxError" in log_text(app))
         assert f"{path}:2" in log_text(app)
         assert app.session.slots[0].status == "failed"
-        time.sleep(0.01)
-        path.write_text(textwrap.dedent("""
+        rewrite(path, textwrap.dedent("""
             import rclpy
             from rclpy.node import Node
 

@@ -56,7 +56,7 @@ async def test_driving_into_the_wall_leaves_a_mark_in_the_arena() -> None:
             if await drive():
                 break
             await pilot.pause(0.1)
-        await wait_for(pilot, marked, timeout=10.0)
+        await wait_for(pilot, marked, timeout=60)
         turtle = app.session.sim.world.turtles["turtle1"]
         assert turtle.wall_hits >= 1
         [(x, y, level)] = app.session.hits.visible(app.session.sim.world.time)

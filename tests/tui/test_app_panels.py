@@ -35,7 +35,7 @@ async def test_at_80x24_the_log_shows_whole_lines_with_their_numbers() -> None:
     """Part 3 logs "Hello 0", "Hello 1"...: the number must be on screen."""
     app = TurtleApp(resolve_controllers(["part3_first_node"]))
     async with app.run_test(size=SMALL) as pilot:
-        await wait_for(pilot, lambda: "Hello 1" in log_text(app), timeout=10)
+        await wait_for(pilot, lambda: "Hello 1" in log_text(app), timeout=60)
         await pilot.pause(0.3)
         view = app.query_one("#log-lines", TextLog)
         width = view.scrollable_content_region.width
@@ -63,7 +63,7 @@ async def test_a_node_that_floods_shows_its_rate(tmp_path: Path) -> None:
     app = TurtleApp([ControllerSpec("chatty", path=path)])
     async with app.run_test(size=SMALL) as pilot:
         rate = app.query_one("#log-rate")
-        await wait_for(pilot, lambda: rate.display and "chatty:" in str(rate.render()), timeout=10)
+        await wait_for(pilot, lambda: rate.display and "chatty:" in str(rate.render()), timeout=60)
         lines_per_s = float(str(rate.render()).split("chatty:")[1].split()[0].replace(",", ""))
         assert lines_per_s > 100  # 500 lines per simulated second, at x1
 

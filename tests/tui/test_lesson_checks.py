@@ -133,7 +133,7 @@ async def _check_key_scenario(tmp_path: Path) -> None:
             seen.append(panel.source)
             return "Score:" in panel.source or "could not" in panel.source
 
-        await wait_for(pilot, finished, timeout=30)
+        await wait_for(pilot, finished, timeout=120)
         assert any("*Running the lesson's scenarios: 1 of 1 done*" in text for text in seen)
         assert "**Score: 1 / 2**" in panel.source
         assert "✗ `distance`" in panel.source and "Publish a forward speed." in panel.source
@@ -142,7 +142,7 @@ async def _check_key_scenario(tmp_path: Path) -> None:
         assert not app.progress.get("drive-a-bit").passed
         node.write_text(NODE.replace("{speed}", "1.0"))
         await pilot.press("k")
-        await wait_for(pilot, lambda: "**Score: 2 / 2**" in panel.source, timeout=30)
+        await wait_for(pilot, lambda: "**Score: 2 / 2**" in panel.source, timeout=120)
         assert app.progress.get("drive-a-bit").passed
     # kept for the next run of the app, under the user's data folder
     saved = json.loads((tmp_path / "data" / "turtletui" / "progress.json").read_text())
@@ -168,7 +168,7 @@ async def test_a_recording_replays_in_the_arena(tmp_path: Path) -> None:
     recorded = run([node], duration=2.0, record=record)
     app = TurtleApp([], replay=read_recording(record))
     async with app.run_test(size=SIZE) as pilot:
-        await wait_for(pilot, lambda: app.session.paused, timeout=10)
+        await wait_for(pilot, lambda: app.session.paused, timeout=60)
         turtle = app.session.sim.world.turtles["turtle1"]
         # the recording's end holds its last frame: where the recorded turtle ended,
         # give or take the ticks of one 16 ms frame of the app

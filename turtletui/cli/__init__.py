@@ -7,8 +7,10 @@ command imports what it needs when it runs, and nothing here imports Textual.
 from __future__ import annotations
 
 import sys
+from typing import Any
 
 import typer
+from typer.core import TyperGroup
 
 from turtletui.cli import (
     autograder_cmd,
@@ -20,9 +22,39 @@ from turtletui.cli import (
     serve_cmd,
     sim_cmd,
 )
+from turtletui.cli.errors import fail, internal_error
 from turtletui.cli.merge_cmd import GradeCommand
+from turtletui.errors import TurtletuiError
+
+_CLICK_ENDS = (
+    typer.Exit,
+    typer.Abort,
+    # ClickException: Click's own, or the one of the Click that newer Typers carry
+    next(c for c in typer.BadParameter.__mro__ if c.__name__ == "ClickException"),
+    KeyboardInterrupt,
+    BrokenPipeError,
+)
+"""How a command may end that Click handles itself: --help and exits, usage
+errors, Ctrl-C, a closed stdout (``| head``)."""
+
+
+class _Commands(TyperGroup):
+    """turtletui's commands: a TurtletuiError is a one-line error with exit
+    status 2, anything else a bug reported as one (see cli.errors)."""
+
+    def invoke(self, ctx: Any) -> Any:
+        try:
+            return super().invoke(ctx)
+        except TurtletuiError as err:
+            fail(" ".join(str(err).split()) or type(err).__name__)
+        except _CLICK_ENDS:
+            raise
+        except Exception as err:  # noqa: BLE001 - a bug in turtletui: one line, the details in a file
+            internal_error(err)
+
 
 app = typer.Typer(
+    cls=_Commands,
     name="turtletui",
     help="ROS 2's turtlesim in your terminal: run ordinary rclpy nodes against a simulated turtle.",
     no_args_is_help=True,

@@ -34,15 +34,11 @@ _FORCE_HELP = "Overwrite files that already exist."
 
 def _lesson_and_source(lesson_id: str, lessons: Path | None) -> tuple[str, Path | None]:
     """The lesson's id and the lesson file or folder to copy into the autograder
-    (None for a lesson that the installed turtletui bundles); a one-line error and
-    exit 2 for an unknown lesson."""
-    from turtletui.lessons.loader import LessonError, find_lesson
+    (None for a lesson that the installed turtletui bundles)."""
+    from turtletui.lessons.loader import find_lesson
     from turtletui.plugins.bundled import lessons_dir
 
-    try:
-        found = find_lesson(lesson_id, [lessons] if lessons else ())
-    except LessonError as err:
-        fail(str(err))
+    found = find_lesson(lesson_id, [lessons] if lessons else ())
     path = found.path.resolve()
     bundled = lessons_dir()
     if bundled is not None and bundled.resolve() in path.parents:
@@ -57,16 +53,11 @@ def _lesson_and_source(lesson_id: str, lessons: Path | None) -> tuple[str, Path 
 
 def _bundle(write, requirement: str | None, **arguments) -> list[Path]:
     """Call ``write`` (an autograder writer) with a wheel of this turtletui built
-    for it, or with the ``requirement`` instead; a one-line error on failure."""
+    for it, or with the ``requirement`` instead."""
     import tempfile
 
-    from turtletui.grading.autograder import AutograderError
-
     with tempfile.TemporaryDirectory(prefix="turtletui-wheel-") as tmp:
-        try:
-            return write(turtletui_requirement=requirement, wheel=_wheel(requirement, Path(tmp)), **arguments)
-        except AutograderError as err:
-            fail(str(err))
+        return write(turtletui_requirement=requirement, wheel=_wheel(requirement, Path(tmp)), **arguments)
 
 
 def _wheel(requirement: str | None, into: Path) -> Path | None:

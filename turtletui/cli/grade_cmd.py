@@ -2,8 +2,8 @@
 
 Exit status: 0 when grading completed (whatever the scores), 1 when a score is
 below ``--fail-under``, 2 for bad input (unknown lesson, missing path,
-unwritable output), 3 for an internal error, 130 when interrupted (finished
-results are kept; rerun to resume).
+unwritable output), 3 for an internal error (see cli.errors), 130 when
+interrupted (finished results are kept; rerun to resume).
 """
 
 from __future__ import annotations
@@ -15,10 +15,11 @@ from pathlib import Path
 import typer
 
 from turtletui.cli.errors import fail
+from turtletui.cli.plugin_manager import plugins_of
+from turtletui.errors import UsageError
 
 BACKENDS = ("local", "ray")
 EXIT_BELOW = 1
-EXIT_INTERNAL = 3
 EXIT_INTERRUPTED = 130
 
 _FORMAT_HELP = (
@@ -153,12 +154,6 @@ def grade(
     except KeyboardInterrupt:
         sys.stderr.write("turtletui: interrupted: finished results are kept; run the same command to resume\n")
         raise SystemExit(EXIT_INTERRUPTED) from None
-    except (ValueError, OSError) as err:
-        fail(str(err).splitlines()[0] if str(err) else type(err).__name__)
-    except Exception as err:  # a bug in turtletui: one line, and the details in a file
-        where = _save_traceback()
-        sys.stderr.write(f"turtletui: internal error: {type(err).__name__}: {err} (details in {where})\n")
-        raise SystemExit(EXIT_INTERNAL) from None
     if fail_under is not None and any(s.score < fail_under for s in report.submissions):
         raise SystemExit(EXIT_BELOW)
 
@@ -225,6 +220,7 @@ def _grade(
     from turtletui.runtime import container
     from turtletui.runtime.sandbox import Limits
 
+    plugins = plugins_of(plugins)
     shard = parse_shard(shard_text) if shard_text else WHOLE_CLASS
     lesson = find_lesson(lesson_id, folders, plugins)
     plan = prepare(lesson, plugins=plugins)
@@ -237,7 +233,7 @@ def _grade(
         single=single,
     )
     if single and len(found) != 1:
-        raise ValueError(
+        raise UsageError(
             f"--format {fmt} reports one submission (the platform grades one per container), got {len(found)}"
         )
     limits = Limits()
@@ -316,11 +312,11 @@ def check_output(output: Path | None) -> None:
     if output is None:
         return
     if output.is_dir():
-        raise ValueError(f"cannot write {output}: it is a folder")
+        raise UsageError(f"cannot write {output}: it is a folder")
     if not output.parent.is_dir():
-        raise ValueError(f"cannot write {output}: {output.parent} is not a folder")
+        raise UsageError(f"cannot write {output}: {output.parent} is not a folder")
     if not os.access(output.parent, os.W_OK | os.X_OK):
-        raise ValueError(f"cannot write {output}: permission denied")
+        raise UsageError(f"cannot write {output}: permission denied")
 
 
 def write_output(report, fmt: str, output: Path | None, options) -> None:
@@ -342,18 +338,11 @@ def write_output(report, fmt: str, output: Path | None, options) -> None:
         sys.stderr.write(f"turtletui: warning: {warning}\n")
     github_output = os.environ.get("GITHUB_OUTPUT")
     if fmt == "github" and github_output:
-        with open(github_output, "a", encoding="utf-8") as file:
-            file.write(github_output_line(report) + "\n")
-
-
-def _save_traceback() -> str:
-    import tempfile
-    import traceback
-
-    fd, path = tempfile.mkstemp(prefix="turtletui-error-", suffix=".txt")
-    with os.fdopen(fd, "w") as file:
-        traceback.print_exc(file=file)
-    return path
+        try:
+            with open(github_output, "a", encoding="utf-8") as file:
+                file.write(github_output_line(report) + "\n")
+        except OSError as err:
+            fail(f"cannot write GITHUB_OUTPUT {github_output}: {err.strerror or err}")
 
 
 def checks(
@@ -364,6 +353,6 @@ def checks(
     """List the checks a lesson can name, with their thresholds."""
     from turtletui.grading.engine import available_checks
 
-    for name, check in sorted(available_checks(plugin or ()).items()):
+    for name, check in sorted(available_checks(plugins_of(plugin)).items()):
         params = "?" if check.params is None else ", ".join(check.params) or "none"
         print(f"{name}\n    {check.description or '(no description)'}\n    thresholds: {params}")

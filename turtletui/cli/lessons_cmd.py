@@ -11,6 +11,7 @@ from pathlib import Path
 import typer
 
 from turtletui.cli.errors import fail
+from turtletui.cli.plugin_manager import plugins_of
 
 _FOLDER_HELP = "Also look for lessons in this folder (every *.md but README.md; repeatable)."
 _PLUGIN_HELP = "Also load this plugin file, or every .py in this folder (repeatable)."
@@ -24,17 +25,15 @@ def lessons(
     plugin: list[Path] = typer.Option(None, "--plugin", metavar="PATH", help=_PLUGIN_HELP),
 ) -> None:
     """List the lessons turtletui found (bundled, from plugins, from --folder)."""
-    from turtletui.grading.engine import GradingError, available_checks, validate
-    from turtletui.lessons.loader import LessonError, discover_lessons
+    from turtletui.grading.engine import available_checks, validate
+    from turtletui.lessons.loader import discover_lessons
 
-    try:
-        found = discover_lessons(folder or (), plugin or ())
-        # a misspelt check or world is found now, not when a class is graded
-        known = available_checks(plugin or ())
-        for item in found:
-            validate(item, plugins=plugin or (), checks=known)
-    except (LessonError, GradingError) as err:
-        fail(str(err))
+    plugins = plugins_of(plugin)
+    found = discover_lessons(folder or (), plugins)
+    # a misspelt check or world is found now, not when a class is graded
+    known = available_checks(plugins)
+    for item in found:
+        validate(item, plugins=plugins, checks=known)
     if as_json:
         import json
 
@@ -65,13 +64,10 @@ def lessons(
 
 
 def _find(lesson_id: str, folder: list[Path] | None, plugin: list[Path] | None):
-    """The lesson named by id or path, or a one-line error and exit 2."""
-    from turtletui.lessons.loader import LessonError, find_lesson
+    """The lesson named by id or path (a LessonError if there is none)."""
+    from turtletui.lessons.loader import find_lesson
 
-    try:
-        return find_lesson(lesson_id, folder or (), plugin or ())
-    except LessonError as err:
-        fail(str(err))
+    return find_lesson(lesson_id, folder or (), plugins_of(plugin))
 
 
 def lesson(

@@ -6,6 +6,8 @@ from pathlib import Path
 
 import typer
 
+from turtletui.cli.plugin_manager import plugins_of
+
 
 def plugins(
     plugin: list[Path] = typer.Option(  # noqa: B008 - Typer's way of declaring options
@@ -19,16 +21,15 @@ def plugins(
     ),
 ) -> None:
     """List the plugins turtletui found (built-in, installed, named on the command line)."""
-    extra = list(plugin or [])
+    pm = plugins_of(plugin)
     if as_json:
         import json
 
-        from turtletui.plugins.manager import get_plugin_manager, plugin_infos
+        from turtletui.plugins.manager import plugin_infos
 
-        infos = plugin_infos(get_plugin_manager(extra=extra))
-        print(json.dumps([info.as_dict() for info in infos], indent=2))
+        print(json.dumps([info.as_dict() for info in plugin_infos(pm)], indent=2))
         return
     from turtletui.plugins.manager import describe_plugins
 
-    for line in describe_plugins(extra):
+    for line in describe_plugins(pm=pm):
         print(line)

@@ -25,12 +25,9 @@ def replay(
     ),
 ) -> None:
     """Play a recorded run: the turtle drives the recorded path again."""
-    from turtletui.runtime.replay import RecordingError, read_recording
+    from turtletui.runtime.replay import read_recording
 
-    try:
-        found = read_recording(recording)
-    except RecordingError as err:
-        fail(str(err))
+    found = read_recording(recording)
     if png is not None:
         _picture(found, _world(found.header.get("world")), png)
         return

@@ -10,9 +10,11 @@ from typing import TYPE_CHECKING
 import typer
 
 from turtletui.cli.errors import fail
+from turtletui.cli.plugin_manager import plugins_of
 from turtletui.cli.screen import require_screen
 
 if TYPE_CHECKING:
+    from turtletui.plugins.manager import Plugins
     from turtletui.worlds import WorldSpec
 
 ROS_ARGS: list[str] = []
@@ -69,45 +71,34 @@ def run(
     """
     if not headless:
         require_screen("run headless instead: turtletui run FILE.py --headless --duration 60")
-        _run_app(controllers, plugin, lesson, ascii_only, seed, world, pixels, record, foxglove)
+        _run_app(controllers, plugins_of(plugin), lesson, ascii_only, seed, world, pixels, record, foxglove)
         return
     from turtletui.api import run as run_controllers
-    from turtletui.compat.ros_args import RosArgsError
-    from turtletui.runtime.loader import ControllerError
     from turtletui.runtime.resolve import resolve_controllers
 
-    try:
-        specs = resolve_controllers(controllers or ["part6_wall_avoider"], plugins=plugin or ())
-    except ControllerError as err:
-        fail(str(err))
+    plugins = plugins_of(plugin)
+    specs = resolve_controllers(controllers or ["part6_wall_avoider"], plugins=plugins)
     if not duration > 0:
         fail(f"--duration must be a positive number of seconds, got {duration}")
-    sim_world = None if world is None else _resolve_world(world, plugin).build(seed)
+    sim_world = None if world is None else _resolve_world(world, plugins).build(seed)
 
     def print_log(record) -> None:
         if not quiet:
             sys.stdout.write(record.format() + "\n")
 
-    try:
-        result = run_controllers(
-            specs,
-            duration=duration,
-            seed=seed,
-            realtime=realtime,
-            sandbox=False if in_process else None,
-            ros_args=ROS_ARGS,
-            record=record,
-            on_log=print_log,
-            keep_calls=False,
-            world=sim_world,
-            foxglove=foxglove,
-        )
-    except (ControllerError, RosArgsError, ValueError) as err:
-        fail(str(err))
-    except BrokenPipeError:
-        raise  # stdout closed (``| head``): Click exits quietly
-    except OSError as err:
-        fail(str(err))
+    result = run_controllers(
+        specs,
+        duration=duration,
+        seed=seed,
+        realtime=realtime,
+        sandbox=False if in_process else None,
+        ros_args=ROS_ARGS,
+        record=record,
+        on_log=print_log,
+        keep_calls=False,
+        world=sim_world,
+        foxglove=foxglove,
+    )
     for crash in result.crashes:
         if crash.kind == "load":
             # A sandboxed file without main() or Node is bad input, as in-process.
@@ -120,19 +111,19 @@ def run(
         raise SystemExit(1)
 
 
-def _resolve_world(name: str, plugins: list[Path] | None, what: str = "--world") -> WorldSpec:
+def _resolve_world(name: str, plugins: Plugins, what: str = "--world") -> WorldSpec:
     """The WorldSpec ``--world`` (or a lesson) names; a clean exit if there is none."""
     from turtletui.worlds import WorldError, resolve_world
 
     try:
-        return resolve_world(name, plugins=plugins or ())
+        return resolve_world(name, plugins=plugins)
     except WorldError as err:
         fail(f"{what}: {err}")
 
 
 def _run_app(
     controllers: list[str] | None,
-    plugins: list[Path] | None,
+    plugins: Plugins,
     lesson: str | None,
     ascii_only: bool,
     seed: int,
@@ -144,7 +135,6 @@ def _run_app(
     """The Textual app (imported only here: headless runs never load Textual)."""
     _check_outputs(record, foxglove)
     from turtletui.lessons.loader import LessonError, find_lesson
-    from turtletui.runtime.loader import ControllerError
     from turtletui.runtime.resolve import resolve_controllers
 
     if not controllers:
@@ -153,7 +143,7 @@ def _run_app(
     lesson_path = None
     if lesson is not None:
         try:
-            found = find_lesson(lesson, plugins=plugins or ())
+            found = find_lesson(lesson, plugins=plugins)
         except LessonError as err:
             fail(f"--lesson: {err}")
         lesson_path = found.path
@@ -161,10 +151,7 @@ def _run_app(
     if lesson is not None and world is None and found.world != "empty":
         world, what = found.world, f"lesson {found.id}: world"
     world_spec = None if world is None else _resolve_world(world, plugins, what)
-    try:
-        specs = resolve_controllers(controllers, plugins=plugins or ())
-    except ControllerError as err:
-        fail(str(err))
+    specs = resolve_controllers(controllers, plugins=plugins)
     drawing = _drawing(pixels, ascii_only)
     from turtletui.tui.app import TurtleApp
 

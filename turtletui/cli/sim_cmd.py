@@ -15,6 +15,7 @@ from pathlib import Path
 import typer
 
 from turtletui.cli.errors import fail
+from turtletui.cli.plugin_manager import plugins_of
 from turtletui.cli.screen import require_screen
 
 ROS_ARGS: list[str] = []
@@ -54,7 +55,7 @@ def sim(
         fail(str(err))
     if duration is not None and not 0 < duration < 1e7:
         fail(f"--duration must be a positive number of seconds, got {duration}")
-    world_spec = None if world is None else _resolve_world(world, plugin)
+    world_spec = None if world is None else _resolve_world(world, plugins_of(plugin))
     if not headless:
         if duration is not None:
             fail("--duration is for --headless runs; the app runs until you quit it (q)")

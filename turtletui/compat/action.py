@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
+from turtletui.compat.destroyable import Destroyable
 from turtletui.compat.qos import (
     QoSProfile,
     qos_profile_action_status_default,
@@ -107,7 +108,7 @@ class ClientGoalHandle:
         self._result_future.set_result(_GetResultResponse(self._status, result))
 
 
-class ActionClient:
+class ActionClient(Destroyable):
     """Sends goals to an action server, as ``rclpy.action.ActionClient``."""
 
     def __init__(
@@ -129,16 +130,19 @@ class ActionClient:
             raise TypeError(
                 f"ActionClient needs an action class such as turtlesim.action.RotateAbsolute, got {action_type!r}"
             )
+        node._require_alive()
         self._node = node
         self._action_type = action_type
         self._action_name = node.resolve_topic_name(action_name)
-        self._record = node.context.host.graph.add_action_client(node._record, self._action_name, action_type)
+        self._record = node._graph.add_action_client(node._record, self._action_name, action_type)
+        node._entities.append(self)  # destroyed with the node
 
     def _host(self) -> Any:
         return self._node.context.host
 
     def server_is_ready(self) -> bool:
-        return self._host().graph.has_action_server(self._action_name)
+        self._require_alive()
+        return self._node._graph.has_action_server(self._action_name)
 
     def wait_for_server(self, timeout_sec: float | None = None) -> bool:
         if self.server_is_ready():
@@ -150,6 +154,7 @@ class ActionClient:
         self, goal: Any, feedback_callback: Callable[[Any], None] | None = None, goal_uuid: Any = None
     ) -> Future:
         """Send ``goal``; the Future completes with a ClientGoalHandle."""
+        self._require_alive()
         if type(goal) is not self._action_type.Goal:
             raise TypeError(f"send_goal_async() on {self._action_name} expects a Goal of {self._action_type}, got {goal!r}")
         future = Future()
@@ -185,6 +190,30 @@ class ActionClient:
         return handle.get_result() if handle else None
 
     def destroy(self) -> None:
-        graph = self._host().graph
-        if self._record in graph.action_clients:
-            graph.action_clients.remove(self._record)
+        """Take the client off the graph; using it afterwards raises InvalidHandle."""
+        if self._destroyed:
+            return
+        self._destroyed = True
+        self._node._graph.remove_action_client(self._record)
+        if self in self._node._entities:
+            self._node._entities.remove(self)
+
+
+def get_action_names_and_types(node: Any) -> list[tuple[str, list[str]]]:
+    """Every action with a server or a client in the graph, with its type."""
+    node._require_alive()
+    return node._graph.action_names_and_types()
+
+
+def get_action_server_names_and_types_by_node(
+    node: Any, remote_node_name: str, remote_node_namespace: str
+) -> list[tuple[str, list[str]]]:
+    """The actions the node ``remote_node_namespace/remote_node_name`` serves."""
+    return node._names_and_types_by_node(remote_node_name, remote_node_namespace, "action_servers", "action server")
+
+
+def get_action_client_names_and_types_by_node(
+    node: Any, remote_node_name: str, remote_node_namespace: str
+) -> list[tuple[str, list[str]]]:
+    """The actions the node ``remote_node_namespace/remote_node_name`` is a client of."""
+    return node._names_and_types_by_node(remote_node_name, remote_node_namespace, "action_clients", "action client")

@@ -7,6 +7,13 @@ from collections.abc import Callable, Sequence
 from typing import Any
 
 from turtletui.compat.context import Context, get_default_context
+from turtletui.compat.destroyable import Destroyable
+from turtletui.compat.graph_info import (
+    NodeNameNonExistentError,
+    TopicEndpointInfo,
+    TopicEndpointTypeEnum,
+    endpoints_info,
+)
 from turtletui.compat.logging import RcutilsLogger, get_logger
 from turtletui.compat.parameter import (
     Parameter,
@@ -26,7 +33,7 @@ from turtletui.compat.qos import (
 from turtletui.compat.task import Future
 from turtletui.compat.time import Clock, ClockType, Duration, clock_for
 from turtletui.graph import core
-from turtletui.interfaces import interface_name
+from turtletui.interfaces import copier, interface_name
 
 _NS = 1_000_000_000
 
@@ -66,7 +73,7 @@ def _check_msg_type(msg_type: Any, what: str) -> str:
         ) from None
 
 
-class Publisher:
+class Publisher(Destroyable):
     """Publishes messages of one type on one topic."""
 
     def __init__(self, node: Node, record: core.Publisher, qos_profile: QoSProfile | int) -> None:
@@ -74,30 +81,38 @@ class Publisher:
         self._record = record
         self.msg_type = record.topic.msg_type
         self.qos_profile = qos_profile
-        self._publish = node.context.host.graph.publish
+        self._publish = node._graph.publish
+        self._copy = copier(self.msg_type)
         self._topic = record.topic
+        self._destroyed = False  # read on every publish: an instance attribute is quicker
 
     @property
     def topic_name(self) -> str:
+        self._require_alive()
         return self._topic.name
 
     @property
     def topic(self) -> str:
-        return self._topic.name
+        return self.topic_name
 
     def publish(self, msg: Any) -> None:
-        """Send ``msg`` to every subscriber of the topic."""
+        """Send a copy of ``msg`` to every subscriber of the topic: as with a
+        middleware that serialises, changing ``msg`` afterwards changes nothing sent."""
+        if self._destroyed:
+            self._require_alive()
         if type(msg) is not self.msg_type:
             raise TypeError(
                 f"publish() on {self._topic.name} expects a {self._topic.type_name} message, got "
                 + (_describe(msg))
             )
-        self._publish(self._topic, msg)
+        self._publish(self._topic, self._copy(msg))
 
     def get_subscription_count(self) -> int:
-        return len(self._topic.subscriptions)
+        self._require_alive()
+        return self._node._graph.count_subscribers(self._topic.name)
 
     def wait_for_all_acked(self, timeout: Duration = Duration(seconds=-1)) -> bool:
+        self._require_alive()
         return True
 
     def destroy(self) -> None:
@@ -111,8 +126,8 @@ def _describe(msg: Any) -> str:
         return f"{type(msg).__name__} {msg!r}"
 
 
-class Subscription:
-    """Calls ``callback(msg)`` for each message on a topic."""
+class Subscription(Destroyable):
+    """Calls ``callback(msg)`` for each message on a topic, with its own copy of it."""
 
     def __init__(self, node: Node, record: core.Subscription, callback: Callable, qos_profile: Any) -> None:
         self._node = node
@@ -123,53 +138,57 @@ class Subscription:
 
     @property
     def topic_name(self) -> str:
+        self._require_alive()
         return self._record.topic.name
 
     def destroy(self) -> None:
         self._node.destroy_subscription(self)
 
 
-class Timer:
+class Timer(Destroyable):
     """Calls ``callback()`` every ``timer_period_ns`` of simulated time."""
 
     def __init__(self, node: Node, record: core.Timer) -> None:
         self._node = node
         self._record = record
-        self._last_call: int | None = None
+        self._graph = node._graph
 
     @property
     def timer_period_ns(self) -> int:
+        self._require_alive()
         return self._record.period_ns
 
     def cancel(self) -> None:
-        self._record.canceled = True
+        self._require_alive()
+        self._graph.cancel_timer(self._record)
 
     def is_canceled(self) -> bool:
+        self._require_alive()
         return self._record.canceled
 
     def reset(self) -> None:
-        graph = self._node.context.host.graph
-        self._record.reset(graph.now_ns)
-        graph.reschedule(self._record)
+        self._require_alive()
+        self._graph.reset_timer(self._record)
 
     def is_ready(self) -> bool:
-        graph = self._node.context.host.graph
-        return not self._record.canceled and self._record.next_due <= graph.now_ns
+        self._require_alive()
+        return not self._record.canceled and self._record.next_due <= self._graph.now_ns
 
     def time_since_last_call(self) -> int:
-        graph = self._node.context.host.graph
-        return graph.now_ns - (self._record.next_due - self._record.period_ns)
+        self._require_alive()
+        return self._graph.now_ns - (self._record.next_due - self._record.period_ns)
 
     def time_until_next_call(self) -> int | None:
+        self._require_alive()
         if self._record.canceled:
             return None
-        return self._record.next_due - self._node.context.host.graph.now_ns
+        return self._record.next_due - self._graph.now_ns
 
     def destroy(self) -> None:
         self._node.destroy_timer(self)
 
 
-class Client:
+class Client(Destroyable):
     """A service client: ``call_async(request)`` returns a Future of the response."""
 
     def __init__(self, node: Node, record: core.ServiceClient) -> None:
@@ -180,6 +199,7 @@ class Client:
 
     def call_async(self, request: Any) -> Future:
         """Send ``request``; the Future completes when the response arrives."""
+        self._require_alive()
         if type(request) is not self.srv_type.Request:
             raise TypeError(
                 f"call_async() on {self.srv_name} expects a {self._record.type_name}.Request, got "
@@ -204,7 +224,8 @@ class Client:
         return future.result()
 
     def service_is_ready(self) -> bool:
-        return self._node.context.host.graph.has_service(self.srv_name)
+        self._require_alive()
+        return self._node._graph.has_service(self.srv_name)
 
     def wait_for_service(self, timeout_sec: float | None = None) -> bool:
         """Wait (in simulated time) until the service exists; False on timeout."""
@@ -219,7 +240,7 @@ class Client:
         self._node.destroy_client(self)
 
 
-class Service:
+class Service(Destroyable):
     """A service server calling ``callback(request, response) -> response``."""
 
     def __init__(self, node: Node, record: core.Service, callback: Callable) -> None:
@@ -253,7 +274,7 @@ class Rate:
         pass
 
 
-class Node:
+class Node(Destroyable):
     """A ROS 2 node: the base class of every controller."""
 
     PARAM_REL_TOL = 1e-6
@@ -305,11 +326,12 @@ class Node:
         for param in parameter_overrides or ():
             self._overrides.setdefault(param.name, param.value)
         self._allow_undeclared = allow_undeclared_parameters
+        self._remaps = remaps
         host = self._context.host
         self._graph = host.graph
-        self._record = host.graph.add_node(node_name, namespace, host.owner)
-        self._record.remaps = remaps
-        self._record.parameter_setter = self._set_from_outside
+        self._record = host.graph.add_node(
+            node_name, namespace, host.owner, parameter_setter=self._set_from_outside
+        )
         self._parameters: dict[str, Parameter] = {}
         self._descriptors: dict[str, ParameterDescriptor] = {}
         self._on_set: list[Callable] = []
@@ -317,7 +339,6 @@ class Node:
         self._logger = get_logger(f"{namespace.strip('/').replace('/', '.')}.{node_name}".lstrip("."))
         self._clock = clock_for(self._context, ClockType.ROS_TIME)
         self._context.track_node(self)
-        self._destroyed = False
         if automatically_declare_parameters_from_overrides:
             for name, value in overrides.items():
                 self.declare_parameter(name, value)
@@ -336,12 +357,15 @@ class Node:
         self._executor = value
 
     def get_name(self) -> str:
+        self._require_alive()
         return self._record.name
 
     def get_namespace(self) -> str:
+        self._require_alive()
         return self._record.namespace or "/"
 
     def get_fully_qualified_name(self) -> str:
+        self._require_alive()
         return self._record.fqn
 
     def get_logger(self) -> RcutilsLogger:
@@ -352,25 +376,25 @@ class Node:
 
     # -- names ----------------------------------------------------------------
     def resolve_topic_name(self, topic: str, *, only_expand: bool = False) -> str:
-        """Expand ``~``, relative names and remappings, as rcl does."""
+        """Expand ``~``, relative names and (unless ``only_expand``) remappings, as rcl does."""
+        self._require_alive()
+        remaps = {} if only_expand else self._remaps
+        if isinstance(topic, str) and topic in remaps:
+            topic = remaps[topic]
+        name = self._expand_topic_name(topic)
+        return _checked_topic(remaps.get(name, name), topic)
+
+    def _expand_topic_name(self, topic: str) -> str:
+        """``topic`` as a fully qualified name, not remapped (what graph queries use)."""
         if not isinstance(topic, str) or not topic:
             raise ValueError(f"Invalid topic name {topic!r}: it must be a non-empty string")
-        remaps = self._record.remaps
-        if topic in remaps:
-            topic = remaps[topic]
         if topic.startswith("~"):
             name = self._record.fqn + topic[1:]
         elif topic.startswith("/"):
             name = topic
         else:
             name = f"{self._record.namespace.rstrip('/')}/{topic}"
-        name = remaps.get(name, name)
-        if not _valid_topic(name):
-            raise ValueError(
-                f"Invalid topic name {topic!r}: use letters, digits, underscores and '/', "
-                "without spaces, '//' or a trailing '/'"
-            )
-        return name
+        return _checked_topic(name, topic)
 
     # -- entities ---------------------------------------------------------------
     def create_publisher(
@@ -384,9 +408,12 @@ class Node:
         qos_overriding_options: Any = None,
         publisher_class: type[Publisher] = Publisher,
     ) -> Publisher:
+        self._require_alive()
         _check_msg_type(msg_type, "create_publisher()")
         depth = depth_of(qos_profile)
-        record = self._graph.add_publisher(self._record, self.resolve_topic_name(topic), msg_type, depth)
+        record = self._graph.add_publisher(
+            self._record, self.resolve_topic_name(topic), msg_type, depth, qos=qos_profile
+        )
         publisher = Publisher(self, record, qos_profile)
         self._entities.append(publisher)
         return publisher
@@ -404,13 +431,20 @@ class Node:
         raw: bool = False,
         content_filter_options: Any = None,
     ) -> Subscription:
+        self._require_alive()
         _check_msg_type(msg_type, "create_subscription()")
         if not callable(callback):
             raise TypeError(f"create_subscription() needs a callable callback, got {callback!r}")
         depth = depth_of(qos_profile)
         host = self._context.host
         record = self._graph.add_subscription(
-            self._record, self.resolve_topic_name(topic), msg_type, depth, host.wrap_callback(callback)
+            self._record,
+            self.resolve_topic_name(topic),
+            msg_type,
+            depth,
+            host.wrap_callback(callback),
+            qos=qos_profile,
+            copy=copier(msg_type),
         )
         subscription = Subscription(self, record, callback, qos_profile)
         self._entities.append(subscription)
@@ -432,10 +466,12 @@ class Node:
             raise TypeError(f"create_timer() needs a callable callback, got {callback!r}")
         host = self._context.host
         record = self._graph.add_timer(
-            self._record, max(1, int(round(timer_period_sec * _NS))), host.wrap_callback(callback)
+            self._record,
+            max(1, int(round(timer_period_sec * _NS))),
+            host.wrap_callback(callback),
+            # rclpy lets a destroyed node make a timer; no executor calls it
+            autostart=autostart and not self._destroyed,
         )
-        if not autostart:
-            record.canceled = True
         timer = Timer(self, record)
         self._entities.append(timer)
         return timer
@@ -451,6 +487,7 @@ class Node:
         qos_profile: QoSProfile = qos_profile_services_default,
         callback_group: Any = None,
     ) -> Client:
+        self._require_alive()
         _check_srv_type(srv_type, "create_client()")
         record = self._graph.add_client(self._record, self.resolve_topic_name(srv_name), srv_type)
         client = Client(self, record)
@@ -466,6 +503,7 @@ class Node:
         qos_profile: QoSProfile = qos_profile_services_default,
         callback_group: Any = None,
     ) -> Service:
+        self._require_alive()
         _check_srv_type(srv_type, "create_service()")
         host = self._context.host
         name = self.resolve_topic_name(srv_name)
@@ -485,36 +523,34 @@ class Node:
         return service
 
     # -- destruction ---------------------------------------------------------------
+    # As in rclpy: True when the entity was this node's and is destroyed now,
+    # False otherwise (another node's, or destroyed already); using it after
+    # raises InvalidHandle.
     def destroy_publisher(self, publisher: Publisher) -> bool:
-        self._graph.remove_endpoint(publisher._record)
-        return self._forget(publisher)
+        return self._destroy_entity(publisher, self._graph.remove_endpoint)
 
     def destroy_subscription(self, subscription: Subscription) -> bool:
-        self._graph.remove_endpoint(subscription._record)
-        return self._forget(subscription)
+        return self._destroy_entity(subscription, self._graph.remove_endpoint)
 
     def destroy_timer(self, timer: Timer) -> bool:
-        timer._record.canceled = True
-        return self._forget(timer)
+        return self._destroy_entity(timer, self._graph.cancel_timer)
 
     def destroy_client(self, client: Client) -> bool:
-        if client._record in self._graph.clients:
-            self._graph.clients.remove(client._record)
-        return self._forget(client)
+        return self._destroy_entity(client, self._graph.remove_client)
 
     def destroy_service(self, service: Service) -> bool:
-        if self._graph.services.get(service.srv_name) is service._record:
-            del self._graph.services[service.srv_name]
-        return self._forget(service)
+        return self._destroy_entity(service, self._graph.remove_service)
 
     def destroy_rate(self, rate: Rate) -> bool:
         return True
 
-    def _forget(self, entity: Any) -> bool:
-        if entity in self._entities:
-            self._entities.remove(entity)
-            return True
-        return False
+    def _destroy_entity(self, entity: Any, remove: Callable[[Any], Any]) -> bool:
+        if entity not in self._entities:
+            return False
+        self._entities.remove(entity)
+        remove(entity._record)
+        entity._destroyed = True
+        return True
 
     def destroy_node(self) -> None:
         """Remove the node and all its entities from the graph."""
@@ -522,33 +558,113 @@ class Node:
             return
         self._destroyed = True
         self._graph.remove_node(self._record)
+        for entity in self._entities:
+            entity._destroyed = True
         self._entities.clear()
         self._context.untrack_node(self)
 
     # -- graph queries ----------------------------------------------------------------
+    # Names are expanded but not remapped, as rclpy's queries do (except the
+    # *_info_by_topic ones, which remap too).
     def count_publishers(self, topic_name: str) -> int:
-        topic = self._graph.topics.get(self.resolve_topic_name(topic_name))
-        return len(topic.publishers) if topic else 0
+        self._require_alive()
+        return self._graph.count_publishers(self._expand_topic_name(topic_name))
 
     def count_subscribers(self, topic_name: str) -> int:
-        topic = self._graph.topics.get(self.resolve_topic_name(topic_name))
-        return len(topic.subscriptions) if topic else 0
+        self._require_alive()
+        return self._graph.count_subscribers(self._expand_topic_name(topic_name))
+
+    def count_clients(self, service_name: str) -> int:
+        self._require_alive()
+        return self._graph.count_clients(self._expand_topic_name(service_name))
+
+    def count_services(self, service_name: str) -> int:
+        self._require_alive()
+        return self._graph.count_services(self._expand_topic_name(service_name))
+
+    def get_publishers_info_by_topic(self, topic_name: str, no_mangle: bool = False) -> list[TopicEndpointInfo]:
+        """A TopicEndpointInfo per publisher on the topic."""
+        name = self._info_topic_name(topic_name, no_mangle)
+        return endpoints_info(self._graph.publishers_of(name), TopicEndpointTypeEnum.PUBLISHER)
+
+    def get_subscriptions_info_by_topic(
+        self, topic_name: str, no_mangle: bool = False
+    ) -> list[TopicEndpointInfo]:
+        """A TopicEndpointInfo per subscription of the topic."""
+        name = self._info_topic_name(topic_name, no_mangle)
+        return endpoints_info(self._graph.subscriptions_of(name), TopicEndpointTypeEnum.SUBSCRIPTION)
+
+    def _info_topic_name(self, topic_name: str, no_mangle: bool) -> str:
+        self._require_alive()
+        if no_mangle:
+            return topic_name
+        name = self._expand_topic_name(topic_name)
+        return self._remaps.get(name, name)
 
     def get_topic_names_and_types(self, no_demangle: bool = False) -> list[tuple[str, list[str]]]:
-        return sorted(
-            (name, [topic.type_name])
-            for name, topic in self._graph.topics.items()
-            if topic.publishers or topic.subscriptions
-        )
+        self._require_alive()
+        return self._graph.topic_names_and_types()
 
     def get_service_names_and_types(self) -> list[tuple[str, list[str]]]:
-        return sorted((name, [s.type_name]) for name, s in self._graph.services.items())
+        self._require_alive()
+        return self._graph.service_names_and_types()
 
     def get_node_names(self) -> list[str]:
-        return [node.name for node in self._graph.nodes]
+        return [name for name, _ in self.get_node_names_and_namespaces()]
 
     def get_node_names_and_namespaces(self) -> list[tuple[str, str]]:
-        return [(node.name, node.namespace or "/") for node in self._graph.nodes]
+        self._require_alive()
+        return self._graph.node_names_and_namespaces()
+
+    def get_node_names_and_namespaces_with_enclaves(self) -> list[tuple[str, str, str]]:
+        return [(name, namespace, "/") for name, namespace in self.get_node_names_and_namespaces()]
+
+    def get_fully_qualified_node_names(self) -> list[str]:
+        return [
+            f"{namespace.rstrip('/')}/{name}" for name, namespace in self.get_node_names_and_namespaces()
+        ]
+
+    def wait_for_node(self, fully_qualified_node_name: str, timeout: float) -> bool:
+        """Wait (in simulated time) until the node is in the graph; False on timeout."""
+
+        def found() -> bool:
+            return fully_qualified_node_name in self.get_fully_qualified_node_names()
+
+        if found():
+            return True
+        return self._context.host.spin_until(found, int(timeout * _NS), callbacks=False)
+
+    def get_publisher_names_and_types_by_node(
+        self, node_name: str, node_namespace: str, no_demangle: bool = False
+    ) -> list[tuple[str, list[str]]]:
+        return self._names_and_types_by_node(node_name, node_namespace, "publishers", "publisher")
+
+    def get_subscriber_names_and_types_by_node(
+        self, node_name: str, node_namespace: str, no_demangle: bool = False
+    ) -> list[tuple[str, list[str]]]:
+        return self._names_and_types_by_node(node_name, node_namespace, "subscriptions", "subscriber")
+
+    def get_service_names_and_types_by_node(
+        self, node_name: str, node_namespace: str
+    ) -> list[tuple[str, list[str]]]:
+        return self._names_and_types_by_node(node_name, node_namespace, "services", "service")
+
+    def get_client_names_and_types_by_node(
+        self, node_name: str, node_namespace: str
+    ) -> list[tuple[str, list[str]]]:
+        return self._names_and_types_by_node(node_name, node_namespace, "clients", "client")
+
+    def _names_and_types_by_node(
+        self, node_name: str, node_namespace: str, kind: core.EndpointKind, noun: str
+    ) -> list[tuple[str, list[str]]]:
+        self._require_alive()
+        record = self._graph.find_node(node_name, node_namespace)
+        if record is None:
+            raise NodeNameNonExistentError(
+                f"cannot get {noun} names and types for nonexistent node: "
+                f"{node_namespace.rstrip('/')}/{node_name}"
+            )
+        return self._graph.names_and_types_by_node(record, kind)
 
     # -- parameters ----------------------------------------------------------------
     def declare_parameter(
@@ -559,6 +675,7 @@ class Node:
         ignore_override: bool = False,
     ) -> Parameter:
         """Declare a parameter; a ``--ros-args -p`` override of the same type wins."""
+        self._require_alive()
         if name in self._parameters:
             raise ParameterAlreadyDeclaredException([name])
         if isinstance(value, ParameterValue):
@@ -595,6 +712,7 @@ class Node:
         return declared
 
     def undeclare_parameter(self, name: str) -> None:
+        self._require_alive()
         if name not in self._parameters:
             raise ParameterNotDeclaredException(name)
         del self._parameters[name]
@@ -644,6 +762,7 @@ class Node:
         return self._set_parameters(parameter_list)
 
     def _set_parameters(self, parameters: list[Parameter]) -> SetParametersResult:
+        self._require_alive()
         for parameter in parameters:
             if parameter.name not in self._parameters and not self._allow_undeclared:
                 raise ParameterNotDeclaredException(parameter.name)
@@ -672,6 +791,15 @@ class Node:
 
 def _valid_name(name: str) -> bool:
     return (name[0].isalpha() or name[0] == "_") and all(c.isalnum() or c == "_" for c in name)
+
+
+def _checked_topic(name: str, given: str) -> str:
+    if not _valid_topic(name):
+        raise ValueError(
+            f"Invalid topic name {given!r}: use letters, digits, underscores and '/', "
+            "without spaces, '//' or a trailing '/'"
+        )
+    return name
 
 
 def _valid_topic(name: str) -> bool:

@@ -6,12 +6,14 @@ import re
 from dataclasses import dataclass, field
 from typing import Any
 
+from turtletui.errors import TurtletuiError
+
 _INT = re.compile(r"[-+]?(0|[1-9][0-9]*)\Z")
 _FLOAT = re.compile(r"[-+]?(\d+\.\d*|\.\d+|\d+)([eE][-+]?\d+)?\Z")
 _NAME = re.compile(r"[A-Za-z_~/][A-Za-z0-9_./~]*\Z")
 
 
-class RosArgsError(ValueError):
+class RosArgsError(TurtletuiError, ValueError):
     """A malformed ``--ros-args`` section; the message names the argument."""
 
 

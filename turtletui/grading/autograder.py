@@ -32,6 +32,7 @@ import shutil
 from pathlib import Path
 from string import Template
 
+from turtletui.errors import TurtletuiError
 from turtletui.grading.reports import ReportError, write_text_atomic
 
 GRADESCOPE_VENV = "/opt/turtletui"
@@ -50,7 +51,7 @@ GITHUB_STEP_ID = "turtletui"
 """The grading step's id; the reporter reads its result from ``TURTLETUI_RESULTS``."""
 
 
-class AutograderError(ValueError):
+class AutograderError(TurtletuiError, ValueError):
     """Autograder files that cannot be written; the message is one line."""
 
 

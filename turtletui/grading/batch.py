@@ -37,6 +37,7 @@ from turtletui.grading.results import GradeReport, SubmissionResult
 from turtletui.grading.store import ResultStore, store_key  # noqa: F401 - where callers found them
 from turtletui.grading.submissions import Submission
 from turtletui.lessons.loader import load_lesson
+from turtletui.plugins.manager import Plugins, extra_paths
 from turtletui.runtime import forkserver, wire
 from turtletui.runtime.loader import ControllerError, ControllerSpec, check_source
 from turtletui.runtime.sandbox import Limits
@@ -218,7 +219,7 @@ def grade_submissions(
     jobs: int = 1,
     force: bool = False,
     limits: Limits | None = None,
-    plugins: Sequence[str | Path] = (),
+    plugins: Plugins = (),
     on_result: Callable[[SubmissionResult, bool], None] | None = None,
     workdir: Callable[[Submission], Submission] | None = None,
     recording_format: str = "mcap",
@@ -230,6 +231,8 @@ def grade_submissions(
 ) -> GradeReport:
     """Grade every submission (reusing stored results unless ``force``).
 
+    ``plugins`` is the plugin manager the plan was prepared with (or extra
+    plugin paths): workers started afresh load the same plugin files once.
     Failed visible runs are recorded in ``recording_format`` ("mcap" or
     "jsonl") in the store's recordings folder.
     ``on_result(result, reused)`` is called as each submission's result is known,
@@ -432,7 +435,7 @@ def _run_parallel(
     tasks: list[tuple[Any, ...]],
     jobs: int,
     limits: Limits | None,
-    plugins: Sequence[str | Path],
+    plugins: Plugins,
     start: Callable[[tuple[Any, ...]], tuple[Any, ...] | None],
     done: Callable[[str, RunOutcome, float], None],
     tick: Callable[[], None],
@@ -455,7 +458,7 @@ def _run_pool(
     queue: list[tuple[Any, ...]],
     jobs: int,
     limits: Limits | None,
-    plugins: Sequence[str | Path],
+    plugins: Plugins,
     start: Callable[[tuple[Any, ...]], tuple[Any, ...] | None],
     done: Callable[[str, RunOutcome, float], None],
     tick: Callable[[], None],
@@ -477,7 +480,8 @@ def _run_pool(
         max_workers=min(jobs, len(queue)),
         mp_context=context,
         initializer=_init_worker,
-        initargs=(str(plan.lesson.path), [str(p) for p in plugins], limits, os.getpid(), next_cpu),
+        # a worker started afresh (no fork) builds its own plugin manager once, from these
+        initargs=(str(plan.lesson.path), extra_paths(plugins), limits, os.getpid(), next_cpu),
     )
     lost: list[tuple[Any, ...]] = []
     try:

@@ -17,13 +17,14 @@ import tarfile
 from collections.abc import Iterator, Sequence
 from pathlib import Path
 
+from turtletui.errors import TurtletuiError
 from turtletui.grading.submissions import ignored
 
 MAX_BUNDLE_BYTES = 64 * 1024**2
 """Bytes of files one bundle may hold (a submission is a few source files)."""
 
 
-class BundleError(ValueError):
+class BundleError(TurtletuiError, ValueError):
     """Files that cannot be sent; one line naming them."""
 
 

@@ -20,7 +20,8 @@ from functools import cached_property
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from turtletui.grading.checks import BUILTIN_CHECKS, Check, Verdict
+from turtletui.errors import TurtletuiError, UsageError
+from turtletui.grading.checks import Check, Verdict
 from turtletui.grading.pictures import picture_of_trace
 from turtletui.grading.results import FAILED, PASSED, Picture, SubmissionResult, TestResult
 from turtletui.grading.trace import Trace, TraceCollector
@@ -28,6 +29,7 @@ from turtletui.graph.logs import INFO, LogRecord
 from turtletui.lessons.loader import display_path
 from turtletui.lessons.model import CheckSpec, Lesson, Scenario
 from turtletui.messages import did_you_mean
+from turtletui.plugins.manager import Plugins, collect_checks, plugin_manager
 from turtletui.runtime.loader import ControllerSpec
 from turtletui.runtime.recorder import open_recorder
 from turtletui.runtime.report import CrashReport
@@ -45,7 +47,7 @@ OBSTACLE_START_CLEARANCE = 0.5
 """...and this many from every obstacle."""
 
 
-class GradingError(ValueError):
+class GradingError(TurtletuiError, ValueError):
     """A lesson that cannot be graded; the message is one line naming the file."""
 
 
@@ -188,18 +190,21 @@ def twin_start(
     raise GradingError(f"no start {TWIN_APART} m from ({start[0]:.2f}, {start[1]:.2f}) for a twin run (seed {seed})")
 
 
-def available_checks(plugins: Sequence[str | Path] = ()) -> dict[str, Check]:
-    """The built-in checks and those plugins register (a plugin's wins)."""
-    from turtletui.plugins.manager import collect_checks, get_plugin_manager
-
-    checks = dict(BUILTIN_CHECKS)
-    for name, entry in collect_checks(get_plugin_manager(extra=plugins)).items():
-        checks[name] = Check(name, entry.object, entry.description)
+def available_checks(plugins: Plugins = ()) -> dict[str, Check]:
+    """The checks plugins register, the built-in plugin's among them (a later
+    plugin's wins); ``plugins`` is the plugin manager, or extra plugin paths."""
+    checks = {}
+    for name, entry in collect_checks(plugin_manager(plugins)).items():
+        if isinstance(entry.object, Check):
+            description = entry.description or entry.object.description
+            checks[name] = replace(entry.object, name=name, description=description)
+        else:
+            checks[name] = Check(name, entry.object, entry.description)
     return checks
 
 
 def prepare(
-    lesson: Lesson, *, plugins: Sequence[str | Path] = (), checks: dict[str, Check] | None = None
+    lesson: Lesson, *, plugins: Plugins = (), checks: dict[str, Check] | None = None
 ) -> GradingPlan:
     """Check that every check a lesson names exists and takes its thresholds,
     and lay out its scenario runs."""
@@ -208,6 +213,7 @@ def prepare(
         raise GradingError(f"{shown}: lesson {lesson.id!r} has no [[scenarios]] to grade")
     if not lesson.checks:
         raise GradingError(f"{shown}: lesson {lesson.id!r} has no [[checks]] to grade")
+    plugins = plugin_manager(plugins)
     resolved, specs = validate(lesson, plugins=plugins, checks=checks)
     worlds = {name: (lambda seed: None) if spec is None else spec.build for name, spec in specs.items()}
     runs = scenario_runs(lesson, lambda name: () if specs[name] is None else specs[name].obstacles)
@@ -215,11 +221,12 @@ def prepare(
 
 
 def validate(
-    lesson: Lesson, *, plugins: Sequence[str | Path] = (), checks: dict[str, Check] | None = None
+    lesson: Lesson, *, plugins: Plugins = (), checks: dict[str, Check] | None = None
 ) -> tuple[tuple[tuple[CheckSpec, Check], ...], dict[str, WorldSpec | None]]:
     """The lesson's checks resolved against the registered ones, and the worlds
     its scenarios name; GradingError (one line, file:line) for an unknown check,
     a threshold it does not take, or an unknown world."""
+    plugins = plugin_manager(plugins)
     known = available_checks(plugins) if checks is None else checks
     shown = display_path(lesson.path)
     resolved = []
@@ -239,7 +246,7 @@ def validate(
     return tuple(resolved), {name: _world_spec(name, plugins, shown) for name in names}
 
 
-def _world_spec(name: str, plugins: Sequence[str | Path], shown: str) -> WorldSpec | None:
+def _world_spec(name: str, plugins: Plugins, shown: str) -> WorldSpec | None:
     """The named world's description; None for turtlesim's own empty arena."""
     if name == "empty":
         return None
@@ -415,7 +422,7 @@ def grade_run(
     ``recording_format``) for ``turtletui replay``, Foxglove or ros2 bag.
     """
     if recording_format not in RECORDING_FORMATS:
-        raise ValueError(f"recording format {recording_format!r}: choose one of {', '.join(RECORDING_FORMATS)}")
+        raise UsageError(f"recording format {recording_format!r}: choose one of {', '.join(RECORDING_FORMATS)}")
     run = plan.runs[run_index]
     # hidden runs are not recorded: a recording would show where they start
     name = f"{_file_name(run.label)}.{recording_format}"

@@ -13,12 +13,13 @@ import tempfile
 from dataclasses import replace
 from pathlib import Path
 
+from turtletui.errors import TurtletuiError
 from turtletui.grading.submissions import Submission
 
 UNPRIVILEGED_USER = "nobody"
 
 
-class IntegrityError(ValueError):
+class IntegrityError(TurtletuiError, ValueError):
     """The grader cannot run student code safely here; one line saying why."""
 
 

@@ -16,6 +16,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from turtletui.errors import TurtletuiError
 from turtletui.grading.results import GradeReport, SubmissionResult
 from turtletui.grading.shards import ClassManifest, manifest_path
 from turtletui.grading.store import (
@@ -32,7 +33,7 @@ NAMES_SHOWN = 8
 """Students named in one line about missing ones; the rest are counted."""
 
 
-class MergeError(ValueError):
+class MergeError(TurtletuiError, ValueError):
     """Results folders that cannot be merged; one line saying which and why."""
 
 

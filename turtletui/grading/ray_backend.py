@@ -37,6 +37,7 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
+from turtletui.errors import TurtletuiError
 from turtletui.grading import batch
 from turtletui.grading.bundles import BundleError, digest, pack, unpack
 from turtletui.grading.engine import GradingPlan, RunOutcome, failed_run
@@ -48,7 +49,7 @@ from turtletui.runtime.sandbox import Limits
 RAY_EXTRA = "pip install 'turtletui[ray]'"
 
 
-class RayBackendError(ValueError):
+class RayBackendError(TurtletuiError, ValueError):
     """Grading on Ray cannot start or go on (no Ray, no cluster, workers that
     differ from the driver); one line saying why."""
 
@@ -258,7 +259,7 @@ def _write_bytes_atomic(target: Path, data: bytes) -> None:
 # -- on a worker ----------------------------------------------------------------------
 
 
-class WorkerMismatch(ValueError):
+class WorkerMismatch(TurtletuiError, ValueError):
     """This worker would not grade as the driver does; one line saying how."""
 
 

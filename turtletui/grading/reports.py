@@ -46,6 +46,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from turtletui.errors import TurtletuiError
 from turtletui.grading.results import GradeReport, SubmissionResult, TestResult
 from turtletui.messages import one_line, plural
 
@@ -94,7 +95,7 @@ student sees the total and cannot tune their code to the hidden starts.
 """
 
 
-class ReportError(ValueError):
+class ReportError(TurtletuiError, ValueError):
     """A report that cannot be rendered or written; the message is one line."""
 
 

@@ -30,6 +30,7 @@ from dataclasses import asdict, dataclass, field, is_dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from turtletui.errors import TurtletuiError
 from turtletui.grading.store import STORE_VERSION
 from turtletui.grading.submissions import Submission
 
@@ -44,7 +45,7 @@ MANIFEST = "class.manifest"
 _SHARD = re.compile(r"\s*(\d+)\s*/\s*(\d+)\s*")
 
 
-class ShardError(ValueError):
+class ShardError(TurtletuiError, ValueError):
     """A ``--shard`` that names no part of a class; one line."""
 
 

@@ -23,9 +23,11 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from turtletui.grading.reports import write_text_atomic
+from turtletui.errors import TurtletuiError
+from turtletui.grading.reports import ReportError, write_text_atomic
 from turtletui.grading.results import SubmissionResult
 from turtletui.grading.submissions import Submission
+from turtletui.plugins.manager import Plugins, extra_paths
 
 if TYPE_CHECKING:
     from turtletui.grading.engine import GradingPlan
@@ -94,7 +96,7 @@ def signature(secret: bytes, data: dict[str, Any]) -> str:
     return hmac.new(secret, body, hashlib.sha256).hexdigest()
 
 
-class SignatureError(ValueError):
+class SignatureError(TurtletuiError, ValueError):
     """A stored file that is not as the grader signed it; one line naming it."""
 
 
@@ -137,9 +139,7 @@ def checkout_of(path: Path) -> Path:
     return path
 
 
-def store_key(
-    plan: GradingPlan, *, plugins: Sequence[str | Path] = (), limits: Any = None
-) -> str:
+def store_key(plan: GradingPlan, *, plugins: Plugins = (), limits: Any = None) -> str:
     """What a stored result depends on besides the student's files: the lesson
     file, the code and thresholds of its checks, the plugins, the sandbox's
     limits and turtletui's version."""
@@ -150,7 +150,7 @@ def store_key(
     for spec, check in plan.checks:
         digest.update(repr((spec.name, spec.weight, sorted(spec.thresholds.items(), key=str))).encode())
         digest.update(_code_of(check.function))
-    for plugin in plugins:
+    for plugin in extra_paths(plugins):
         digest.update(_files_of(Path(plugin)))
     digest.update(repr(limits).encode())
     return f"{plan.lesson.id}:{digest.hexdigest()[:32]}"
@@ -196,7 +196,7 @@ class ResultStore:
             probe.write_text("")
             probe.unlink()
         except OSError as err:
-            raise OSError(f"{folder}: cannot write results there ({err.strerror or err})") from None
+            raise ReportError(f"{folder}: cannot write results there ({err.strerror or err})") from None
         here = folder.resolve()
         self.trusted = not any(
             here == place or place in here.parents for place in (Path(p).resolve() for p in untrusted)

@@ -25,6 +25,8 @@ import re
 from dataclasses import dataclass, replace
 from pathlib import Path
 
+from turtletui.errors import TurtletuiError
+
 MAX_SOURCE_BYTES = 1024 * 1024
 """A controller file larger than this is refused (it is not a student's node)."""
 
@@ -45,7 +47,7 @@ _PACKAGE_FILES = ("setup.py", "setup.cfg", "pyproject.toml", "package.xml")
 """Files besides ``*.py`` that decide what is run: part of a submission's fingerprint."""
 
 
-class SubmissionError(ValueError):
+class SubmissionError(TurtletuiError, ValueError):
     """A path that names no submission at all; one line naming the path."""
 
 

@@ -26,12 +26,14 @@ import tempfile
 import zipfile
 from pathlib import Path
 
+from turtletui.errors import TurtletuiError
+
 DISTRIBUTION = "turtletui"
 _NOT_PACKED = {"RECORD", "INSTALLER", "REQUESTED", "direct_url.json"}
 """dist-info files that describe one installation, not the distribution."""
 
 
-class WheelError(ValueError):
+class WheelError(TurtletuiError, ValueError):
     """The wheel cannot be built; one line saying why."""
 
 

@@ -16,8 +16,9 @@ import heapq
 from collections import deque
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, Literal
 
+from turtletui.errors import TurtletuiError
 from turtletui.graph.logs import INFO, LogRecord
 
 NS_PER_S = 1_000_000_000
@@ -26,8 +27,11 @@ LOCKSTEP_EPOCH_NS = 1_700_000_000 * NS_PER_S
 
 _RATE_WINDOW = 64
 
+EndpointKind = Literal["publishers", "subscriptions", "services", "clients", "action_servers", "action_clients"]
+"""What ``Graph.names_and_types_by_node`` lists."""
 
-class GraphError(Exception):
+
+class GraphError(TurtletuiError):
     """A request the middleware refuses (wrong type on a topic, unknown service...)."""
 
 
@@ -39,7 +43,6 @@ class NodeRecord:
     namespace: str
     owner: str
     parameters: dict[str, Any] = field(default_factory=dict)
-    remaps: dict[str, str] = field(default_factory=dict)
     alive: bool = True
     parameter_setter: Callable[[str, Any], str | None] | None = field(default=None, repr=False)
     """How ``ros2 param set`` reaches the node: ``setter(name, value)`` returns
@@ -58,6 +61,11 @@ class Subscription:
     depth: int
     callback: Callable[[Any], None]
     owner: str
+    qos: Any = None
+    """The QoS the creator asked for, as it gave it (the graph keeps only ``depth``)."""
+    copy: Callable[[Any], Any] | None = None
+    """Makes the subscription's own copy of each message it queues, as a middleware
+    that deserialises per subscription would; None to queue the published object."""
     queue: deque = field(init=False)
     pending: bool = False
     ready_item: tuple = field(init=False, repr=False)
@@ -83,6 +91,8 @@ class Publisher:
     topic: Topic
     depth: int
     owner: str
+    qos: Any = None
+    """The QoS the creator asked for, as it gave it."""
 
 
 class Topic:
@@ -295,8 +305,17 @@ class Graph:
             ready.popleft()[1]()
 
     # -- nodes --------------------------------------------------------------
-    def add_node(self, name: str, namespace: str = "", owner: str = "local") -> NodeRecord:
-        node = NodeRecord(name, namespace or "", owner)
+    def add_node(
+        self,
+        name: str,
+        namespace: str = "",
+        owner: str = "local",
+        *,
+        parameter_setter: Callable[[str, Any], str | None] | None = None,
+    ) -> NodeRecord:
+        """A new node; ``parameter_setter`` is how ``ros2 param set`` reaches it
+        (see NodeRecord.parameter_setter)."""
+        node = NodeRecord(name, namespace or "", owner, parameter_setter=parameter_setter)
         self.nodes.append(node)
         return node
 
@@ -307,6 +326,9 @@ class Graph:
             self.nodes.remove(node)
         for topic in self.topics.values():
             topic.publishers = [p for p in topic.publishers if p.node is not node]
+            for sub in topic.subscriptions:
+                if sub.node is node:
+                    sub.queue.clear()  # nothing more reaches a destroyed node
             topic.subscriptions = [s for s in topic.subscriptions if s.node is not node]
         for name in [n for n, s in self.services.items() if s.node is node]:
             del self.services[name]
@@ -334,6 +356,34 @@ class Graph:
         self.ready.clear()
         self.ready.extend(kept)
 
+    def node_names_and_namespaces(self) -> list[tuple[str, str]]:
+        """(name, namespace) of every node, in creation order; the root namespace is "/"."""
+        return [(node.name, node.namespace or "/") for node in self.nodes]
+
+    def find_node(self, name: str, namespace: str) -> NodeRecord | None:
+        """The live node called ``name`` in ``namespace`` ("/" or "" for the root)."""
+        namespace = namespace.rstrip("/")
+        for node in self.nodes:
+            if node.name == name and node.namespace.rstrip("/") == namespace:
+                return node
+        return None
+
+    def names_and_types_by_node(self, node: NodeRecord, kind: EndpointKind) -> list[tuple[str, list[str]]]:
+        """The names and types of one kind of endpoint ``node`` has, sorted by name."""
+        if kind == "publishers":
+            found = {(t.name, t.type_name) for t in self.topics.values() for p in t.publishers if p.node is node}
+        elif kind == "subscriptions":
+            found = {(t.name, t.type_name) for t in self.topics.values() for s in t.subscriptions if s.node is node}
+        else:
+            records = {
+                "services": self.services.values(),
+                "clients": self.clients,
+                "action_servers": self.action_servers.values(),
+                "action_clients": self.action_clients,
+            }[kind]
+            found = {(r.name, r.type_name) for r in records if r.node is node}
+        return [(name, [type_name]) for name, type_name in sorted(found)]
+
     # -- topics -------------------------------------------------------------
     def topic(self, name: str, msg_type: type) -> Topic:
         """The topic called ``name``, created with ``msg_type`` if new."""
@@ -346,27 +396,72 @@ class Graph:
             )
         return topic
 
-    def add_publisher(self, node: NodeRecord, name: str, msg_type: type, depth: int) -> Publisher:
+    def add_publisher(
+        self, node: NodeRecord, name: str, msg_type: type, depth: int, *, qos: Any = None
+    ) -> Publisher:
         topic = self.topic(name, msg_type)
-        pub = Publisher(node, topic, depth, node.owner)
+        pub = Publisher(node, topic, depth, node.owner, qos)
         topic.publishers.append(pub)
         topic.publisher_owners.add(node.owner)
         return pub
 
     def add_subscription(
-        self, node: NodeRecord, name: str, msg_type: type, depth: int, callback: Callable[[Any], None]
+        self,
+        node: NodeRecord,
+        name: str,
+        msg_type: type,
+        depth: int,
+        callback: Callable[[Any], None],
+        *,
+        qos: Any = None,
+        copy: Callable[[Any], Any] | None = None,
     ) -> Subscription:
+        """Subscribe ``callback`` to topic ``name``; with ``copy``, each message is
+        queued as ``copy(msg)``, the subscription's own (see Subscription.copy)."""
         topic = self.topic(name, msg_type)
-        sub = Subscription(node, topic, depth, callback, node.owner)
+        sub = Subscription(node, topic, depth, callback, node.owner, qos, copy)
         topic.subscriptions.append(sub)
         return sub
 
-    def remove_endpoint(self, endpoint: Publisher | Subscription) -> None:
+    def remove_endpoint(self, endpoint: Publisher | Subscription) -> bool:
+        """Take a publisher or subscription off its topic; False if it was not on it."""
         topic = endpoint.topic
         if isinstance(endpoint, Publisher):
-            topic.publishers = [p for p in topic.publishers if p is not endpoint]
+            kept = [p for p in topic.publishers if p is not endpoint]
+            removed = len(kept) != len(topic.publishers)
+            topic.publishers = kept
         else:
-            topic.subscriptions = [s for s in topic.subscriptions if s is not endpoint]
+            kept = [s for s in topic.subscriptions if s is not endpoint]
+            removed = len(kept) != len(topic.subscriptions)
+            topic.subscriptions = kept
+            endpoint.queue.clear()
+        return removed
+
+    def topic_names_and_types(self) -> list[tuple[str, list[str]]]:
+        """Every topic someone publishes or subscribes to, with its type, sorted by name."""
+        return sorted(
+            (name, [topic.type_name])
+            for name, topic in self.topics.items()
+            if topic.publishers or topic.subscriptions
+        )
+
+    def publishers_of(self, name: str) -> list[Publisher]:
+        """The publishers on topic ``name`` (none for an unknown topic), oldest first."""
+        topic = self.topics.get(name)
+        return list(topic.publishers) if topic is not None else []
+
+    def subscriptions_of(self, name: str) -> list[Subscription]:
+        """The subscriptions of topic ``name`` (none for an unknown topic), oldest first."""
+        topic = self.topics.get(name)
+        return list(topic.subscriptions) if topic is not None else []
+
+    def count_publishers(self, name: str) -> int:
+        topic = self.topics.get(name)
+        return len(topic.publishers) if topic is not None else 0
+
+    def count_subscribers(self, name: str) -> int:
+        topic = self.topics.get(name)
+        return len(topic.subscriptions) if topic is not None else 0
 
     def publish(self, topic: Topic, msg: Any, source: str | None = None) -> None:
         """Deliver ``msg`` to every subscription of ``topic`` except those owned by
@@ -378,7 +473,8 @@ class Graph:
         for sub in topic.subscriptions:
             if sub.owner == source:
                 continue
-            sub.queue.append(msg)
+            copy = sub.copy
+            sub.queue.append(msg if copy is None else copy(msg))
             if not sub.pending:
                 sub.pending = True
                 if ready is None:
@@ -389,12 +485,19 @@ class Graph:
                 tap("topic", (topic, msg))
 
     # -- timers -------------------------------------------------------------
-    def add_timer(self, node: NodeRecord, period_ns: int, callback: Callable[[], None]) -> Timer:
+    def add_timer(
+        self, node: NodeRecord, period_ns: int, callback: Callable[[], None], *, autostart: bool = True
+    ) -> Timer:
+        """A timer calling ``callback`` every ``period_ns``; with ``autostart=False``
+        it starts canceled (``reset_timer`` starts it)."""
         if period_ns <= 0:
             raise GraphError(f"timer period must be positive, got {period_ns / NS_PER_S} s")
         self._seq += 1
         timer = Timer(node, period_ns, callback, node.owner, self.now_ns + period_ns, seq=self._seq)
-        heapq.heappush(self._timers, (timer.next_due, timer.seq, timer))
+        if autostart:
+            heapq.heappush(self._timers, (timer.next_due, timer.seq, timer))
+        else:
+            timer.canceled = True
         return timer
 
     def call_later(self, node: NodeRecord, delay_ns: int, callback: Callable[[], None]) -> Timer:
@@ -408,8 +511,13 @@ class Graph:
         holder.append(self.add_timer(node, delay_ns, fire))
         return holder[0]
 
-    def reschedule(self, timer: Timer) -> None:
-        """Put a reset timer back on the schedule."""
+    def cancel_timer(self, timer: Timer) -> None:
+        """Stop a timer (``reset_timer`` starts it again)."""
+        timer.canceled = True
+
+    def reset_timer(self, timer: Timer) -> None:
+        """Restart a timer: its next call is one period from now."""
+        timer.reset(self.now_ns)
         heapq.heappush(self._timers, (timer.next_due, timer.seq, timer))
 
     # -- services -----------------------------------------------------------
@@ -426,16 +534,39 @@ class Graph:
         self.services[name] = service
         return service
 
+    def remove_service(self, service: Service) -> bool:
+        """Take a service server off the graph: calls queued to it stay
+        unanswered, as in ROS. False if it was not on the graph."""
+        if self.services.get(service.name) is not service:
+            return False
+        del self.services[service.name]
+        return True
+
     def has_service(self, name: str) -> bool:
+        """Whether a server provides service ``name`` (``service_is_ready``)."""
         return name in self.services
 
-    def has_action_server(self, name: str) -> bool:
-        return name in self.action_servers
+    def service_names_and_types(self) -> list[tuple[str, list[str]]]:
+        """Every service with a server, with its type, sorted by name."""
+        return sorted((name, [s.type_name]) for name, s in self.services.items())
+
+    def count_services(self, name: str) -> int:
+        return 1 if name in self.services else 0
+
+    def count_clients(self, name: str) -> int:
+        return sum(1 for c in self.clients if c.name == name)
 
     def add_client(self, node: NodeRecord, name: str, srv_type: type) -> ServiceClient:
         client = ServiceClient(node, name, srv_type, self._type_name(srv_type), node.owner)
         self.clients.append(client)
         return client
+
+    def remove_client(self, client: ServiceClient) -> bool:
+        """Take a service client off the graph; False if it was not on it."""
+        if client not in self.clients:
+            return False
+        self.clients.remove(client)
+        return True
 
     def call(self, name: str, request: Any, on_response: Callable[[Any], None], owner: str) -> None:
         """Queue a call of service ``name``; ``on_response`` runs for ``owner`` with
@@ -451,7 +582,11 @@ class Graph:
                     tap("service", (name, request, response))
             self.ready.append((owner, lambda: on_response(response)))
 
-        self.ready.append((service.owner, lambda: service.handler(request, respond)))
+        def handle() -> None:
+            if self.services.get(name) is service:  # not destroyed meanwhile
+                service.handler(request, respond)
+
+        self.ready.append((service.owner, handle))
 
     # -- actions ------------------------------------------------------------
     def add_action_server(
@@ -463,10 +598,34 @@ class Graph:
         self.action_servers[name] = server
         return server
 
+    def remove_action_server(self, server: ActionServer) -> bool:
+        """Take an action server off the graph; False if it was not on it."""
+        if self.action_servers.get(server.name) is not server:
+            return False
+        del self.action_servers[server.name]
+        return True
+
+    def has_action_server(self, name: str) -> bool:
+        """Whether a server provides action ``name`` (``server_is_ready``)."""
+        return name in self.action_servers
+
+    def action_names_and_types(self) -> list[tuple[str, list[str]]]:
+        """Every action with a server or a client, with its type, sorted by name."""
+        found = {(name, a.type_name) for name, a in self.action_servers.items()}
+        found.update((c.name, c.type_name) for c in self.action_clients)
+        return [(name, [type_name]) for name, type_name in sorted(found)]
+
     def add_action_client(self, node: NodeRecord, name: str, action_type: type) -> ActionClientRecord:
         client = ActionClientRecord(node, name, action_type, self._type_name(action_type), node.owner)
         self.action_clients.append(client)
         return client
+
+    def remove_action_client(self, client: ActionClientRecord) -> bool:
+        """Take an action client off the graph; False if it was not on it."""
+        if client not in self.action_clients:
+            return False
+        self.action_clients.remove(client)
+        return True
 
     def send_goal(
         self,
@@ -509,11 +668,13 @@ class Graph:
     # -- logs ---------------------------------------------------------------
     def log(self, node: str, level: int, msg: str) -> LogRecord:
         record = LogRecord(self.epoch_ns + self.now_ns, self.now_ns / NS_PER_S, level, node, msg)
-        for sink in self.log_sinks:
-            sink(record)
+        # Taps (the recorder) first: a line a Ctrl-C cuts short after it was
+        # shown (sinks print it) is in the record too.
         if self.taps:
             for tap in self.taps:
                 tap("log", record)
+        for sink in self.log_sinks:
+            sink(record)
         return record
 
     def info(self, node: str, msg: str) -> LogRecord:

@@ -8,7 +8,15 @@ from array import array
 from collections.abc import Callable
 from typing import Any
 
-from turtletui.graph.core import NS_PER_S, GoalHandle, Graph, Publisher, Subscription
+from turtletui.graph.core import (
+    NS_PER_S,
+    ActionServer,
+    GoalHandle,
+    Graph,
+    Publisher,
+    Service,
+    Subscription,
+)
 from turtletui.graph.logs import ERROR, INFO, WARN
 from turtletui.interfaces.builtin_interfaces import Time
 from turtletui.interfaces.geometry_msgs import Twist
@@ -90,8 +98,8 @@ class _TurtleEndpoints:
         self.color: Publisher | None = None
         self.scan: Publisher | None = None
         self.cmd_vel: Subscription | None = None
-        self.services: list[str] = []
-        self.action: str | None = None
+        self.services: list[Service] = []
+        self.action: ActionServer | None = None
 
 
 class TurtlesimNode:
@@ -110,8 +118,7 @@ class TurtlesimNode:
         self.graph = graph
         self.name = name
         """The node's name: turtlesim's own, or what ``-r __node:=NAME`` made it."""
-        self.node = graph.add_node(name, owner="sim")
-        self.node.parameter_setter = self.set_parameter
+        self.node = graph.add_node(name, owner="sim", parameter_setter=self.set_parameter)
         self.world = world if world is not None else World(spawn_turtle1=False)
         self._turtles: dict[str, _TurtleEndpoints] = {}
         self._poses: dict[str, Any] = {}
@@ -125,9 +132,8 @@ class TurtlesimNode:
         self._scan_angles = lidar.angles() if lidar is not None else None
         self._caster = RayCaster(self.world.obstacles) if lidar is not None else None
         bg = self.world.background
-        self.node.parameters.update(
-            background_r=bg[0], background_g=bg[1], background_b=bg[2], holonomic=self.world.holonomic
-        )
+        for name, value in zip(PARAMETERS, (*bg, self.world.holonomic), strict=True):
+            graph.set_parameter(self.node, name, value)
         self._log(INFO, f"Starting turtlesim with node name {self.node.fqn}")
         node = self.node
         graph.add_service(node, "/clear", Empty, self._clear)
@@ -165,7 +171,7 @@ class TurtlesimNode:
         publish = graph.publish
         trusted_pose = Pose._trusted
         poses = self._poses
-        for turtle in world._order:
+        for turtle in world.turtles_in_order:
             ends = turtles[turtle.name]
             vx, vy = turtle.vx, turtle.vy
             speed = (vx * vx + vy * vy) ** 0.5
@@ -183,7 +189,7 @@ class TurtlesimNode:
     def _publish_scans(self) -> None:
         world, graph = self.world, self.graph
         lidar = world.lidar
-        order = world._order
+        order = world.turtles_in_order
         noise = None
         if lidar.noise_std > 0.0:
             noise = world.rng.normal(0.0, lidar.noise_std, (len(order), lidar.samples))
@@ -236,11 +242,11 @@ class TurtlesimNode:
         if name == "holonomic":
             self.world.holonomic = value
         else:
-            self.node.parameters[name] = value
-            params = self.node.parameters
-            self.world.set_background((params["background_r"], params["background_g"], params["background_b"]))
+            background = list(self.world.background)
+            background[PARAMETERS.index(name)] = value
+            self.world.set_background(tuple(background))
             self.world.take_events()
-        self.node.parameters[name] = value
+        self.graph.set_parameter(self.node, name, value)
         return None
 
     # -- services ---------------------------------------------------------------
@@ -312,24 +318,25 @@ class TurtlesimNode:
             ),
         }
         for short, (srv_type, apply) in services.items():
-            service = f"/{name}/{short}"
-            graph.add_service(node, service, srv_type, self._turtle_service(name, srv_type, apply))
-            ends.services.append(service)
-        ends.action = f"/{name}/rotate_absolute"
-        graph.add_action_server(node, ends.action, RotateAbsolute, lambda handle: self._on_goal(name, handle))
+            handler = self._turtle_service(name, srv_type, apply)
+            ends.services.append(graph.add_service(node, f"/{name}/{short}", srv_type, handler))
+        ends.action = graph.add_action_server(
+            node, f"/{name}/rotate_absolute", RotateAbsolute, lambda handle: self._on_goal(name, handle)
+        )
         self._turtles[name] = ends
 
     def _remove_turtle(self, name: str) -> None:
         ends = self._turtles.pop(name, None)
         if ends is None:
             return
+        graph = self.graph
         for endpoint in (ends.pose, ends.color, ends.scan, ends.cmd_vel):
             if endpoint is not None:
-                self.graph.remove_endpoint(endpoint)
+                graph.remove_endpoint(endpoint)
         for service in ends.services:
-            self.graph.services.pop(service, None)
-        if ends.action:
-            self.graph.action_servers.pop(ends.action, None)
+            graph.remove_service(service)
+        if ends.action is not None:
+            graph.remove_action_server(ends.action)
 
     # -- rotate_absolute ------------------------------------------------------------
     def _on_goal(self, turtle: str, handle: GoalHandle) -> None:

@@ -21,6 +21,8 @@ from array import array as _array
 from math import isinf as _isinf
 from operator import attrgetter as _attrgetter
 
+from turtletui.errors import TurtletuiError
+
 TYPE_CHECKING = False
 if TYPE_CHECKING:
     from collections.abc import Callable
@@ -31,7 +33,7 @@ _F64_BOUND = 1.7976931348623157e+308
 _new = object.__new__
 
 
-class InterfaceError(ValueError):
+class InterfaceError(TurtletuiError, ValueError):
     """Bad interface name or bad message data (e.g. in ``from_dict``).
 
     ``type_name`` is the full ROS name involved (or ``''``), ``path`` the field
@@ -440,7 +442,35 @@ def _build(cls: type) -> None:
             body.append(f'        self.{spec.slot} = {n} if {n}.__class__ is _T{i} else _c{i}({n})')
         else:
             body.append(f'    self.{spec.slot} = {_init_expr(spec, i)}')
+    copy_lines = []
+    for i, spec in enumerate(specs):
+        value = f'_s.{spec.slot}'
+        inner = spec.msg_cls._FIELDS if spec.array == _SCALAR and spec.kind == 'msg' else None
+        if inner is not None and all(f.array == _SCALAR and f.kind != 'msg' for f in inner):
+            # A flat nested message (Vector3 in Twist) is copied inline: no call.
+            copy_lines.append(f'    _n = {value}')
+            copy_lines.append(f'    _v = _new(_T{i})')
+            copy_lines.extend(f'    _v.{f.slot} = _n.{f.slot}' for f in inner)
+            copy_lines.append(f'    _o.{spec.slot} = _v')
+            continue
+        if spec.kind == 'msg':
+            _build(spec.msg_cls)
+            ns[f'_y{i}'] = spec.msg_cls._copy
+            if spec.array == _SCALAR:
+                value = f'_y{i}({value})'
+            else:
+                value = f'[_y{i}(_m) for _m in {value}]'
+        elif spec.array != _SCALAR:
+            # a numeric sequence is an array.array (sliced: a new array of the
+            # same type), anything else a list or another sequence (a new list)
+            value = f'{value}[:]' if spec.typecode is not None and spec.array != _FIXED \
+                else f'list({value})'
+        copy_lines.append(f'    _o.{spec.slot} = {value}')
     src = [
+        'def _copy(_s):',
+        '    _o = _new(_cls)',
+        *copy_lines,
+        '    return _o',
         f"def __init__(self, *, {''.join(params)}check_fields=None, **_kw):",
         '    if _kw:',
         '        _bad(self, _kw)',
@@ -455,14 +485,16 @@ def _build(cls: type) -> None:
         '    return _o',
     ]
     exec(compile('\n'.join(src) + '\n', f'<turtletui {cls._TYPE_NAME}>', 'exec'), ns)
-    for func in (ns['__init__'], ns['_trusted'], ns['_make_default']):
+    for func in (ns['__init__'], ns['_trusted'], ns['_make_default'], ns['_copy']):
         func.__qualname__ = f'{cls.__name__}.{func.__name__}'
         func.__module__ = cls.__module__
     ns['__init__'].__doc__ = f'Create a {cls._TYPE_NAME} message (keyword-only fields).'
     ns['_trusted'].__doc__ = _TRUSTED_DOC
+    ns['_copy'].__doc__ = _COPY_DOC
     cls.__init__ = ns['__init__']
     cls._trusted = staticmethod(ns['_trusted'])
     cls._make_default = staticmethod(ns['_make_default'])
+    cls._copy = staticmethod(ns['_copy'])
     cls._BUILT = True
 
 
@@ -473,11 +505,22 @@ _TRUSTED_DOC = (
 )
 
 
+_COPY_DOC = (
+    'A copy of a message of this class that shares nothing mutable with it (what '
+    'a subscriber gets from a middleware that serialises): fields copied as they '
+    'are, without checks, nested messages and sequences copied too.'
+)
+
+
 def _lazy_methods(cls: type) -> None:
     """Stubs that compile the real methods on first use, then delegate."""
     def __init__(self: Message, *args: Any, **kwargs: Any) -> None:
         _build(cls)
         cls.__init__(self, *args, **kwargs)
+
+    def _copy(msg: Message) -> Message:
+        _build(cls)
+        return cls._copy(msg)
 
     def _trusted(*values: Any) -> Message:
         _build(cls)
@@ -488,9 +531,11 @@ def _lazy_methods(cls: type) -> None:
         return cls._make_default()
 
     _trusted.__doc__ = _TRUSTED_DOC
+    _copy.__doc__ = _COPY_DOC
     cls.__init__ = __init__
     cls._trusted = staticmethod(_trusted)
     cls._make_default = staticmethod(_make_default)
+    cls._copy = staticmethod(_copy)
 
 
 def _make_property(spec: FieldSpec) -> property:
@@ -517,7 +562,7 @@ def _make_property(spec: FieldSpec) -> property:
 # factories
 # --------------------------------------------------------------------------
 
-_RESERVED = frozenset(dir(Message)) | {'_BUILT', '_trusted', '_make_default', 'self',
+_RESERVED = frozenset(dir(Message)) | {'_BUILT', '_trusted', '_make_default', '_copy', 'self',
                                        'check_fields'}
 
 

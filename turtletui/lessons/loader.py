@@ -16,15 +16,19 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable, Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 try:
     import tomllib
 except ModuleNotFoundError:  # Python 3.10
     import tomli as tomllib
 
+from turtletui.errors import TurtletuiError
 from turtletui.lessons.model import DEFAULT_START, ArenaOverlay, CheckSpec, Lesson, Scenario
 from turtletui.messages import did_you_mean, one_line
+
+if TYPE_CHECKING:
+    from turtletui.plugins.manager import Plugins
 
 FENCE = "+++"
 ID_PATTERN = re.compile(r"[a-z0-9][a-z0-9-]*")
@@ -51,7 +55,7 @@ CHECK_FIELDS = ("name", "label", "weight", "feedback", "thresholds", "scenarios"
 OVERLAY_FIELDS = ("x0", "y0", "x1", "y1", "color")
 
 
-class LessonError(ValueError):
+class LessonError(TurtletuiError, ValueError):
     """A lesson file that cannot be used; the message is one line, ``FILE:LINE: ...``."""
 
 
@@ -557,17 +561,16 @@ def lesson_files(source: Path) -> list[Path]:
     raise LessonError(f"{display_path(source)}: no such lesson file or folder")
 
 
-def lesson_sources(plugins: Sequence[str | Path] = ()) -> list[Path]:
+def lesson_sources(plugins: Plugins = ()) -> list[Path]:
     """The lesson files and folders plugins register (the built-in plugin registers
-    the bundled lessons/ folder); ``plugins`` are extra plugin files or folders."""
-    from turtletui.plugins.manager import collect_lessons, get_plugin_manager
+    the bundled lessons/ folder); ``plugins`` is the plugin manager, or extra
+    plugin files or folders."""
+    from turtletui.plugins.manager import collect_lessons, plugin_manager
 
-    return collect_lessons(get_plugin_manager(extra=plugins))
+    return collect_lessons(plugin_manager(plugins))
 
 
-def discover_lessons(
-    extra_folders: Iterable[str | Path] = (), plugins: Sequence[str | Path] = ()
-) -> list[Lesson]:
+def discover_lessons(extra_folders: Iterable[str | Path] = (), plugins: Plugins = ()) -> list[Lesson]:
     """Every lesson registered by plugins and in ``extra_folders`` (folders or files),
     sorted by part (lessons without one last), then id. Two lessons with the same
     id are an error naming both files."""
@@ -609,7 +612,7 @@ def looks_like_path(text: str) -> bool:
 def find_lesson(
     id_or_path: str | Path,
     extra_folders: Iterable[str | Path] = (),
-    plugins: Sequence[str | Path] = (),
+    plugins: Plugins = (),
 ) -> Lesson:
     """The lesson with this id among :func:`discover_lessons`, or the lesson file at
     this path; an unknown id is an error listing the known ones."""

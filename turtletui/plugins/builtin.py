@@ -1,7 +1,6 @@
 """The built-in plugin: the course's reference controllers, bundled lessons
-and worlds.
-
-Checks arrive with issue 4.
+and worlds. (The grading engine's checks are another built-in plugin,
+turtletui.grading.builtin_checks.)
 """
 
 from __future__ import annotations

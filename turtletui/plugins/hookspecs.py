@@ -10,10 +10,10 @@ calls it once per thing it provides (the pattern of llm's
 
 Hooks are called when turtletui collects what plugins provide (at start-up of
 ``turtletui run``, ``turtletui grade``, ``turtletui plugins``, ...), once per
-plugin, in the order plugins were loaded: built-in plugins, then installed
-packages (entry points), then files named with ``--plugin``. When two plugins
-register the same name, the one loaded later wins. A hook's return value is
-ignored.
+command and plugin, in the order plugins were loaded: built-in plugins (among
+them the grading engine's own checks), then installed packages (entry
+points), then files named with ``--plugin``. When two plugins register the
+same name, the one loaded later wins. A hook's return value is ignored.
 """
 
 from __future__ import annotations

@@ -11,7 +11,11 @@ one loaded later wins (with a warning on stderr):
 
 A plugin that fails to import or to register is reported on stderr in one
 line naming it, and the others still load. Nothing happens at import time:
-:func:`get_plugin_manager` builds a fresh manager on every call.
+:func:`get_plugin_manager` builds a fresh manager on every call, so a command
+builds one and passes it down (library functions take it as ``plugins``, or
+extra plugin paths to build one from). A manager calls each registration hook
+once, through pluggy, and keeps what it collected until a plugin is
+registered or unregistered.
 """
 
 from __future__ import annotations
@@ -33,8 +37,11 @@ import pluggy
 
 from turtletui.plugins import PROJECT_NAME, hookspecs
 
-BUILTIN_PLUGINS: tuple[str, ...] = ("turtletui.plugins.builtin",)
-"""Modules registered as plugins before anything else."""
+BUILTIN_PLUGINS: tuple[str, ...] = ("turtletui.plugins.builtin", "turtletui.grading.builtin_checks")
+"""Modules registered as plugins before anything else: the reference
+controllers, bundled lessons and worlds, and the grading engine's own checks
+(named, not imported, here: the grading layer sits above this one, as pytest
+names its own features' plugins)."""
 
 ENTRY_POINT_GROUP = PROJECT_NAME
 """The entry-point group installed plugins declare (``[project.entry-points.turtletui]``)."""
@@ -46,12 +53,26 @@ BUILTIN_SOURCE = "builtin"
 
 
 class TurtletuiPluginManager(pluggy.PluginManager):
-    """A pluggy PluginManager that remembers where each plugin came from."""
+    """A pluggy PluginManager that remembers where each plugin came from and
+    what the registration hooks gave."""
 
     def __init__(self) -> None:
         super().__init__(PROJECT_NAME)
         self.sources: dict[str, str] = {}
         """Plugin name -> ``"builtin"``, ``"entry point DIST VERSION"`` or ``"file PATH"``."""
+        self.extra_paths: tuple[Path, ...] = ()
+        """The plugin files and folders named on the command line (what a
+        grading worker started afresh loads again)."""
+        self.collected: dict[str, Any] = {}
+        """What each registration hook gave, by hook name (see :func:`_collected`)."""
+
+    def register(self, plugin: object, name: str | None = None) -> str | None:
+        self.collected.clear()
+        return super().register(plugin, name)
+
+    def unregister(self, plugin: object | None = None, name: str | None = None) -> Any:
+        self.collected.clear()
+        return super().unregister(plugin, name)
 
     def source_of(self, name: str) -> str:
         """Where the plugin registered under ``name`` came from."""
@@ -81,9 +102,33 @@ def get_plugin_manager(
         load_entrypoints = not os.environ.get(DISABLE_AUTOLOAD_ENV)
     if load_entrypoints:
         load_entrypoint_plugins(pm)
-    for item in extra:
-        load_plugin_path(pm, Path(item))
+    pm.extra_paths = tuple(Path(item) for item in extra)
+    for path in pm.extra_paths:
+        load_plugin_path(pm, path)
     return pm
+
+
+Plugins = pluggy.PluginManager | Sequence[str | Path]
+"""What library functions take as ``plugins``: the command's plugin manager,
+or the extra plugin files and folders to build one with (a new one per call)."""
+
+
+def plugin_manager(plugins: Plugins = ()) -> pluggy.PluginManager:
+    """``plugins`` if it is a plugin manager already, else a new manager with
+    the extra plugin files and folders ``plugins`` names."""
+    if isinstance(plugins, pluggy.PluginManager):
+        return plugins
+    return get_plugin_manager(extra=plugins)
+
+
+def extra_paths(plugins: Plugins) -> list[str]:
+    """The plugin files and folders named on the command line, as text (what a
+    fresh process needs to build the same manager)."""
+    if isinstance(plugins, TurtletuiPluginManager):
+        return [str(p) for p in plugins.extra_paths]
+    if isinstance(plugins, pluggy.PluginManager):
+        return []
+    return [str(p) for p in plugins]
 
 
 def _importer(module_name: str) -> Callable[[], types.ModuleType]:
@@ -315,10 +360,13 @@ KINDS = {"controllers": CONTROLLERS, "lessons": LESSONS, "worlds": WORLDS, "chec
 
 
 def _gather(pm: pluggy.PluginManager, kind: _Kind) -> list[Entry]:
-    """Call the hook once per plugin, in load order, with a ``register`` that
+    """Call the hook through pluggy, for one plugin at a time in load order
+    (so each registration is credited to its plugin), with a ``register`` that
     records the plugin; a plugin whose hook raises is reported and skipped."""
     entries: list[Entry] = []
-    for impl in getattr(pm.hook, kind.hook).get_hookimpls():
+    hook = getattr(pm.hook, kind.hook)
+    plugins = pm.get_plugins()
+    for impl in hook.get_hookimpls():
         if impl.hookwrapper or impl.wrapper:
             continue
         found: list[Entry] = []
@@ -329,9 +377,9 @@ def _gather(pm: pluggy.PluginManager, kind: _Kind) -> list[Entry]:
             name, obj, description = kind.parse(*args, **kwargs)
             _found.append(kind.entry(name, obj, description, _plugin, _source(pm, _plugin)))
 
-        arguments = {"register": register}
+        only_this = pm.subset_hook_caller(kind.hook, [p for p in plugins if p is not impl.plugin])
         try:
-            impl.function(*[arguments[arg] for arg in impl.argnames])
+            only_this(register=register)
         except Exception as err:  # noqa: BLE001 - plugin code; reported, the rest go on
             _report(
                 f"plugin {_label(pm, impl.plugin_name)} failed in {kind.hook}: {_one_line(err)}"
@@ -339,6 +387,20 @@ def _gather(pm: pluggy.PluginManager, kind: _Kind) -> list[Entry]:
             continue
         entries.extend(found)
     return entries
+
+
+def _collected(pm: pluggy.PluginManager, key: str, collect: Callable[[], Any]) -> Any:
+    """``collect()``, kept by a TurtletuiPluginManager until its plugins change:
+    hooks are called, and duplicate names reported, once per manager."""
+    if not isinstance(pm, TurtletuiPluginManager):
+        return collect()
+    if key not in pm.collected:
+        pm.collected[key] = collect()
+    return pm.collected[key]
+
+
+def _entries(pm: pluggy.PluginManager, kind: _Kind) -> list[Entry]:
+    return _collected(pm, kind.hook, lambda: _gather(pm, kind))
 
 
 def _by_name(pm: pluggy.PluginManager, entries: list[E], noun: str) -> dict[str, E]:
@@ -354,15 +416,19 @@ def _by_name(pm: pluggy.PluginManager, entries: list[E], noun: str) -> dict[str,
     return result
 
 
+def _named(pm: pluggy.PluginManager, kind: _Kind) -> dict[str, Entry]:
+    return _collected(pm, f"{kind.hook} by name", lambda: _by_name(pm, _entries(pm, kind), kind.noun))
+
+
 def collect_controllers(pm: pluggy.PluginManager) -> dict[str, ControllerEntry]:
     """Every registered controller by name (a later plugin's wins)."""
-    return _by_name(pm, _gather(pm, CONTROLLERS), CONTROLLERS.noun)  # type: ignore[arg-type]
+    return dict(_named(pm, CONTROLLERS))  # type: ignore[arg-type]
 
 
 def collect_lesson_entries(pm: pluggy.PluginManager) -> list[LessonEntry]:
     """Every registered lesson file or folder, with the plugin that registered it."""
     unique: dict[Path, LessonEntry] = {}
-    for entry in _gather(pm, LESSONS):
+    for entry in _entries(pm, LESSONS):
         unique.setdefault(entry.object.resolve(), entry)  # type: ignore[arg-type]
     return list(unique.values())
 
@@ -374,12 +440,12 @@ def collect_lessons(pm: pluggy.PluginManager) -> list[Path]:
 
 def collect_worlds(pm: pluggy.PluginManager) -> dict[str, WorldEntry]:
     """Every registered world by name (a later plugin's wins)."""
-    return _by_name(pm, _gather(pm, WORLDS), WORLDS.noun)  # type: ignore[arg-type]
+    return dict(_named(pm, WORLDS))  # type: ignore[arg-type]
 
 
 def collect_checks(pm: pluggy.PluginManager) -> dict[str, CheckEntry]:
     """Every registered check by name (a later plugin's wins)."""
-    return _by_name(pm, _gather(pm, CHECKS), CHECKS.noun)  # type: ignore[arg-type]
+    return dict(_named(pm, CHECKS))  # type: ignore[arg-type]
 
 
 # -- turtletui plugins ---------------------------------------------------------
@@ -408,9 +474,9 @@ def plugin_infos(pm: pluggy.PluginManager) -> list[PluginInfo]:
         if plugin is not None
     }
     for attr, kind in KINDS.items():
-        entries = _gather(pm, kind)
+        entries = _entries(pm, kind)
         if kind is not LESSONS:
-            _by_name(pm, entries, kind.noun)  # only for its warnings
+            _named(pm, kind)  # only for its warnings
         for entry in entries:
             if entry.plugin in infos:
                 getattr(infos[entry.plugin], attr).append(entry.name)

@@ -19,6 +19,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from turtletui.errors import TurtletuiError
 from turtletui.graph.core import NS_PER_S
 from turtletui.graph.logs import INFO
 from turtletui.interfaces import from_dict
@@ -31,7 +32,7 @@ PLAYER = "rosbag2_player"
 _INDENT = " " * 19
 
 
-class BagError(ValueError):
+class BagError(TurtletuiError, ValueError):
     """A bag that cannot be recorded, read or played: one line naming it."""
 
 

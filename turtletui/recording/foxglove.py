@@ -22,9 +22,11 @@ import threading
 from collections.abc import Callable
 from typing import Any
 
+from turtletui.errors import UsageError
 from turtletui.graph.logs import INFO, WARN
 from turtletui.interfaces import InterfaceError, from_dict, get_interface
 from turtletui.recording import cdr
+from turtletui.recording.errors import FoxgloveError
 from turtletui.recording.qos import profiles_yaml
 from turtletui.recording.schema import message_definition, recorded_type_name
 from turtletui.recording.stream import Channel, RosStream
@@ -43,7 +45,8 @@ _PARAMETER_CHECK_TICKS = 30
 
 
 def parse_address(text: str) -> tuple[str, int]:
-    """``HOST:PORT``, ``PORT`` or ``[IPv6]:PORT`` -> (host, port); ValueError naming the text."""
+    """``HOST:PORT``, ``PORT`` or ``[IPv6]:PORT`` -> (host, port); UsageError (a
+    ValueError) naming the text."""
     host, _, port = text.rpartition(":")
     host = host.strip("[]") or "127.0.0.1"
     try:
@@ -51,7 +54,7 @@ def parse_address(text: str) -> tuple[str, int]:
     except ValueError:
         number = -1
     if not 0 <= number <= 65535:
-        raise ValueError(f"--foxglove {text!r}: give HOST:PORT (such as {DEFAULT_ADDRESS}) or a port")
+        raise UsageError(f"--foxglove {text!r}: give HOST:PORT (such as {DEFAULT_ADDRESS}) or a port")
     return host, number
 
 
@@ -64,7 +67,7 @@ class FoxgloveBridge:
             import foxglove
             from foxglove.websocket import Capability
         except ImportError:
-            raise OSError("--foxglove needs foxglove-sdk: pip install 'turtletui[foxglove]'") from None
+            raise FoxgloveError("--foxglove needs foxglove-sdk: pip install 'turtletui[foxglove]'") from None
         self._foxglove = foxglove
         self._graph = sim.graph
         self._context = foxglove.Context()
@@ -87,7 +90,7 @@ class FoxgloveBridge:
             )
         except Exception as err:  # the SDK raises its own errors (address in use...)
             self._tap.detach()
-            raise OSError(f"--foxglove {address}: cannot serve ({err})") from None
+            raise FoxgloveError(f"--foxglove {address}: cannot serve ({err})") from None
         self.url = f"ws://{host if ':' not in host else f'[{host}]'}:{self._server.port}"
         self._node = self._graph.add_node(NODE, owner=OWNER)
         self._timer = self._graph.add_timer(self._node, _TICK_NS, self._pump)

@@ -23,6 +23,7 @@ from pathlib import Path
 from typing import Any
 
 from turtletui.recording import rosbag2
+from turtletui.recording.errors import RecordingWriteError
 from turtletui.recording.qos import profiles_yaml
 from turtletui.recording.scene import Scene
 from turtletui.recording.schema import message_definition
@@ -42,7 +43,7 @@ class McapSink:
         try:
             from mcap.writer import CompressionType, Writer
         except ImportError:
-            raise OSError("writing MCAP needs the mcap package (pip install mcap)") from None
+            raise RecordingWriteError("writing MCAP needs the mcap package (pip install mcap)") from None
         from turtletui import __version__
 
         self._writer = Writer(stream, chunk_size=_CHUNK_SIZE, compression=CompressionType.ZSTD)
@@ -105,7 +106,7 @@ class McapWriter:
         self.path = Path(os.fspath(path).rstrip("/" + os.sep) or ".")
         if self.folder:
             if self.path.exists() and any(self.path.iterdir()):
-                raise OSError(f"{path}: cannot write the bag (the folder exists and is not empty)")
+                raise RecordingWriteError(f"{path}: cannot write the bag (the folder exists and is not empty)")
             self._tmp = self.path.with_name(f".{self.path.name}.{os.getpid()}.tmp")
             shutil.rmtree(self._tmp, ignore_errors=True)
             self._file_name = f"{self.path.name}_0.mcap"
@@ -118,7 +119,7 @@ class McapWriter:
                 self._tmp.mkdir()
             self._file = open(target, "wb")  # noqa: SIM115
         except OSError as err:
-            raise OSError(f"{path}: cannot write the recording ({err.strerror})") from None
+            raise RecordingWriteError(f"{path}: cannot write the recording ({err.strerror})") from None
         try:
             self._sink = McapSink(self._file)
         except BaseException:
@@ -143,7 +144,7 @@ class McapWriter:
                         self.path.rmdir()  # empty (checked at the start)
                 os.replace(self._tmp, self.path)
         except OSError as err:
-            raise OSError(f"{self.path}: cannot write the recording ({err.strerror})") from None
+            raise RecordingWriteError(f"{self.path}: cannot write the recording ({err.strerror})") from None
         finally:
             self._discard()
 

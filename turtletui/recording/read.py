@@ -18,6 +18,7 @@ from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
+from turtletui.errors import TurtletuiError
 from turtletui.graph.logs import LEVEL_NAMES
 from turtletui.interfaces import InterfaceError, Message
 from turtletui.recording.mcap_file import TURTLETUI_METADATA
@@ -28,7 +29,7 @@ SIMULATOR_TOPICS = ("/pose", "/color_sensor", "/scan", "/tf", "/turtlesim/scene"
 """What the simulator publishes (or a recording derives from it): not replayed."""
 
 
-class McapReadError(ValueError):
+class McapReadError(TurtletuiError, ValueError):
     """A recording that cannot be read; one line naming the file."""
 
 

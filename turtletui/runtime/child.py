@@ -67,8 +67,8 @@ class ChildGraph(Graph):
         return out
 
     # -- declarations --------------------------------------------------------
-    def add_node(self, name: str, namespace: str = "", owner: str = OWNER) -> NodeRecord:
-        node = super().add_node(name, namespace, owner)
+    def add_node(self, name: str, namespace: str = "", owner: str = OWNER, **options: Any) -> NodeRecord:
+        node = super().add_node(name, namespace, owner, **options)
         node.wire_id = next(self._ids)
         self.out["decl"].append(["node", node.wire_id, name, namespace])
         return node
@@ -83,30 +83,31 @@ class ChildGraph(Graph):
         super().remove_node(node)
         self.out["decl"].append(["rmnode", node.wire_id])
 
-    def add_publisher(self, node: NodeRecord, name: str, msg_type: type, depth: int) -> Publisher:
-        pub = super().add_publisher(node, name, msg_type, depth)
+    def add_publisher(self, node: NodeRecord, name: str, msg_type: type, depth: int, **options: Any) -> Publisher:
+        pub = super().add_publisher(node, name, msg_type, depth, **options)
         pub.wire_id = next(self._ids)
         self.out["decl"].append(["pub", pub.wire_id, node.wire_id, name, pub.topic.type_name, depth])
         return pub
 
-    def add_subscription(self, node, name, msg_type, depth, callback) -> Subscription:
-        sub = super().add_subscription(node, name, msg_type, depth, callback)
+    def add_subscription(self, node, name, msg_type, depth, callback, **options) -> Subscription:
+        sub = super().add_subscription(node, name, msg_type, depth, callback, **options)
         sub.wire_id = next(self._ids)
         self._subs[sub.wire_id] = sub
         label = getattr(callback, "label", "")
         self.out["decl"].append(["sub", sub.wire_id, node.wire_id, name, sub.topic.type_name, depth, label])
         return sub
 
-    def add_timer(self, node: NodeRecord, period_ns: int, callback: Callable[[], None]) -> Any:
-        timer = super().add_timer(node, period_ns, callback)
+    def add_timer(self, node: NodeRecord, period_ns: int, callback: Callable[[], None], **options: Any) -> Any:
+        timer = super().add_timer(node, period_ns, callback, **options)
         # named in the parent's report of a controller too slow for its timer
         self.out["decl"].append(["timer", node.wire_id, period_ns, getattr(callback, "label", "")])
         return timer
 
-    def remove_endpoint(self, endpoint: Publisher | Subscription) -> None:
-        super().remove_endpoint(endpoint)
+    def remove_endpoint(self, endpoint: Publisher | Subscription) -> bool:
+        removed = super().remove_endpoint(endpoint)
         self._subs.pop(getattr(endpoint, "wire_id", None), None)
         self.out["decl"].append(["rm", endpoint.wire_id])
+        return removed
 
     def add_client(self, node, name, srv_type):
         client = super().add_client(node, name, srv_type)

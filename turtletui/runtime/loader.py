@@ -13,8 +13,10 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from turtletui.errors import TurtletuiError
 
-class ControllerError(Exception):
+
+class ControllerError(TurtletuiError):
     """A controller that cannot be loaded; the message is one line naming the file."""
 
 

@@ -10,9 +10,11 @@ from collections.abc import Iterable
 from pathlib import Path
 from typing import Any
 
+from turtletui.errors import TurtletuiError
 from turtletui.graph.core import Graph
 from turtletui.graph.logs import LogRecord
 from turtletui.interfaces import to_dict
+from turtletui.recording.errors import RecordingWriteError
 
 
 def _clean(value: Any) -> Any:
@@ -32,6 +34,10 @@ def _seconds(t_ns: int) -> float:
 
 def _log_event(t: float, record: LogRecord) -> dict[str, Any]:
     return {"t": t, "log": {"level": record.level_name, "node": record.node, "msg": record.msg}}
+
+
+class RecordingError(TurtletuiError, ValueError):
+    """A recording that cannot be read or replayed; one line naming the file."""
 
 
 class Recorder:
@@ -59,7 +65,7 @@ class Recorder:
     ) -> None:
         self.path = Path(path)
         if self.path.is_dir():
-            raise OSError(
+            raise RecordingWriteError(
                 f"{path}: cannot write the record (is a folder; name a file such as run.jsonl or run.mcap,"
                 " or a new folder for a rosbag2 bag, such as run/)"
             )
@@ -80,7 +86,7 @@ class Recorder:
         try:
             return open(self._tmp, "w", encoding="utf-8")  # noqa: SIM115
         except OSError as err:
-            raise OSError(f"{self.path}: cannot write the record ({err.strerror})") from None
+            raise RecordingWriteError(f"{self.path}: cannot write the record ({err.strerror})") from None
 
     def _tap(self, kind: str, payload: Any, t: float | None = None) -> None:
         if self._buffer is not None:
@@ -118,7 +124,7 @@ class Recorder:
                 if keep:
                     os.replace(self._tmp, self.path)
         except OSError as err:
-            raise OSError(f"{self.path}: cannot write the record ({err.strerror})") from None
+            raise RecordingWriteError(f"{self.path}: cannot write the record ({err.strerror})") from None
         finally:
             self._tmp.unlink(missing_ok=True)
 
@@ -160,16 +166,16 @@ def open_recorder(
 
 
 def check_record_path(path: str | os.PathLike[str]) -> None:
-    """OSError (one line) if a recording could not be written at ``path``:
+    """RecordingWriteError (one line) if a recording could not be written at ``path``:
     a missing or unwritable folder, or a bag folder that is not empty."""
     from turtletui.recording.mcap_file import is_bag_folder
 
     target = Path(path)
     if is_bag_folder(path):
         if target.is_dir() and any(target.iterdir()):
-            raise OSError(f"{path}: cannot write the bag (the folder exists and is not empty)")
+            raise RecordingWriteError(f"{path}: cannot write the bag (the folder exists and is not empty)")
     elif target.is_dir():
-        raise OSError(f"{path}: cannot write the record (is a folder; name a file, or a bag folder as {path}/)")
+        raise RecordingWriteError(f"{path}: cannot write the record (is a folder; name a file, or a bag folder as {path}/)")
     parent = target.parent
     if not parent.is_dir() or not os.access(parent, os.W_OK):
-        raise OSError(f"{path}: cannot write the recording (no writable folder {parent})")
+        raise RecordingWriteError(f"{path}: cannot write the recording (no writable folder {parent})")

@@ -21,13 +21,12 @@ from typing import Any
 from turtletui.graph.core import NS_PER_S
 from turtletui.graph.logs import INFO
 from turtletui.interfaces import from_dict, get_interface
+from turtletui.runtime.recorder import RecordingError
 from turtletui.runtime.simulation import Simulation
 
+__all__ = ["Recording", "RecordingError", "install_replay", "read_recording"]
+
 _SIMULATOR_TOPIC_SUFFIXES = ("/pose", "/color_sensor", "/scan")
-
-
-class RecordingError(ValueError):
-    """A recording that cannot be replayed; one line naming the file and line."""
 
 
 @dataclass

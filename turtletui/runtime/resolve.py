@@ -4,19 +4,22 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from turtletui.runtime.loader import ControllerError, ControllerSpec
+
+if TYPE_CHECKING:
+    from turtletui.plugins.manager import Plugins
 
 
 def _looks_like_a_path(text: str) -> bool:
     return text.endswith(".py") or "/" in text or "\\" in text or Path(text).exists()
 
 
-def resolve_controllers(
-    names: Sequence[str | Path], *, plugins: Sequence[str | Path] = ()
-) -> list[ControllerSpec]:
+def resolve_controllers(names: Sequence[str | Path], *, plugins: Plugins = ()) -> list[ControllerSpec]:
     """A spec per controller: a file path (sandboxed), or the name of a
-    controller a plugin registered (``turtletui plugins`` lists them).
+    controller a plugin registered (``turtletui plugins`` lists them);
+    ``plugins`` is the plugin manager, or extra plugin paths.
 
     Registered files of the built-in plugin (the course's reference nodes) and
     node factories of installed plugins are trusted and run in-process; files
@@ -31,9 +34,9 @@ def resolve_controllers(
             specs.append(ControllerSpec(name=path.stem, path=path))
             continue
         if registered is None:
-            from turtletui.plugins.manager import collect_controllers, get_plugin_manager
+            from turtletui.plugins.manager import collect_controllers, plugin_manager
 
-            registered = collect_controllers(get_plugin_manager(extra=plugins))
+            registered = collect_controllers(plugin_manager(plugins))
         entry = registered.get(text)
         if entry is None:
             known = ", ".join(sorted(registered)) or "none"

@@ -9,6 +9,7 @@ from collections.abc import Iterable
 
 import numpy as np
 
+from turtletui.errors import TurtletuiError
 from turtletui.sim.canvas import PenCanvas
 from turtletui.sim.constants import BACKGROUND, CENTER, DT
 from turtletui.sim.events import (
@@ -28,7 +29,7 @@ _hypot = math.hypot
 _F32 = struct.Struct("3f")
 
 
-class SimError(ValueError):
+class SimError(TurtletuiError, ValueError):
     """A request turtlesim refuses; the message is the line turtlesim logs."""
 
 
@@ -72,7 +73,9 @@ class World:
         """Timer ticks so far; the first only records the time, as in turtlesim."""
         self.events: list[Event] = []
         self._id_counter = 0
-        self._order: list[Turtle] = []
+        self.turtles_in_order: list[Turtle] = []
+        """The turtles in the order they update (by name, as turtlesim's
+        std::map); read-only: the world replaces the list when it changes."""
         if spawn_turtle1:
             self.spawn(CENTER, CENTER, 0.0)
 
@@ -84,7 +87,6 @@ class World:
     @property
     def background(self) -> tuple[int, int, int]:
         return self.canvas.background
-
     @property
     def rng(self) -> np.random.Generator:
         """The world's random generator (the LiDAR's noise), seeded with ``seed``."""
@@ -115,7 +117,7 @@ class World:
         canvas = self.canvas
         draw = canvas.draw_segment
         obstacles = self.obstacles
-        for turtle in self._order:
+        for turtle in self.turtles_in_order:
             if turtle.teleports:
                 # turtlesim takes old_pos for the step's segment after teleports.
                 turtle.apply_teleports(draw)
@@ -198,7 +200,7 @@ class World:
             self._abort_rotation(turtle)
             self.events.append(Killed(turtle.name))
         self.turtles.clear()
-        self._order = []
+        self.turtles_in_order = []
         self._id_counter = 0
         self.spawn(CENTER, CENTER, 0.0)
         self.clear()
@@ -277,7 +279,7 @@ class World:
 
     def _reorder(self) -> None:
         # turtlesim keeps its turtles in a std::map, so they update by name order.
-        self._order = [self.turtles[key] for key in sorted(self.turtles)]
+        self.turtles_in_order = [self.turtles[key] for key in sorted(self.turtles)]
 
 
 def _require_finite(service: str, name: str, **values: float) -> None:

@@ -16,6 +16,8 @@ import os
 from collections.abc import Callable, Mapping
 from typing import NamedTuple
 
+from turtletui.errors import TurtletuiError
+
 PIXEL_CHOICES = ("auto", "half", "braille", "graphics")
 """Values of ``turtletui run --pixels``."""
 
@@ -28,7 +30,7 @@ BRAILLE_PROGRAMS = ("WezTerm", "ghostty")
 """Terminals that draw braille cells themselves, whatever the font."""
 
 
-class TerminalError(ValueError):
+class TerminalError(TurtletuiError, ValueError):
     """A drawing option that does not exist."""
 
 

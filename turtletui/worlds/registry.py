@@ -11,12 +11,11 @@ file's format.
 from __future__ import annotations
 
 import os
-from collections.abc import Sequence
 from dataclasses import replace
 from pathlib import Path
 
 from turtletui.messages import did_you_mean
-from turtletui.plugins.manager import WorldEntry, collect_worlds, get_plugin_manager
+from turtletui.plugins.manager import Plugins, WorldEntry, collect_worlds, plugin_manager
 from turtletui.worlds.files import load_world_file, parse_world
 from turtletui.worlds.spec import WorldError, WorldSpec
 
@@ -24,12 +23,13 @@ EMPTY = WorldSpec("empty", "turtlesim's arena: no obstacles, no LiDAR")
 """The world every lesson runs in unless it names another."""
 
 
-def registered_worlds(plugins: Sequence[str | Path] = ()) -> dict[str, WorldEntry]:
-    """Every world plugins register, by name (built-ins, installed, ``plugins``)."""
-    return collect_worlds(get_plugin_manager(extra=plugins))
+def registered_worlds(plugins: Plugins = ()) -> dict[str, WorldEntry]:
+    """Every world plugins register, by name (built-ins, installed, ``plugins``:
+    the plugin manager, or extra plugin paths)."""
+    return collect_worlds(plugin_manager(plugins))
 
 
-def world_names(plugins: Sequence[str | Path] = ()) -> list[str]:
+def world_names(plugins: Plugins = ()) -> list[str]:
     """The names of the worlds there are (``empty`` and the registered ones), sorted."""
     return sorted({EMPTY.name, *registered_worlds(plugins)})
 
@@ -40,7 +40,7 @@ def is_world_path(name: str | Path) -> bool:
     return isinstance(name, Path) or text.endswith(".toml") or "/" in text or os.sep in text
 
 
-def resolve_world(name: str | Path, plugins: Sequence[str | Path] = ()) -> WorldSpec:
+def resolve_world(name: str | Path, plugins: Plugins = ()) -> WorldSpec:
     """The world called ``name``, or the world file at path ``name`` (``.toml``).
 
     Raises WorldError with one line for an unknown name, a bad file or a

@@ -4,10 +4,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from turtletui.errors import TurtletuiError
 from turtletui.sim import BACKGROUND, Lidar, Obstacle, World
 
 
-class WorldError(ValueError):
+class WorldError(TurtletuiError, ValueError):
     """A world that cannot be found or used; the message is one line."""
 
 

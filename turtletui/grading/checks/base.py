@@ -55,6 +55,11 @@ class Check:
         """Seconds of twin run this check needs with these thresholds; None: none."""
         return float(thresholds.get("window", TWIN_WINDOW)) if self.twin else None
 
+    def __call__(self, trace: Trace, thresholds: Mapping[str, Any]) -> Any:
+        """What the function answers (a plugin may register a Check object itself,
+        with the thresholds it takes)."""
+        return self.function(trace, thresholds)
+
     def judge(self, trace: Trace, thresholds: Mapping[str, Any]) -> Verdict:
         """Run the check; a plugin's answer is normalised to a Verdict."""
         answer = self.function(trace, thresholds)

@@ -9,10 +9,11 @@ import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from turtletui.errors import TurtletuiError
 from turtletui.messages import one_line
 
 
-class RosterError(ValueError):
+class RosterError(TurtletuiError, ValueError):
     """A roster file that cannot be read; one line naming the file."""
 
 

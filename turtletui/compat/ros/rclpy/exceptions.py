@@ -1,3 +1,4 @@
+from turtletui.compat.destroyable import InvalidHandle  # noqa: F401
 from turtletui.compat.executors import ExternalShutdownException  # noqa: F401
 from turtletui.compat.node import (  # noqa: F401
     InvalidParameterTypeException,

@@ -1,1 +1,6 @@
-from turtletui.compat.action import ActionClient  # noqa: F401
+from turtletui.compat.action import (  # noqa: F401
+    ActionClient,
+    get_action_client_names_and_types_by_node,
+    get_action_names_and_types,
+    get_action_server_names_and_types_by_node,
+)

@@ -1,0 +1,128 @@
+"""What rclpy's graph queries return about endpoints (``rclpy.topic_endpoint_info``)."""
+
+from __future__ import annotations
+
+import hashlib
+from enum import IntEnum
+from typing import Any
+
+from turtletui.compat.qos import (
+    DurabilityPolicy,
+    HistoryPolicy,
+    LivelinessPolicy,
+    QoSProfile,
+    ReliabilityPolicy,
+)
+from turtletui.graph import core
+
+
+class NodeNameNonExistentError(RuntimeError):
+    """rclpy's error for a query about a node that is not in the graph."""
+
+
+class TopicEndpointTypeEnum(IntEnum):
+    """Whether an endpoint publishes or subscribes (rmw's numbers)."""
+
+    INVALID = 0
+    PUBLISHER = 1
+    SUBSCRIPTION = 2
+
+
+class TopicEndpointInfo:
+    """One publisher or subscription of a topic, as rclpy describes it."""
+
+    __slots__ = ("node_name", "node_namespace", "topic_type", "endpoint_type", "endpoint_gid", "qos_profile")
+
+    def __init__(
+        self,
+        node_name: str = "",
+        node_namespace: str = "",
+        topic_type: str = "",
+        endpoint_type: TopicEndpointTypeEnum | int = TopicEndpointTypeEnum.INVALID,
+        endpoint_gid: list[int] | None = None,
+        qos_profile: QoSProfile | None = None,
+    ) -> None:
+        self.node_name = node_name
+        self.node_namespace = node_namespace
+        self.topic_type = topic_type
+        self.endpoint_type = TopicEndpointTypeEnum(endpoint_type)
+        self.endpoint_gid = list(endpoint_gid or [])
+        self.qos_profile = qos_profile if qos_profile is not None else _reported_qos(None)
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, TopicEndpointInfo):
+            return False
+        return all(getattr(self, slot) == getattr(other, slot) for slot in self.__slots__)
+
+    __hash__ = None  # type: ignore[assignment]  # as rclpy's
+
+    def __str__(self) -> str:
+        qos = self.qos_profile
+        if qos.history != HistoryPolicy.KEEP_LAST:
+            history = qos.history.name
+        else:
+            history = f"{qos.history.name} ({qos.depth})"
+        return "\n".join(
+            [
+                f"Node name: {self.node_name}",
+                f"Node namespace: {self.node_namespace}",
+                f"Topic type: {self.topic_type}",
+                f"Endpoint type: {self.endpoint_type.name}",
+                f"GID: {'.'.join(format(x, '02x') for x in self.endpoint_gid)}",
+                "QoS profile:",
+                f"  Reliability: {qos.reliability.name}",
+                f"  History (Depth): {history}",
+                f"  Durability: {qos.durability.name}",
+                f"  Liveliness: {qos.liveliness.name}",
+            ]
+        )
+
+
+def endpoints_info(
+    endpoints: list[core.Publisher] | list[core.Subscription], kind: TopicEndpointTypeEnum
+) -> list[TopicEndpointInfo]:
+    """The TopicEndpointInfo of each of a topic's publishers (or subscriptions)."""
+    infos = []
+    seen: dict[str, int] = {}
+    for endpoint in endpoints:
+        node = endpoint.node
+        nth = seen[node.fqn] = seen.get(node.fqn, -1) + 1
+        infos.append(
+            TopicEndpointInfo(
+                node_name=node.name,
+                node_namespace=node.namespace or "/",
+                topic_type=endpoint.topic.type_name,
+                endpoint_type=kind,
+                endpoint_gid=_gid(node.fqn, endpoint.topic.name, kind, nth),
+                qos_profile=_reported_qos(endpoint.qos),
+            )
+        )
+    return infos
+
+
+def _gid(node: str, topic: str, kind: TopicEndpointTypeEnum, nth: int) -> list[int]:
+    """16 bytes naming an endpoint (a DDS GUID's size), the same in every run."""
+    return list(hashlib.blake2b(f"{node}|{topic}|{kind.name}|{nth}".encode(), digest_size=16).digest())
+
+
+def _reported_qos(asked: Any) -> QoSProfile:
+    """What the middleware reports of an endpoint's QoS: the policies it was
+    created with (reliable, volatile and automatic where it asked for the
+    system's default, as Fast DDS), but not its history or depth, which rmw
+    does not share."""
+    reliability = getattr(asked, "reliability", ReliabilityPolicy.SYSTEM_DEFAULT)
+    if reliability in (ReliabilityPolicy.SYSTEM_DEFAULT, ReliabilityPolicy.BEST_AVAILABLE):
+        reliability = ReliabilityPolicy.RELIABLE
+    durability = getattr(asked, "durability", DurabilityPolicy.SYSTEM_DEFAULT)
+    if durability in (DurabilityPolicy.SYSTEM_DEFAULT, DurabilityPolicy.BEST_AVAILABLE):
+        durability = DurabilityPolicy.VOLATILE
+    liveliness = getattr(asked, "liveliness", LivelinessPolicy.SYSTEM_DEFAULT)
+    if liveliness in (LivelinessPolicy.SYSTEM_DEFAULT, LivelinessPolicy.BEST_AVAILABLE):
+        liveliness = LivelinessPolicy.AUTOMATIC
+    return QoSProfile(
+        history=HistoryPolicy.UNKNOWN,
+        depth=0,
+        reliability=reliability,
+        durability=durability,
+        liveliness=liveliness,
+    )

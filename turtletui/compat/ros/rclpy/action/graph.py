@@ -1,0 +1,5 @@
+from turtletui.compat.action import (  # noqa: F401
+    get_action_client_names_and_types_by_node,
+    get_action_names_and_types,
+    get_action_server_names_and_types_by_node,
+)

@@ -1,0 +1,1 @@
+from turtletui.compat.graph_info import TopicEndpointInfo, TopicEndpointTypeEnum  # noqa: F401
