@@ -15,3 +15,11 @@ def _private_data_home(tmp_path_factory: pytest.TempPathFactory, monkeypatch: py
     monkeypatch.setenv("XDG_DATA_HOME", str(home))
     monkeypatch.delenv("TURTLETUI_RESULTS_KEY", raising=False)
     return home
+
+
+@pytest.fixture(autouse=True)
+def _course_distro(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The suite's controllers are the course's (``from turtlesim.msg import
+    Pose``): they run as on Jazzy unless a test chooses a distro itself
+    (tests/compat/test_distro.py tests the default)."""
+    monkeypatch.setenv("TURTLETUI_DISTRO", "jazzy")

@@ -103,8 +103,9 @@ def default_runs(tmp_path_factory) -> list[subprocess.CompletedProcess[str]]:
 def test_default_run_prints_turtlesim_start_lines_in_ros_format(default_runs):
     proc = default_runs[0]
     assert proc.returncode == 0, proc.stderr
-    assert proc.stderr == ""
-    lines = proc.stdout.splitlines()
+    # as under ROS, log lines go to stderr; stdout has only the summary
+    assert len(proc.stdout.splitlines()) == 1
+    lines = proc.stderr.splitlines()
     assert lines[0] == "[INFO] [1700000000.000000000] [turtlesim]: Starting turtlesim with node name /turtlesim"
     assert lines[1].startswith("[INFO] [1700000000.000000000] [turtlesim]: Spawning turtle [turtle1] at x=[5.544445]")
     assert (
@@ -113,7 +114,7 @@ def test_default_run_prints_turtlesim_start_lines_in_ros_format(default_runs):
     ) in lines
     # The controller reacts to the wall: its warning appears, stamped in lockstep time.
     assert any(line.endswith("[turtle_controller]: Warning: Approaching wall detected! Changing direction.") for line in lines)
-    for line in lines[:-1]:
+    for line in lines:
         assert ROS_LINE.match(line), line
 
 

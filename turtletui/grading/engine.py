@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from turtletui.compat.distro import resolve_distro
 from turtletui.grading.checks import BUILTIN_CHECKS, Check, Verdict
 from turtletui.grading.pictures import picture_of_trace
 from turtletui.grading.results import FAILED, PASSED, Picture, SubmissionResult, TestResult
@@ -248,6 +249,7 @@ def run_scenario(
             keep_calls=False,
             world=plan.worlds[world_name](run.seed),
             on_log=start_logs.append if record is not None else None,
+            distro=resolve_distro(None, plan.lesson.distro),
         )
         if result.interrupted:
             raise KeyboardInterrupt
