@@ -105,6 +105,7 @@ def run(
             fail(str(err))
     if not duration > 0:
         fail(f"--duration must be a positive number of seconds, got {duration}")
+    _check_outputs(record, foxglove)
     sim_world = None if world is None else _resolve_world(world, plugin).build(seed)
 
     def print_log(record) -> None:
