@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
@@ -15,3 +16,14 @@ def _private_data_home(tmp_path_factory: pytest.TempPathFactory, monkeypatch: py
     monkeypatch.setenv("XDG_DATA_HOME", str(home))
     monkeypatch.delenv("TURTLETUI_RESULTS_KEY", raising=False)
     return home
+
+
+@pytest.fixture(autouse=True, scope="session")
+def _course_distro() -> Iterator[None]:
+    """The suite's controllers are the course's (``from turtlesim.msg import
+    Pose``): they run as on Jazzy unless a test chooses a distro itself
+    (tests/compat/test_distro.py tests the default). Session-wide, so that
+    module-scoped fixtures that run controllers see it too."""
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setenv("TURTLETUI_DISTRO", "jazzy")
+        yield

@@ -102,6 +102,7 @@ def run(
     limits: Limits | None = None,
     world: World | None = None,
     foxglove: str | None = None,
+    distro: str | None = None,
 ) -> RunResult:
     """Run controllers for ``duration`` simulated seconds and summarise the run.
 
@@ -115,6 +116,9 @@ def run(
     to run in (turtlesim's empty arena when None). ``record`` names a
     recording (``run.jsonl``, ``run.mcap`` or a rosbag2 folder ``run/``);
     ``foxglove`` (``HOST:PORT``) serves the run live to Foxglove, in real time.
+    ``distro`` is the ROS 2 distribution controllers run as (``"jazzy"``:
+    ``turtlesim.msg``; ``"kilted"``, ``"lyrical"``: ``turtlesim_msgs.msg``);
+    None: ``$TURTLETUI_DISTRO`` or the newest LTS.
     """
     if not (duration > 0 and duration < 1e7):
         raise UsageError(f"duration must be a positive number of seconds, got {duration}")
@@ -135,7 +139,7 @@ def run(
         realtime = True  # a live view of a run that ends in a blink shows nothing
     logs: list[LogRecord] = []
     sinks = [logs.append] if on_log is None else [logs.append, on_log]
-    sim = Simulation(world=world, realtime=realtime, log_sinks=sinks)
+    sim = Simulation(world=world, realtime=realtime, log_sinks=sinks, distro=distro)
     if setup is not None:
         setup(sim)
     calls: list[tuple[float, str, Any, Any]] = []

@@ -85,9 +85,11 @@ def write(folder: Path, name: str, source: str) -> Path:
 def assert_one_line_error(proc: subprocess.CompletedProcess[str], code: int = 2) -> str:
     assert proc.returncode == code, (proc.returncode, proc.stdout, proc.stderr)
     assert "Traceback" not in proc.stderr and "Traceback" not in proc.stdout
-    lines = proc.stderr.splitlines()
+    # log lines of nodes that ran before the error was found go to stderr first, as under ROS
+    lines = [line for line in proc.stderr.splitlines() if not ROS_LINE.match(line)]
     assert len(lines) == 1, proc.stderr
     assert lines[0].startswith("turtletui: error: "), lines[0]
+    assert proc.stderr.endswith(lines[0] + "\n")
     return lines[0]
 
 
@@ -103,8 +105,9 @@ def default_runs(tmp_path_factory) -> list[subprocess.CompletedProcess[str]]:
 def test_default_run_prints_turtlesim_start_lines_in_ros_format(default_runs):
     proc = default_runs[0]
     assert proc.returncode == 0, proc.stderr
-    assert proc.stderr == ""
-    lines = proc.stdout.splitlines()
+    # as under ROS, log lines go to stderr; stdout has only the summary
+    assert len(proc.stdout.splitlines()) == 1
+    lines = proc.stderr.splitlines()
     assert lines[0] == "[INFO] [1700000000.000000000] [turtlesim]: Starting turtlesim with node name /turtlesim"
     assert lines[1].startswith("[INFO] [1700000000.000000000] [turtlesim]: Spawning turtle [turtle1] at x=[5.544445]")
     assert (
@@ -113,7 +116,7 @@ def test_default_run_prints_turtlesim_start_lines_in_ros_format(default_runs):
     ) in lines
     # The controller reacts to the wall: its warning appears, stamped in lockstep time.
     assert any(line.endswith("[turtle_controller]: Warning: Approaching wall detected! Changing direction.") for line in lines)
-    for line in lines[:-1]:
+    for line in lines:
         assert ROS_LINE.match(line), line
 
 
@@ -145,7 +148,7 @@ def test_ros_args_parameter_reaches_a_controller_file(tmp_path, mode):
         cwd=tmp_path,
     )
     assert proc.returncode == 0, proc.stderr
-    assert "[INFO] [1700000000.000000000] [param_node]: speed=2.0" in proc.stdout.splitlines()
+    assert "[INFO] [1700000000.000000000] [param_node]: speed=2.0" in proc.stderr.splitlines()
     assert SUMMARY.match(proc.stdout.splitlines()[-1])
 
 
@@ -153,7 +156,7 @@ def test_controller_file_without_ros_args_keeps_its_default(tmp_path):
     write(tmp_path, "param_node.py", PARAM_NODE)
     proc = turtletui_cli("run", "param_node.py", "--headless", "--duration", "1", cwd=tmp_path)
     assert proc.returncode == 0, proc.stderr
-    assert "[param_node]: speed=1.0" in proc.stdout
+    assert "[param_node]: speed=1.0" in proc.stderr
 
 
 def test_malformed_ros_args_is_a_one_line_error(tmp_path):
@@ -255,11 +258,16 @@ def test_help_lists_the_commands(tmp_path):
 
 
 def test_closed_stdout_ends_quietly(tmp_path):
-    """``turtletui run --headless | head -1``: no error message about the pipe."""
+    """``turtletui run node.py --headless | head -1``: no error message about the pipe."""
+    write(tmp_path, "chatty.py", (
+        "import rclpy\nfrom rclpy.node import Node\n\n\ndef main():\n    rclpy.init()\n"
+        "    node = Node('chatty')\n    node.create_timer(0.01, lambda: print('tick', flush=True))\n"
+        "    rclpy.spin(node)\n"
+    ))
     env = dict(os.environ)
     env["PYTHONPATH"] = os.pathsep.join(p for p in (str(PACKAGE_ROOT), env.get("PYTHONPATH")) if p)
     proc = subprocess.Popen(
-        [sys.executable, "-m", "turtletui", "run", "--headless", "--duration", "300", "--in-process"],
+        [sys.executable, "-m", "turtletui", "run", "chatty.py", "--headless", "--duration", "300"],
         cwd=tmp_path,
         env=env,
         stdin=subprocess.DEVNULL,
@@ -268,9 +276,25 @@ def test_closed_stdout_ends_quietly(tmp_path):
         text=True,
     )
     assert proc.stdout is not None and proc.stderr is not None
-    assert proc.stdout.readline().startswith("[INFO]")
+    assert proc.stdout.readline() == "tick\n"
     proc.stdout.close()
     stderr = proc.stderr.read()
     assert proc.wait(timeout=30) != 0
     assert "Traceback" not in stderr
     assert "error" not in stderr.lower(), stderr
+
+
+@pytest.mark.parametrize("host", [[], ["--in-process"]], ids=["sandboxed", "in-process"])
+def test_prints_go_to_stdout_and_logs_to_stderr_as_with_rclpy(tmp_path, host):
+    node = tmp_path / "talker.py"
+    node.write_text(
+        "import rclpy\nfrom rclpy.node import Node\n\n\ndef main():\n    rclpy.init()\n"
+        "    node = Node('talker')\n    print('printed')\n    node.get_logger().warning('logged')\n"
+        "    rclpy.shutdown()\n"
+    )
+    proc = turtletui_cli("run", str(node), "--headless", "--duration", "0.5", *host, cwd=tmp_path)
+    assert proc.returncode == 0, proc.stderr
+    out = proc.stdout.splitlines()
+    assert out[0] == "printed" and SUMMARY.match(out[1]) and len(out) == 2
+    assert "[WARN] [1700000000.000000000] [talker]: logged" in proc.stderr.splitlines()
+    assert "printed" not in proc.stderr

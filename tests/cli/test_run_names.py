@@ -27,7 +27,7 @@ def turtletui_cli(*args: str, pythonpath: tuple[Path, ...] = ()) -> subprocess.C
 def test_a_reference_node_runs_by_its_registered_name():
     done = turtletui_cli("run", "part4_draw_circle", "--headless", "--duration", "2")
     assert done.returncode == 0, done.stderr
-    assert "[draw_circle]: Draw circle node has been started" in done.stdout
+    assert "[draw_circle]: Draw circle node has been started" in done.stderr
     assert done.stdout.splitlines()[-1].startswith("sim time 2.000 s")
 
 
@@ -52,4 +52,4 @@ def test_a_plugin_node_factory_runs_by_name():
         pythonpath=(EXAMPLE,),
     )
     assert done.returncode == 0, done.stderr
-    assert "[square_driver]: Side 1 done, turning left" in done.stdout
+    assert "[square_driver]: Side 1 done, turning left" in done.stderr

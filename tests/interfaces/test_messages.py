@@ -21,7 +21,9 @@ import turtletui.interfaces as I
 from turtletui.interfaces import (
     action_msgs,
     builtin_interfaces,
+    example_interfaces,
     geometry_msgs,
+    nav_msgs,
     rcl_interfaces,
     sensor_msgs,
     std_msgs,
@@ -46,7 +48,7 @@ from turtletui.interfaces.turtlesim import Color, RotateAbsolute, SetPen, Spawn
 
 TURTLE_POSE = turtlesim.Pose
 
-MODULES = [action_msgs, builtin_interfaces, geometry_msgs, rcl_interfaces, sensor_msgs,
+MODULES = [action_msgs, builtin_interfaces, example_interfaces, geometry_msgs, nav_msgs, rcl_interfaces, sensor_msgs,
            std_msgs, std_srvs, tf2_msgs, turtlesim, unique_identifier_msgs,
            visualization_msgs]
 

@@ -28,7 +28,14 @@ def _message_classes() -> list[type]:
     return classes
 
 
-CLASSES = _message_classes()
+def _has_wstring(cls: type) -> bool:
+    return any(
+        spec.base.startswith("wstring") or (spec.kind == "msg" and _has_wstring(spec.msg_cls)) for spec in cls._FIELDS
+    )
+
+
+# Neither mcap_ros2 nor rosbags reads wstring (example_interfaces/WString): nothing to check those against.
+CLASSES = [cls for cls in _message_classes() if not _has_wstring(cls)]
 
 
 def _filled(cls: type, salt: int = 0) -> dict[str, Any]:
@@ -74,7 +81,7 @@ def _plain(value: Any, cls: type) -> dict[str, Any]:
             out[spec.name] = item.item()
         else:
             out[spec.name] = list(item) if isinstance(item, (list, tuple)) else item
-        if spec.kind == "byte":  # rosbags reads ROS's byte (an octet) as int8
+        if spec.kind == "byte" or spec.base == "char":  # octet and char read as int8 by some
             out[spec.name] = [v % 256 for v in out[spec.name]] if spec.array else out[spec.name] % 256
     return out
 

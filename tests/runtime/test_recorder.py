@@ -112,8 +112,8 @@ def test_poses_at_62_5_hz_and_color_sensor_recorded(pen_record):
     assert len(colors) > 100
     assert colors[0]["type"] == "turtlesim/msg/Color"
     assert set(colors[0]["msg"]) == {"r", "g", "b"}
-    # The default background (69, 86, 255) is under the turtle at the start.
-    assert colors[0]["msg"] == {"r": 69, "g": 86, "b": 255}
+    # Unpainted ground under the turtle at the start: turtlesim's pen image is transparent white.
+    assert colors[0]["msg"] == {"r": 255, "g": 255, "b": 255}
 
 
 def test_log_lines_include_turtlesim_start_and_the_controller(pen_record):

@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from turtletui.sim.canvas import PenCanvas, to_pixel
+from turtletui.sim.canvas import UNPAINTED, PenCanvas, to_pixel
 from turtletui.sim.constants import BACKGROUND, METER_PX
 
 RED, GREEN, BLUE = (255, 0, 0), (0, 255, 0), (0, 0, 255)
@@ -48,14 +48,37 @@ def test_later_segments_paint_over_earlier_ones():
     assert canvas.color_at(3.0, 5.0) == RED
 
 
-def test_clear_and_background_colour():
+def test_clear_shows_the_background_and_the_sensor_reads_transparent_white():
     canvas = PenCanvas()
     canvas.draw_segment(2.0, 5.0, 8.0, 5.0, RED, 5)
     canvas.clear((10, 20, 30))
-    assert canvas.color_at(5.0, 5.0) == (10, 20, 30)
+    # turtlesim's pen layer is transparent white where unpainted: the sensor
+    # reads (255, 255, 255), the screen shows the background beneath.
+    assert canvas.color_at(5.0, 5.0) == UNPAINTED == (255, 255, 255)
     assert canvas.pixels.shape == (500, 500, 3)
     assert tuple(canvas.pixels[0, 0]) == (10, 20, 30)
-    assert PenCanvas().color_at(0.0, 0.0) == BACKGROUND
+    assert not canvas.painted.any()
+    assert PenCanvas().color_at(0.0, 0.0) == UNPAINTED
+    assert tuple(PenCanvas().pixels[0, 0]) == BACKGROUND
+
+
+def test_a_new_background_keeps_the_trails():
+    canvas = PenCanvas()
+    canvas.draw_segment(2.0, 5.0, 8.0, 5.0, RED, 5)
+    version = canvas.version
+    canvas.set_background((10, 20, 30))
+    assert canvas.changed_since(version) == (0, 499, 0, 499)
+    assert canvas.color_at(5.0, 5.0) == RED
+    col, row = to_pixel(5.0, 5.0)
+    assert tuple(canvas.pixels[row, col]) == RED
+    assert tuple(canvas.pixels[0, 0]) == (10, 20, 30)
+    assert canvas.painted[row, col] and not canvas.painted[0, 0]
+    # a trail in the old background colour stays that colour
+    canvas.draw_segment(1.0, 1.0, 2.0, 1.0, (10, 20, 30), 3)
+    canvas.set_background(BACKGROUND)
+    col, row = to_pixel(1.5, 1.0)
+    assert tuple(canvas.pixels[row, col]) == (10, 20, 30)
+    assert canvas.color_at(1.5, 1.0) == (10, 20, 30)
 
 
 def test_pixels_are_read_only():

@@ -47,7 +47,7 @@ from turtletui.sim import (
     World,
     normalize_angle,
 )
-from turtletui.sim.canvas import to_pixel
+from turtletui.sim.canvas import UNPAINTED, to_pixel
 from turtletui.sim.constants import ROTATE_SPEED, ROTATE_TOLERANCE
 
 TICK_NS = 16_000_000
@@ -348,8 +348,9 @@ def test_rotate_absolute_turns_at_plus_1_rad_s_and_stops_within_0_02():
     assert world.turtles["turtle1"].theta == pytest.approx(0.992, abs=1e-9)
     assert world.turtles["turtle1"].wz == 0.0
     assert len(finished) == 1 and finished[0].status == "succeeded"
-    # result delta = normalize(start - now)
-    assert finished[0].delta == pytest.approx(-0.992, abs=1e-9)
+    # result delta = normalize(float(start - now)): turtle.cpp casts the difference to float
+    assert finished[0].delta == normalize_angle(f32(0.0 - world.turtles["turtle1"].theta))
+    assert finished[0].delta == pytest.approx(-0.992, abs=1e-7)
     # feedback `remaining` every step, the last one under the tolerance
     assert len(feedback) == 63
     assert feedback[0] == pytest.approx(1.0, abs=1e-12)
@@ -365,7 +366,7 @@ def test_rotate_absolute_turns_at_minus_1_rad_s_toward_a_smaller_heading():
     assert all(t <= 0.0 for t in turns)
     assert goal.status == "succeeded"
     assert abs(normalize_angle(world.turtles["turtle1"].theta + 0.5)) < 0.02
-    assert finished[0].delta == pytest.approx(-world.turtles["turtle1"].theta, abs=1e-9)
+    assert finished[0].delta == f32(-world.turtles["turtle1"].theta)
     assert feedback[0] == pytest.approx(-0.5, abs=1e-12)
 
 
@@ -378,7 +379,7 @@ def test_rotate_absolute_takes_the_short_way_across_pi():
     assert any(t < 0 for t in thetas)
     assert goal.status == "succeeded"
     assert len(thetas) - 1 < 25  # 0.283 rad at 1 rad/s is ~18 steps, not ~375
-    assert finished[0].delta == pytest.approx(normalize_angle(3.0 - world.turtles["turtle1"].theta), abs=1e-9)
+    assert finished[0].delta == normalize_angle(f32(3.0 - world.turtles["turtle1"].theta))
 
 
 def test_rotate_absolute_counts_as_a_fresh_command_so_long_turns_do_not_time_out():
@@ -420,9 +421,34 @@ def test_rotate_absolute_cancel_stops_the_turtle_and_reports_canceled():
     assert turtle.rotation is None
     assert turtle.wz == 0.0
     assert turtle.theta == theta  # stopped before turning this step
+    # the result is the one computed on the previous tick (heading 0.144), not recomputed
+    assert finished[0].delta == goal.delta == normalize_angle(f32(0.0 - 0.144))
     for _ in range(5):
         world.step()
     assert turtle.theta == theta
+
+
+def test_a_goal_canceled_before_its_first_tick_reports_delta_0():
+    world = started_world()
+    goal = world.start_rotation("turtle1", 2.0)
+    world.cancel_rotation(goal)
+    world.step()
+    (finished,) = [e for e in world.take_events() if isinstance(e, RotationFinished)]
+    assert (finished.status, finished.delta) == ("canceled", 0.0)
+
+
+def test_a_rotation_goal_logs_how_it_ended_as_turtlesim_does():
+    sim, logs = make_sim()
+    run_ticks(sim, 2)
+    sim.world.start_rotation("turtle1", 0.1)
+    run_ticks(sim, 10)
+    assert messages(logs, INFO)[-1] == "Rotation goal completed successfully"
+    goal = sim.world.start_rotation("turtle1", 2.0)
+    run_ticks(sim, 3)
+    sim.world.cancel_rotation(goal)
+    run_ticks(sim, 1)
+    assert messages(logs, INFO)[-1] == "Rotation goal canceled"
+    assert messages(logs, INFO).count("Rotation goal completed successfully") == 1
 
 
 def test_velocity_command_aborts_rotate_absolute_with_a_warning():
@@ -636,10 +662,11 @@ def test_wall_warning_text_is_turtlesims_with_percent_f():
     command(sim, vx=2.0)
     run_ticks(sim, 1)
     warnings = [r for r in logs if r.level == WARN and r.node == "turtlesim"]
-    assert [r.msg for r in warnings] == ["Oh no! I hit the wall! (Clamping from [x=11.112000, y=5.544445])"]
+    # turtle.cpp prints its canvas y (y axis down): 11.088889 - 5.544445 = 5.544444
+    assert [r.msg for r in warnings] == ["Oh no! I hit the wall! (Clamping from [x=11.112000, y=5.544444])"]
     run_ticks(sim, 2)  # still pushing into the wall: warned every step, as turtlesim does
     warnings = [r.msg for r in logs if r.level == WARN and r.node == "turtlesim"]
-    assert warnings[1:] == ["Oh no! I hit the wall! (Clamping from [x=11.120889, y=5.544445])"] * 2
+    assert warnings[1:] == ["Oh no! I hit the wall! (Clamping from [x=11.120889, y=5.544444])"] * 2
     assert sim.world.turtles["turtle1"].x == ARENA_SIZE
     assert sim.world.turtles["turtle1"].wall_hits == 1
 
@@ -651,8 +678,25 @@ def test_wall_warning_prints_negative_coordinates_with_percent_f():
     turtle.x, turtle.theta = 0.01, math.pi
     command(sim, vx=1.0)
     run_ticks(sim, 1)
-    assert messages(logs, WARN) == ["Oh no! I hit the wall! (Clamping from [x=-0.006000, y=5.544445])"]
+    assert messages(logs, WARN) == ["Oh no! I hit the wall! (Clamping from [x=-0.006000, y=5.544444])"]
     assert turtle.x == 0.0
+
+
+def test_wall_warning_prints_turtlesims_canvas_y_at_the_top_and_bottom_walls():
+    sim, logs = make_sim()
+    run_ticks(sim, 2)
+    turtle = sim.world.turtles["turtle1"]
+    turtle.y, turtle.theta = ARENA_SIZE - 0.019, math.pi / 2
+    command(sim, vx=2.0)
+    run_ticks(sim, 1)
+    # 11.069889 + 0.032 = 11.101889 m up is canvas y 11.088889 - 11.101889 = -0.013000
+    assert messages(logs, WARN) == ["Oh no! I hit the wall! (Clamping from [x=5.544445, y=-0.013000])"]
+    assert turtle.y == ARENA_SIZE
+    del logs[:]
+    turtle.y, turtle.theta = 0.01, -math.pi / 2
+    command(sim, vx=1.0)
+    run_ticks(sim, 1)
+    assert messages(logs, WARN) == ["Oh no! I hit the wall! (Clamping from [x=5.544445, y=11.094889])"]
 
 
 # -- holonomic ----------------------------------------------------------------------------------
@@ -730,12 +774,15 @@ def test_pose_linear_velocity_is_a_magnitude_for_reverse_driving():
 # -- color sensor -------------------------------------------------------------------------------
 
 
-def test_color_sensor_reads_the_background_at_start():
+def test_color_sensor_reads_transparent_white_on_unpainted_ground():
+    # turtlesim's pen image is filled with qRgba(255, 255, 255, 0); the
+    # background is painted beneath it on screen only.
     sim, _ = make_sim()
     colors = observe(sim, "/turtle1/color_sensor", Color)
     run_ticks(sim, 3)
     assert len(colors) == 2
-    assert all((c.r, c.g, c.b) == (69, 86, 255) for _, c in colors)
+    assert all((c.r, c.g, c.b) == (255, 255, 255) for _, c in colors)
+    assert tuple(sim.world.canvas.pixels[0, 0]) == BACKGROUND  # what the screen shows
 
 
 def test_color_sensor_reads_the_turtles_own_trail_when_moving_slowly():
@@ -747,14 +794,14 @@ def test_color_sensor_reads_the_turtles_own_trail_when_moving_slowly():
     run_ticks(sim, 30)
     readings = [(c.r, c.g, c.b) for _, c in colors]
     # The sensor reads the image before this step's segment is drawn, so the
-    # first moving step still sees the background; after that, the trail.
-    assert readings[0] == BACKGROUND
-    assert readings[1] == BACKGROUND
+    # first moving step still sees unpainted ground; after that, the trail.
+    assert readings[0] == UNPAINTED
+    assert readings[1] == UNPAINTED
     assert readings[2] == (255, 0, 0)
     assert readings[-10:] == [(255, 0, 0)] * 10
 
 
-def test_color_sensor_reads_the_background_again_after_clear():
+def test_color_sensor_reads_unpainted_ground_again_after_clear():
     sim, _ = make_sim()
     colors = observe(sim, "/turtle1/color_sensor", Color)
     run_ticks(sim, 2)
@@ -767,7 +814,7 @@ def test_color_sensor_reads_the_background_again_after_clear():
     command(sim, vx=0.1)
     run_ticks(sim, 20)
     assert len(colors) == 20
-    assert all((c.r, c.g, c.b) == BACKGROUND for _, c in colors)
+    assert all((c.r, c.g, c.b) == UNPAINTED for _, c in colors)
 
 
 # -- spawn / kill / reset / clear ------------------------------------------------------------------
@@ -895,14 +942,15 @@ def test_set_pen_colour_and_width():
     assert column_rows(world, col, PEN_COLOR) == []
 
 
-def test_set_pen_width_0_keeps_the_width():
+def test_set_pen_width_0_gives_qts_default_width_of_1_pixel():
+    # turtle.cpp makes a new QPen and sets the width only when it is not 0
     world = started_world()
     world.set_pen("turtle1", 255, 0, 0, 7, 0)
     world.set_pen("turtle1", 0, 255, 0, 0, 0)
     turtle = world.turtles["turtle1"]
-    assert turtle.pen_width == 7 and turtle.pen_color == (0, 255, 0)
+    assert turtle.pen_width == 1 and turtle.pen_color == (0, 255, 0)
     col = _drive_right(world)
-    assert column_rows(world, col, (0, 255, 0)) == list(range(246, 253))
+    assert column_rows(world, col, (0, 255, 0)) == [249]
 
 
 def test_set_pen_off_lifts_the_pen_so_nothing_is_drawn():
@@ -914,8 +962,8 @@ def test_set_pen_off_lifts_the_pen_so_nothing_is_drawn():
     _drive_right(world)
     assert turtle.x > CENTER + 0.5
     assert np.all(world.canvas.pixels == np.array(BACKGROUND, dtype=np.uint8))
-    world.set_pen("turtle1", 0, 0, 255, 0, 0)  # pen down again
-    assert turtle.pen_on is True and turtle.pen_width == 3
+    world.set_pen("turtle1", 0, 0, 255, 0, 0)  # pen down again, a new pen of width 1
+    assert turtle.pen_on is True and turtle.pen_width == 1
 
 
 def test_set_pen_service_per_turtle():
@@ -940,7 +988,7 @@ def test_teleport_absolute_draws_a_line_when_the_pen_is_on():
     assert turtle.x == pytest.approx(2.0, abs=1e-6)
     assert turtle.theta == pytest.approx(1.0, abs=1e-6)
     assert sim.world.canvas.color_at(3.5, CENTER) == PEN_COLOR
-    assert sim.world.canvas.color_at(1.0, CENTER) == BACKGROUND
+    assert sim.world.canvas.color_at(1.0, CENTER) == UNPAINTED
 
 
 def test_teleport_absolute_draws_nothing_when_the_pen_is_off():
@@ -1070,21 +1118,27 @@ def test_turtlesim_parameters_are_declared_with_defaults():
     }
 
 
-def test_background_parameter_clears_the_image_to_the_new_colour():
-    sim, _ = make_sim()
+def test_background_parameter_repaints_the_screen_and_keeps_the_trails():
+    sim, logs = make_sim()
     run_ticks(sim, 2)
     command(sim, vx=1.0)
     run_ticks(sim, 20)
-    assert sim.world.canvas.color_at(CENTER + 0.1, CENTER) == PEN_COLOR
+    canvas = sim.world.canvas
+    trail = canvas.painted.copy()
+    assert canvas.color_at(CENTER + 0.1, CENTER) == PEN_COLOR
     assert sim.turtlesim.set_parameter("background_r", 0) is None
     assert sim.turtlesim.node.parameters["background_r"] == 0
     assert sim.world.background == (0, 86, 255)
-    assert np.all(sim.world.canvas.pixels == np.array([0, 86, 255], dtype=np.uint8))
+    assert np.all(canvas.pixels[~trail] == np.array([0, 86, 255], dtype=np.uint8))
     assert sim.turtlesim.set_parameter("background_g", 10) is None
     assert sim.turtlesim.set_parameter("background_b", 20) is None
-    assert np.all(sim.world.canvas.pixels == np.array([0, 10, 20], dtype=np.uint8))
-    call(sim, "/clear", Empty.Request())  # clear now uses the new background
-    assert sim.world.canvas.color_at(1.0, 1.0) == (0, 10, 20)
+    assert np.all(canvas.pixels[~trail] == np.array([0, 10, 20], dtype=np.uint8))
+    assert np.all(canvas.pixels[trail] == np.array(PEN_COLOR, dtype=np.uint8))  # the trail stays
+    assert canvas.color_at(CENTER + 0.1, CENTER) == PEN_COLOR
+    assert canvas.color_at(1.0, 1.0) == UNPAINTED  # the sensor never reads the background
+    assert "Clearing turtlesim." not in messages(logs, INFO)
+    call(sim, "/clear", Empty.Request())  # clear now shows the new background
+    assert np.all(canvas.pixels == np.array([0, 10, 20], dtype=np.uint8))
 
 
 @pytest.mark.parametrize(("name", "value"), [("background_r", 256), ("background_g", -1), ("background_b", 1.5), ("background_r", True), ("nonsense", 1)])

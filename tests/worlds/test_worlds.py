@@ -323,7 +323,7 @@ def test_run_headless_in_a_world_file(tmp_path):
         "--duration", "3", cwd=tmp_path,
     )
     assert proc.returncode == 0, proc.stderr
-    assert "Oh no! I hit an obstacle! (Blocked at [x=6.000000" in proc.stdout
+    assert "Oh no! I hit an obstacle! (Blocked at [x=6.000000" in proc.stderr
 
 
 LESSON = """\

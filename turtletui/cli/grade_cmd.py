@@ -108,6 +108,13 @@ def grade(
         help="ray: the cluster, as Ray names it (auto, local, ray://HOST:10001;"
         " default: $RAY_ADDRESS, else one on this machine, else a new one).",
     ),
+    distro: str = typer.Option(
+        None,
+        "--distro",
+        metavar="NAME",
+        help="The ROS 2 submissions run as: humble, jazzy (turtlesim.msg), kilted or lyrical"
+        " (turtlesim_msgs.msg). Default: $TURTLETUI_DISTRO, else the lesson's, else lyrical.",
+    ),
 ) -> None:
     """Grade submissions against a lesson's scenarios and checks.
 
@@ -117,6 +124,14 @@ def grade(
     from turtletui.grading.reports import SINGLE_SUBMISSION_FORMATS, ReportOptions
 
     check_report_options(fmt, roster, hidden_tests)
+    if distro is not None:
+        from turtletui.compat.distro import ENV_VAR, check_distro
+
+        try:
+            # through the environment, so that every grading worker sees it
+            os.environ[ENV_VAR] = check_distro(distro)
+        except ValueError as err:
+            fail(f"--distro: {err}")
     from turtletui.grading.engine import RECORDING_FORMATS
 
     if recording_format not in RECORDING_FORMATS:

@@ -58,6 +58,13 @@ def run(
         help="How the app draws the arena: half (half blocks, any terminal), braille (finer trails),"
         " graphics (the real picture: Kitty, Sixel), or auto (the best the terminal shows).",
     ),
+    distro: str = typer.Option(
+        None,
+        "--distro",
+        metavar="NAME",
+        help="The ROS 2 your nodes run as: humble, jazzy (turtlesim.msg), kilted or lyrical"
+        " (turtlesim_msgs.msg). Default: $TURTLETUI_DISTRO, else the lesson's, else lyrical, the newest LTS.",
+    ),
     world: str = typer.Option(
         None,
         "--world",
@@ -69,36 +76,69 @@ def run(
 
     ROS arguments go last: turtletui run node.py --headless --ros-args -p speed:=2.0
     """
+    if distro is not None:
+        from turtletui.compat.distro import check_distro
+
+        try:
+            distro = check_distro(distro)
+        except ValueError as err:
+            fail(f"--distro: {err}")
     if not headless:
         require_screen("run headless instead: turtletui run FILE.py --headless --duration 60")
-        _run_app(controllers, plugins_of(plugin), lesson, ascii_only, seed, world, pixels, record, foxglove)
+        _run_app(controllers, plugins_of(plugin), lesson, ascii_only, seed, world, pixels, record, foxglove, distro)
         return
     from turtletui.api import run as run_controllers
+    from turtletui.compat.ros_args import RosArgsError
+    from turtletui.graph.logs import OUTPUT_SUFFIX
+    from turtletui.runtime.loader import ControllerError
     from turtletui.runtime.resolve import resolve_controllers
 
     plugins = plugins_of(plugin)
     specs = resolve_controllers(controllers or ["part6_wall_avoider"], plugins=plugins)
+    if not controllers:
+        # the course's Part 6 node, as the app runs it with its lesson: written for Jazzy
+        from turtletui.compat.distro import resolve_distro
+
+        try:
+            distro = resolve_distro(distro, "jazzy")
+        except ValueError as err:
+            fail(str(err))
     if not duration > 0:
         fail(f"--duration must be a positive number of seconds, got {duration}")
+    _check_outputs(record, foxglove)
     sim_world = None if world is None else _resolve_world(world, plugins).build(seed)
 
     def print_log(record) -> None:
-        if not quiet:
-            sys.stdout.write(record.format() + "\n")
+        # As under ROS: a node's log lines go to stderr in rcutils' console
+        # format, what a sandboxed controller prints goes to stdout as it is.
+        if quiet:
+            return
+        if record.node.endswith(OUTPUT_SUFFIX):
+            sys.stdout.write(record.msg + "\n")
+        else:
+            sys.stderr.write(record.format() + "\n")
 
-    result = run_controllers(
-        specs,
-        duration=duration,
-        seed=seed,
-        realtime=realtime,
-        sandbox=False if in_process else None,
-        ros_args=ROS_ARGS,
-        record=record,
-        on_log=print_log,
-        keep_calls=False,
-        world=sim_world,
-        foxglove=foxglove,
-    )
+    try:
+        result = run_controllers(
+            specs,
+            duration=duration,
+            seed=seed,
+            realtime=realtime,
+            sandbox=False if in_process else None,
+            ros_args=ROS_ARGS,
+            record=record,
+            on_log=print_log,
+            keep_calls=False,
+            world=sim_world,
+            foxglove=foxglove,
+            distro=distro,
+        )
+    except (ControllerError, RosArgsError, ValueError) as err:
+        fail(str(err))
+    except BrokenPipeError:
+        raise  # stdout closed (``| head``): Click exits quietly
+    except OSError as err:
+        fail(str(err))
     for crash in result.crashes:
         if crash.kind == "load":
             # A sandboxed file without main() or Node is bad input, as in-process.
@@ -131,6 +171,7 @@ def _run_app(
     pixels: str = "auto",
     record: str | None = None,
     foxglove: str | None = None,
+    distro: str | None = None,
 ) -> None:
     """The Textual app (imported only here: headless runs never load Textual)."""
     _check_outputs(record, foxglove)
@@ -147,6 +188,12 @@ def _run_app(
         except LessonError as err:
             fail(f"--lesson: {err}")
         lesson_path = found.path
+    from turtletui.compat.distro import resolve_distro
+
+    try:
+        distro = resolve_distro(distro, found.distro if lesson is not None else None)
+    except ValueError as err:
+        fail(str(err))
     what = "--world"
     if lesson is not None and world is None and found.world != "empty":
         world, what = found.world, f"lesson {found.id}: world"
@@ -166,6 +213,7 @@ def _run_app(
         graphics=drawing.graphics,
         record=record,
         foxglove=foxglove,
+        distro=distro,
     ).run()
 
 

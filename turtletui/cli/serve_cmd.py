@@ -39,6 +39,12 @@ def serve(
     ),
     ascii_only: bool = typer.Option(False, "--ascii", help="Draw with plain ASCII and no colour."),
     plugin: list[Path] = typer.Option(None, "--plugin", help="Load a plugin file or folder (repeatable)."),
+    distro: str = typer.Option(
+        None,
+        "--distro",
+        metavar="NAME",
+        help="The ROS 2 the served nodes run as: humble, jazzy, kilted or lyrical (see turtletui run --help).",
+    ),
 ) -> None:
     """Serve the app to a web browser: one app per tab, with an editor on FILE.
 
@@ -49,12 +55,21 @@ def serve(
 
     if not 0 < port < 65536:
         fail(f"--port must be in 1..65535, got {port}")
+    if distro is not None:
+        from turtletui.compat.distro import check_distro
+
+        try:
+            distro = check_distro(distro)
+        except ValueError as err:
+            fail(f"--distro: {err}")
     lesson_path, file = _lesson_and_file(lesson, file, plugin)
     command = [sys.executable, "-m", "turtletui", "run", str(file.resolve())]
     if lesson_path is not None:
         command += ["--lesson", str(lesson_path.resolve())]
     if ascii_only:
         command.append("--ascii")
+    if distro is not None:
+        command += ["--distro", distro]
     for path in plugin or ():
         command += ["--plugin", str(path.resolve())]
     problem = _cannot_listen(host, port)

@@ -18,6 +18,10 @@ ROS_PACKAGES = (
     "std_msgs",
     "std_srvs",
     "sensor_msgs",
+    "nav_msgs",
+    "example_interfaces",
+    "tf2_msgs",
+    "visualization_msgs",
     "builtin_interfaces",
     "rcl_interfaces",
     "action_msgs",
@@ -26,8 +30,13 @@ ROS_PACKAGES = (
 )
 
 
-def install() -> None:
-    """Make ``import rclpy`` (and the message packages) resolve to turtletui's."""
+def install(distro: str | None = None) -> None:
+    """Make ``import rclpy`` (and the message packages) resolve to turtletui's,
+    as in ROS 2 ``distro`` (the default when None: see turtletui.compat.distro),
+    where only one of ``turtlesim`` and ``turtlesim_msgs`` exists."""
+    from turtletui.compat.distro import install_finder, resolve_distro
+
+    install_finder(resolve_distro(distro))
     if sys.path[:1] != [SHIM_PATH]:
         if SHIM_PATH in sys.path:
             sys.path.remove(SHIM_PATH)

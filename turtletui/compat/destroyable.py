@@ -2,11 +2,7 @@
 
 from __future__ import annotations
 
-
-class InvalidHandle(RuntimeError):
-    """rclpy's error for using an entity after its destruction was requested
-    (``rclpy.exceptions.InvalidHandle``)."""
-
+from turtletui.compat.exceptions import InvalidHandle
 
 _DESTROYED = "cannot use Destroyable because destruction was requested"
 

@@ -8,6 +8,17 @@ from typing import Any
 
 from turtletui.compat.context import Context, get_default_context
 from turtletui.compat.destroyable import Destroyable
+from turtletui.compat.exceptions import (  # noqa: F401  (re-exported: rclpy.node users import them here)
+    InvalidHandle,
+    InvalidParameterTypeException,
+    NotInitializedException,
+    ParameterAlreadyDeclaredException,
+    ParameterNotDeclaredException,
+    validate_full_topic_name,
+    validate_namespace,
+    validate_node_name,
+    validate_topic_name,
+)
 from turtletui.compat.graph_info import (
     NodeNameNonExistentError,
     TopicEndpointInfo,
@@ -22,7 +33,6 @@ from turtletui.compat.parameter import (
     SetParametersResult,
     parameter_value_to_python,
     type_matches,
-    type_name,
 )
 from turtletui.compat.qos import (
     QoSProfile,
@@ -36,32 +46,6 @@ from turtletui.graph import core
 from turtletui.interfaces import copier, interface_name
 
 _NS = 1_000_000_000
-
-
-class ParameterNotDeclaredException(Exception):
-    def __init__(self, parameters: Any) -> None:
-        super().__init__(f"Invalid access to undeclared parameter(s): {parameters}")
-
-
-class ParameterAlreadyDeclaredException(Exception):
-    def __init__(self, parameters: Any) -> None:
-        super().__init__(f"Parameter(s) already declared: {parameters}")
-
-
-class InvalidParameterTypeException(Exception):
-    def __init__(self, parameter: Parameter, expected_type: Any) -> None:
-        value = parameter.value
-        super().__init__(
-            f"Trying to set parameter '{parameter.name}' to '{value}' of type "
-            f"'{type_name(value) if value is not None else 'NOT_SET'}', expecting type "
-            f"'{expected_type.name}'" + _type_hint(value, expected_type)
-        )
-
-
-def _type_hint(value: Any, expected: Parameter.Type) -> str:
-    if expected is Parameter.Type.DOUBLE and isinstance(value, int) and not isinstance(value, bool):
-        return f" (write {value}.0: ROS reads {value} as an integer)"
-    return ""
 
 
 def _check_msg_type(msg_type: Any, what: str) -> str:
@@ -297,15 +281,10 @@ class Node(Destroyable):
     ) -> None:
         self._context = context or get_default_context()
         if not self._context.ok():
-            raise RuntimeError(
-                "rclpy.init() has not been called (or the context was shut down): "
-                "call rclpy.init() before creating a node"
-            )
-        if not isinstance(node_name, str) or not node_name or not _valid_name(node_name):
-            raise ValueError(
-                f"Invalid node name {node_name!r}: use letters, digits and underscores, "
-                "not starting with a digit"
-            )
+            raise NotInitializedException("cannot create node")
+        if not isinstance(node_name, str):
+            raise TypeError(f"node_name must be a str, got {node_name!r}")
+        validate_node_name(node_name)
         from turtletui.compat.ros_args import parse_ros_args
 
         ros_args = self._context.ros_args
@@ -322,6 +301,8 @@ class Node(Destroyable):
         namespace = remaps.pop("__ns", namespace or "")
         if namespace and not namespace.startswith("/"):
             namespace = "/" + namespace
+        if namespace:
+            validate_namespace(namespace)
         self._overrides = overrides
         for param in parameter_overrides or ():
             self._overrides.setdefault(param.name, param.value)
@@ -377,24 +358,29 @@ class Node(Destroyable):
     # -- names ----------------------------------------------------------------
     def resolve_topic_name(self, topic: str, *, only_expand: bool = False) -> str:
         """Expand ``~``, relative names and (unless ``only_expand``) remappings, as rcl does."""
-        self._require_alive()
-        remaps = {} if only_expand else self._remaps
-        if isinstance(topic, str) and topic in remaps:
-            topic = remaps[topic]
-        name = self._expand_topic_name(topic)
-        return _checked_topic(remaps.get(name, name), topic)
+        return self._resolve(topic, only_expand=only_expand)
 
     def _expand_topic_name(self, topic: str) -> str:
         """``topic`` as a fully qualified name, not remapped (what graph queries use)."""
-        if not isinstance(topic, str) or not topic:
-            raise ValueError(f"Invalid topic name {topic!r}: it must be a non-empty string")
+        return self._resolve(topic, only_expand=True)
+
+    def _resolve(self, topic: str, is_service: bool = False, *, only_expand: bool = False) -> str:
+        self._require_alive()
+        if not isinstance(topic, str):
+            raise TypeError(f"a topic or service name must be a str, got {topic!r}")
+        validate_topic_name(topic, is_service=is_service)
+        remaps = {} if only_expand else self._remaps
+        if topic in remaps:
+            topic = remaps[topic]
         if topic.startswith("~"):
             name = self._record.fqn + topic[1:]
         elif topic.startswith("/"):
             name = topic
         else:
             name = f"{self._record.namespace.rstrip('/')}/{topic}"
-        return _checked_topic(name, topic)
+        name = remaps.get(name, name)
+        validate_full_topic_name(name, is_service=is_service)
+        return name
 
     # -- entities ---------------------------------------------------------------
     def create_publisher(
@@ -489,7 +475,7 @@ class Node(Destroyable):
     ) -> Client:
         self._require_alive()
         _check_srv_type(srv_type, "create_client()")
-        record = self._graph.add_client(self._record, self.resolve_topic_name(srv_name), srv_type)
+        record = self._graph.add_client(self._record, self._resolve(srv_name, True), srv_type)
         client = Client(self, record)
         self._entities.append(client)
         return client
@@ -506,7 +492,7 @@ class Node(Destroyable):
         self._require_alive()
         _check_srv_type(srv_type, "create_service()")
         host = self._context.host
-        name = self.resolve_topic_name(srv_name)
+        name = self._resolve(srv_name, True)
 
         def handler(request: Any, respond: Callable[[Any], None]) -> None:
             response = callback(request, srv_type.Response())
@@ -787,27 +773,6 @@ class Node(Destroyable):
             self._parameters[parameter.name] = parameter
             self._graph.set_parameter(self._record, parameter.name, parameter.value)
         return SetParametersResult(successful=True)
-
-
-def _valid_name(name: str) -> bool:
-    return (name[0].isalpha() or name[0] == "_") and all(c.isalnum() or c == "_" for c in name)
-
-
-def _checked_topic(name: str, given: str) -> str:
-    if not _valid_topic(name):
-        raise ValueError(
-            f"Invalid topic name {given!r}: use letters, digits, underscores and '/', "
-            "without spaces, '//' or a trailing '/'"
-        )
-    return name
-
-
-def _valid_topic(name: str) -> bool:
-    if not name.startswith("/") or "//" in name or (len(name) > 1 and name.endswith("/")):
-        return False
-    return all(token and (token[0].isalpha() or token[0] == "_") and all(
-        c.isalnum() or c == "_" for c in token
-    ) for token in name[1:].split("/")) if name != "/" else False
 
 
 def _check_srv_type(srv_type: Any, what: str) -> None:

@@ -20,6 +20,7 @@ from functools import cached_property
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from turtletui.compat.distro import resolve_distro
 from turtletui.errors import TurtletuiError, UsageError
 from turtletui.grading.checks import Check, Verdict
 from turtletui.grading.pictures import picture_of_trace
@@ -342,6 +343,7 @@ def run_scenario(
             keep_calls=False,
             world=plan.worlds[world_name](run.seed),
             on_log=start_logs.append if record is not None else None,
+            distro=resolve_distro(None, plan.lesson.distro),
         )
         if result.interrupted:
             raise KeyboardInterrupt

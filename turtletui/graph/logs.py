@@ -8,6 +8,8 @@ DEBUG, INFO, WARN, ERROR, FATAL = 10, 20, 30, 40, 50
 LEVEL_NAMES = {DEBUG: "DEBUG", INFO: "INFO", WARN: "WARN", ERROR: "ERROR", FATAL: "FATAL"}
 LEVELS_BY_NAME = {name: level for level, name in LEVEL_NAMES.items()}
 LEVELS_BY_NAME["WARNING"] = WARN
+OUTPUT_SUFFIX = ":stdout"
+"""Ends the node name of a record that holds a line a sandboxed controller printed (not logged)."""
 
 
 class LogRecord(NamedTuple):

@@ -34,6 +34,7 @@ from turtletui.interfaces.turtlesim import (
     TeleportRelative,
 )
 from turtletui.sim import (
+    ARENA_SIZE,
     DT,
     Event,
     Killed,
@@ -56,6 +57,8 @@ _F32_pack = _F32.pack
 _F32_unpack = _F32.unpack
 PARAMETERS = ("background_r", "background_g", "background_b", "holonomic")
 """The parameters turtlesim declares (besides use_sim_time, which every node has)."""
+_ROTATION_ENDINGS = {"succeeded": "Rotation goal completed successfully", "canceled": "Rotation goal canceled"}
+"""What turtle.cpp logs (INFO) when a rotate_absolute goal ends; an abort has its own warning."""
 
 
 def parameter_problem(name: str, value: Any, node: str = "/turtlesim") -> str | None:
@@ -242,10 +245,8 @@ class TurtlesimNode:
         if name == "holonomic":
             self.world.holonomic = value
         else:
-            background = list(self.world.background)
-            background[PARAMETERS.index(name)] = value
-            self.world.set_background(tuple(background))
-            self.world.take_events()
+            params = {**self.node.parameters, name: value}
+            self.world.set_background((params["background_r"], params["background_g"], params["background_b"]))
         self.graph.set_parameter(self.node, name, value)
         return None
 
@@ -354,7 +355,9 @@ class TurtlesimNode:
             for sink in self.event_sinks:
                 sink(event)
             if isinstance(event, WallHit):
-                self._log(WARN, f"Oh no! I hit the wall! (Clamping from [x={event.x:f}, y={event.y:f}])")
+                # turtle.cpp prints its canvas position, whose y axis points down.
+                canvas_y = ARENA_SIZE - event.y
+                self._log(WARN, f"Oh no! I hit the wall! (Clamping from [x={event.x:f}, y={canvas_y:f}])")
             elif isinstance(event, ObstacleHit):
                 self._log(WARN, f"Oh no! I hit an obstacle! (Blocked at [x={event.x:f}, y={event.y:f}])")
             elif isinstance(event, RotationFeedback):
@@ -363,6 +366,8 @@ class TurtlesimNode:
                     handle.publish_feedback(RotateAbsolute.Feedback(remaining=_float32(event.remaining, 0, 0, 0, 0)[0]))
             elif isinstance(event, RotationFinished):
                 handle = self._goals.pop(id(event.goal), None)
+                if event.status in _ROTATION_ENDINGS:
+                    self._log(INFO, _ROTATION_ENDINGS[event.status])
                 if handle is not None:
                     delta = _float32(event.delta, 0, 0, 0, 0)[0]
                     handle.finish(event.status, RotateAbsolute.Result(delta=delta))

@@ -32,7 +32,9 @@ from math import isinf as _isinf
 from turtletui.interfaces import (  # noqa: F401  (registers every type)
     action_msgs,
     builtin_interfaces,
+    example_interfaces,
     geometry_msgs,
+    nav_msgs,
     rcl_interfaces,
     sensor_msgs,
     std_msgs,

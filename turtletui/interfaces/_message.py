@@ -69,6 +69,9 @@ _PRIMITIVES: dict[str, tuple] = {
     'float32': ('float', float, 'float', -_F32_BOUND, _F32_BOUND, 'f'),
     'float64': ('double', float, 'float', -_F64_BOUND, _F64_BOUND, 'd'),
     'string': ('string', str, 'str', None, None, None),
+    'wstring': ('wstring', str, 'str', None, None, None),
+    # rosidl maps char to uint8: an int in [0, 255] in Python
+    'char': ('uint8', int, 'int', 0, 255, 'B'),
 }
 for _bits, _code in ((8, 'b'), (16, 'h'), (32, 'i'), (64, 'q')):
     _PRIMITIVES[f'int{_bits}'] = (f'int{_bits}', int, 'int', -2 ** (_bits - 1),
@@ -83,8 +86,16 @@ _SCALAR, _SEQ, _BOUNDED, _FIXED = 0, 1, 2, 3
 
 
 def is_primitive_type(base: str) -> bool:
-    """True for ROS primitive type names, bounded ``string<=N`` included."""
-    return base in _PRIMITIVES or base.startswith('string<=')
+    """True for ROS primitive type names, bounded ``string<=N`` / ``wstring<=N`` included."""
+    return base in _PRIMITIVES or base.startswith(('string<=', 'wstring<='))
+
+
+def _string_bound(base: str) -> tuple[str, int | None]:
+    """('string' or 'wstring', N) for a bounded string type, (base, None) otherwise."""
+    text, sep, bound = base.partition('<=')
+    if sep and text in ('string', 'wstring'):
+        return text, int(bound)
+    return base, None
 
 
 def _error(factory: str, *args: Any) -> Exception:
@@ -261,12 +272,11 @@ def _make_field(package: str, type_string: str, name: str, default: str | None) 
             spec.array, spec.size = _BOUNDED, int(bracket[2:])
         else:
             spec.array, spec.size = _FIXED, int(bracket)
-    if base.startswith('string<='):
-        spec.strlen = int(base[8:])
+    string_type, spec.strlen = _string_bound(base)
     if is_primitive_type(base):
-        ftype, pytype, kind, lo, hi, tc = _PRIMITIVES['string' if spec.strlen else base]
+        ftype, pytype, kind, lo, hi, tc = _PRIMITIVES[string_type]
         if spec.strlen is not None:
-            ftype = f'string<{spec.strlen}>'
+            ftype = f'{string_type}<{spec.strlen}>'
         spec.msg_cls = None
         spec.ros_type = type_string
     else:
@@ -308,7 +318,7 @@ def _parse_section(package: str, text: str) -> tuple[list[FieldSpec], dict[str, 
         rest = rest.lstrip()
         if '=' in rest:
             cname, _, value = rest.partition('=')
-            kind = _PRIMITIVES['string' if type_string.startswith('string') else type_string][2]
+            kind = _PRIMITIVES[_string_bound(type_string)[0]][2]
             constants[cname.strip()] = _literal(kind, value)
             continue
         name, _, default = rest.partition(' ')

@@ -1,8 +1,8 @@
-"""std_srvs/srv: Empty, Trigger and SetBool.
+"""std_srvs: Empty, Trigger and SetBool.
 
 Import path in ROS 2: std_srvs.srv.
-Definitions copied from the ROS 2 interface packages (Apache-2.0);
-the text of each definition is what ``ros2 interface show`` prints.
+Definitions copied from the ROS 2 interface packages (Apache-2.0) by
+scripts/interfaces_from_ros.py: the text of each is its file's, byte for byte.
 """
 
 from turtletui.interfaces._message import define_service as _srv
@@ -17,14 +17,14 @@ Empty = _srv('std_srvs/srv/Empty', '''\
 ---
 ''', globals())
 
-Trigger = _srv('std_srvs/srv/Trigger', '''\
+SetBool = _srv('std_srvs/srv/SetBool', '''\
+bool data # e.g. for hardware enabling / disabling
 ---
 bool success   # indicate successful run of triggered service
 string message # informational, e.g. for error messages
 ''', globals())
 
-SetBool = _srv('std_srvs/srv/SetBool', '''\
-bool data # e.g. for hardware enabling / disabling
+Trigger = _srv('std_srvs/srv/Trigger', '''\
 ---
 bool success   # indicate successful run of triggered service
 string message # informational, e.g. for error messages

@@ -1,8 +1,9 @@
 """turtlesim: the turtle's messages, services and action.
 
-Import paths in ROS 2: turtlesim.msg, turtlesim.srv, turtlesim.action (and,
-from Jazzy on, the same types as turtlesim_msgs.msg / .srv / .action; here
-both names give the *same* class objects: see ``ros_module_members``).
+Import paths in ROS 2: turtlesim.msg, turtlesim.srv, turtlesim.action up to
+Jazzy; from Kilted on the same types are turtlesim_msgs.msg / .srv / .action.
+Here both names give the *same* class objects (see ``ros_module_members``);
+a run imports only the one its ``--distro`` has (turtletui.compat.distro).
 Definitions transcribed from ros/ros_tutorials (BSD-3-Clause), byte for byte
 (Pose.msg, Spawn.srv and Kill.srv end without a newline); the text of each is
 what ``ros2 interface show`` prints.

@@ -23,6 +23,7 @@ try:
 except ModuleNotFoundError:  # Python 3.10
     import tomli as tomllib
 
+from turtletui.compat.distro import check_distro
 from turtletui.errors import TurtletuiError
 from turtletui.lessons.model import DEFAULT_START, ArenaOverlay, CheckSpec, Lesson, Scenario
 from turtletui.messages import did_you_mean, one_line
@@ -43,6 +44,7 @@ LESSON_FIELDS = (
     "reference",
     "world",
     "time_limit",
+    "distro",
     "scenarios",
     "checks",
     "overlays",
@@ -236,6 +238,12 @@ class _Validator:
                 "time_limit",
                 top,
             )
+        distro = self._optional_text(data, "distro", top)
+        if distro is not None:
+            try:
+                distro = check_distro(distro)
+            except ValueError as err:
+                raise self._error(f"field 'distro': {err}", "distro", top) from None
         scenarios = tuple(
             self._scenario(i, item) for i, item in enumerate(self._tables(data, "scenarios", top))
         )
@@ -291,6 +299,7 @@ class _Validator:
             reference=reference,
             world=world,
             time_limit=None if time_limit is None else float(time_limit),
+            distro=distro,
             scenarios=scenarios,
             checks=checks,
             overlays=overlays,

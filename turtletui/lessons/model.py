@@ -105,6 +105,9 @@ class Lesson:
     time_limit: float | None = None
     """Wall-clock seconds all the runs of one submission may take together
     when graded; None: turtletui's default (turtletui.grading.batch)."""
+    distro: str | None = None
+    """The ROS 2 distro the lesson's code is written for (``jazzy``: ``turtlesim.msg``);
+    None: the run's default (turtletui.compat.distro)."""
     scenarios: tuple[Scenario, ...] = ()
     checks: tuple[CheckSpec, ...] = ()
     overlays: tuple[ArenaOverlay, ...] = ()

@@ -25,7 +25,7 @@ SEPARATOR = "=" * 80
 _FIELD_TYPE = re.compile(r"(?:^|\n)\s*([a-zA-Z0-9_/]+)(?:\[[^\]]*\])?\s+")
 _PRIMITIVES = frozenset((
     "bool", "byte", "char", "float32", "float64", "int8", "uint8",
-    "int16", "uint16", "int32", "uint32", "int64", "uint64", "string",
+    "int16", "uint16", "int32", "uint32", "int64", "uint64", "string", "wstring",
 ))
 
 

@@ -18,7 +18,7 @@ from turtletui.recording.schema import interface_of
 _TYPE_IDS = {
     "nested": 1, "int8": 2, "uint8": 3, "int16": 4, "uint16": 5, "int32": 6, "uint32": 7,
     "int64": 8, "uint64": 9, "float32": 10, "float64": 11, "char": 3, "bool": 15, "byte": 16,
-    "string": 17, "bounded_string": 21,
+    "string": 17, "wstring": 18, "bounded_string": 21, "bounded_wstring": 22,
 }
 _ARRAY_OFFSETS = (0, 144, 96, 48)
 """Added to the id: scalar, unbounded sequence, bounded sequence, fixed array."""
@@ -28,7 +28,7 @@ def _field(spec: Any) -> dict[str, Any]:
     if spec.kind == "msg":
         base = "nested"
     elif spec.strlen is not None:
-        base = "bounded_string"
+        base = "bounded_wstring" if spec.base.startswith("wstring") else "bounded_string"
     else:
         base = spec.base
     return {

@@ -425,7 +425,7 @@ def main(config: dict[str, Any] | None = None) -> None:
         user_frames,
     )
 
-    compat.install()
+    compat.install(config.get("distro"))
     graph = ChildGraph()
     graph.epoch_ns = config["epoch_ns"]
     log_lines = config.get("limits", {}).get("log_lines")

@@ -125,7 +125,7 @@ def run_in_process(
     """Load and run one controller until it returns or ``end_ns``; report a crash."""
     owner = f"inproc:{spec.name}"
     host = InProcessHost(sim, owner, end_ns)
-    compat.install()
+    compat.install(sim.distro)
     compat_context.reset_default_context()
     compat_logging.reset_levels()
     compat_context.bind_host(host)

@@ -24,7 +24,7 @@ from time import perf_counter as _perf_counter
 from typing import Any
 
 from turtletui.graph.core import GraphError, NodeRecord
-from turtletui.graph.logs import ERROR, INFO, WARN
+from turtletui.graph.logs import ERROR, INFO, OUTPUT_SUFFIX, WARN
 from turtletui.interfaces import InterfaceError, from_values, get_interface, to_values
 from turtletui.runtime import forkserver, wire
 from turtletui.runtime.budget import CALLS, WAKE, OutputBudget, Pace, size_text
@@ -182,6 +182,7 @@ class SandboxHost:
             "sys_path": [import_root(self.spec.factory)] if self.spec.factory else [],
             "ros_args": ros_args,
             "seed": seed,
+            "distro": self.sim.distro,
             "epoch_ns": self.graph.epoch_ns,
             "realtime": self.sim.realtime,
             "limits": {
@@ -609,7 +610,7 @@ class SandboxHost:
             )
 
     def _show_output(self, line: str) -> None:
-        self.graph.log(f"{self.spec.name}:stdout", INFO, line)
+        self.graph.log(f"{self.spec.name}{OUTPUT_SUFFIX}", INFO, line)
 
     def _report_dropped(self) -> None:
         """One line at the end of the run saying how much was not shown."""

@@ -7,6 +7,7 @@ import time
 from collections.abc import Callable, Sequence
 from typing import Protocol
 
+from turtletui.compat.distro import resolve_distro
 from turtletui.graph.core import LOCKSTEP_EPOCH_NS, NS_PER_S, Graph
 from turtletui.graph.introspection import dangling_endpoints
 from turtletui.graph.logs import WARN, LogRecord
@@ -58,7 +59,10 @@ class Simulation:
         paced: bool = True,
         log_sinks: Sequence[Callable[[LogRecord], None]] = (),
         turtlesim_name: str = TurtlesimNode.NAME,
+        distro: str | None = None,
     ) -> None:
+        self.distro = resolve_distro(distro)
+        """The ROS 2 distro controllers run as (turtletui.compat.distro)."""
         epoch = time.time_ns() if realtime else LOCKSTEP_EPOCH_NS
         self.graph = Graph(epoch_ns=epoch, type_name=interface_name)
         self.graph.log_sinks.extend(log_sinks)

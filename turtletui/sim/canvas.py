@@ -1,9 +1,17 @@
-"""The pen image: a 500 x 500 RGB raster, as turtlesim's ``path_image``.
+"""The pen image: a 500 x 500 raster, as turtlesim's ``path_image``.
 
 Segments are queued as data and rasterised in vectorised batches when the
 image is read, so a turtle drawing every 16 ms costs a list append per step.
 Coordinates follow turtlesim: pixel = metres * 45 with the y axis flipped
 (pixel row 0 is the top, y = 11.0889 m).
+
+In ROS 2 turtlesim the pen image is a layer of its own, filled with
+transparent white (``qRgba(255, 255, 255, 0)``); the background colour is
+painted beneath it only on screen. So the colour sensor reads (255, 255, 255)
+on ground no pen has touched, and a background change recolours the screen
+without wiping the trails. The canvas keeps which pixels a pen painted
+(``painted``) beside the picture as it is shown (``pixels``, ``packed``:
+the trails over the background), so renderers stay a plain read.
 """
 
 from __future__ import annotations
@@ -19,6 +27,8 @@ _FLUSH_AT = 4096
 _CHANGES_KEPT = 256
 """Recent changes remembered for changed_since (older asks get the whole image)."""
 _LAST_PX = PIXELS - 1
+UNPAINTED = (255, 255, 255)
+"""What the colour sensor reads where no pen has drawn: the pen layer's transparent white."""
 
 
 def _pack(rgb: tuple[int, int, int]) -> int:
@@ -33,10 +43,11 @@ def to_pixel(x: float, y: float) -> tuple[int, int]:
 
 
 class PenCanvas:
-    """Trails drawn by the turtles' pens over the background colour.
+    """Trails drawn by the turtles' pens, shown over the background colour.
 
     Pixels are stored packed, one little-endian uint32 (r, g, b, 0) each, so a
     batch of stamps is one fancy assignment; ``pixels`` is an RGB view of it.
+    A boolean mask beside them says which pixels a pen painted.
     """
 
     def __init__(self, background: tuple[int, int, int] = BACKGROUND) -> None:
@@ -44,6 +55,7 @@ class PenCanvas:
         self._flat = memoryview(self._packed).cast("B").cast("I")
         self._rgb = self._packed.view(np.uint8).reshape(PIXELS, PIXELS, 4)[:, :, :3]
         self._rgb.flags.writeable = False
+        self._painted = np.zeros((PIXELS, PIXELS), dtype=bool)
         self._pending = array("d")
         """Queued segments, six numbers each: x0, y0, x1, y1 (m), packed colour, width."""
         self.background = background
@@ -88,12 +100,33 @@ class PenCanvas:
             self._flush()
         return self._rgb
 
+    @property
+    def painted(self) -> np.ndarray:
+        """(500, 500) bool: True where a pen has drawn since the last clear. Read only."""
+        if self._pending:
+            self._flush()
+        view = self._painted.view()
+        view.flags.writeable = False
+        return view
+
     def clear(self, background: tuple[int, int, int] | None = None) -> None:
-        """Fill the image with the background colour, dropping every trail."""
+        """Drop every trail (the /clear service), showing the background colour."""
         if background is not None:
             self.background = background
         del self._pending[:]
+        self._painted[:, :] = False
         self._packed[:, :] = _pack(self.background)
+        self._changed_everything()
+
+    def set_background(self, background: tuple[int, int, int]) -> None:
+        """Show another background colour beneath the trails, which stay."""
+        if self._pending:
+            self._flush()
+        self.background = background
+        self._packed[~self._painted] = _pack(background)
+        self._changed_everything()
+
+    def _changed_everything(self) -> None:
         self.version += 1
         self._changes.append((self.version, (0, _LAST_PX, 0, _LAST_PX)))
 
@@ -113,10 +146,13 @@ class PenCanvas:
             self._flush()
 
     def color_at(self, x: float, y: float) -> tuple[int, int, int]:
-        """RGB of the image under world point (x, y), as turtlesim's color_sensor."""
+        """RGB of the pen image under world point (x, y), as turtlesim's
+        color_sensor: UNPAINTED (255, 255, 255) where no pen has drawn."""
         if self._pending:
             self._flush()
         col, row = to_pixel(x, y)
+        if not self._painted[row, col]:
+            return UNPAINTED
         value = self._flat[row * PIXELS + col]
         return value & 0xFF, value >> 8 & 0xFF, value >> 16 & 0xFF
 
@@ -176,5 +212,6 @@ class PenCanvas:
         # earlier ones: numpy assigns repeated indices in order.
         flat = index.ravel()
         self._packed.ravel()[flat] = np.repeat(colors[seg], steps.shape[1])
+        self._painted.ravel()[flat] = True
         rows, cols = np.divmod(flat, PIXELS)
         self._changes.append((self.version, (int(rows.min()), int(rows.max()), int(cols.min()), int(cols.max()))))

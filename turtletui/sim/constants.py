@@ -35,6 +35,9 @@ PEN_COLOR = (179, 184, 255)
 PEN_WIDTH = 3
 """Default pen width in pixels."""
 
+QT_DEFAULT_PEN_WIDTH = 1
+"""Width of a pen set with width 0: set_pen makes a new QPen, whose default is 1 px."""
+
 _TWO_PI = 2.0 * math.pi
 
 

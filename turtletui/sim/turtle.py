@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import struct
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 
@@ -21,6 +22,7 @@ from turtletui.sim.obstacles import Obstacle, first_entry
 _cos = math.cos
 _PI = math.pi
 _sin = math.sin
+_F32 = struct.Struct("f")
 
 
 @dataclass(eq=False)
@@ -143,19 +145,23 @@ class Turtle:
         self.teleports.clear()
 
     def _advance_rotation(self, now: float, events: list[Event]) -> None:
+        # turtle.cpp: a cancel ends the goal with the result of the previous
+        # tick (delta not recomputed); otherwise the heading is compared as a
+        # float, and delta is normalize(float(start - heading)).
         goal = self.rotation
         assert goal is not None
-        theta = normalize_angle(self.theta)
-        goal.delta = normalize_angle(goal.start_theta - theta)
         if goal.cancel_requested:
             goal.status = "canceled"
             self.rotation = None
             self.vx = self.vy = self.wz = 0.0
             events.append(RotationFinished(goal, "canceled", goal.delta))
             return
-        remaining = normalize_angle(goal.theta - theta)
+        target = normalize_angle(goal.theta)
+        heading = _float32(self.theta)
+        remaining = normalize_angle(target - heading)
+        goal.delta = normalize_angle(_float32(goal.start_theta - self.theta))
         events.append(RotationFeedback(goal, remaining))
-        if abs(remaining) < ROTATE_TOLERANCE:
+        if abs(normalize_angle(heading - target)) < ROTATE_TOLERANCE:
             goal.status = "succeeded"
             self.rotation = None
             self.vx = self.vy = self.wz = 0.0
@@ -164,3 +170,11 @@ class Turtle:
             self.wz = -ROTATE_SPEED if remaining < 0.0 else ROTATE_SPEED
             self.vx = self.vy = 0.0
             self.last_command_time = now
+
+
+def _float32(value: float) -> float:
+    """``static_cast<float>(value)`` back as a Python float."""
+    try:
+        return _F32.unpack(_F32.pack(value))[0]
+    except OverflowError:
+        return math.copysign(math.inf, value)

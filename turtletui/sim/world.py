@@ -11,7 +11,7 @@ import numpy as np
 
 from turtletui.errors import TurtletuiError
 from turtletui.sim.canvas import PenCanvas
-from turtletui.sim.constants import BACKGROUND, CENTER, DT
+from turtletui.sim.constants import BACKGROUND, CENTER, DT, QT_DEFAULT_PEN_WIDTH
 from turtletui.sim.events import (
     Cleared,
     Event,
@@ -190,9 +190,9 @@ class World:
         self.events.append(Cleared())
 
     def set_background(self, rgb: tuple[int, int, int]) -> None:
-        """Change the background colour; like turtlesim, this clears the drawing."""
-        self.canvas.clear(tuple(rgb))
-        self.events.append(Cleared())
+        """Change the background colour. As in turtlesim, only the screen is
+        repainted: the trails drawn so far stay (and /clear keeps the new colour)."""
+        self.canvas.set_background(tuple(rgb))
 
     def reset(self) -> None:
         """Remove every turtle, restart the name counter, spawn turtle1, clear."""
@@ -228,14 +228,14 @@ class World:
             self._abort_rotation(turtle)
 
     def set_pen(self, name: str, r: int, g: int, b: int, width: int, off: int) -> None:
-        """Change the pen: off lifts it (colour unchanged), width 0 keeps the width."""
+        """Change the pen: off lifts it (colour and width unchanged). Otherwise
+        turtlesim makes a new Qt pen, so width 0 gives Qt's default, 1 pixel."""
         turtle = self.turtle(name)
         turtle.pen_on = not off
         if off:
             return
         turtle.pen_color = (r, g, b)
-        if width != 0:
-            turtle.pen_width = width
+        turtle.pen_width = width or QT_DEFAULT_PEN_WIDTH
 
     def teleport_absolute(self, name: str, x: float, y: float, theta: float) -> None:
         """Queue a jump to (x, y, theta); it happens at the start of the next step."""

@@ -149,8 +149,11 @@ class TurtleApp(App):
         record: str | None = None,
         foxglove: str | None = None,
         turtlesim: TurtlesimArgs | None = None,
+        distro: str | None = None,
     ) -> None:
         super().__init__()
+        self._distro = distro
+        """The ROS 2 distro nodes run as (--distro); None: the default."""
         self._record = record
         """Where to record the session (--record), or None."""
         self._foxglove = foxglove
@@ -265,7 +268,9 @@ class TurtleApp(App):
             record=self._record,
             foxglove=self._foxglove,
             turtlesim=self._turtlesim,
+            distro=self._distro,
         )
+        self.sub_title = f"ROS 2 {self.session.sim.distro.capitalize()}"
         if problem is not None:
             self.session.sim.graph.log("turtletui", ERROR, problem)
         if self._replay is not None:
@@ -451,7 +456,8 @@ class TurtleApp(App):
 
     def action_help(self) -> None:
         if not isinstance(self.screen, HelpScreen):
-            self.push_screen(HelpScreen(self.BINDINGS, ascii=self._ascii))
+            distro = self.session.sim.distro if self.session is not None else None
+            self.push_screen(HelpScreen(self.BINDINGS, ascii=self._ascii, distro=distro))
 
     def action_lessons(self) -> None:
         from turtletui.lessons.loader import LessonError, discover_lessons

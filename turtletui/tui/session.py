@@ -161,8 +161,10 @@ class LiveSession:
         record: str | None = None,
         foxglove: str | None = None,
         turtlesim: TurtlesimArgs | None = None,
+        distro: str | None = None,
     ) -> None:
-        """``start``: start the controllers now (else with start_controllers())."""
+        """``start``: start the controllers now (else with start_controllers()).
+        ``distro``: the ROS 2 distro nodes run as (None: the default)."""
         self.lock = threading.RLock()
         """Held by whoever reads or changes the simulation: the app advances it
         from a ticker thread while the screen's thread reads it and sends requests."""
@@ -184,6 +186,7 @@ class LiveSession:
             paced=False,
             log_sinks=[turtlesim.log_filter(self._on_log)],
             turtlesim_name=turtlesim.name,
+            distro=distro,
         )
         turtlesim.apply(self.sim)
         self.teleop = Teleop(self.sim, lock=self.lock)

@@ -61,10 +61,11 @@ class HelpScreen(ModalScreen[None]):
 
     BINDINGS = [Binding("escape,question_mark,f1,q", "dismiss", "Close", show=False)]
 
-    def __init__(self, bindings: Iterable[Binding], ascii: bool = False) -> None:
+    def __init__(self, bindings: Iterable[Binding], ascii: bool = False, distro: str | None = None) -> None:
         super().__init__()
         self._rows = key_rows(bindings, ascii)
         self._ascii = ascii
+        self._distro = distro
 
     def compose(self) -> ComposeResult:
         with VerticalScroll(id="help-box"):
@@ -78,7 +79,20 @@ class HelpScreen(ModalScreen[None]):
             _grid([*self._rows, ("", ""), *context]),
             Text("\nros2 console", style="bold underline"),
             _grid(CONSOLE_COMMANDS),
+            *([Text("\nROS 2", style="bold underline"), _grid([distro_row(self._distro)])] if self._distro else []),
         )
+
+
+def distro_row(distro: str) -> tuple[str, str]:
+    """What the help says about the run's ROS 2 distro (--distro)."""
+    from turtletui.compat.distro import DISTROS
+
+    info = DISTROS[distro]
+    return (
+        info.title,
+        f"your nodes run as on ROS 2 {info.name.capitalize()}: turtlesim's types are in"
+        f" {info.turtlesim_package} (turtletui run --distro humble|jazzy|kilted|lyrical)",
+    )
 
 
 def _grid(rows: Iterable[tuple[str, str]]) -> Table:

@@ -1,1 +1,4 @@
-from turtletui.interfaces.sensor_msgs import *  # noqa: F401,F403
+from turtletui.interfaces import ros_module_members as _members
+
+globals().update(_members("sensor_msgs", "msg"))
+del _members

@@ -1,0 +1,152 @@
+"""Describe message classes as a program sees them: run under the real rclpy and under turtletui.
+
+    python probe_messages.py PACKAGE...   (prints JSON on stdout)
+
+For every message class of the packages (services' Request/Response and
+actions' Goal/Result/Feedback included): its fields and their types, its
+constants and field defaults, a default instance (as plain data, and its
+repr), and what happens when each field is set to each of a list of values
+(accepted and stored as what, or refused with which exception and sentence).
+With the real rclpy it also gives the text of each interface file, read
+where ament_index finds the package. tests/interfaces/test_real_definitions.py
+runs it both ways and compares.
+"""
+
+from __future__ import annotations
+
+import array
+import importlib
+import json
+import os
+import sys
+
+os.environ["ROS_PYTHON_CHECK_FIELDS"] = "1"  # the real classes check only when asked (Iron on)
+
+PROBES = [
+    0, 1, -1, 255, 256, 2**31, 2**63, 2**64, 1.5, -0.5, 1e39, float("inf"), True, "a", "abc", b"a",
+    None, [], [1], [1.5], [1.5, 2.5], [1, 2, 3], (1.5,), ["a"], [True], b"ab", "x" * 300,
+    array.array("f", [1.0]), array.array("d", [1.0]), array.array("i", [1]), array.array("B", [1]),
+]
+SKIP = {"header", "stamp"}  # nested messages: probed in their own class
+
+
+def plain(value):
+    """A value as JSON-able data that does not depend on numpy or array reprs."""
+    if hasattr(value, "get_fields_and_field_types"):
+        return {name: plain(getattr(value, name)) for name in value.get_fields_and_field_types()}
+    if isinstance(value, array.array):
+        return ["array", value.typecode, value.tolist()]
+    if type(value).__module__ == "numpy":
+        return ["fixed", value.tolist()]
+    if isinstance(value, bytes):
+        return ["bytes", list(value)]
+    if isinstance(value, list):
+        return [plain(v) for v in value]
+    if isinstance(value, float) and value != value:
+        return "nan"
+    if isinstance(value, float) and value in (float("inf"), -float("inf")):
+        return str(value)
+    return value
+
+
+def sentence(exc: BaseException) -> str:
+    """The exception's own sentence (turtletui adds a hint in parentheses after it)."""
+    return f"{type(exc).__name__}: {str(exc).split(' (')[0]}"
+
+
+def message_classes(package: str):
+    for kind in ("msg", "srv", "action"):
+        try:
+            module = importlib.import_module(f"{package}.{kind}")
+        except ImportError:
+            continue
+        for name in sorted(n for n in dir(module) if n[0].isupper() and "_" not in n):
+            cls = getattr(module, name)
+            if kind == "msg":
+                yield f"{package}/msg/{name}", cls
+            elif kind == "srv":
+                yield f"{package}/srv/{name}_Request", cls.Request
+                yield f"{package}/srv/{name}_Response", cls.Response
+            else:
+                for part in ("Goal", "Result", "Feedback"):
+                    yield f"{package}/action/{name}_{part}", getattr(cls, part)
+
+
+def constant_names(cls) -> list[str]:
+    names = []
+    for name in dir(cls):
+        if name.startswith("_") or name == "SLOT_TYPES" or not name.isupper() and "__DEFAULT" not in name:
+            continue
+        if callable(getattr(cls, name)):
+            continue
+        names.append(name)
+    return sorted(names)
+
+
+def describe(cls) -> dict:
+    default = cls()
+    fields = cls.get_fields_and_field_types()
+    has_fixed = any("[" in t for t in fields.values())
+    sets = {}
+    for field in fields:
+        if field in SKIP:
+            continue
+        outcomes = []
+        for value in PROBES:
+            msg = cls()
+            try:
+                setattr(msg, field, value)
+            except BaseException as exc:  # noqa: BLE001 - what is raised is the point
+                outcomes.append(sentence(exc))
+            else:
+                outcomes.append(["ok", plain(getattr(msg, field))])
+        sets[field] = outcomes
+    try:
+        cls(no_such_field=1)
+        unknown = "accepted"
+    except BaseException as exc:  # noqa: BLE001
+        unknown = type(exc).__name__
+    return {
+        "fields": fields,
+        "slots": list(cls.__slots__),
+        "constants": {name: plain(getattr(cls, name)) for name in constant_names(cls)},
+        "default": plain(default),
+        "repr": None if has_fixed else repr(default),
+        "sets": sets,
+        "unknown_keyword": unknown,
+        "equal_defaults": cls() == cls(),
+    }
+
+
+def definition_files(package: str) -> dict[str, str]:
+    try:
+        from ament_index_python.packages import get_package_share_directory
+
+        share = get_package_share_directory(package)
+    except (ImportError, OSError, LookupError):  # the ros-* wheels: no AMENT_PREFIX_PATH needed
+        share = os.path.join(sys.prefix, "share", package)
+    texts = {}
+    for kind in ("msg", "srv", "action"):
+        folder = os.path.join(share, kind)
+        if not os.path.isdir(folder):
+            continue
+        for file in sorted(os.listdir(folder)):
+            if file.endswith(f".{kind}"):
+                with open(os.path.join(folder, file), "rb") as f:
+                    texts[f"{package}/{kind}/{file.rsplit('.', 1)[0]}"] = f.read().decode("utf-8")
+    return texts
+
+
+def main() -> None:
+    packages = [a for a in sys.argv[1:] if not a.startswith("--")]
+    out = {"classes": {}, "files": {}}
+    for package in packages:
+        for name, cls in message_classes(package):
+            out["classes"][name] = describe(cls)
+        if "--files" in sys.argv:
+            out["files"].update(definition_files(package))
+    json.dump(out, sys.stdout, sort_keys=True)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,109 @@
+"""Which ROS 2 distribution a run behaves as (``--distro``).
+
+The distributions differ where a student's file can tell: up to Jazzy
+turtlesim's own types are ``turtlesim/msg/Pose`` (``from turtlesim.msg
+import Pose``); from Kilted on they live in ``turtlesim_msgs``. A run has
+exactly one of the two, as a real installation has, and importing the other
+fails as it would there, with one line saying why and what to do.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+from dataclasses import dataclass
+from importlib.abc import MetaPathFinder
+
+
+@dataclass(frozen=True)
+class Distro:
+    """A ROS 2 distribution: its name, release year, whether it is LTS, and
+    the package turtlesim's interfaces are in."""
+
+    name: str
+    year: int
+    lts: bool
+    turtlesim_package: str
+
+    @property
+    def title(self) -> str:
+        """``"Jazzy (LTS)"``."""
+        return f"{self.name.capitalize()}{' (LTS)' if self.lts else ''}"
+
+
+DISTROS = {
+    d.name: d
+    for d in (
+        Distro("humble", 2022, True, "turtlesim"),
+        Distro("jazzy", 2024, True, "turtlesim"),
+        Distro("kilted", 2025, False, "turtlesim_msgs"),
+        Distro("lyrical", 2026, True, "turtlesim_msgs"),
+    )
+}
+NEWEST_LTS = max((d for d in DISTROS.values() if d.lts), key=lambda d: d.year).name
+"""The default: what a student installing ROS 2 today gets (Lyrical Luth, May 2026)."""
+
+ENV_VAR = "TURTLETUI_DISTRO"
+"""Sets the default distro (a class whose course targets Jazzy sets it once)."""
+
+_TURTLESIM_PACKAGES = ("turtlesim", "turtlesim_msgs")
+
+
+def check_distro(name: str) -> str:
+    """The distro's name in lower case; ValueError (one line) if unknown."""
+    key = str(name).strip().lower()
+    if key not in DISTROS:
+        known = ", ".join(DISTROS)
+        raise ValueError(f"unknown ROS 2 distro {name!r}: use one of {known}")
+    return key
+
+
+def resolve_distro(name: str | None = None, fallback: str | None = None) -> str:
+    """The distro a run uses: ``name`` (the command line), else ``$TURTLETUI_DISTRO``,
+    else ``fallback`` (a lesson's), else the newest LTS. ValueError (one line) if unknown."""
+    if name is not None:
+        return check_distro(name)
+    value = os.environ.get(ENV_VAR, "").strip()
+    if value:
+        try:
+            return check_distro(value)
+        except ValueError as err:
+            raise ValueError(f"${ENV_VAR}: {err}") from None
+    return check_distro(fallback) if fallback is not None else NEWEST_LTS
+
+
+def missing_package_message(package: str, distro: str) -> str:
+    """What importing ``package`` (turtlesim or turtlesim_msgs) says where it is missing."""
+    if DISTROS[distro].turtlesim_package == "turtlesim":
+        where, other = "'turtlesim' up to Jazzy", "kilted or newer"
+    else:
+        where, other = "'turtlesim_msgs' from Kilted on", "jazzy or older"
+    return (
+        f"No module named '{package}' (turtlesim's types are in {where}; this run is"
+        f" --distro {distro}, use --distro {other} for '{package}')"
+    )
+
+
+class MissingPackageFinder(MetaPathFinder):
+    """Makes the turtlesim interface package the distro lacks fail to import."""
+
+    def __init__(self, distro: str) -> None:
+        self.distro = check_distro(distro)
+        present = DISTROS[self.distro].turtlesim_package
+        self.missing = next(p for p in _TURTLESIM_PACKAGES if p != present)
+
+    def find_spec(self, fullname: str, path: object = None, target: object = None) -> None:
+        if fullname.partition(".")[0] == self.missing:
+            raise ModuleNotFoundError(missing_package_message(self.missing, self.distro), name=fullname)
+        return None
+
+
+def install_finder(distro: str) -> None:
+    """Put the finder for ``distro`` first on sys.meta_path (replacing an
+    earlier one) and forget modules of the package it hides."""
+    finder = MissingPackageFinder(distro)
+    sys.meta_path[:] = [f for f in sys.meta_path if not isinstance(f, MissingPackageFinder)]
+    sys.meta_path.insert(0, finder)
+    for name in list(sys.modules):
+        if name.partition(".")[0] == finder.missing:
+            del sys.modules[name]
