@@ -79,7 +79,7 @@ class RosBridge:
         self._synced_at: int | None = None
         self._gone = False
         self.graph.taps.append(self._tap)
-        self.graph.log_sinks.append(self._on_log)
+        self.graph.log_sinks.append(self.forward_log)
         self.sync()
 
     # -- RemoteHost ---------------------------------------------------------------------
@@ -116,8 +116,8 @@ class RosBridge:
         """Leave the DDS graph and the simulation's graph."""
         if self._tap in self.graph.taps:
             self.graph.taps.remove(self._tap)
-        if self._on_log in self.graph.log_sinks:
-            self.graph.log_sinks.remove(self._on_log)
+        if self.forward_log in self.graph.log_sinks:
+            self.graph.log_sinks.remove(self.forward_log)
         for foreign in self._foreign.values():
             self.graph.remove_node(foreign.record)
         self._foreign.clear()
@@ -226,7 +226,8 @@ class RosBridge:
                 return
         self._send({"op": "publish", "id": publisher, "msg": to_dict(msg)})
 
-    def _on_log(self, record: LogRecord) -> None:
+    def forward_log(self, record: LogRecord) -> None:
+        """Log a line of one of turtletui's nodes on /rosout, through its twin."""
         if self.relaying or self._gone:
             return
         for node, node_id in self._nodes.items():

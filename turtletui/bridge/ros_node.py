@@ -112,7 +112,7 @@ def from_plain(cls, data: dict):
 
 def fill(msg, data: dict) -> None:
     names = list(msg.get_fields_and_field_types())
-    slots = dict(zip(names, msg.SLOT_TYPES))
+    slots = dict(zip(names, msg.SLOT_TYPES))  # noqa: B905 - runs on Python 3.8 too
     for name, value in data.items():
         slot = slots[name]
         if isinstance(value, dict):

@@ -62,11 +62,30 @@ def run(
         help="World to run in: a registered name (see turtletui plugins) or a .toml world file."
         " Default: the lesson's world in the app, else turtlesim's empty arena.",
     ),
+    ros: bool = typer.Option(
+        False,
+        "--ros",
+        help="On a real ROS 2 graph: turtlesim as a real /turtlesim node, the files as ordinary ROS 2"
+        " processes (the real rclpy), in real time; --duration is then wall seconds.",
+    ),
+    ros_python: str = typer.Option(
+        None,
+        "--ros-python",
+        metavar="PYTHON",
+        help="With --ros: the python of the ROS 2 to use (default: a sourced ROS 2's;"
+        " or set TURTLETUI_ROS_PYTHON).",
+    ),
 ) -> None:
     """Run rclpy controller files against the simulated turtlesim.
 
     ROS arguments go last: turtletui run node.py --headless --ros-args -p speed:=2.0
     """
+    if ros_python is not None and not ros:
+        fail("--ros-python goes with --ros")
+    if ros:
+        from turtletui.cli.ros_run import check_ros_options
+
+        check_ros_options(record=record, foxglove=foxglove, in_process=in_process, realtime=realtime)
     if not headless:
         require_screen("run headless instead: turtletui run FILE.py --headless --duration 60")
         _run_app(controllers, plugin, lesson, ascii_only, seed, world, pixels, record, foxglove)
@@ -87,7 +106,13 @@ def run(
     def print_log(record) -> None:
         if not quiet:
             sys.stdout.write(record.format() + "\n")
+            sys.stdout.flush()
 
+    if ros:
+        from turtletui.cli.ros_run import run_headless
+
+        run_headless(specs, duration, ros_python, ROS_ARGS, print_log, sim_world)
+        return
     try:
         result = run_controllers(
             specs,

@@ -1,0 +1,53 @@
+"""``--ros`` for ``turtletui run``: the files as ROS 2 processes against the bridged turtlesim."""
+
+from __future__ import annotations
+
+import sys
+from collections.abc import Callable, Sequence
+from typing import TYPE_CHECKING, Any
+
+from turtletui.cli.errors import fail
+
+if TYPE_CHECKING:
+    from turtletui.runtime.loader import ControllerSpec
+    from turtletui.sim import World
+
+
+def check_ros_options(*, record: str | None, foxglove: str | None, in_process: bool, realtime: bool) -> None:
+    """Options that mean nothing for processes on a real ROS 2 graph are refused."""
+    if in_process:
+        fail("--in-process and --ros do not go together: with --ros each file is its own ROS 2 process")
+    if record is not None:
+        fail("--record is not available with --ros: record the ROS 2 graph with ros2 bag record -a")
+    if foxglove is not None:
+        fail("--foxglove is not available with --ros: run foxglove_bridge on the ROS 2 graph instead")
+    del realtime  # --ros runs in real time anyway
+
+
+def run_headless(
+    specs: Sequence[ControllerSpec],
+    duration: float,
+    ros_python: str | None,
+    ros_args: Sequence[str],
+    on_log: Callable[[Any], None],
+    world: World | None,
+) -> None:
+    """Run, print the summary, exit as ``turtletui run --headless`` does."""
+    from turtletui.bridge.process import RosUnavailable
+    from turtletui.bridge.run import run_ros
+    from turtletui.compat.ros_args import RosArgsError, parse_ros_args
+    from turtletui.runtime.loader import ControllerError
+
+    try:
+        if ros_args:
+            parse_ros_args(list(ros_args))
+        result = run_ros(specs, duration=duration, ros_python=ros_python, ros_args=ros_args, on_log=on_log, world=world)
+    except (RosUnavailable, ControllerError, RosArgsError) as err:
+        fail(str(err))
+    for crash in result.crashes:
+        sys.stderr.write(crash.summary() + "\n")
+    sys.stdout.write(result.summary() + "\n")
+    if result.interrupted:
+        raise SystemExit(130)
+    if result.crashes:
+        raise SystemExit(1)
