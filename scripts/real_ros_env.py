@@ -101,6 +101,18 @@ PACKAGE_XML = """\
 """
 
 
+LAUNCHER = """\
+#!/bin/sh
+# The real ROS 2 python of this environment (rclpy, turtlesim's types).
+{exports}exec "{python}" "$@"
+"""
+
+SETUP = """\
+# . this file: python3 is then a real ROS 2 (Kilted wheels) with turtlesim's types
+. "{activate}"
+{exports}"""
+
+
 def say(text: str) -> None:
     print(f"real_ros_env: {text}", file=sys.stderr, flush=True)
 
@@ -112,12 +124,18 @@ def interface_files() -> list[Path]:
     return files
 
 
+BUILD_VERSION = 1
+"""Raise when the way the environment is built changes (the key names the rest)."""
+
+
 def cache_key() -> str:
+    """A hash of what goes into an environment: the same key, the same environment."""
     digest = hashlib.sha256()
-    digest.update(Path(__file__).read_bytes())
+    recipe = [BUILD_VERSION, WHEELS, PACKAGES, CMAKE_LISTS, PACKAGE_XML, LAUNCHER, SETUP]
+    digest.update(repr(recipe).encode())
     for path in interface_files():
         digest.update(str(path.relative_to(INTERFACES)).encode() + b"\0" + path.read_bytes() + b"\0")
-    digest.update(f"{sys.version}|{platform.machine()}|{sys.executable}".encode())
+    digest.update(f"{sys.version}|{platform.machine()}".encode())
     return digest.hexdigest()[:16]
 
 
@@ -199,15 +217,9 @@ def write_launchers(env: Path, venv: Path) -> None:
     }
     exports = "".join(f'export {name}="{value}${{{name}:+:${name}}}"\n' for name, value in paths.items())
     launcher = env / "ros-python"
-    launcher.write_text(
-        "#!/bin/sh\n# The real ROS 2 python of this environment (rclpy, turtlesim's types).\n"
-        f"{exports}exec \"{venv / 'bin' / 'python'}\" \"$@\"\n"
-    )
+    launcher.write_text(LAUNCHER.format(exports=exports, python=venv / "bin" / "python"))
     launcher.chmod(0o755)
-    (env / "setup.sh").write_text(
-        "# . this file: python3 is then a real ROS 2 (Kilted wheels) with turtlesim's types\n"
-        f'. "{venv / "bin" / "activate"}"\n{exports}'
-    )
+    (env / "setup.sh").write_text(SETUP.format(exports=exports, activate=venv / "bin" / "activate"))
 
 
 def build(env: Path) -> None:
@@ -257,14 +269,21 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--cache", type=Path, help="where environments are kept")
     parser.add_argument("--force", action="store_true", help="build again even if one is ready")
+    parser.add_argument("--existing", action="store_true", help="print the folder only if it is built (exit 1 if not)")
     parser.add_argument("--write-interfaces", action="store_true", help="rewrite the interface files")
     args = parser.parse_args()
     if args.write_interfaces:
         write_interfaces()
         return
     default = Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache") / "turtletui" / "real-ros"
-    cache = args.cache or Path(os.environ.get("TURTLETUI_REAL_ROS_CACHE") or default)
-    print(ensure(cache.expanduser().resolve(), args.force))
+    cache = (args.cache or Path(os.environ.get("TURTLETUI_REAL_ROS_CACHE") or default)).expanduser().resolve()
+    if args.existing:
+        env = cache / cache_key()
+        if not (env / READY).exists():
+            raise SystemExit(1)
+        print(env)
+        return
+    print(ensure(cache, args.force))
 
 
 if __name__ == "__main__":

@@ -239,11 +239,18 @@ class Twin:
             send({"op": "param_set", "node": node_id, "name": parameter.name, "value": parameter.value})
 
     def op_log(self, node: int, level: int, msg: str) -> None:
-        from rclpy.logging import LoggingSeverity
-
-        severity = {10: LoggingSeverity.DEBUG, 20: LoggingSeverity.INFO, 30: LoggingSeverity.WARN,
-                    40: LoggingSeverity.ERROR, 50: LoggingSeverity.FATAL}.get(level, LoggingSeverity.INFO)
-        self.nodes[node].get_logger().log(msg, severity)
+        # One call site per severity: rclpy ties a call site to one severity.
+        logger = self.nodes[node].get_logger()
+        if level >= 50:
+            logger.fatal(msg)
+        elif level >= 40:
+            logger.error(msg)
+        elif level >= 30:
+            logger.warning(msg)
+        elif level >= 20:
+            logger.info(msg)
+        else:
+            logger.debug(msg)
 
     # -- topics ---------------------------------------------------------------------------
     def op_pub(self, id: int, node: int, topic: str, type: str, depth: int) -> None:

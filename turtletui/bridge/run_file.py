@@ -16,6 +16,7 @@ from __future__ import annotations
 import os
 import runpy
 import sys
+import traceback
 
 
 def main() -> int:
@@ -34,11 +35,22 @@ def main() -> int:
             return result if isinstance(result, int) else 0
     except KeyboardInterrupt:
         return 0
+    except SystemExit:
+        raise
     except BaseException as err:
         if type(err).__name__ == "ExternalShutdownException":  # rclpy, after Ctrl-C
             return 0
-        raise
+        _print_own_traceback(err)
+        return 1
     return 0
+
+
+def _print_own_traceback(err: BaseException) -> None:
+    """The traceback as ``python3 FILE`` prints it: without this launcher's frames."""
+    tb = err.__traceback__
+    while tb is not None and tb.tb_frame.f_code.co_filename in (__file__, runpy.__file__):
+        tb = tb.tb_next
+    traceback.print_exception(type(err), err, tb)
 
 
 if __name__ == "__main__":

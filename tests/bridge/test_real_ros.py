@@ -1,0 +1,196 @@
+"""turtletui on a real ROS 2 graph, checked from real rclpy processes.
+
+Each test starts the bridge (its twin runs in the ROS 2 python) and looks at
+it from other ROS 2 processes, as a student would from other terminals.
+Deadlines are generous: these run on a busy 2-core machine.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import threading
+import time
+from pathlib import Path
+
+import pytest
+from conftest import run_ros_script
+
+from turtletui.bridge.run import attach
+from turtletui.graph.introspection import snapshot
+from turtletui.runtime.simulation import Simulation
+
+pytestmark = pytest.mark.realros
+
+PART6 = Path(__file__).resolve().parents[2] / "plugins" / "reference" / "turtle_controller.py"
+
+
+class Running:
+    """A real-time simulation on the ROS 2 graph, stepped in a thread of its own."""
+
+    def __init__(self, ros_python: str) -> None:
+        self.logs: list = []
+        self.sim = Simulation(realtime=True, log_sinks=[self.logs.append])
+        self.bridge = attach(self.sim, ros_python, earlier_logs=self.logs)
+        self.lock = threading.Lock()
+        self._stop = threading.Event()
+        self._thread = threading.Thread(target=self._run, daemon=True)
+        self._thread.start()
+
+    def _run(self) -> None:
+        while not self._stop.is_set():
+            with self.lock:
+                self.sim.run_until(self.sim.graph.now_ns + 16_000_000)
+
+    def wait_for(self, check, seconds: float = 30.0) -> bool:
+        end = time.monotonic() + seconds
+        while time.monotonic() < end:
+            with self.lock:
+                if check():
+                    return True
+            time.sleep(0.05)
+        with self.lock:
+            return check()
+
+    def close(self) -> None:
+        self._stop.set()
+        self._thread.join(10)
+        self.bridge.close()
+
+
+@pytest.fixture
+def running(ros_python: str, ros_domain: str):
+    sim = Running(ros_python)
+    try:
+        yield sim
+    finally:
+        sim.close()
+
+
+def test_another_process_sees_and_uses_every_part_of_turtlesim(running: Running, ros_python: str) -> None:
+    done = run_ros_script(ros_python, "ros_probe.py", "90", "0")
+    assert done.returncode == 0, done.stderr[-3000:]
+    report = json.loads(done.stdout.strip().splitlines()[-1])
+    assert report["found"] and "turtlesim" in report["nodes"]
+    topics = report["topics"]
+    assert topics["/turtle1/pose"] in (["turtlesim/msg/Pose"], ["turtlesim_msgs/msg/Pose"])
+    assert topics["/turtle1/cmd_vel"] == ["geometry_msgs/msg/Twist"]
+    assert "/turtle1/color_sensor" in topics and "/rosout" in topics and "/parameter_events" in topics
+    for service in ("/clear", "/reset", "/spawn", "/kill", "/turtle1/set_pen", "/turtle1/teleport_absolute",
+                    "/turtle1/teleport_relative", "/turtlesim/set_parameters", "/turtlesim/get_parameters"):
+        assert service in report["services"]
+    assert report["pose_reliable"] == [True]  # one publisher, reliable (its depth is not on the graph)
+    assert 50.0 < report["pose_rate"] < 75.0  # 62.5 Hz; wide: the machine may be busy
+    assert report["spawned"] == "turtle2"
+    assert report["turtle2_pose"] == pytest.approx([2.0, 3.0, 0.5], abs=1e-5)
+    assert report["spawn_again"] == ""  # turtlesim refuses a name in use with an empty name
+    ok, reason = report["set_300"]
+    assert not ok and "255" in reason
+    assert report["set_10"] == [True, ""]
+    assert report["get"] == [10, False]
+    assert report["turtle2_after_teleport"][:2] == pytest.approx([4.0, 4.0], abs=1e-4)
+    assert report["action_server"] and report["goal_accepted"]
+    assert report["goal_status"] == 4  # GoalStatus.STATUS_SUCCEEDED
+    assert report["feedback_count"] > 0
+    assert report["turtle2_theta"] == pytest.approx(1.0, abs=0.03)
+    assert report["turtle2_publishers_after_kill"] == 0
+    texts = [entry[2] for entry in report["rosout"]]
+    assert "Spawning turtle [turtle2] at x=[2.000000], y=[3.000000], theta=[0.500000]" in texts
+    assert "A turtle named [turtle2] already exists" in texts
+    assert "Clearing turtlesim." in texts
+    # what the other process did, the simulation did
+    assert running.sim.world.background[0] == 10
+    assert "turtle2" not in running.sim.world.turtles
+
+
+def test_nodes_of_other_processes_are_in_the_simulations_graph(running: Running, ros_python: str) -> None:
+    probe = subprocess.Popen(
+        [ros_python, str(Path(__file__).with_name("ros_probe.py")), "90", "30"],
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+    )
+    try:
+        assert running.wait_for(lambda: "/probe" in [n.name for n in snapshot(running.sim.graph).nodes], 60)
+        assert running.wait_for(lambda: running.sim.graph.has_service("/probe_trigger"), 30)
+        with running.lock:
+            node = snapshot(running.sim.graph).node("/probe")
+        assert ("/probe_trigger", "std_srvs/srv/Trigger") in node.service_servers
+        # a call from turtletui's side (the app's ros2 service call) reaches the other process
+        from turtletui.interfaces.std_srvs import Trigger
+
+        answers: list = []
+        with running.lock:
+            running.sim.graph.call("/probe_trigger", Trigger.Request(), answers.append, "test")
+        assert running.wait_for(lambda: bool(answers), 30)
+        assert answers[0].success and answers[0].message == "probe here"
+        # its log lines arrive from /rosout
+        assert running.wait_for(lambda: any(r.node == "probe" and r.msg == "probe done" for r in running.logs), 90)
+    finally:
+        probe.kill()
+        probe.wait()
+    assert running.wait_for(lambda: "/probe" not in [n.name for n in snapshot(running.sim.graph).nodes], 60)
+
+
+def test_run_ros_drives_turtlesim_with_the_unchanged_course_controller(ros_python: str, ros_domain: str) -> None:
+    run = subprocess.Popen(
+        [sys.executable, "-m", "turtletui", "run", str(PART6), "--headless", "--ros",
+         "--ros-python", ros_python, "--duration", "25"],
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+    )
+    try:
+        done = run_ros_script(ros_python, "ros_probe.py", "60", "0", "turtle_controller")
+    finally:
+        out, err = run.communicate(timeout=120)
+    assert run.returncode == 0, err[-3000:]
+    summary = out.strip().splitlines()[-1]
+    assert summary.endswith("wall hits 0: ok"), summary
+    assert float(summary.split("distance ")[1].split(" m")[0]) > 20.0
+    assert "Warning: Approaching wall detected! Changing direction." in err  # the controller's own log
+    report = json.loads(done.stdout.strip().splitlines()[-1])
+    assert report["spawned"] == "turtle2" and 50.0 < report["pose_rate"] < 75.0
+    assert "turtle_controller" in report["nodes"]
+
+
+def test_ctrl_c_ends_the_run_and_its_ros_processes(ros_python: str, ros_domain: str, tmp_path: Path) -> None:
+    marker = tmp_path / "pid"
+    node = tmp_path / "forever.py"
+    node.write_text(
+        "import os, rclpy\n"
+        f"open({str(marker)!r}, 'w').write(str(os.getpid()))\n"
+        "def main():\n"
+        "    rclpy.init()\n"
+        "    rclpy.spin(rclpy.create_node('forever'))\n"
+    )
+    run = subprocess.Popen(
+        [sys.executable, "-m", "turtletui", "run", str(node), "--headless", "--ros", "--ros-python", ros_python,
+         "--duration", "300"],
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+    )
+    end = time.monotonic() + 60
+    while not marker.exists() and time.monotonic() < end:
+        time.sleep(0.1)
+    assert marker.exists()
+    time.sleep(1.0)
+    run.send_signal(signal.SIGINT)
+    out, err = run.communicate(timeout=60)
+    assert run.returncode == 130, err
+    assert "interrupted" in out.strip().splitlines()[-1]
+    pid = int(marker.read_text())
+    with pytest.raises(ProcessLookupError):
+        os.kill(pid, 0)
+
+
+def test_a_crashing_file_fails_the_run(ros_python: str, ros_domain: str, tmp_path: Path) -> None:
+    node = tmp_path / "broken.py"
+    node.write_text("import rclpy\ndef main():\n    rclpy.init()\n    raise RuntimeError('boom')\n")
+    done = subprocess.run(
+        [sys.executable, "-m", "turtletui", "run", str(node), "--headless", "--ros", "--ros-python", ros_python,
+         "--duration", "60"],
+        capture_output=True, text=True, timeout=120,
+    )
+    assert done.returncode == 1
+    assert "RuntimeError: boom" in done.stderr
+    assert "broken.py exited" in done.stderr
+    assert "run_file.py" not in done.stderr  # the traceback shows the student's own lines
