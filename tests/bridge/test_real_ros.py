@@ -194,3 +194,37 @@ def test_a_crashing_file_fails_the_run(ros_python: str, ros_domain: str, tmp_pat
     assert "RuntimeError: boom" in done.stderr
     assert "broken.py exited" in done.stderr
     assert "run_file.py" not in done.stderr  # the traceback shows the student's own lines
+
+
+def test_the_apps_session_shows_the_real_graph_and_its_ros2_command_line_works(
+    ros_python: str, ros_domain: str
+) -> None:
+    from turtletui.bridge.run import connect
+    from turtletui.ros2cli import Ros2Cli
+    from turtletui.runtime.loader import ControllerSpec
+    from turtletui.tui.session import LiveSession
+
+    session = LiveSession([ControllerSpec(name="part6", path=PART6)], ros=connect(ros_python), start=False)
+    try:
+        session.start_controllers()
+        end = time.monotonic() + 90
+        moved = False
+        while time.monotonic() < end and not moved:
+            session.advance(time.monotonic())
+            time.sleep(0.016)
+            with session.lock:
+                moved = session.sim.world.turtles["turtle1"].distance > 2.0 and any(
+                    r.node == "turtle_controller" for r in session.logs
+                )
+        assert moved, "the ROS 2 controller process did not drive the turtle"
+        with session.lock:
+            cli = Ros2Cli(session.sim)
+            nodes = cli.run("ros2 node list").lines
+            info = cli.run("ros2 node info /turtle_controller").lines
+            topic = cli.run("ros2 topic info /turtle1/cmd_vel").lines
+        assert "/turtle_controller" in nodes and "/turtlesim" in nodes
+        assert any("/turtle1/pose: turtlesim/msg/Pose" in line for line in info)
+        assert "Publisher count: 2" in topic  # the controller process, and the app's teleop
+        assert session.slots[0].status == "running"
+    finally:
+        session.close()

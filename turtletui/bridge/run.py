@@ -5,16 +5,18 @@ and controller files as ordinary ROS 2 processes (``turtletui run --ros``).
 from __future__ import annotations
 
 import os
+import re
 import signal
 import subprocess
 import threading
 import time
 from collections.abc import Callable, Iterable, Sequence
-from typing import TYPE_CHECKING
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
 
 from turtletui.api import RunResult, TurtleSummary
 from turtletui.bridge.host import RosBridge
-from turtletui.bridge.process import RUN_FILE_SCRIPT, start_twin
+from turtletui.bridge.process import RUN_FILE_SCRIPT, TwinProcess, start_twin
 from turtletui.graph.core import NS_PER_S
 from turtletui.graph.logs import INFO, LogRecord
 from turtletui.runtime.loader import ControllerError, ControllerSpec, check_source
@@ -31,14 +33,31 @@ _SLICE_NS = 100_000_000
 """How often (simulated ns) a run looks at its controllers between steps."""
 
 
-def attach(sim: Simulation, ros_python: str | None = None, earlier_logs: Iterable[LogRecord] = ()) -> RosBridge:
-    """Put ``sim`` (real time) on the ROS 2 graph; RosUnavailable if there is none.
+@dataclass
+class RosConnection:
+    """A twin started and ready (a front end starts it first, to fail in one line)."""
+
+    twin: TwinProcess
+    info: dict[str, Any]
+
+
+def connect(ros_python: str | None = None) -> RosConnection:
+    """Start the twin in a ROS 2 python; RosUnavailable (one line) if there is none."""
+    return RosConnection(*start_twin(ros_python))
+
+
+def attach(
+    sim: Simulation, ros: RosConnection | str | None = None, earlier_logs: Iterable[LogRecord] = ()
+) -> RosBridge:
+    """Put ``sim`` (real time) on the ROS 2 graph, through ``ros`` (a started
+    twin, or the python to start one in); RosUnavailable if there is none.
 
     ``earlier_logs``: lines logged before (turtlesim's start lines), sent on
     to /rosout once the twin is there.
     """
-    twin, info = start_twin(ros_python)
-    bridge = RosBridge(sim, twin, info)
+    if not isinstance(ros, RosConnection):
+        ros = connect(ros)
+    bridge = RosBridge(sim, ros.twin, ros.info)
     for record in earlier_logs:
         bridge.forward_log(record)
     sim.remotes.append(bridge)
@@ -46,7 +65,11 @@ def attach(sim: Simulation, ros_python: str | None = None, earlier_logs: Iterabl
 
 
 class RosController:
-    """One controller file running as a ROS 2 process of the bridge's python."""
+    """One controller file running as a ROS 2 process of the bridge's python.
+
+    The app holds it as it holds a sandboxed controller: ``finished``,
+    ``crash`` and ``close()``.
+    """
 
     def __init__(
         self,
@@ -54,8 +77,11 @@ class RosController:
         spec: ControllerSpec,
         ros_args: Sequence[str] = (),
         output: Callable[[str, str], None] | None = None,
+        clock: Callable[[], float] = lambda: 0.0,
     ) -> None:
         self.spec = spec
+        self._clock = clock
+        self._ended_at: float | None = None
         capture = subprocess.PIPE if output is not None else None
         self._proc = subprocess.Popen(
             [python, str(RUN_FILE_SCRIPT), str(spec.path), *ros_args],
@@ -73,7 +99,25 @@ class RosController:
 
     def poll(self) -> int | None:
         """Its exit status once it ended, else None."""
-        return self._proc.poll()
+        status = self._proc.poll()
+        if status is not None and self._ended_at is None:
+            self._ended_at = self._clock()
+        return status
+
+    @property
+    def finished(self) -> bool:
+        return self.poll() is not None
+
+    @property
+    def crash(self) -> CrashReport | None:
+        """Why it ended, if it failed (a non-zero exit status)."""
+        status = self.poll()
+        if not status:
+            return None
+        return CrashReport(self.spec.label, self._ended_at or 0.0, "exit", f"exit status {status}")
+
+    def close(self) -> None:
+        self.stop()
 
     def stop(self) -> None:
         """Ctrl-C its process group, then terminate what is left."""
@@ -89,6 +133,15 @@ class RosController:
                 return
             except subprocess.TimeoutExpired:
                 continue
+
+
+_CONSOLE_LOG = re.compile(r"\[(DEBUG|INFO|WARN|ERROR|FATAL)\] \[\d+\.\d+\] \[[^\]]*\]: ")
+
+
+def is_console_log(line: str) -> bool:
+    """Whether a line of a ROS 2 process's output is one of its log lines
+    (``[INFO] [1700000000.000000000] [node]: ...``), which /rosout also carries."""
+    return _CONSOLE_LOG.match(line) is not None
 
 
 def ros_specs(specs: Sequence[ControllerSpec]) -> list[ControllerSpec]:
@@ -130,7 +183,7 @@ def run_ros(
             on_log(record)
         sim.graph.log_sinks.append(bridge.local_only(on_log))
     started = time.perf_counter()
-    running = [RosController(bridge.twin.python, spec, args, output) for spec in specs]
+    running = [RosController(bridge.twin.python, spec, args, output, lambda: sim.t) for spec in specs]
     crashes: list[CrashReport] = []
     interrupted = False
     limit = round(duration * NS_PER_S) if duration is not None else None
@@ -138,11 +191,10 @@ def run_ros(
         while running and (limit is None or sim.graph.now_ns < limit):
             step = sim.graph.now_ns + _SLICE_NS
             sim.run_until(step if limit is None else min(step, limit))
-            for controller in [c for c in running if c.poll() is not None]:
+            for controller in [c for c in running if c.finished]:
                 running.remove(controller)
-                status = controller.poll()
-                if status != 0:
-                    crash = CrashReport(controller.spec.label, sim.t, "exit", f"exit status {status}")
+                crash = controller.crash
+                if crash is not None:
                     crashes.append(crash)
                     sim.graph.log("turtletui", INFO, crash.summary())
     except KeyboardInterrupt:

@@ -51,3 +51,16 @@ def run_headless(
         raise SystemExit(130)
     if result.crashes:
         raise SystemExit(1)
+
+
+def connect_for_app(specs: Sequence[ControllerSpec], ros_python: str | None) -> Any:
+    """The twin, started before the app takes the screen (a missing ROS 2 is one line)."""
+    from turtletui.bridge.process import RosUnavailable
+    from turtletui.bridge.run import connect, ros_specs
+    from turtletui.runtime.loader import ControllerError
+
+    try:
+        ros_specs(specs)
+        return connect(ros_python)
+    except (RosUnavailable, ControllerError) as err:
+        fail(str(err))

@@ -88,7 +88,8 @@ def run(
         check_ros_options(record=record, foxglove=foxglove, in_process=in_process, realtime=realtime)
     if not headless:
         require_screen("run headless instead: turtletui run FILE.py --headless --duration 60")
-        _run_app(controllers, plugin, lesson, ascii_only, seed, world, pixels, record, foxglove)
+        _run_app(controllers, plugin, lesson, ascii_only, seed, world, pixels, record, foxglove,
+                 ros_python if ros else None, ros)
         return
     from turtletui.api import run as run_controllers
     from turtletui.compat.ros_args import RosArgsError
@@ -165,6 +166,8 @@ def _run_app(
     pixels: str = "auto",
     record: str | None = None,
     foxglove: str | None = None,
+    ros_python: str | None = None,
+    ros: bool = False,
 ) -> None:
     """The Textual app (imported only here: headless runs never load Textual)."""
     _check_outputs(record, foxglove)
@@ -190,6 +193,11 @@ def _run_app(
         specs = resolve_controllers(controllers, plugins=plugins or ())
     except ControllerError as err:
         fail(str(err))
+    connection = None
+    if ros:
+        from turtletui.cli.ros_run import connect_for_app
+
+        connection = connect_for_app(specs, ros_python)
     drawing = _drawing(pixels, ascii_only)
     from turtletui.tui.app import TurtleApp
 
@@ -204,6 +212,7 @@ def _run_app(
         graphics=drawing.graphics,
         record=record,
         foxglove=foxglove,
+        ros=connection,
     ).run()
 
 

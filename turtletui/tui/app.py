@@ -43,6 +43,7 @@ from turtletui.tui.widgets.splitter import Splitter
 from turtletui.worlds import WorldError, WorldSpec, resolve_world
 
 if TYPE_CHECKING:
+    from turtletui.bridge.run import RosConnection
     from turtletui.lessons.model import Lesson
     from turtletui.runtime.replay import Recording
     from turtletui.runtime.turtlesim_args import TurtlesimArgs
@@ -149,12 +150,15 @@ class TurtleApp(App):
         record: str | None = None,
         foxglove: str | None = None,
         turtlesim: TurtlesimArgs | None = None,
+        ros: RosConnection | None = None,
     ) -> None:
         super().__init__()
         self._record = record
         """Where to record the session (--record), or None."""
         self._foxglove = foxglove
         """HOST:PORT to serve the session to Foxglove on (--foxglove), or None."""
+        self._ros = ros
+        """A started twin on a real ROS 2 graph (``--ros``), else None."""
         self._turtlesim = turtlesim
         """turtlesim's own --ros-args (turtletui sim): its node name and parameters."""
         self._replay = replay
@@ -265,6 +269,7 @@ class TurtleApp(App):
             record=self._record,
             foxglove=self._foxglove,
             turtlesim=self._turtlesim,
+            ros=self._ros,
         )
         if problem is not None:
             self.session.sim.graph.log("turtletui", ERROR, problem)
