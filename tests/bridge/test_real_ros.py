@@ -213,10 +213,14 @@ def test_the_apps_session_shows_the_real_graph_and_its_ros2_command_line_works(
             session.advance(time.monotonic())
             time.sleep(0.016)
             with session.lock:
-                moved = session.sim.world.turtles["turtle1"].distance > 2.0 and any(
-                    r.node == "turtle_controller" for r in session.logs
+                moved = (
+                    session.sim.world.turtles["turtle1"].distance > 2.0
+                    and any(r.node == "turtle_controller" for r in session.logs)
+                    and "/turtle_controller" in [n.fqn for n in session.sim.graph.nodes]
                 )
         assert moved, "the ROS 2 controller process did not drive the turtle"
+        # ROS's own plumbing (parameter services, /rosout) stays out of the views, as before
+        assert not session.sim.graph.has_service("/turtle_controller/describe_parameters")
         with session.lock:
             cli = Ros2Cli(session.sim)
             nodes = cli.run("ros2 node list").lines

@@ -26,7 +26,7 @@ from typing import Any
 
 from turtletui.bridge.process import TwinProcess
 from turtletui.graph.core import GoalHandle, Graph, GraphError, NodeRecord, Publisher
-from turtletui.graph.logs import WARN, LogRecord
+from turtletui.graph.logs import INFO, WARN, LogRecord
 from turtletui.interfaces import InterfaceError, from_dict, get_interface, to_dict
 
 OWNER = "ros"
@@ -80,6 +80,13 @@ class RosBridge:
         self._gone = False
         self.graph.taps.append(self._tap)
         self.graph.log_sinks.append(self.forward_log)
+        self.graph.log(
+            "turtletui",
+            INFO,
+            f"On the ROS 2 graph: ROS_DOMAIN_ID {info.get('domain', '0')}, {info.get('rmw', '?')},"
+            f" rclpy {info.get('rclpy') or '?'} ({info.get('python', '?')}),"
+            f" turtlesim's types from {info.get('turtlesim_package', '?')}",
+        )
         self.sync()
 
     # -- RemoteHost ---------------------------------------------------------------------
@@ -318,7 +325,7 @@ class RosBridge:
             self.relaying = False
 
     def _on_problem(self, reply: dict[str, Any]) -> None:
-        self._warn(reply["text"], f"ROS 2 bridge: {reply['text']}")
+        self._warn(reply["text"], f"ROS 2: {reply['text']}")
 
     def _on_graph(self, reply: dict[str, Any]) -> None:
         seen = set()

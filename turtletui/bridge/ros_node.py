@@ -160,6 +160,7 @@ class Twin:
         self._ids = 0
         self._setting_from_turtletui = False
         self._last_graph = None
+        self._doubles: set = set()
         from rcl_interfaces.msg import Log
 
         self.bridge.create_subscription(Log, "/rosout", self._on_rosout, _rosout_qos())
@@ -410,8 +411,16 @@ class Twin:
         bridge = self.bridge
         ours = set(self.node_names.values())
         nodes = []
-        for name, namespace in sorted(bridge.get_node_names_and_namespaces()):
-            fqn = (namespace.rstrip("/") + "/" + name) if namespace else "/" + name
+        everyone = bridge.get_node_names_and_namespaces()
+        for fqn in sorted(ours):
+            if fqn not in self._doubles and sum(_fqn(n, ns) == fqn for n, ns in everyone) > 1:
+                self._doubles.add(fqn)
+                send({"op": "problem", "text": (
+                    f"another node named {fqn} is on this ROS 2 graph (ROS_DOMAIN_ID "
+                    f"{os.environ.get('ROS_DOMAIN_ID', '0')}): both get the same commands; stop it, "
+                    "or give this one another ROS_DOMAIN_ID")})
+        for name, namespace in sorted(everyone):
+            fqn = _fqn(name, namespace)
             if fqn in ours or name == BRIDGE_NODE:
                 continue
             try:
@@ -455,6 +464,10 @@ class Twin:
     def _next_id(self) -> int:
         self._ids += 1
         return self._ids
+
+
+def _fqn(name: str, namespace: str) -> str:
+    return (namespace.rstrip("/") + "/" + name) if namespace and namespace != "/" else "/" + name
 
 
 def _qos(depth: int):

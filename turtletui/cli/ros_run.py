@@ -2,13 +2,13 @@
 
 from __future__ import annotations
 
-import sys
 from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Any
 
 from turtletui.cli.errors import fail
 
 if TYPE_CHECKING:
+    from turtletui.api import RunResult
     from turtletui.runtime.loader import ControllerSpec
     from turtletui.sim import World
 
@@ -31,8 +31,8 @@ def run_headless(
     ros_args: Sequence[str],
     on_log: Callable[[Any], None],
     world: World | None,
-) -> None:
-    """Run, print the summary, exit as ``turtletui run --headless`` does."""
+) -> RunResult:
+    """Run the files as ROS 2 processes; a missing ROS 2 or a bad file is a clean exit."""
     from turtletui.bridge.process import RosUnavailable
     from turtletui.bridge.run import run_ros
     from turtletui.compat.ros_args import RosArgsError, parse_ros_args
@@ -41,16 +41,9 @@ def run_headless(
     try:
         if ros_args:
             parse_ros_args(list(ros_args))
-        result = run_ros(specs, duration=duration, ros_python=ros_python, ros_args=ros_args, on_log=on_log, world=world)
+        return run_ros(specs, duration=duration, ros_python=ros_python, ros_args=ros_args, on_log=on_log, world=world)
     except (RosUnavailable, ControllerError, RosArgsError) as err:
         fail(str(err))
-    for crash in result.crashes:
-        sys.stderr.write(crash.summary() + "\n")
-    sys.stdout.write(result.summary() + "\n")
-    if result.interrupted:
-        raise SystemExit(130)
-    if result.crashes:
-        raise SystemExit(1)
 
 
 def connect_for_app(specs: Sequence[ControllerSpec], ros_python: str | None) -> Any:

@@ -107,33 +107,36 @@ def run(
     def print_log(record) -> None:
         if not quiet:
             sys.stdout.write(record.format() + "\n")
-            sys.stdout.flush()
 
     if ros:
         from turtletui.cli.ros_run import run_headless
 
-        run_headless(specs, duration, ros_python, ROS_ARGS, print_log, sim_world)
-        return
-    try:
-        result = run_controllers(
-            specs,
-            duration=duration,
-            seed=seed,
-            realtime=realtime,
-            sandbox=False if in_process else None,
-            ros_args=ROS_ARGS,
-            record=record,
-            on_log=print_log,
-            keep_calls=False,
-            world=sim_world,
-            foxglove=foxglove,
-        )
-    except (ControllerError, RosArgsError, ValueError) as err:
-        fail(str(err))
-    except BrokenPipeError:
-        raise  # stdout closed (``| head``): Click exits quietly
-    except OSError as err:
-        fail(str(err))
+        def print_live(record) -> None:
+            print_log(record)
+            sys.stdout.flush()  # in real time beside other processes: no line held back
+
+        result = run_headless(specs, duration, ros_python, ROS_ARGS, print_live, sim_world)
+    else:
+        try:
+            result = run_controllers(
+                specs,
+                duration=duration,
+                seed=seed,
+                realtime=realtime,
+                sandbox=False if in_process else None,
+                ros_args=ROS_ARGS,
+                record=record,
+                on_log=print_log,
+                keep_calls=False,
+                world=sim_world,
+                foxglove=foxglove,
+            )
+        except (ControllerError, RosArgsError, ValueError) as err:
+            fail(str(err))
+        except BrokenPipeError:
+            raise  # stdout closed (``| head``): Click exits quietly
+        except OSError as err:
+            fail(str(err))
     for crash in result.crashes:
         if crash.kind == "load":
             # A sandboxed file without main() or Node is bad input, as in-process.
