@@ -232,3 +232,37 @@ def test_the_apps_session_shows_the_real_graph_and_its_ros2_command_line_works(
         assert session.slots[0].status == "running"
     finally:
         session.close()
+
+
+def test_ros2_topic_echo_and_pub_in_the_app_reach_other_processes(running: Running, ros_python: str) -> None:
+    from turtletui.ros2cli import Ros2Cli
+
+    chatter = subprocess.Popen(
+        [ros_python, str(Path(__file__).with_name("ros_chatter.py")), "60"],
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+    )
+    try:
+        assert running.wait_for(lambda: "/chatter" in running.sim.graph.topics, 60)
+        with running.lock:
+            cli = Ros2Cli(running.sim)
+            assert "/chatter" in cli.run("ros2 topic list").lines
+            echo = cli.run("ros2 topic echo /chatter --once").stream
+            pub = cli.run('ros2 topic pub -r 5 /from_app std_msgs/msg/String "{data: hi from turtletui}"').stream
+        assert echo is not None and pub is not None
+        lines: list[str] = []
+
+        def echoed() -> bool:
+            lines.extend(echo.poll())
+            return echo.done
+        assert running.wait_for(echoed, 30)
+        assert "data: hello from ROS 2" in lines
+        end = time.monotonic() + 30
+        received = ""
+        while "got hi from turtletui" not in received and time.monotonic() < end:
+            received += chatter.stdout.readline()
+        assert "got hi from turtletui" in received
+        with running.lock:
+            pub.close()
+    finally:
+        chatter.kill()
+        chatter.wait()
