@@ -266,3 +266,37 @@ def test_ros2_topic_echo_and_pub_in_the_app_reach_other_processes(running: Runni
     finally:
         chatter.kill()
         chatter.wait()
+
+
+def test_a_run_whose_ros_side_dies_fails_with_one_line(ros_python: str, ros_domain: str) -> None:
+    run = subprocess.Popen(
+        [sys.executable, "-m", "turtletui", "run", str(PART6), "--headless", "--ros", "--ros-python", ros_python,
+         "--duration", "120"],
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+    )
+    try:
+        twin = None
+        end = time.monotonic() + 60
+        while twin is None and time.monotonic() < end:
+            for entry in os.listdir("/proc"):
+                try:
+                    with open(f"/proc/{entry}/cmdline", "rb") as f:
+                        command = f.read()
+                except OSError:
+                    continue
+                if b"ros_node.py" in command and entry.isdigit():
+                    with open(f"/proc/{entry}/stat", "rb") as f:
+                        parent = int(f.read().rpartition(b")")[2].split()[1])
+                    if parent == run.pid:
+                        twin = int(entry)
+            time.sleep(0.2)
+        assert twin is not None
+        time.sleep(2.0)
+        os.kill(twin, signal.SIGKILL)
+        out, err = run.communicate(timeout=60)
+    finally:
+        if run.poll() is None:
+            run.kill()
+    assert run.returncode == 1
+    assert "the ROS 2 side (the bridge's twin) ended" in err
+    assert "ROS 2 bridge: the ROS 2 side ended" in out

@@ -119,6 +119,11 @@ class RosBridge:
         self.sync()
         return len(self.graph.ready) > ready_before
 
+    @property
+    def gone(self) -> bool:
+        """True once the twin ended (the simulation goes on, off the ROS 2 graph)."""
+        return self._gone
+
     def close(self) -> None:
         """Leave the DDS graph and the simulation's graph."""
         if self._tap in self.graph.taps:

@@ -191,6 +191,9 @@ def run_ros(
         while running and (limit is None or sim.graph.now_ns < limit):
             step = sim.graph.now_ns + _SLICE_NS
             sim.run_until(step if limit is None else min(step, limit))
+            if bridge.gone:  # the files can no longer reach turtlesim: say so and stop
+                crashes.append(CrashReport("ROS 2", sim.t, "killed", "the ROS 2 side (the bridge's twin) ended"))
+                break
             for controller in [c for c in running if c.finished]:
                 running.remove(controller)
                 crash = controller.crash
