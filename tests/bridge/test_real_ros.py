@@ -125,6 +125,13 @@ def test_nodes_of_other_processes_are_in_the_simulations_graph(running: Running,
             running.sim.graph.call("/probe_trigger", Trigger.Request(), answers.append, "test")
         assert running.wait_for(lambda: bool(answers), 30)
         assert answers[0].success and answers[0].message == "probe here"
+        # its parameters, as ros2 param shows them
+        assert running.wait_for(lambda: ("use_sim_time", False) in snapshot(running.sim.graph).node("/probe").parameters)
+        from turtletui.ros2cli import Ros2Cli
+
+        with running.lock:
+            shown = Ros2Cli(running.sim).run("ros2 param get /probe use_sim_time").lines
+        assert shown == ["Boolean value is: False"]
         # its log lines arrive from /rosout
         assert running.wait_for(lambda: any(r.node == "probe" and r.msg == "probe done" for r in running.logs), 90)
     finally:

@@ -51,6 +51,7 @@ class _Foreign:
         self.signature = signature
 
 
+
 class RosBridge:
     """Mirrors ``sim``'s graph onto a twin process and the DDS graph back (see module)."""
 
@@ -72,6 +73,8 @@ class RosBridge:
         self._publishers: dict[str, int] = {}
         """Topic -> the twin publisher that carries local messages out."""
         self._foreign: dict[tuple[str, str], _Foreign] = {}
+        self._foreign_parameters: dict[str, dict[str, Any]] = {}
+        """Other nodes' parameters by node (ros2 param list|get|dump show them)."""
         self._goals: dict[int, GoalHandle] = {}
         self._calls: dict[int, Callable[[Any], None]] = {}
         self._warned: set[str] = set()
@@ -345,11 +348,23 @@ class RosBridge:
                 self.graph.remove_node(current.record)
             self._foreign[key] = _Foreign(self._add_foreign(entry), signature)
         for key in [k for k in self._foreign if k not in seen]:
-            self.graph.remove_node(self._foreign.pop(key).record)
+            record = self._foreign.pop(key).record
+            self.graph.remove_node(record)
+            self._foreign_parameters.pop(record.fqn, None)
+
+    def _on_params(self, reply: dict[str, Any]) -> None:
+        parameters = self._foreign_parameters.setdefault(reply["node"], {})
+        parameters.update((name, value) for name, value in reply["values"].items() if value is not None)
+        for name in reply["deleted"]:
+            parameters.pop(name, None)
+        for foreign in self._foreign.values():
+            if foreign.record.fqn == reply["node"]:
+                foreign.record.parameters = dict(parameters)
 
     def _add_foreign(self, entry: dict[str, Any]) -> NodeRecord:
         graph = self.graph
         node = graph.add_node(entry["name"], entry["namespace"], owner=OWNER)
+        node.parameters = dict(self._foreign_parameters.get(node.fqn, {}))
         for kind in ("pub", "sub", "srv", "cli", "asrv", "acli"):
             for name, type_name in entry[kind]:
                 try:

@@ -164,6 +164,10 @@ class Twin:
         from rcl_interfaces.msg import Log
 
         self.bridge.create_subscription(Log, "/rosout", self._on_rosout, _rosout_qos())
+        from rcl_interfaces.msg import ParameterEvent
+
+        self.bridge.create_subscription(ParameterEvent, "/parameter_events", self._on_parameter_event, 100)
+        self._asked_parameters: set = set()
         self.bridge.create_timer(GRAPH_PERIOD, self._report_graph)
 
     # -- the inbox (turtletui's lines), handled in the executor's thread --------------
@@ -440,6 +444,58 @@ class Twin:
         if nodes != self._last_graph:
             self._last_graph = nodes
             send({"op": "graph", "nodes": nodes})
+        present = set()
+        for entry in nodes:
+            fqn = _fqn(entry["name"], entry["namespace"])
+            present.add(fqn)
+            if fqn not in self._asked_parameters and [fqn + "/list_parameters", "rcl_interfaces/srv/ListParameters"] in [
+                list(pair) for pair in self._all_services(entry)
+            ]:
+                self._asked_parameters.add(fqn)
+                self._fetch_parameters(fqn)
+        self._asked_parameters &= present
+
+    def _all_services(self, entry) -> list:
+        bridge = self.bridge
+        try:
+            return [[name, types[0]] for name, types in bridge.get_service_names_and_types_by_node(
+                entry["name"], entry["namespace"] or "/") if types]
+        except Exception:
+            return []
+
+    # -- other nodes' parameters (ros2 param list|get|dump in the app) ----------------------------
+    def _fetch_parameters(self, fqn: str) -> None:
+        from rcl_interfaces.srv import GetParameters, ListParameters
+
+        lister = self.bridge.create_client(ListParameters, fqn + "/list_parameters")
+        getter = self.bridge.create_client(GetParameters, fqn + "/get_parameters")
+
+        def got(future, names):
+            response = future.result()
+            if response is not None:
+                values = {n: _parameter_value(v) for n, v in zip(names, response.values)}  # noqa: B905
+                send({"op": "params", "node": fqn, "values": values, "deleted": []})
+            self.bridge.destroy_client(lister)
+            self.bridge.destroy_client(getter)
+
+        def listed(future):
+            response = future.result()
+            if response is None:
+                return
+            names = list(response.result.names)
+            request = GetParameters.Request(names=names)
+            getter.call_async(request).add_done_callback(lambda f: got(f, names))
+
+        lister.call_async(ListParameters.Request()).add_done_callback(listed)
+
+    def _on_parameter_event(self, event) -> None:
+        fqn = event.node if event.node.startswith("/") else "/" + event.node
+        if fqn in self.node_names.values():
+            return
+        values = {p.name: _parameter_value(p.value) for p in list(event.new_parameters) + list(event.changed_parameters)}
+        deleted = [p.name for p in event.deleted_parameters]
+        if values or deleted:
+            send({"op": "params", "node": fqn, "values": values, "deleted": deleted})
 
     def _endpoints(self, pairs) -> list:
         return sorted(
@@ -464,6 +520,17 @@ class Twin:
     def _next_id(self) -> int:
         self._ids += 1
         return self._ids
+
+
+def _parameter_value(value):
+    """A rcl_interfaces ParameterValue as a plain value (None when not set)."""
+    kind = value.type
+    fields = {1: "bool_value", 2: "integer_value", 3: "double_value", 4: "string_value",
+              5: "byte_array_value", 6: "bool_array_value", 7: "integer_array_value",
+              8: "double_array_value", 9: "string_array_value"}
+    if kind not in fields:
+        return None
+    return _plain_value(getattr(value, fields[kind]))
 
 
 def _fqn(name: str, namespace: str) -> str:
