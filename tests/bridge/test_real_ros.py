@@ -307,3 +307,31 @@ def test_a_run_whose_ros_side_dies_fails_with_one_line(ros_python: str, ros_doma
     assert run.returncode == 1
     assert "the ROS 2 side (the bridge's twin) ended" in err
     assert "ROS 2 bridge: the ROS 2 side ended" in out
+
+
+def test_ros2_action_send_goal_in_the_app_reaches_another_processes_server(running: Running, ros_python: str) -> None:
+    from turtletui.ros2cli import Ros2Cli
+
+    server = subprocess.Popen(
+        [ros_python, str(Path(__file__).with_name("ros_action_server.py")), "60"],
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+    )
+    try:
+        assert running.wait_for(lambda: running.sim.graph.has_action_server("/other/rotate"), 60)
+        with running.lock:
+            goal = Ros2Cli(running.sim).run(
+                'ros2 action send_goal /other/rotate turtlesim/action/RotateAbsolute "{theta: 1.0}" --feedback'
+            ).stream
+        assert goal is not None
+        lines: list[str] = []
+
+        def finished() -> bool:
+            lines.extend(goal.poll())
+            return goal.done
+        assert running.wait_for(finished, 60), lines
+        text = "\n".join(lines)
+        assert "remaining: 0.75" in text and "remaining: 0.25" in text
+        assert "delta: 0.5" in text and "SUCCEEDED" in text
+    finally:
+        server.kill()
+        server.wait()

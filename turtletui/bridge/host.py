@@ -76,6 +76,9 @@ class RosBridge:
         self._foreign_parameters: dict[str, dict[str, Any]] = {}
         """Other nodes' parameters by node (ros2 param list|get|dump show them)."""
         self._goals: dict[int, GoalHandle] = {}
+        """Goals other processes sent to turtletui's action servers, by twin goal id."""
+        self._remote_goals: dict[int, tuple[GoalHandle, type]] = {}
+        """Goals turtletui's nodes sent to other processes' action servers."""
         self._calls: dict[int, Callable[[Any], None]] = {}
         self._warned: set[str] = set()
         self._injecting = False
@@ -383,7 +386,7 @@ class RosBridge:
                         graph.add_client(node, name, cls)
                     elif kind == "asrv":
                         if not graph.has_action_server(name):
-                            graph.add_action_server(node, name, cls, _refuse_goal)
+                            graph.add_action_server(node, name, cls, self._foreign_action(name, type_name))
                     else:
                         graph.add_action_client(node, name, cls)
                 except GraphError as err:
@@ -405,6 +408,33 @@ class RosBridge:
             self._send({"op": "call", "call": call, "service": name, "type": type_name, "msg": to_dict(request)})
 
         return handler
+
+    def _foreign_action(self, name: str, type_name: str) -> Callable[[GoalHandle], None]:
+        """A goal handler that sends goals to another process's action server through the twin."""
+        action_type = get_interface(type_name)
+
+        def on_goal(handle: GoalHandle) -> None:
+            goal_id = self._new_id()
+            self._remote_goals[goal_id] = (handle, action_type)
+            handle.on_cancel = lambda: self._send({"op": "cancel_goal", "goal": goal_id})
+            self._send(
+                {"op": "send_goal", "goal": goal_id, "action": name, "type": type_name, "msg": to_dict(handle.goal)}
+            )
+
+        return on_goal
+
+    def _on_goal_feedback(self, reply: dict[str, Any]) -> None:
+        handle, action_type = self._remote_goals.get(reply["goal"], (None, None))
+        if handle is not None:
+            feedback = self._checked(action_type.Feedback, reply["msg"], f"feedback of {handle.action.name}")
+            if feedback is not None:
+                handle.publish_feedback(feedback)
+
+    def _on_goal_done(self, reply: dict[str, Any]) -> None:
+        handle, action_type = self._remote_goals.pop(reply["goal"], (None, None))
+        if handle is not None:
+            result = self._checked(action_type.Result, reply["msg"], f"the result of {handle.action.name}")
+            handle.finish(reply["status"], result if result is not None else action_type.Result())
 
     # -- helpers -------------------------------------------------------------------------------
     def _checked(self, cls: type, data: Any, what: str) -> Any:
@@ -429,10 +459,6 @@ class RosBridge:
 
 def _ignore(msg: Any) -> None:
     """Other processes' subscriptions get their messages from DDS, not here."""
-
-
-def _refuse_goal(handle: GoalHandle) -> None:
-    handle.finish("aborted", handle.action.action_type.Result())
 
 
 def _is_parameter_value(value: Any) -> bool:

@@ -156,6 +156,8 @@ class Twin:
         self.foreign_gids: set = set()
         self.calls: dict = {}
         self.clients: dict = {}
+        self.action_clients: dict = {}
+        self.client_goals: dict = {}
         self.goals: dict = {}
         self._ids = 0
         self._setting_from_turtletui = False
@@ -373,6 +375,40 @@ class Twin:
             send({"op": "reply", "call": call, "msg": None if response is None else to_plain(response)})
 
         client.call_async(from_plain(srv_type.Request, msg)).add_done_callback(done)
+
+    # -- goals for other processes' action servers (ros2 action send_goal in the app) ----------
+    def op_send_goal(self, goal: int, action: str, type: str, msg: dict) -> None:
+        from rclpy.action import ActionClient
+
+        action_type = self.interface(type)
+        client = self.action_clients.get(action)
+        if client is None:
+            client = self.action_clients[action] = ActionClient(self.bridge, action_type, action)
+
+        def feedback(message, goal=goal):
+            send({"op": "goal_feedback", "goal": goal, "msg": to_plain(message.feedback)})
+
+        def finished(future, goal=goal):
+            self.client_goals.pop(goal, None)
+            outcome = future.result()
+            status = {4: "succeeded", 5: "canceled"}.get(getattr(outcome, "status", 0), "aborted")
+            result = to_plain(outcome.result) if outcome is not None else {}
+            send({"op": "goal_done", "goal": goal, "status": status, "msg": result})
+
+        def answered(future, goal=goal):
+            handle = future.result()
+            if handle is None or not handle.accepted:
+                send({"op": "goal_done", "goal": goal, "status": "aborted", "msg": {}})
+                return
+            self.client_goals[goal] = handle
+            handle.get_result_async().add_done_callback(finished)
+
+        client.send_goal_async(from_plain(action_type.Goal, msg), feedback_callback=feedback).add_done_callback(answered)
+
+    def op_cancel_goal(self, goal: int) -> None:
+        handle = self.client_goals.get(goal)
+        if handle is not None:
+            handle.cancel_goal_async()
 
     # -- removal --------------------------------------------------------------------------------
     def op_remove(self, id: int) -> None:
