@@ -335,3 +335,31 @@ def test_ros2_action_send_goal_in_the_app_reaches_another_processes_server(runni
     finally:
         server.kill()
         server.wait()
+
+
+def test_every_form_of_controller_file_runs_as_a_ros_process(ros_python: str, ros_domain: str, tmp_path: Path) -> None:
+    forms = {
+        "with_main.py": "import rclpy\ndef main():\n    rclpy.init()\n    rclpy.spin(rclpy.create_node('with_main'))\n",
+        "guarded.py": (
+            "import rclpy\nif __name__ == '__main__':\n    rclpy.init()\n"
+            "    rclpy.spin(rclpy.create_node('guarded'))\n"
+        ),
+        "node_class.py": (
+            "from rclpy.node import Node\nclass Mine(Node):\n    def __init__(self):\n"
+            "        super().__init__('node_class')\n"
+        ),
+    }
+    for name, text in forms.items():
+        (tmp_path / name).write_text(text)
+    run = subprocess.Popen(
+        [sys.executable, "-m", "turtletui", "run", *(str(tmp_path / n) for n in forms), "--headless", "--ros",
+         "--ros-python", ros_python, "--duration", "40"],
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+    )
+    try:
+        done = run_ros_script(ros_python, "ros_probe.py", "60", "0", "with_main", "guarded", "node_class")
+    finally:
+        run.send_signal(signal.SIGINT)
+        run.communicate(timeout=60)
+    report = json.loads(done.stdout.strip().splitlines()[-1])
+    assert {"with_main", "guarded", "node_class"} <= set(report["nodes"])
