@@ -120,8 +120,12 @@ class RosBridge:
                 self._twin_ended()
                 break
             handler = getattr(self, "_on_" + str(reply.get("op")), None)
-            if handler is not None:
+            if handler is None:
+                continue
+            try:
                 handler(reply)
+            except (KeyError, TypeError, ValueError, AttributeError) as err:  # a malformed line: skip it
+                self._warn(f"reply:{reply.get('op')}", f"ROS 2 bridge: ignored a malformed {reply.get('op')!r} ({err!r})")
         self.sync()
         return len(self.graph.ready) > ready_before
 

@@ -13,7 +13,7 @@ if TYPE_CHECKING:
     from turtletui.sim import World
 
 
-def check_ros_options(*, record: str | None, foxglove: str | None, in_process: bool, realtime: bool) -> None:
+def check_ros_options(*, record: str | None, foxglove: str | None, in_process: bool) -> None:
     """Options that mean nothing for processes on a real ROS 2 graph are refused."""
     if in_process:
         fail("--in-process and --ros do not go together: with --ros each file is its own ROS 2 process")
@@ -21,7 +21,6 @@ def check_ros_options(*, record: str | None, foxglove: str | None, in_process: b
         fail("--record is not available with --ros: record the ROS 2 graph with ros2 bag record -a")
     if foxglove is not None:
         fail("--foxglove is not available with --ros: run foxglove_bridge on the ROS 2 graph instead")
-    del realtime  # --ros runs in real time anyway
 
 
 def run_headless(
@@ -46,8 +45,9 @@ def run_headless(
         fail(str(err))
 
 
-def connect_for_app(specs: Sequence[ControllerSpec], ros_python: str | None) -> Any:
-    """The twin, started before the app takes the screen (a missing ROS 2 is one line)."""
+def connect_or_fail(ros_python: str | None, specs: Sequence[ControllerSpec] = ()) -> Any:
+    """The twin, started before the app takes the screen: a missing ROS 2, or
+    a controller that cannot run as a ROS 2 process, is one line."""
     from turtletui.bridge.process import RosUnavailable
     from turtletui.bridge.run import connect, ros_specs
     from turtletui.runtime.loader import ControllerError

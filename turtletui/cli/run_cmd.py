@@ -85,7 +85,7 @@ def run(
     if ros:
         from turtletui.cli.ros_run import check_ros_options
 
-        check_ros_options(record=record, foxglove=foxglove, in_process=in_process, realtime=realtime)
+        check_ros_options(record=record, foxglove=foxglove, in_process=in_process)
     if not headless:
         require_screen("run headless instead: turtletui run FILE.py --headless --duration 60")
         _run_app(controllers, plugin, lesson, ascii_only, seed, world, pixels, record, foxglove,
@@ -198,9 +198,9 @@ def _run_app(
         fail(str(err))
     connection = None
     if ros:
-        from turtletui.cli.ros_run import connect_for_app
+        from turtletui.cli.ros_run import connect_or_fail
 
-        connection = connect_for_app(specs, ros_python)
+        connection = connect_or_fail(ros_python, specs)
     drawing = _drawing(pixels, ascii_only)
     from turtletui.tui.app import TurtleApp
 
