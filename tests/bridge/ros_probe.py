@@ -7,6 +7,7 @@ and prints one JSON report on its last line. It offers the service
 """
 
 import json
+import os
 import sys
 import time
 
@@ -17,14 +18,14 @@ from rclpy.action import ActionClient
 from rclpy.qos import ReliabilityPolicy
 from std_srvs.srv import Empty, Trigger
 
-try:
-    from turtlesim.action import RotateAbsolute
-    from turtlesim.msg import Pose
-    from turtlesim.srv import Kill, SetPen, Spawn, TeleportAbsolute
-except ImportError:  # Kilted on
+if os.environ.get("TURTLETUI_TURTLESIM_PACKAGE") == "turtlesim_msgs":  # as a Kilted user imports them
     from turtlesim_msgs.action import RotateAbsolute
     from turtlesim_msgs.msg import Pose
     from turtlesim_msgs.srv import Kill, SetPen, Spawn, TeleportAbsolute
+else:
+    from turtlesim.action import RotateAbsolute
+    from turtlesim.msg import Pose
+    from turtlesim.srv import Kill, SetPen, Spawn, TeleportAbsolute
 
 
 def main() -> None:

@@ -106,6 +106,20 @@ def test_another_process_sees_and_uses_every_part_of_turtlesim(running: Running,
     assert "turtle2" not in running.sim.world.turtles
 
 
+def test_turtlesim_msgs_types_for_kilted_and_later(ros_python: str, ros_domain: str, monkeypatch) -> None:
+    monkeypatch.setenv("TURTLETUI_TURTLESIM_PACKAGE", "turtlesim_msgs")
+    running = Running(ros_python)
+    try:
+        assert running.bridge.info["turtlesim_package"] == "turtlesim_msgs"
+        done = run_ros_script(ros_python, "ros_probe.py", "90", "0")
+    finally:
+        running.close()
+    assert done.returncode == 0, done.stderr[-3000:]
+    report = json.loads(done.stdout.strip().splitlines()[-1])
+    assert report["topics"]["/turtle1/pose"] == ["turtlesim_msgs/msg/Pose"]
+    assert report["spawned"] == "turtle2" and report["goal_status"] == 4
+
+
 def test_nodes_of_other_processes_are_in_the_simulations_graph(running: Running, ros_python: str) -> None:
     probe = subprocess.Popen(
         [ros_python, str(Path(__file__).with_name("ros_probe.py")), "90", "30"],

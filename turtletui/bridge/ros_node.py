@@ -25,6 +25,7 @@ rclpy here); the process ends when its input closes.
 # No turtletui imports, and nothing newer than the oldest ROS 2 python (3.8).
 from __future__ import annotations
 
+import functools
 import importlib
 import json
 import os
@@ -216,7 +217,10 @@ class Twin:
         )
         for pname, value in parameters.items():
             node.declare_parameter(pname, value, _descriptor(pname, value, descriptors.get(pname)))
-        node.add_post_set_parameters_callback(lambda params, node_id=id: self._parameters_set(node_id, params))
+        if hasattr(node, "add_post_set_parameters_callback"):
+            node.add_post_set_parameters_callback(lambda params, node_id=id: self._parameters_set(node_id, params))
+        else:  # Humble: the last callback before the set (rclpy checked the descriptors already)
+            node.add_on_set_parameters_callback(lambda params, node_id=id: self._parameters_accepted(node_id, params))
         self.nodes[id] = node
         self.node_names[id] = node.get_fully_qualified_name()
         self.executor.add_node(node)
@@ -244,6 +248,12 @@ class Twin:
             return
         for parameter in parameters:
             send({"op": "param_set", "node": node_id, "name": parameter.name, "value": parameter.value})
+
+    def _parameters_accepted(self, node_id: int, parameters):
+        from rcl_interfaces.msg import SetParametersResult
+
+        self._parameters_set(node_id, parameters)
+        return SetParametersResult(successful=True)
 
     def op_log(self, node: int, level: int, msg: str) -> None:
         # One call site per severity: rclpy ties a call site to one severity.
@@ -278,12 +288,17 @@ class Twin:
                 return
             send({"op": "message", "topic": topic, "msg": to_plain(msg)})
 
+        if not _callbacks_take_message_info():  # Humble: no publisher to tell the twins' own apart
+            receive = functools.partial(receive, info=None)
+
         subscription = self.nodes[node].create_subscription(self.interface(type), topic, receive, _qos(depth))
         self.endpoints[id] = ("sub", subscription, topic, node)
         self.receivers.setdefault(topic, []).append(id)
 
     def _own(self, topic: str, info) -> bool:
         """Whether a message came from one of the twins (turtletui delivered it already)."""
+        if info is None:
+            return False
         gid = info.get("publisher_gid") if isinstance(info, dict) else None
         data = bytes(gid["data"]) if gid else b""
         if data in self.own_gids:
@@ -556,6 +571,13 @@ class Twin:
     def _next_id(self) -> int:
         self._ids += 1
         return self._ids
+
+
+def _callbacks_take_message_info() -> bool:
+    """Whether rclpy hands subscriptions the publisher of each message (Iron on)."""
+    from rclpy.subscription import Subscription
+
+    return hasattr(Subscription, "CallbackType")
 
 
 def _parameter_value(value):
