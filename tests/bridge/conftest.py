@@ -46,10 +46,14 @@ def ros_python() -> str:
     return _find_ros_python()
 
 
+_DOMAINS = iter(range(random.SystemRandom().randrange(99), 10**6))
+
+
 @pytest.fixture
 def ros_domain(monkeypatch: pytest.MonkeyPatch) -> str:
-    """A ROS domain of this test's own, discovery on this machine only."""
-    domain = str(random.SystemRandom().randrange(1, 100))
+    """A ROS domain of this test's own (the next one: no two tests of a run
+    share one), discovery on this machine only."""
+    domain = str(next(_DOMAINS) % 99 + 1)
     monkeypatch.setenv("ROS_DOMAIN_ID", domain)
     monkeypatch.setenv("ROS_AUTOMATIC_DISCOVERY_RANGE", "LOCALHOST")
     return domain

@@ -56,6 +56,8 @@ def main() -> None:
 
     report["found"] = spin_until(lambda: ("turtlesim", "/") in node.get_node_names_and_namespaces(), 30)
     spin_until(lambda: len(node.get_publishers_info_by_topic("/turtle1/pose")) > 0, 10)
+    for wanted in sys.argv[3:]:  # nodes the caller expects (they may start later)
+        spin_until(lambda wanted=wanted: wanted in [n for n, _ in node.get_node_names_and_namespaces()], 30)
     report["topics"] = {t: types for t, types in node.get_topic_names_and_types()}
     report["services"] = sorted(s for s, _ in node.get_service_names_and_types())
     report["pose_reliable"] = [
@@ -63,11 +65,18 @@ def main() -> None:
         for e in node.get_publishers_info_by_topic("/turtle1/pose")
     ]
     stamps = []
-    node.create_subscription(Pose, "/turtle1/pose", lambda m: stamps.append(time.monotonic()), 7)
+    turtle1 = []
+
+    def on_pose(msg):
+        stamps.append(time.monotonic())
+        turtle1.append((msg.x, msg.y))
+
+    node.create_subscription(Pose, "/turtle1/pose", on_pose, 7)
     spin_until(lambda: len(stamps) > 190, 10)
     report["pose_rate"] = (len(stamps) - 1) / (stamps[-1] - stamps[0]) if len(stamps) > 2 else 0.0
-    for wanted in sys.argv[3:]:  # nodes the caller expects (they may start later)
-        spin_until(lambda wanted=wanted: wanted in [n for n, _ in node.get_node_names_and_namespaces()], 30)
+    report["turtle1_travel"] = sum(
+        ((x1 - x0) ** 2 + (y1 - y0) ** 2) ** 0.5 for (x0, y0), (x1, y1) in zip(turtle1, turtle1[1:])  # noqa: B905 (Python 3.8 too)
+    )
     report["nodes"] = sorted(n for n, ns in node.get_node_names_and_namespaces() if not n.startswith("_"))
 
     spawned = call(Spawn, "/spawn", Spawn.Request(x=2.0, y=3.0, theta=0.5, name=""))

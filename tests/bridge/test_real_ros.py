@@ -377,3 +377,34 @@ def test_every_form_of_controller_file_runs_as_a_ros_process(ros_python: str, ro
         run.communicate(timeout=60)
     report = json.loads(done.stdout.strip().splitlines()[-1])
     assert {"with_main", "guarded", "node_class"} <= set(report["nodes"])
+
+
+def test_sim_ros_headless_is_turtlesim_for_the_unchanged_course_controller(ros_python: str, ros_domain: str) -> None:
+    """The issue's check: `turtletui sim --ros --headless`, the course's Part 6
+    controller run with the real rclpy (python3 turtle_controller.py), and a
+    third process that finds /turtlesim, its poses at about 62.5 Hz, and spawns."""
+    sim = subprocess.Popen(
+        [sys.executable, "-m", "turtletui", "sim", "--ros", "--headless", "--ros-python", ros_python,
+         "--duration", "30", "--ros-args", "-p", "background_g:=0", "--log-level", "info"],
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+    )
+    controller = subprocess.Popen([ros_python, str(PART6)], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        done = run_ros_script(ros_python, "ros_probe.py", "60", "0", "turtle_controller")
+    finally:
+        controller.send_signal(signal.SIGINT)
+        controller.communicate(timeout=30)
+        out, err = sim.communicate(timeout=60)
+    assert sim.returncode == 0, err
+    assert done.returncode == 0, done.stderr[-3000:]
+    report = json.loads(done.stdout.strip().splitlines()[-1])
+    assert "turtlesim" in report["nodes"] and "turtle_controller" in report["nodes"], (report, out[-2000:])
+    assert 50.0 < report["pose_rate"] < 75.0, report
+    assert report["turtle1_travel"] > 3.0, (report, out[-2000:])  # driven: about 3 s at up to 5 m/s while the probe measured
+    assert report["spawned"] == "turtle2"
+    assert report["get"][0] == 10  # the probe set background_r; background_g came from --ros-args
+    lines = out.splitlines()
+    assert lines[0].endswith("[turtlesim]: Starting turtlesim with node name /turtlesim")
+    assert any("Spawning turtle [turtle2] at x=[2.000000], y=[3.000000], theta=[0.500000]" in line for line in lines)
+    assert not any("hit the wall" in line for line in lines), [line for line in lines if "wall" in line]
+    assert not any("[turtle_controller]" in line for line in lines)  # its lines are its own to print

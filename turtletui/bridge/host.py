@@ -57,7 +57,15 @@ class RosBridge:
 
     owner = OWNER
 
-    def __init__(self, sim: Any, twin: TwinProcess, info: dict[str, Any]) -> None:
+    def __init__(
+        self,
+        sim: Any,
+        twin: TwinProcess,
+        info: dict[str, Any],
+        log_filter: Callable[[Callable[[LogRecord], None]], Callable[[LogRecord], None]] | None = None,
+    ) -> None:
+        """``log_filter`` wraps the sink that puts turtletui's log lines on
+        /rosout (turtlesim's ``--log-level``: TurtlesimArgs.log_filter)."""
         self.graph: Graph = sim.graph
         self.twin = twin
         self.info = info
@@ -84,8 +92,10 @@ class RosBridge:
         self._injecting = False
         self._synced_at: int | None = None
         self._gone = False
+        self.log_sink = self.forward_log if log_filter is None else log_filter(self.forward_log)
+        """The log sink this bridge adds: lines of turtletui's nodes go to /rosout."""
         self.graph.taps.append(self._tap)
-        self.graph.log_sinks.append(self.forward_log)
+        self.graph.log_sinks.append(self.log_sink)
         self.graph.log(
             "turtletui",
             INFO,
@@ -138,8 +148,8 @@ class RosBridge:
         """Leave the DDS graph and the simulation's graph."""
         if self._tap in self.graph.taps:
             self.graph.taps.remove(self._tap)
-        if self.forward_log in self.graph.log_sinks:
-            self.graph.log_sinks.remove(self.forward_log)
+        if self.log_sink in self.graph.log_sinks:
+            self.graph.log_sinks.remove(self.log_sink)
         for foreign in self._foreign.values():
             self.graph.remove_node(foreign.record)
         self._foreign.clear()

@@ -47,19 +47,23 @@ def connect(ros_python: str | None = None) -> RosConnection:
 
 
 def attach(
-    sim: Simulation, ros: RosConnection | str | None = None, earlier_logs: Iterable[LogRecord] = ()
+    sim: Simulation,
+    ros: RosConnection | str | None = None,
+    earlier_logs: Iterable[LogRecord] = (),
+    log_filter: Callable[[Callable[[LogRecord], None]], Callable[[LogRecord], None]] | None = None,
 ) -> RosBridge:
     """Put ``sim`` (real time) on the ROS 2 graph, through ``ros`` (a started
     twin, or the python to start one in); RosUnavailable if there is none.
 
     ``earlier_logs``: lines logged before (turtlesim's start lines), sent on
-    to /rosout once the twin is there.
+    to /rosout once the twin is there; ``log_filter``: what of turtletui's
+    log goes to /rosout (turtlesim's ``--log-level``).
     """
     if not isinstance(ros, RosConnection):
         ros = connect(ros)
-    bridge = RosBridge(sim, ros.twin, ros.info)
+    bridge = RosBridge(sim, ros.twin, ros.info, log_filter)
     for record in earlier_logs:
-        bridge.forward_log(record)
+        bridge.log_sink(record)
     sim.remotes.append(bridge)
     return bridge
 

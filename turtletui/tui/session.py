@@ -213,7 +213,7 @@ class LiveSession:
         if ros is not None:
             from turtletui.bridge.run import attach
 
-            self.ros = attach(self.sim, ros, earlier_logs=list(self.logs))
+            self.ros = attach(self.sim, ros, earlier_logs=list(self.logs), log_filter=turtlesim.log_filter)
         self.slots = [ControllerSlot(spec) for spec in controllers]
         self._started = False
         if start:
