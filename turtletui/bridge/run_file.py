@@ -24,6 +24,8 @@ import traceback
 import types
 
 
+# calls_main and spin_nodes repeat turtletui.runtime.loader's on purpose: this
+# file runs in ROS 2's python, where turtletui is not importable.
 def calls_main(source: str) -> bool:
     """Whether the file's top-level code calls ``main`` (also under
     ``if __name__ == "__main__":`` or in ``sys.exit(main())``)."""

@@ -1,9 +1,11 @@
-"""``--ros`` for ``turtletui run``: the files as ROS 2 processes against the bridged turtlesim."""
+"""``--ros`` for ``turtletui run`` and ``turtletui sim``: on a real ROS 2 graph (turtletui.bridge)."""
 
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Any
+
+import typer
 
 from turtletui.cli.errors import fail
 
@@ -11,6 +13,17 @@ if TYPE_CHECKING:
     from turtletui.api import RunResult
     from turtletui.runtime.loader import ControllerSpec
     from turtletui.sim import World
+
+
+def ros_python_option() -> Any:
+    """``--ros-python PYTHON``, as run and sim take it."""
+    return typer.Option(
+        None,
+        "--ros-python",
+        metavar="PYTHON",
+        help="With --ros: the python of the ROS 2 to use (default: a sourced ROS 2's;"
+        " or set TURTLETUI_ROS_PYTHON).",
+    )
 
 
 def check_ros_options(*, record: str | None, foxglove: str | None, in_process: bool) -> None:

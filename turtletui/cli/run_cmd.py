@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING
 import typer
 
 from turtletui.cli.errors import fail
+from turtletui.cli.ros_run import ros_python_option
 from turtletui.cli.screen import require_screen
 
 if TYPE_CHECKING:
@@ -68,13 +69,7 @@ def run(
         help="On a real ROS 2 graph: turtlesim as a real /turtlesim node, the files as ordinary ROS 2"
         " processes (the real rclpy), in real time; --duration is then wall seconds.",
     ),
-    ros_python: str = typer.Option(
-        None,
-        "--ros-python",
-        metavar="PYTHON",
-        help="With --ros: the python of the ROS 2 to use (default: a sourced ROS 2's;"
-        " or set TURTLETUI_ROS_PYTHON).",
-    ),
+    ros_python: str = ros_python_option(),
 ) -> None:
     """Run rclpy controller files against the simulated turtlesim.
 

@@ -15,6 +15,7 @@ from pathlib import Path
 import typer
 
 from turtletui.cli.errors import fail
+from turtletui.cli.ros_run import ros_python_option
 from turtletui.cli.screen import require_screen
 
 ROS_ARGS: list[str] = []
@@ -44,13 +45,7 @@ def sim(
         help="Be turtlesim on a real ROS 2 graph: the node /turtlesim with turtlesim_node's topics,"
         " services, action, parameters and log, for any ROS 2 program (needs a sourced ROS 2).",
     ),
-    ros_python: str = typer.Option(
-        None,
-        "--ros-python",
-        metavar="PYTHON",
-        help="With --ros: the python of the ROS 2 to use (default: a sourced ROS 2's;"
-        " or set TURTLETUI_ROS_PYTHON).",
-    ),
+    ros_python: str = ros_python_option(),
 ) -> None:
     """Run turtlesim alone, as ros2 run turtlesim turtlesim_node does.
 
