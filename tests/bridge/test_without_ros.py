@@ -64,3 +64,16 @@ def test_ros_options_that_mean_nothing_on_a_real_graph_are_refused(tmp_path: Pat
     done = subprocess.run([sys.executable, "-m", "turtletui", "run", "--headless", "--ros-python", "python3"],
                           capture_output=True, text=True, timeout=60)
     assert done.returncode == 2 and "--ros-python goes with --ros" in done.stderr
+
+
+def test_sim_ros_without_ros_2_is_one_line_saying_how_to_source_it() -> None:
+    done = subprocess.run(
+        [sys.executable, "-m", "turtletui", "sim", "--ros", "--headless", "--ros-python", sys.executable],
+        capture_output=True, text=True, timeout=120,
+    )
+    assert done.returncode == 2 and done.stdout == ""
+    [line] = done.stderr.strip().splitlines()
+    assert line.startswith("turtletui: error: no ROS 2 here (") and "source /opt/ros/" in line
+    done = subprocess.run([sys.executable, "-m", "turtletui", "sim", "--headless", "--ros-python", "python3"],
+                          capture_output=True, text=True, timeout=60)
+    assert done.returncode == 2 and "--ros-python goes with --ros" in done.stderr

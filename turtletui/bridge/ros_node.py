@@ -216,7 +216,12 @@ class Twin:
             name, namespace=namespace or None, automatically_declare_parameters_from_overrides=False
         )
         for pname, value in parameters.items():
-            node.declare_parameter(pname, value, _descriptor(pname, value, descriptors.get(pname)))
+            if pname == "use_sim_time":
+                continue  # every node declares it already
+            try:
+                node.declare_parameter(pname, value, _descriptor(pname, value, descriptors.get(pname)))
+            except Exception as err:  # a value ROS cannot hold: the node goes on without it
+                send({"op": "problem", "text": f"{node.get_fully_qualified_name()}: parameter {pname}: {err}"})
         if hasattr(node, "add_post_set_parameters_callback"):
             node.add_post_set_parameters_callback(lambda params, node_id=id: self._parameters_set(node_id, params))
         else:  # Humble: the last callback before the set (rclpy checked the descriptors already)
