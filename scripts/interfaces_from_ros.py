@@ -10,7 +10,7 @@ nested type is defined before it is used:
 
 ``--share`` is a folder holding ``<package>/msg/*.msg`` (and ``srv/``,
 ``action/``): a ROS installation's ``share/``, the ``share/`` of a venv with
-the ros-* wheels (see scripts/real_rclpy_env.py), or a source checkout's
+the ros-* wheels (see scripts/real_ros_env.py), or a source checkout's
 folder of packages. tests/interfaces/test_real_definitions.py checks the
 result against the real files.
 """

@@ -32,5 +32,5 @@ def test_the_package_needs_nothing_newer_than_python_3_10():
 
 
 def test_the_metadata_promises_python_3_10():
-    pyproject = (Path(__file__).resolve().parents[1] / "pyproject.toml").read_text()
+    pyproject = (Path(__file__).resolve().parents[1] / "pyproject.toml").read_text()  # CI installs a copy
     assert 'requires-python = ">=3.10"' in pyproject and 'target-version = "py310"' in pyproject

@@ -2,7 +2,7 @@
 
 A program is an ordinary rclpy file with ``main()`` that ends by itself.
 Under the real rclpy it runs as ``python program.py`` in the venv of
-scripts/real_rclpy_env.py (Fast DDS, localhost only, a domain of its own).
+scripts/real_ros_env.py (Fast DDS, localhost only, a domain of its own).
 Under turtletui it runs as ``turtletui run program.py --headless`` in the
 sandbox (the host students use) or ``--in-process``. Both write what the
 program prints to stdout and its nodes' log lines to stderr, as rclpy does.
@@ -21,7 +21,7 @@ import sys
 from dataclasses import dataclass
 from pathlib import Path
 
-from support.real_rclpy import real_python
+from support.real_ros import ros_python
 
 PROGRAMS = Path(__file__).with_name("programs")
 HOSTS = ("sandboxed", "in-process")
@@ -74,7 +74,7 @@ def run_real(program: Path, cwd: Path, domain: int) -> Output:
     }
     env.pop("PYTHONPATH", None)
     done = subprocess.run(
-        [str(real_python()), str(program)], cwd=cwd, env=env, capture_output=True, text=True, timeout=120
+        [ros_python(), str(program)], cwd=cwd, env=env, capture_output=True, text=True, timeout=120
     )
     return Output(_lines(done.stdout), _lines(done.stderr), done.returncode)
 

@@ -4,7 +4,7 @@ the real rclpy and under turtletui, sandboxed and in-process (issue 13).
 The real rclpy's output of each program is computed once and compared with
 both hosts: what the program printed (stdout), what its nodes logged
 (stderr, rcutils' format, timestamps normalised) and its exit status.
-Needs the real rclpy's venv (marker real_rclpy; CI builds it).
+Needs the real ROS 2 (marker realros; built on first use, see tests/support/real_ros.py).
 """
 
 from __future__ import annotations
@@ -16,7 +16,7 @@ from pathlib import Path
 import pytest
 from harness import HOSTS, Output, programs, run_real, run_turtletui
 
-pytestmark = pytest.mark.real_rclpy
+pytestmark = pytest.mark.realros
 
 PROGRAMS = programs()
 _domains = itertools.count(os.getpid() % 50 + 40)

@@ -21,11 +21,11 @@ import sys
 from pathlib import Path
 
 import pytest
-from support.real_rclpy import run_real
+from support.real_ros import run_real
 
 import turtletui.interfaces as I
 
-pytestmark = pytest.mark.real_rclpy
+pytestmark = pytest.mark.realros
 
 PACKAGES = ["std_msgs", "geometry_msgs", "sensor_msgs", "nav_msgs", "std_srvs"]
 PROBE = Path(__file__).with_name("probe_messages.py")

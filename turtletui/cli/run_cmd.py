@@ -11,6 +11,7 @@ import typer
 
 from turtletui.cli.errors import fail
 from turtletui.cli.plugin_manager import plugins_of
+from turtletui.cli.ros_run import ros_python_option
 from turtletui.cli.screen import require_screen
 
 if TYPE_CHECKING:
@@ -71,6 +72,13 @@ def run(
         help="World to run in: a registered name (see turtletui plugins) or a .toml world file."
         " Default: the lesson's world in the app, else turtlesim's empty arena.",
     ),
+    ros: bool = typer.Option(
+        False,
+        "--ros",
+        help="On a real ROS 2 graph: turtlesim as a real /turtlesim node, the files as ordinary ROS 2"
+        " processes (the real rclpy), in real time; --duration is then wall seconds.",
+    ),
+    ros_python: str = ros_python_option(),
 ) -> None:
     """Run rclpy controller files against the simulated turtlesim.
 
@@ -83,9 +91,16 @@ def run(
             distro = check_distro(distro)
         except ValueError as err:
             fail(f"--distro: {err}")
+    if ros_python is not None and not ros:
+        fail("--ros-python goes with --ros")
+    if ros:
+        from turtletui.cli.ros_run import check_ros_options
+
+        check_ros_options(record=record, foxglove=foxglove, in_process=in_process)
     if not headless:
         require_screen("run headless instead: turtletui run FILE.py --headless --duration 60")
-        _run_app(controllers, plugins_of(plugin), lesson, ascii_only, seed, world, pixels, record, foxglove, distro)
+        _run_app(controllers, plugins_of(plugin), lesson, ascii_only, seed, world, pixels, record, foxglove,
+                 distro, ros_python if ros else None, ros)
         return
     from turtletui.api import run as run_controllers
     from turtletui.compat.ros_args import RosArgsError
@@ -118,27 +133,36 @@ def run(
         else:
             sys.stderr.write(record.format() + "\n")
 
-    try:
-        result = run_controllers(
-            specs,
-            duration=duration,
-            seed=seed,
-            realtime=realtime,
-            sandbox=False if in_process else None,
-            ros_args=ROS_ARGS,
-            record=record,
-            on_log=print_log,
-            keep_calls=False,
-            world=sim_world,
-            foxglove=foxglove,
-            distro=distro,
-        )
-    except (ControllerError, RosArgsError, ValueError) as err:
-        fail(str(err))
-    except BrokenPipeError:
-        raise  # stdout closed (``| head``): Click exits quietly
-    except OSError as err:
-        fail(str(err))
+    if ros:
+        from turtletui.cli.ros_run import run_headless
+
+        def print_live(record) -> None:
+            print_log(record)
+            sys.stdout.flush()  # in real time beside other processes: no line held back
+
+        result = run_headless(specs, duration, ros_python, ROS_ARGS, print_live, sim_world)
+    else:
+        try:
+            result = run_controllers(
+                specs,
+                duration=duration,
+                seed=seed,
+                realtime=realtime,
+                sandbox=False if in_process else None,
+                ros_args=ROS_ARGS,
+                record=record,
+                on_log=print_log,
+                keep_calls=False,
+                world=sim_world,
+                foxglove=foxglove,
+                distro=distro,
+            )
+        except (ControllerError, RosArgsError, ValueError) as err:
+            fail(str(err))
+        except BrokenPipeError:
+            raise  # stdout closed (``| head``): Click exits quietly
+        except OSError as err:
+            fail(str(err))
     for crash in result.crashes:
         if crash.kind == "load":
             # A sandboxed file without main() or Node is bad input, as in-process.
@@ -172,6 +196,8 @@ def _run_app(
     record: str | None = None,
     foxglove: str | None = None,
     distro: str | None = None,
+    ros_python: str | None = None,
+    ros: bool = False,
 ) -> None:
     """The Textual app (imported only here: headless runs never load Textual)."""
     _check_outputs(record, foxglove)
@@ -199,6 +225,11 @@ def _run_app(
         world, what = found.world, f"lesson {found.id}: world"
     world_spec = None if world is None else _resolve_world(world, plugins, what)
     specs = resolve_controllers(controllers, plugins=plugins)
+    connection = None
+    if ros:
+        from turtletui.cli.ros_run import connect_or_fail
+
+        connection = connect_or_fail(ros_python, specs)
     drawing = _drawing(pixels, ascii_only)
     from turtletui.tui.app import TurtleApp
 
@@ -214,6 +245,7 @@ def _run_app(
         record=record,
         foxglove=foxglove,
         distro=distro,
+        ros=connection,
     ).run()
 
 

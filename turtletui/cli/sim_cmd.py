@@ -2,8 +2,8 @@
 ``ros2 run turtlesim turtlesim_node``, in the app (drive it with the keys and
 the ros2 command line) or headless (real time, its log on stdout).
 
-Both front ends run one Simulation in real time; a bridge onto a real ROS 2
-graph (``turtletui sim --ros``) would attach to that simulation's graph, the
+Both front ends run one Simulation in real time; with ``--ros`` a bridge
+(turtletui.bridge) puts it on a real ROS 2 graph as the node /turtlesim, the
 headless loop and the app staying as they are.
 """
 
@@ -16,6 +16,7 @@ import typer
 
 from turtletui.cli.errors import fail
 from turtletui.cli.plugin_manager import plugins_of
+from turtletui.cli.ros_run import ros_python_option
 from turtletui.cli.screen import require_screen
 
 ROS_ARGS: list[str] = []
@@ -39,6 +40,13 @@ def sim(
     ),
     seed: int = typer.Option(0, "--seed", help="Seed for everything random in the world."),
     plugin: list[Path] = typer.Option(None, "--plugin", help="Load a plugin file or folder (repeatable)."),
+    ros: bool = typer.Option(
+        False,
+        "--ros",
+        help="Be turtlesim on a real ROS 2 graph: the node /turtlesim with turtlesim_node's topics,"
+        " services, action, parameters and log, for any ROS 2 program (needs a sourced ROS 2).",
+    ),
+    ros_python: str = ros_python_option(),
 ) -> None:
     """Run turtlesim alone, as ros2 run turtlesim turtlesim_node does.
 
@@ -56,11 +64,14 @@ def sim(
     if duration is not None and not 0 < duration < 1e7:
         fail(f"--duration must be a positive number of seconds, got {duration}")
     world_spec = None if world is None else _resolve_world(world, plugins_of(plugin))
+    if ros_python is not None and not ros:
+        fail("--ros-python goes with --ros")
     if not headless:
         if duration is not None:
             fail("--duration is for --headless runs; the app runs until you quit it (q)")
         drawing = _drawing(pixels, ascii_only)
         require_screen("run headless instead: turtletui sim --headless")
+        connection = _connect(ros, ros_python)
         from turtletui.tui.app import TurtleApp
 
         TurtleApp(
@@ -71,8 +82,10 @@ def sim(
             turtlesim=args,
             pixels=drawing.pixels,
             graphics=drawing.graphics,
+            ros=connection,
         ).run()
         return
+    connection = _connect(ros, ros_python)
     from turtletui.graph.core import NS_PER_S
     from turtletui.runtime.simulation import Simulation
 
@@ -81,14 +94,39 @@ def sim(
         sys.stdout.flush()  # a live log: a pipe must not hold lines back
 
     limit_ns = round(duration * NS_PER_S) if duration is not None else 2**62
+    printer = args.log_filter(print_log)
+    started: list = []  # turtlesim's first lines, for /rosout once the bridge is there
+    bridge = None
     try:  # from the first line turtlesim logs: Ctrl-C may come at any point after it
         simulation = Simulation(
             world=None if world_spec is None else world_spec.build(seed),
             realtime=True,
-            log_sinks=[args.log_filter(print_log)],
+            log_sinks=[printer, started.append],
             turtlesim_name=args.name,
         )
         args.apply(simulation)
+        if connection is not None:
+            from turtletui.bridge.run import attach
+
+            sinks = simulation.graph.log_sinks
+            sinks.remove(started.append)
+            bridge = attach(simulation, connection, earlier_logs=started, log_filter=args.log_filter)
+            # other processes' lines (relayed from /rosout) are theirs to print
+            sinks[sinks.index(printer)] = bridge.local_only(printer)
         simulation.run_until(limit_ns)
     except KeyboardInterrupt:
         pass  # Ctrl-C is how turtlesim_node ends
+    finally:
+        if bridge is not None:
+            bridge.close()
+        elif connection is not None:
+            connection.twin.close()
+
+
+def _connect(ros: bool, ros_python: str | None):
+    """The ROS 2 twin for --ros (None without), started first: a missing ROS 2 is one line."""
+    if not ros:
+        return None
+    from turtletui.cli.ros_run import connect_or_fail
+
+    return connect_or_fail(ros_python)

@@ -43,6 +43,7 @@ from turtletui.tui.widgets.splitter import Splitter
 from turtletui.worlds import WorldError, WorldSpec, resolve_world
 
 if TYPE_CHECKING:
+    from turtletui.bridge.run import RosConnection
     from turtletui.lessons.model import Lesson
     from turtletui.runtime.replay import Recording
     from turtletui.runtime.turtlesim_args import TurtlesimArgs
@@ -150,6 +151,7 @@ class TurtleApp(App):
         foxglove: str | None = None,
         turtlesim: TurtlesimArgs | None = None,
         distro: str | None = None,
+        ros: RosConnection | None = None,
     ) -> None:
         super().__init__()
         self._distro = distro
@@ -158,6 +160,8 @@ class TurtleApp(App):
         """Where to record the session (--record), or None."""
         self._foxglove = foxglove
         """HOST:PORT to serve the session to Foxglove on (--foxglove), or None."""
+        self._ros = ros
+        """A started twin on a real ROS 2 graph (``--ros``), else None."""
         self._turtlesim = turtlesim
         """turtlesim's own --ros-args (turtletui sim): its node name and parameters."""
         self._replay = replay
@@ -269,6 +273,7 @@ class TurtleApp(App):
             foxglove=self._foxglove,
             turtlesim=self._turtlesim,
             distro=self._distro,
+            ros=self._ros,
         )
         self.sub_title = f"ROS 2 {self.session.sim.distro.capitalize()}"
         if problem is not None:

@@ -14,7 +14,7 @@ from collections import Counter, deque
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from turtletui.graph.logs import ERROR, INFO, LogRecord
 from turtletui.interfaces.geometry_msgs import Twist
@@ -27,6 +27,10 @@ from turtletui.runtime.turtlesim_args import TurtlesimArgs
 from turtletui.sim import DT
 from turtletui.tui.marks import HitMarks
 from turtletui.worlds import WorldSpec
+
+if TYPE_CHECKING:
+    from turtletui.bridge.host import RosBridge
+    from turtletui.bridge.run import RosConnection
 
 SPEEDS = (0.25, 0.5, 1.0, 2.0, 4.0, 8.0)
 """Simulation speeds the app offers, in simulated seconds per wall second."""
@@ -162,9 +166,11 @@ class LiveSession:
         foxglove: str | None = None,
         turtlesim: TurtlesimArgs | None = None,
         distro: str | None = None,
+        ros: RosConnection | None = None,
     ) -> None:
         """``start``: start the controllers now (else with start_controllers()).
-        ``distro``: the ROS 2 distro nodes run as (None: the default)."""
+        ``distro``: the ROS 2 distro nodes run as (None: the default).
+        ``ros``: on a real ROS 2 graph (``--ros``), the controllers then ROS 2 processes."""
         self.lock = threading.RLock()
         """Held by whoever reads or changes the simulation: the app advances it
         from a ticker thread while the screen's thread reads it and sends requests."""
@@ -205,6 +211,12 @@ class LiveSession:
         self._outputs: list[Any] = []
         """The recording and the Foxglove view of this session (``--record``, ``--foxglove``)."""
         self._open_outputs(record, foxglove)
+        self.ros: RosBridge | None = None
+        """The bridge onto the real ROS 2 graph (``--ros``), else None."""
+        if ros is not None:
+            from turtletui.bridge.run import attach
+
+            self.ros = attach(self.sim, ros, earlier_logs=list(self.logs), log_filter=turtlesim.log_filter)
         self.slots = [ControllerSlot(spec) for spec in controllers]
         self._started = False
         if start:
@@ -330,6 +342,8 @@ class LiveSession:
     def close(self) -> None:
         for slot in self.slots:
             self._stop(slot)
+        if self.ros is not None:
+            self.ros.close()
         for output in self._outputs:
             try:
                 output.close()
@@ -356,6 +370,14 @@ class LiveSession:
     def _start(self, slot: ControllerSlot) -> None:
         if slot.spec.path is not None:
             slot.mtime = _mtime(slot.spec.path)
+        if self.ros is not None:
+            from turtletui.bridge.run import RosController
+
+            slot.host = RosController(
+                self.ros.twin.python, slot.spec, self._ros_args, self._controller_output, lambda: self.sim.t
+            )
+            slot.status, slot.detail, slot.held = "running", "", False
+            return
         try:
             slot.host = SandboxHost.start(
                 self.sim, slot.spec, ros_args=self._ros_args, seed=self._seed, limits=self._limits
@@ -382,6 +404,15 @@ class LiveSession:
                 slot.status, slot.detail = "failed", host.crash.summary()
             else:
                 slot.status, slot.detail = "stopped", "its main() returned"
+
+    def _controller_output(self, label: str, line: str) -> None:
+        """A line a ROS 2 controller process printed (from its reader thread):
+        its log lines arrive through /rosout, the rest goes to the log as its own."""
+        from turtletui.bridge.run import is_console_log
+
+        if line.strip() and not is_console_log(line):
+            with self.lock:
+                self.sim.graph.log(Path(label).stem, INFO, line)
 
     # -- logs -------------------------------------------------------------------------
     def _on_log(self, record: LogRecord) -> None:

@@ -1,0 +1,45 @@
+"""Fixtures for the tests that need a real ROS 2 (marker ``realros``).
+
+The ROS 2 python is tests/support/real_ros.py's: ``$TURTLETUI_ROS_PYTHON``,
+or the environment ``scripts/real_ros_env.py`` builds on first use. Without
+one these tests fail, saying why; ``pytest -m "not realros"`` deselects them.
+
+Every test runs on a ROS domain of its own, with discovery kept on this
+machine, so parallel runs and other people's ROS 2 never meet it.
+"""
+
+from __future__ import annotations
+
+import random
+import subprocess
+from pathlib import Path
+
+import pytest
+from support import real_ros
+
+HERE = Path(__file__).resolve().parent
+
+
+@pytest.fixture(scope="session")
+def ros_python() -> str:
+    return real_ros.ros_python()
+
+
+_DOMAINS = iter(range(random.SystemRandom().randrange(99), 10**6))
+
+
+@pytest.fixture
+def ros_domain(monkeypatch: pytest.MonkeyPatch) -> str:
+    """A ROS domain of this test's own (the next one: no two tests of a run
+    share one), discovery on this machine only."""
+    domain = str(next(_DOMAINS) % 99 + 1)
+    monkeypatch.setenv("ROS_DOMAIN_ID", domain)
+    monkeypatch.setenv("ROS_AUTOMATIC_DISCOVERY_RANGE", "LOCALHOST")
+    return domain
+
+
+def run_ros_script(ros_python: str, script: str, *args: str, timeout: float = 120.0) -> subprocess.CompletedProcess:
+    """Run one of this folder's scripts with the real rclpy (another ROS 2 process)."""
+    return subprocess.run(
+        [ros_python, str(HERE / script), *args], capture_output=True, text=True, timeout=timeout
+    )
