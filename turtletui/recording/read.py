@@ -14,7 +14,7 @@ from __future__ import annotations
 import json
 import os
 import struct
-from collections.abc import Iterator
+from collections.abc import Collection, Iterator
 from pathlib import Path
 from typing import Any
 
@@ -78,6 +78,56 @@ def read_mcap(
     except OSError as err:
         raise McapReadError(f"{file}: cannot read the recording ({err.strerror})") from None
     return header, events
+
+
+def iter_messages(
+    path: str | os.PathLike[str], topics: Collection[str] | None = None
+) -> Iterator[tuple[int, str, type, dict[str, Any]]]:
+    """Every message of a recording or bag that turtletui can decode (of
+    ``topics`` only, when given), in log-time order, read as it is asked for:
+    (log time in ns, topic, message class, the message as the plain dict
+    ``from_dict`` takes). The file stays open until the iterator ends or is
+    closed. McapReadError (one line) if the file is unreadable, also midway."""
+    path = Path(path)
+    if not path.exists():
+        raise McapReadError(f"{path}: no such recording")
+    file = mcap_file_of(path)
+    try:
+        from mcap.exceptions import McapError
+        from mcap.reader import make_reader
+        from mcap_ros2.decoder import DecoderFactory
+    except ImportError:
+        raise McapReadError(f"{path}: reading MCAP needs the mcap and mcap-ros2-support packages") from None
+    try:
+        with open(file, "rb") as stream:
+            reader = make_reader(stream, decoder_factories=[DecoderFactory()])
+            classes = known_channels(reader, topics)
+            if not classes:
+                return
+            wanted = sorted({topic for topic, _ in classes.values()})
+            for _, channel, message, decoded in reader.iter_decoded_messages(topics=wanted, log_time_order=True):
+                topic, cls = classes[channel.id]
+                yield message.log_time, topic, cls, plain(cls, decoded)
+    except (McapError, ValueError, KeyError, IndexError, EOFError, NotImplementedError, struct.error) as err:
+        raise McapReadError(f"{file}: not a readable MCAP recording ({_reason(err)})") from None
+    except OSError as err:
+        raise McapReadError(f"{file}: cannot read the recording ({err.strerror})") from None
+
+
+def known_channels(reader: Any, topics: Collection[str] | None = None) -> dict[int, tuple[str, type]]:
+    """{channel id: (topic, message class)} of a reader's channels whose type
+    turtletui knows (of ``topics`` only, when given)."""
+    summary = reader.get_summary()
+    if summary is None:
+        return {}
+    found = {}
+    for channel in summary.channels.values():
+        if topics is not None and channel.topic not in topics:
+            continue
+        cls = _class_of(summary.schemas.get(channel.schema_id))
+        if cls is not None:
+            found[channel.id] = (channel.topic, cls)
+    return found
 
 
 def _header(reader: Any) -> dict[str, Any]:
