@@ -96,7 +96,7 @@ def test_an_ampersand_starts_a_publisher_in_the_background(sim, term):
 
 def test_only_publishers_run_in_the_background(sim, term):
     out = term.run("ros2 topic echo /turtle1/pose &")
-    assert out[-1].kind == "error" and "only ros2 topic pub runs in the background" in out[-1].text
+    assert out[-1].kind == "error" and "only ros2 topic pub and ros2 bag record|play run in the background" in out[-1].text
     assert hidden_nodes(sim) == [] and term.foreground is None and term.jobs == []
 
 
@@ -109,7 +109,7 @@ def test_a_background_publisher_that_ends_says_so(sim, term):
 
 
 def test_kill_and_jobs_explain_their_mistakes(term):
-    assert texts(term.run("jobs")) == ["$ jobs", "no publishers in the background"]
+    assert texts(term.run("jobs")) == ["$ jobs", "nothing runs in the background"]
     assert term.run("kill")[-1].kind == "error"
     assert texts(term.run("kill %3"))[-1] == "kill: %3: no such job (jobs lists them)"
     assert term.run("jobs -l")[-1].kind == "error"

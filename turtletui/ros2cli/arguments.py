@@ -21,7 +21,7 @@ from turtletui.ros2cli.common import CommandResult, hint
 if TYPE_CHECKING:
     from turtletui.ros2cli.cli import Ros2Cli
 
-NOT_HERE = ("bag", "component", "daemon", "doctor", "launch", "lifecycle", "multicast",
+NOT_HERE = ("component", "daemon", "doctor", "launch", "lifecycle", "multicast",
             "pkg", "run", "security", "wtf")
 """Commands of the real ros2 that turtletui does not model."""
 
