@@ -643,7 +643,7 @@ class TurtleApp(App):
         elif echo is not None:
             self.query_one(TopicsPanel).echo(["^C"])
         elif jobs:
-            self.notify(f"{jobs} publisher(s) run in the background: "
+            self.notify(f"{jobs} command(s) run in the background: "
                         "jobs lists them, kill %N or kill all stops them.", timeout=5)
         else:
             self.notify("No ros2 command is running. q quits turtletui.", timeout=3)
