@@ -4,24 +4,22 @@ no terminal), which is what every browser tab runs."""
 
 from __future__ import annotations
 
-import json
 import os
 import socket
 import subprocess
 import sys
-import time
 import urllib.request
 from pathlib import Path
 
 import pytest
 from support.browser import served
+from support.web_driver import run_app_and_quit
 
 import turtletui
 from turtletui.cli.serve_cmd import _is_loopback
 from turtletui.plugins.bundled import lessons_dir
 
 REPO = Path(turtletui.__file__).resolve().parents[1]
-WEB_DRIVER = "textual.drivers.web_driver:WebDriver"
 
 
 def serve_cli(*args: str, cwd: Path) -> subprocess.CompletedProcess[str]:
@@ -108,35 +106,8 @@ def test_only_loopback_addresses_count_as_this_machine_only() -> None:
     assert not _is_loopback("0.0.0.0") and not _is_loopback("192.0.2.7") and not _is_loopback("example.org")
 
 
-def packet(kind: bytes, payload: bytes) -> bytes:
-    """A packet of textual-serve's protocol on the app's stdin."""
-    return kind + len(payload).to_bytes(4, "big") + payload
-
-
 @pytest.mark.parametrize("command", [["run", "node.py"], ["sim"]], ids=["run", "sim"])
 def test_the_app_starts_under_the_web_driver_without_a_terminal(tmp_path: Path, command: list[str]) -> None:
     """What textual-serve does for each tab: pipes, TEXTUAL_DRIVER, a quit packet at the end."""
     (tmp_path / "node.py").write_text("import rclpy\n\n\ndef main():\n    rclpy.init()\n")
-    env = dict(os.environ, PYTHONPATH=str(REPO), TEXTUAL_DRIVER=WEB_DRIVER, COLUMNS="100", ROWS="30")
-    proc = subprocess.Popen(
-        [sys.executable, "-m", "turtletui", *command],
-        cwd=tmp_path, env=env, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-    )
-    try:
-        assert proc.stdout.readline() == b"__GANGLION__\n", proc.stderr.read().decode()
-        screen = b""
-        deadline = time.monotonic() + 30
-        while b" t = " not in screen:  # the status line: the app draws
-            assert time.monotonic() < deadline, screen[-500:]
-            kind, size = proc.stdout.read(1), int.from_bytes(proc.stdout.read(4), "big")
-            payload = proc.stdout.read(size)
-            if kind == b"D":
-                screen += payload
-        proc.stdin.write(packet(b"M", json.dumps({"type": "quit"}).encode()))
-        proc.stdin.flush()
-        assert proc.wait(timeout=20) == 0
-        assert b"Traceback" not in proc.stderr.read()
-    finally:
-        if proc.poll() is None:
-            proc.kill()
-            proc.wait()
+    run_app_and_quit(command, tmp_path)
