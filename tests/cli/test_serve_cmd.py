@@ -81,6 +81,9 @@ def test_behind_a_proxy_the_page_connects_to_the_public_url(tmp_path: Path) -> N
         (["missing.py"], "missing.py: no such file; start from a lesson's starter"),
         (["folder"], "folder is a folder"),
         (["a.py", "--host", "no.such.host.invalid"], "cannot serve on no.such.host.invalid:"),
+        (["a.py", "--pixels", "graphics"], "--pixels: expected one of auto, half, braille, got 'graphics'"
+         " (a browser page has no terminal graphics)"),
+        (["a.py", "--pixels", "octant"], "--pixels: expected one of auto, half, braille, got 'octant'"),
     ],
 )
 def test_bad_input_is_a_one_line_error(tmp_path: Path, args: list[str], expected: str) -> None:

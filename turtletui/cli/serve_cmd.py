@@ -17,6 +17,10 @@ from turtletui.cli.errors import fail
 
 DEFAULT_LESSON = "part6-closed-loop"
 
+SERVED_PIXELS = ("auto", "half", "braille")
+"""``--pixels`` in a browser: xterm.js draws half blocks itself and shows no
+Kitty or Sixel pictures; braille is drawn from the browser's fonts."""
+
 
 def serve(
     file: Path = typer.Argument(
@@ -38,6 +42,12 @@ def serve(
         " (behind a proxy, e.g. https://hub.example.edu/user/ann/proxy/8000).",
     ),
     ascii_only: bool = typer.Option(False, "--ascii", help="Draw with plain ASCII and no colour."),
+    pixels: str = typer.Option(
+        "auto",
+        "--pixels",
+        help="How the arena is drawn in the browser: half (half blocks, drawn by the page itself), braille"
+        " (finer trails where the browser's fonts have braille) or auto (half).",
+    ),
     plugin: list[Path] = typer.Option(None, "--plugin", help="Load a plugin file or folder (repeatable)."),
 ) -> None:
     """Serve the app to a web browser: one app per tab, with an editor on FILE.
@@ -49,12 +59,16 @@ def serve(
 
     if not 0 < port < 65536:
         fail(f"--port must be in 1..65535, got {port}")
+    if pixels not in SERVED_PIXELS:
+        extra = " (a browser page has no terminal graphics)" if pixels == "graphics" else ""
+        fail(f"--pixels: expected one of {', '.join(SERVED_PIXELS)}, got {pixels!r}{extra}")
     lesson_path, file = _lesson_and_file(lesson, file, plugin)
     command = [sys.executable, "-m", "turtletui", "run", str(file.resolve())]
     if lesson_path is not None:
         command += ["--lesson", str(lesson_path.resolve())]
     if ascii_only:
         command.append("--ascii")
+    command += ["--pixels", pixels]
     for path in plugin or ():
         command += ["--plugin", str(path.resolve())]
     problem = _cannot_listen(host, port)
