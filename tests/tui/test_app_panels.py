@@ -103,19 +103,30 @@ async def test_a_new_command_stops_the_last_stream_and_publishers_can_be_listed(
 
 
 @pilot_test
-async def test_the_key_bar_keeps_help_and_quit_at_80_columns() -> None:
-    app = TurtleApp()
+async def test_the_key_bar_keeps_help_and_quit_at_80_columns(tmp_path: Path) -> None:
+    node = tmp_path / "node.py"
+    node.write_text("import rclpy\n")
+    app = TurtleApp([ControllerSpec("node", path=node)])
     async with app.run_test(size=SMALL) as pilot:
         await pilot.pause()
         bar = app.query_one(KeyBar)
         text = str(bar.render())
-        assert {"?", ":", "k", "q"} <= set(bar.shown)
+        assert {"?", ":", "k", "E", "q"} <= set(bar.shown)
         assert text.startswith(" ? Help") and text.rstrip().endswith("q Quit")
         assert len(text.rstrip()) <= 80
         await pilot.press("colon")
         assert "Esc" in bar.shown and "^C" in bar.shown  # the command line's own keys
         await pilot.press("escape")
         assert "?" in bar.shown
+
+
+@pilot_test
+async def test_the_key_bar_leaves_out_keys_that_do_nothing_here() -> None:
+    app = TurtleApp()  # turtlesim alone: no file to edit, no node to stop
+    async with app.run_test(size=(120, 30)) as pilot:
+        await pilot.pause()
+        shown = app.query_one(KeyBar).shown
+        assert "E" not in shown and "s" not in shown and {"?", "n", "l", "q"} <= set(shown)
 
 
 @pytest.mark.parametrize("key", ["question_mark", "f1"])

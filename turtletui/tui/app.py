@@ -31,7 +31,7 @@ from turtletui.tui.session import LiveSession
 from turtletui.tui.ticker import Ticker
 from turtletui.tui.widgets.arena import MIN_WIDTH, ArenaView, Overlay
 from turtletui.tui.widgets.command_input import CommandInput
-from turtletui.tui.widgets.keybar import APP_KEYS, COMMAND_LINE_KEYS, KeyBar
+from turtletui.tui.widgets.keybar import APP_KEYS, COMMAND_LINE_KEYS, EDITOR_KEYS, KeyBar
 from turtletui.tui.widgets.panels import (
     ConsolePanel,
     GraphPanel,
@@ -102,7 +102,7 @@ class TurtleApp(App):
         Binding("5", "panel('console')", "Console", show=False, tooltip="console panel: the ros2 commands and their output"),
         Binding("colon,slash", "command_line", "ros2 command", tooltip="the ros2 command line (Esc returns to the arena)"),
         Binding("ctrl+c", "interrupt", "Stop command", show=False, priority=True,
-                tooltip="stop the running ros2 command, as in a terminal (q quits)"),
+                tooltip="stop the running ros2 command, as in a terminal (q quits; in the editor ctrl+c copies)"),
         Binding("k", "check_lesson", "Check", tooltip="run the open lesson's checks on your controller file"),
         Binding("E", "editor", "Editor",
                 tooltip="edit the controller file beside the arena (ctrl+s saves, the node reloads)"),
@@ -208,7 +208,7 @@ class TurtleApp(App):
         yield CommandInput(
             placeholder="ros2 topic list   (Enter runs it, Esc returns to the arena)", compact=True, id="command"
         )
-        yield KeyBar(APP_KEYS, id="keys")
+        yield KeyBar(self._arena_keys(), id="keys")
 
     def _lesson_text(self) -> str:
         if self._lesson is None:
@@ -656,8 +656,34 @@ class TurtleApp(App):
                 self._echo = None
 
     def on_descendant_focus(self, event: DescendantFocus) -> None:
-        on_command_line = event.widget is self.query_one("#command")
-        self.query_one(KeyBar).set_keys(COMMAND_LINE_KEYS if on_command_line else APP_KEYS)
+        if event.widget is self.query_one("#command"):
+            keys = COMMAND_LINE_KEYS
+        elif self._editing(event.widget):
+            keys = EDITOR_KEYS
+        else:
+            keys = self._arena_keys()
+        self.query_one(KeyBar).set_keys(keys)
+
+    def _arena_keys(self) -> tuple:
+        """The arena's keys, without those that do nothing in this session (the
+        editor with no controller file, stopping nodes with none running)."""
+        idle = set()
+        if self._editable_file() is None:
+            idle.add("editor")
+        if not self._controllers:
+            idle.add("toggle_controllers")
+        return tuple(hint for hint in APP_KEYS if hint.action not in idle)
+
+    @staticmethod
+    def _editing(widget: object) -> bool:
+        return getattr(widget, "id", None) == "editor-text"
+
+    def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
+        """Ctrl+C in the editor copies, as in any editor: the app's priority
+        binding (stop the ros2 command) lets the key through to it."""
+        if action == "interrupt" and self._editing(self.focused):
+            return False
+        return True
 
     def on_data_table_row_selected(self, event: DataTable.RowSelected) -> None:
         topic = self.query_one(TopicsPanel).selected_topic()
