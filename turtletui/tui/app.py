@@ -21,6 +21,7 @@ from textual.widgets import ContentSwitcher, DataTable, Input, Static
 from turtletui.graph.introspection import snapshot
 from turtletui.graph.logs import ERROR, INFO, WARN
 from turtletui.ros2cli import Ros2Cli, Terminal
+from turtletui.ros2cli.terminal import Line
 from turtletui.runtime.loader import ControllerSpec
 from turtletui.tui import lesson_checks
 from turtletui.tui.ascii_filter import AsciiFilter
@@ -468,12 +469,33 @@ class TurtleApp(App):
             return
         self.workers.cancel_group(self, "checks")  # a check of the previous lesson
         self._lesson = lesson.path
-        running = self.session.world_spec.name if self.session.world_spec else "empty"
-        note = "" if lesson.world == running else (
-            f"*This lesson runs in the world `{lesson.world}`: restart with"
-            f" `turtletui run FILE --lesson {lesson.id}` to run in it.*\n\n")
+        note = self._enter_lesson_world(lesson)
+        self.query_one(ArenaView).overlays = self._overlays + self._lesson_overlays()
         self.query_one(LessonPanel).update(note + self._lesson_text())
         self._show_side("lesson")
+
+    def _enter_lesson_world(self, lesson: Lesson) -> str:
+        """Start the simulation again in the lesson's world when it runs in
+        another one; what the lesson pane says about it ('' when nothing changed)."""
+        running = self.session.world_spec.name if self.session.world_spec else "empty"
+        if lesson.world == running:
+            return ""
+        fixed = "the replay" if self._replay is not None else self.session.world_fixed_by()
+        world, problem = self._lesson_world()
+        if fixed is not None or problem is not None:
+            why = f"{fixed} keeps this session in `{running}`" if fixed else problem
+            return (f"*This lesson runs in the world `{lesson.world}`, but {why}: restart with"
+                    f" `turtletui run FILE --lesson {lesson.id}` to run in it.*\n\n")
+        with self.session.lock:
+            stopped = self.terminal.foreground is not None or bool(self.terminal.jobs)
+            self.action_stop_all_commands()  # they run on the old simulation's graph
+            self.session.change_world(world)
+            self.cli = Ros2Cli(self.session.sim)
+            self.terminal = Terminal(self.cli)
+        self.query_one(ArenaView).world = self.session.sim.world
+        if stopped:
+            self.query_one(ConsolePanel).show([Line("^C (a new world: the ros2 commands stopped)", "note")])
+        return f"*The simulation started again in this lesson's world, `{lesson.world}`.*\n\n"
 
     def action_drive(self, linear: int, angular: int) -> None:
         self.session.teleop.drive(float(linear), float(angular))
