@@ -50,7 +50,10 @@ def page(url: str) -> str:
 def test_a_missing_file_is_written_from_the_lessons_starter_and_served(tmp_path: Path) -> None:
     with served("mine.py", "--lesson", "part7-pen-service", cwd=tmp_path) as url:
         html = page(url)
-    assert (tmp_path / "mine.py").read_bytes() == (lessons_dir() / "part7_starter.py").read_bytes()
+    written = (tmp_path / "mine.py").read_text()
+    assert written == (lessons_dir() / "part7_starter.py").read_text().replace(
+        "turtletui run part7_starter.py", "turtletui run mine.py --lesson part7-pen-service"
+    ).replace("part7_starter.py", "mine.py")
     assert 'data-session-websocket-url="ws://127.0.0.1:' in html and "turtletui: mine.py" in html
 
 
@@ -58,7 +61,7 @@ def test_without_a_file_the_part6_lesson_file_is_served_and_kept(tmp_path: Path)
     work = tmp_path / "part6_closed_loop.py"
     with served(cwd=tmp_path) as url:
         page(url)
-    assert work.read_bytes() == (lessons_dir() / "part6_starter.py").read_bytes()
+    assert "Run it with:  turtletui run part6_closed_loop.py --lesson part6-closed-loop\n" in work.read_text()
     work.write_text("# my work\n")
     with served(cwd=tmp_path) as url:
         page(url)

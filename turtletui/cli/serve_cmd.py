@@ -112,8 +112,10 @@ def _lesson_and_file(lesson: str | None, file: Path | None, plugins: list[Path] 
             fail(f"{file}: no such file; start from a lesson's starter: turtletui serve {file} --lesson ID")
         if found.starter_path is None:
             fail(f"{file}: no such file, and lesson {found.id!r} has no starter file to begin it with")
+        from turtletui.lessons.starter import starter_for
+
         try:
-            file.write_bytes(found.starter_path.read_bytes())
+            file.write_bytes(starter_for(found, file, found.id))
         except OSError as err:
             fail(f"cannot write {file}: {err.strerror or err}")
         sys.stderr.write(f"turtletui serve: wrote {file} (starter of lesson {found.id})\n")
