@@ -564,14 +564,32 @@ class TurtleApp(App):
         self._layout_side()
 
     def _editable_file(self) -> Path | None:
-        return next((spec.path for spec in self._controllers if spec.path is not None), None)
+        """The student's controller file: the first file named to run. The nodes
+        that come with turtletui (the default part6_wall_avoider) are not theirs
+        to edit, nor to be checked as their work."""
+        return next((spec.path for spec in self._controllers if spec.path is not None and not spec.trusted), None)
+
+    def _no_file_of_yours(self) -> str:
+        """Why there is nothing to edit or check, and how to start a file."""
+        from turtletui.lessons.loader import LessonError, load_lesson
+
+        try:
+            lesson = "ID" if self._lesson is None else load_lesson(self._lesson).id
+        except LessonError:
+            lesson = "ID"
+        start = f"write yours with `turtletui new --lesson {lesson} my_node.py` and run the command it prints"
+        theirs = next((spec.name for spec in self._controllers), None)
+        if theirs is None:
+            return f"no controller file is running: {start}"
+        return f"{theirs} is a node that comes with turtletui: {start}"
 
     async def action_editor(self) -> None:
         """Show the editor on the controller file and give it the keys (ctrl+s
         saves and the node reloads; Esc gives the keys back to the arena)."""
         path = self._editable_file()
         if path is None:
-            self.notify("Nothing to edit: no controller file is running.", severity="warning")
+            self.notify(f"Nothing to edit: {self._no_file_of_yours()}.".replace("`", ""), severity="warning",
+                        timeout=8)
             return
         switcher = self.query_one(ContentSwitcher)
         if not switcher.query_children("#editor"):
@@ -590,15 +608,15 @@ class TurtleApp(App):
         process, and show the result at the top of the lesson pane."""
         self._show_side("lesson")
         panel = self.query_one(LessonPanel)
-        files = [s.path for s in self._controllers if s.path is not None]
-        if self._lesson is None or not files:
+        file = self._editable_file()
+        if self._lesson is None or file is None:
             missing = "no lesson is open (turtletui run FILE --lesson ID)" if self._lesson is None else (
-                "the controller is not a file"
+                self._no_file_of_yours()
             )
             panel.update(f"## Your checks\n\n**Nothing to check:** {missing}.\n\n" + self._lesson_text())
             return
         panel.update(lesson_checks.RUNNING + "\n" + self._lesson_text())
-        self.run_worker(self._check(files[0]), exclusive=True, group="checks")
+        self.run_worker(self._check(file), exclusive=True, group="checks")
 
     async def _check(self, controller: Path) -> None:
         import asyncio
