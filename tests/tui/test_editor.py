@@ -69,6 +69,10 @@ async def test_type_save_and_the_node_reloads_with_the_new_code(tmp_path: Path) 
         assert app.query_one(ContentSwitcher).current == "editor"
         assert app.focused is panel.code and panel.code.text == NODE
         assert panel.code.language == "python"
+        await pilot.press("x")
+        assert panel.modified and "(modified)" in status(app)
+        await pilot.press("ctrl+z")  # undone: the text is the file's again
+        assert not panel.modified and "(modified)" not in status(app)
         select(panel, "one")
         await pilot.press(*"two")
         assert panel.modified and "(modified)" in status(app)
