@@ -171,6 +171,9 @@ async def _topics_scenario(size) -> None:
         used = sum(column.get_render_width(table) for column in table.columns.values())
         assert used <= table.scrollable_content_region.width
         assert ("type" in labels) == (size == (120, 40))
+        hint = app.query_one("#topics-hint")
+        shown = " ".join(line.text.strip() for line in hint.render_lines(hint.region.reset_offset))
+        assert shown.endswith("echoes it live (ctrl+c stops it).")  # whole, not cut at the pane's edge
 
 
 @pilot_test
