@@ -706,12 +706,13 @@ class TurtleApp(App):
 
     def _arena_keys(self) -> tuple:
         """The arena's keys, without those that do nothing in this session (the
-        editor with no controller file, stopping nodes with none running)."""
+        editor with no controller file of the student's, checks and stopping
+        nodes with no node at all, as in turtletui sim)."""
         idle = set()
         if self._editable_file() is None:
             idle.add("editor")
         if not self._controllers:
-            idle.add("toggle_controllers")
+            idle.update(("toggle_controllers", "check_lesson"))
         return tuple(hint for hint in APP_KEYS if hint.action not in idle)
 
     @staticmethod
