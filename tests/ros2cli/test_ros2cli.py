@@ -534,7 +534,10 @@ def test_help_fits_the_width_the_console_asks_for(cli):
 ERRORS = [
     ("ros2 topik list", "ros2: error: invalid choice: 'topik' (did you mean 'topic'?)"),
     ("ros2 foo", "ros2: error: invalid choice: 'foo' (choose from action, bag, interface, node, param, service, topic)"),
-    ("ros2 run turtlesim turtlesim_node", "ros2: error: 'run' is not available in turtletui"),
+    ("ros2 run turtlesim turtlesim_node", "ros2: error: 'run' is not available in turtletui: turtlesim runs already,"
+     " turtle_teleop_key is the arena's arrow keys (Esc first), and your own node runs with turtletui run FILE"),
+    ("ros2 launch turtlesim multisim.launch.py", "ros2: error: 'launch' is not available in turtletui: turtlesim"),
+    ("ros2 doctor", "ros2: error: 'doctor' is not available in turtletui (available: action, bag,"),
     ("ros2 topic lst", "ros2 topic: error: invalid choice: 'lst' (did you mean 'list'?)"),
     ("ros2 topic echo 'abc", "ros2: could not split the command line (no closing quotation)"),
     ("ros2 topic echo", "ros2 topic echo: error: the following arguments are required: topic_name"),
