@@ -31,7 +31,14 @@ from turtletui.recording.bag import (
     bag_topics,
 )
 from turtletui.ros2cli.arguments import Command, Verb
-from turtletui.ros2cli.common import CommandError, CommandResult, PlainError, hint, live_topic_names
+from turtletui.ros2cli.common import (
+    CommandError,
+    CommandResult,
+    PlainError,
+    absolute,
+    hint,
+    live_topic_names,
+)
 from turtletui.ros2cli.streams import OWNER, Stream
 
 if TYPE_CHECKING:
@@ -123,7 +130,7 @@ def _record_arguments(parser: ArgumentParser) -> None:
 
 def _record(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
     sim = _cli_sim(cli)
-    topics = [name if name.startswith("/") else f"/{name}" for name in args.topics_positional or args.topics]
+    topics = [absolute(name) for name in args.topics_positional or args.topics]
     everything = args.all or args.all_topics
     if not (everything or topics):
         raise _ros2bag_error("Need to specify at least one option out of --all, --all-topics or --topics"
@@ -139,12 +146,8 @@ def _record(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
             if name not in live:
                 notes.append(f"[WARN] [ros2bag]: '{name}' is not published yet: it is recorded once it is"
                              f"{hint(name, live)}")
-    output = args.output
-    if output is not None and os.path.isdir(output):
-        raise _ros2bag_error(f"Output folder '{output}' already exists.")
-
     def start(node: Any) -> BagRecording:
-        return BagRecording(sim, None if everything else topics, output, node=node)
+        return BagRecording(sim, None if everything else topics, args.output, node=node)
 
     try:
         result = cli.start(RecordStream(cli, line, RECORDER, start))
@@ -219,7 +222,7 @@ def _play_arguments(parser: ArgumentParser) -> None:
 def _play(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
     sim = _cli_sim(cli)
     _check_storage(args.storage)
-    topics = [name if name.startswith("/") else f"/{name}" for name in args.topics] or None
+    topics = [absolute(name) for name in args.topics] or None
 
     def start(node: Any) -> BagPlayback:
         return BagPlayback(sim, args.bag_path, rate=args.rate, loop=args.loop, topics=topics, node=node)
