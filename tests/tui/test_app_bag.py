@@ -6,17 +6,11 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from support.pilot import log_text, pilot_test, wait_for
+from support.pilot import log_text, pilot_test, type_command, wait_for
 
 from turtletui.tui.app import TurtleApp
 
 SIZE = (100, 30)
-
-
-async def type_command(pilot, line: str) -> None:
-    if pilot.app.focused is not pilot.app.query_one("#command"):
-        await pilot.press("colon")
-    await pilot.press(*line, "enter")
 
 
 @pilot_test

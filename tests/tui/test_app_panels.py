@@ -8,7 +8,7 @@ import textwrap
 from pathlib import Path
 
 import pytest
-from support.pilot import SIZE, log_text, pilot_test, wait_for
+from support.pilot import SIZE, log_text, pilot_test, type_command, wait_for
 from textual.widgets import DataTable
 from textual.widgets._markdown import MarkdownFence
 
@@ -22,12 +22,6 @@ from turtletui.tui.widgets.panels import ConsolePanel
 from turtletui.tui.widgets.textlog import TextLog
 
 SMALL = (80, 24)
-
-
-async def type_command(pilot, line: str) -> None:
-    if pilot.app.focused is not pilot.app.query_one("#command"):
-        await pilot.press("colon")
-    await pilot.press(*line, "enter")
 
 
 @pilot_test
