@@ -47,6 +47,11 @@ def test_the_foreground_stream_prints_until_ctrl_c(sim, term):
     term.run("ros2 topic echo /turtle1/pose")
     step(sim, 0.05)
     assert "---" in texts(term.poll())
+    step(sim, 0.016)  # printed, not polled yet: it shows before the ^C
+    stopped = term.interrupt()
+    assert texts(stopped)[0] == "x: 5.544444561004639" and stopped[-1] == Line("^C", "note")
+    step(sim, 0.05)
+    term.run("ros2 topic echo /turtle1/pose")
     assert term.interrupt() == [Line("^C", "note")]
     assert hidden_nodes(sim) == [] and term.foreground is None
     step(sim, 0.05)

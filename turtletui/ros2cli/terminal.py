@@ -89,7 +89,8 @@ class Terminal:
         stream, self.foreground = self.foreground, None
         if stream is None:
             return []
-        return [Line("^C", "note"), *_last_words(stream)]
+        printed = [Line(text) for text in stream.poll()]  # before the ^C, as in a terminal
+        return [*printed, Line("^C", "note"), *_last_words(stream)]
 
     def poll(self) -> list[Line]:
         """What the foreground command printed since the last poll, and notices
@@ -172,6 +173,7 @@ class Terminal:
 
 
 def _last_words(stream: Stream) -> list[Line]:
-    """Stop a stream, and what it says as it stops (a recorder's last lines)."""
+    """Stop a stream (its earlier output taken), and what it says as it stops
+    (a recorder's last lines)."""
     stream.close()
     return [Line(text) for text in stream.poll()]
