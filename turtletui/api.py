@@ -19,6 +19,7 @@ from turtletui.errors import TurtletuiError, UsageError
 from turtletui.graph.core import NS_PER_S
 from turtletui.graph.logs import LogRecord
 from turtletui.runtime.loader import ControllerError, ControllerSpec, check_source
+from turtletui.runtime.outputs import run_outputs
 from turtletui.runtime.report import CrashReport
 from turtletui.runtime.runner import run_controllers
 from turtletui.runtime.simulation import Simulation
@@ -156,24 +157,9 @@ def run(
 
     if keep_poses or keep_calls:
         sim.graph.taps.append(tap)
-    recorder = None
-    if record is not None:
-        from turtletui.runtime.recorder import open_recorder
-
-        # turtlesim's start lines were logged before the recorder existed
-        recorder = open_recorder(sim, record, earlier_logs=logs)
-    bridge = None
-    if foxglove is not None:
-        from turtletui.recording.foxglove import FoxgloveBridge
-
-        try:
-            bridge = FoxgloveBridge(sim, foxglove)
-        except BaseException:
-            if recorder is not None:
-                recorder.close(keep=False)
-            raise
-    started = time.perf_counter()
-    try:
+    # turtlesim's start lines were logged before the recorder existed
+    with run_outputs(sim, record, foxglove, earlier_logs=list(logs)):
+        started = time.perf_counter()
         outcome = run_controllers(
             sim,
             specs,
@@ -182,12 +168,6 @@ def run(
             seed=seed,
             limits=limits,
         )
-    finally:
-        if bridge is not None:
-            bridge.close()
-        if recorder is not None:
-            # A run cut short (Ctrl-C, an error) keeps what it recorded so far.
-            recorder.close(keep=True)
     wall = time.perf_counter() - started
     turtles = {
         name: TurtleSummary(t.x, t.y, t.theta, t.distance, t.wall_hits) for name, t in sim.world.turtles.items()

@@ -4,24 +4,22 @@ no terminal), which is what every browser tab runs."""
 
 from __future__ import annotations
 
-import json
 import os
 import socket
 import subprocess
 import sys
-import time
 import urllib.request
 from pathlib import Path
 
 import pytest
 from support.browser import served
+from support.web_driver import run_app_and_quit
 
 import turtletui
 from turtletui.cli.serve_cmd import _is_loopback
 from turtletui.plugins.bundled import lessons_dir
 
 REPO = Path(turtletui.__file__).resolve().parents[1]
-WEB_DRIVER = "textual.drivers.web_driver:WebDriver"
 
 
 def serve_cli(*args: str, cwd: Path) -> subprocess.CompletedProcess[str]:
@@ -52,7 +50,10 @@ def page(url: str) -> str:
 def test_a_missing_file_is_written_from_the_lessons_starter_and_served(tmp_path: Path) -> None:
     with served("mine.py", "--lesson", "part7-pen-service", cwd=tmp_path) as url:
         html = page(url)
-    assert (tmp_path / "mine.py").read_bytes() == (lessons_dir() / "part7_starter.py").read_bytes()
+    written = (tmp_path / "mine.py").read_text()
+    assert written == (lessons_dir() / "part7_starter.py").read_text().replace(
+        "turtletui run part7_starter.py", "turtletui run mine.py --lesson part7-pen-service"
+    ).replace("part7_starter.py", "mine.py")
     assert 'data-session-websocket-url="ws://127.0.0.1:' in html and "turtletui: mine.py" in html
 
 
@@ -60,7 +61,7 @@ def test_without_a_file_the_part6_lesson_file_is_served_and_kept(tmp_path: Path)
     work = tmp_path / "part6_closed_loop.py"
     with served(cwd=tmp_path) as url:
         page(url)
-    assert work.read_bytes() == (lessons_dir() / "part6_starter.py").read_bytes()
+    assert "Run it with:  turtletui run part6_closed_loop.py --lesson part6-closed-loop\n" in work.read_text()
     work.write_text("# my work\n")
     with served(cwd=tmp_path) as url:
         page(url)
@@ -83,6 +84,9 @@ def test_behind_a_proxy_the_page_connects_to_the_public_url(tmp_path: Path) -> N
         (["missing.py"], "missing.py: no such file; start from a lesson's starter"),
         (["folder"], "folder is a folder"),
         (["a.py", "--host", "no.such.host.invalid"], "cannot serve on no.such.host.invalid:"),
+        (["a.py", "--pixels", "graphics"], "--pixels: expected one of auto, half, braille, got 'graphics'"
+         " (a browser page has no terminal graphics)"),
+        (["a.py", "--pixels", "octant"], "--pixels: expected one of auto, half, braille, got 'octant'"),
     ],
 )
 def test_bad_input_is_a_one_line_error(tmp_path: Path, args: list[str], expected: str) -> None:
@@ -108,35 +112,8 @@ def test_only_loopback_addresses_count_as_this_machine_only() -> None:
     assert not _is_loopback("0.0.0.0") and not _is_loopback("192.0.2.7") and not _is_loopback("example.org")
 
 
-def packet(kind: bytes, payload: bytes) -> bytes:
-    """A packet of textual-serve's protocol on the app's stdin."""
-    return kind + len(payload).to_bytes(4, "big") + payload
-
-
 @pytest.mark.parametrize("command", [["run", "node.py"], ["sim"]], ids=["run", "sim"])
 def test_the_app_starts_under_the_web_driver_without_a_terminal(tmp_path: Path, command: list[str]) -> None:
     """What textual-serve does for each tab: pipes, TEXTUAL_DRIVER, a quit packet at the end."""
     (tmp_path / "node.py").write_text("import rclpy\n\n\ndef main():\n    rclpy.init()\n")
-    env = dict(os.environ, PYTHONPATH=str(REPO), TEXTUAL_DRIVER=WEB_DRIVER, COLUMNS="100", ROWS="30")
-    proc = subprocess.Popen(
-        [sys.executable, "-m", "turtletui", *command],
-        cwd=tmp_path, env=env, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-    )
-    try:
-        assert proc.stdout.readline() == b"__GANGLION__\n", proc.stderr.read().decode()
-        screen = b""
-        deadline = time.monotonic() + 30
-        while b" t = " not in screen:  # the status line: the app draws
-            assert time.monotonic() < deadline, screen[-500:]
-            kind, size = proc.stdout.read(1), int.from_bytes(proc.stdout.read(4), "big")
-            payload = proc.stdout.read(size)
-            if kind == b"D":
-                screen += payload
-        proc.stdin.write(packet(b"M", json.dumps({"type": "quit"}).encode()))
-        proc.stdin.flush()
-        assert proc.wait(timeout=20) == 0
-        assert b"Traceback" not in proc.stderr.read()
-    finally:
-        if proc.poll() is None:
-            proc.kill()
-            proc.wait()
+    run_app_and_quit(command, tmp_path)

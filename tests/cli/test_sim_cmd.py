@@ -13,6 +13,7 @@ from pathlib import Path
 
 import pytest
 from support.pilot import SIZE, pilot_test, wait_for
+from support.web_driver import run_app_and_quit
 from textual.widgets import Input
 
 import turtletui
@@ -87,6 +88,9 @@ def test_headless_runs_until_ctrl_c_and_ends_cleanly(tmp_path: Path) -> None:
         (["--headless", "--world", "no-such-world"], "no-such-world"),
         (["--duration", "5"], "--duration is for --headless runs"),
         (["--pixels", "nope"], "--pixels: expected one of auto, half, braille, graphics"),
+        (["--headless", "--record", "nowhere/run.mcap"], "nowhere/run.mcap: cannot write the recording"),
+        (["--headless", "--foxglove", "nowhere:99999"], "--foxglove 'nowhere:99999': give HOST:PORT"),
+        (["--record", "nowhere/run.mcap"], "nowhere/run.mcap: cannot write the recording"),
         ([], "no terminal to draw the app in; run headless instead: turtletui sim --headless"),
     ],
 )
@@ -122,3 +126,59 @@ async def test_the_app_runs_turtlesim_alone_driven_by_keys_and_ros2_commands() -
         await wait_for(pilot, lambda: turtle.y > y + 0.3)
         await pilot.press(*"ros2 param set /my_sim background_g 0", "enter")
         await wait_for(pilot, lambda: sim.world.background == (0, 0, 255))
+
+
+def poses_and_log(path: Path) -> tuple[int, list[str]]:
+    """Poses of turtle1 and /rosout lines in an MCAP file, read with mcap_ros2."""
+    from mcap.reader import make_reader
+    from mcap_ros2.decoder import DecoderFactory
+
+    poses, log = 0, []
+    with open(path, "rb") as stream:
+        for _, channel, _, msg in make_reader(stream, decoder_factories=[DecoderFactory()]).iter_decoded_messages():
+            if channel.topic == "/turtle1/pose":
+                poses += 1
+            elif channel.topic == "/rosout":
+                log.append(msg.msg)
+    return poses, log
+
+
+def test_headless_records_as_run_does(tmp_path: Path) -> None:
+    proc = sim_process("--headless", "--duration", "0.5", "--record", "run.mcap", cwd=tmp_path)
+    out, err = proc.communicate(timeout=30)
+    assert proc.returncode == 0 and err == ""
+    poses, log = poses_and_log(tmp_path / "run.mcap")
+    assert poses > 0 and log[0] == "Starting turtlesim with node name /turtlesim"  # the start lines too
+    proc = sim_process("--headless", "--duration", "0.5", "--record", "bag/", cwd=tmp_path)
+    assert proc.communicate(timeout=30)[1] == "" and proc.returncode == 0
+    assert sorted(p.name for p in (tmp_path / "bag").iterdir()) == ["bag_0.mcap", "metadata.yaml"]
+
+
+def test_ctrl_c_keeps_the_recording(tmp_path: Path) -> None:
+    proc = sim_process("--headless", "--record", "run.jsonl", cwd=tmp_path)
+    assert "Starting turtlesim" in proc.stdout.readline()
+    proc.send_signal(signal.SIGINT)
+    _, err = proc.communicate(timeout=10)
+    assert proc.returncode == 0 and err == ""
+    events = (tmp_path / "run.jsonl").read_text().splitlines()
+    assert "Starting turtlesim with node name /turtlesim" in events[0]
+
+
+def test_the_app_records_too(tmp_path: Path) -> None:
+    run_app_and_quit(["sim", "--record", "run.mcap"], tmp_path)
+    assert "Starting turtlesim with node name /turtlesim" in poses_and_log(tmp_path / "run.mcap")[1]
+
+
+def test_headless_serves_foxglove(tmp_path: Path) -> None:
+    pytest.importorskip("foxglove", reason="the live view needs turtletui[foxglove]")
+    proc = sim_process("--headless", "--foxglove", "127.0.0.1:0", "--duration", "30", cwd=tmp_path)
+    try:
+        for line in proc.stdout:
+            if "[foxglove_bridge]: Foxglove: open a connection to ws://127.0.0.1:" in line:
+                break
+        else:
+            raise AssertionError(proc.stderr.read())
+    finally:
+        proc.send_signal(signal.SIGINT)
+        proc.communicate(timeout=10)
+    assert proc.returncode == 0

@@ -13,7 +13,7 @@ from rosbags.typesys import Stores, get_typestore
 
 from turtletui.graph.core import NS_PER_S
 from turtletui.interfaces.geometry_msgs import Twist
-from turtletui.recording.bag import BagError, BagRecording, bag_info, default_bag_name, play_bag
+from turtletui.recording.bag import BagError, BagPlayback, BagRecording, bag_info, default_bag_name
 from turtletui.runtime.simulation import Simulation
 
 
@@ -88,7 +88,7 @@ def test_play_drives_a_fresh_turtle_along_the_recorded_path(subset):
     bag, recorded = subset
     sim = Simulation()
     sim.run_until(NS_PER_S)
-    playback = play_bag(sim, bag)
+    playback = BagPlayback(sim, bag)
     assert playback.messages > 200 and not playback.done
     # the recording ran from t=1 s to t=4 s: so does the playback, in a fresh turtlesim
     sim.run_until(4 * NS_PER_S + 1)
@@ -96,9 +96,78 @@ def test_play_drives_a_fresh_turtle_along_the_recorded_path(subset):
     turtle, original = sim.world.turtles["turtle1"], recorded.world.turtles["turtle1"]
     assert (turtle.x, turtle.y, turtle.theta) == pytest.approx((original.x, original.y, original.theta), abs=1e-5)
     assert turtle.distance == pytest.approx(original.distance, abs=1e-5) and turtle.distance > 4
-    player = next(node for node in sim.graph.nodes if node.name == "rosbag2_player")
-    assert {p.topic.name for t in sim.graph.topics.values() for p in t.publishers if p.node is player} == {
+    assert playback.published == playback.messages
+    # the player's node went with the end of the bag, as ros2 bag play exits
+    assert [node.name for node in sim.graph.nodes if node.name.startswith("rosbag2")] == []
+
+
+def test_play_publishes_from_a_player_node_on_the_recorded_topics(subset):
+    bag, _ = subset
+    sim = Simulation()
+    playback = BagPlayback(sim, bag)
+    sim.run_until(NS_PER_S // 2)
+    assert {p.topic.name for t in sim.graph.topics.values() for p in t.publishers if p.node is playback.node} == {
         "/turtle1/cmd_vel", "/turtle1/pose"}
+    playback.stop()
+    assert playback.done and playback.node not in sim.graph.nodes
+    published = playback.published
+    sim.run_until(5 * NS_PER_S)
+    assert playback.published == published  # Ctrl-C: nothing more
+
+
+def received(sim: Simulation, topic: str, cls: type) -> list[int]:
+    """When (graph ns) each message on ``topic`` arrives."""
+    stamps: list[int] = []
+    node = sim.graph.add_node("listener")
+    sim.graph.add_subscription(node, topic, cls, 10, lambda msg: stamps.append(sim.graph.now_ns))
+    return stamps
+
+
+def test_rate_plays_faster_and_topics_choose_what_is_played(subset):
+    bag, _ = subset
+    sim = Simulation()
+    commands = received(sim, "/turtle1/cmd_vel", Twist)
+    playback = BagPlayback(sim, bag, rate=2.0, topics=["/turtle1/cmd_vel"])
+    assert playback.messages == 30
+    sim.run_until(2 * NS_PER_S)
+    assert playback.done and len(commands) == 30
+    # recorded every 100 ms: played every 50 ms
+    assert {b - a for a, b in zip(commands, commands[1:], strict=False)} == {50_000_000}
+    with pytest.raises(BagError, match="rate must be a positive number"):
+        BagPlayback(sim, bag, rate=0.0)
+
+
+def test_loop_plays_the_bag_again_until_stopped(subset):
+    bag, _ = subset
+    sim = Simulation()
+    commands = received(sim, "/turtle1/cmd_vel", Twist)
+    playback = BagPlayback(sim, bag, loop=True, topics=["/turtle1/cmd_vel"])
+    sim.run_until(10 * NS_PER_S)
+    assert not playback.done and len(commands) > 60  # 2.9 s a pass: three passes and more
+    playback.stop()
+    count = len(commands)
+    sim.run_until(12 * NS_PER_S)
+    assert len(commands) == count
+
+
+def test_a_damaged_bag_is_one_line(tmp_path: Path):
+    folder = tmp_path / "broken"
+    folder.mkdir()
+    (folder / "broken_0.mcap").write_bytes(b"\x89MCAP0\r\n not really")
+    for attempt in (lambda: bag_info(folder), lambda: BagPlayback(Simulation(), folder)):
+        with pytest.raises(BagError, match="broken") as caught:
+            attempt()
+        assert "\n" not in str(caught.value)
+
+
+def test_the_recorder_is_a_node_that_subscribes_to_what_it_records(tmp_path: Path):
+    sim = Simulation()
+    recording = BagRecording(sim, ["/turtle1/pose", "/turtle1/pose", "/not_yet"], tmp_path / "bag")
+    pose = sim.graph.topics["/turtle1/pose"]
+    assert [s.node.name for s in pose.subscriptions] == ["rosbag2_recorder"]
+    recording.stop()
+    recording.stop()  # twice is once
+    assert pose.subscriptions == [] and recording.node not in sim.graph.nodes
 
 
 def test_a_bag_stopped_during_a_live_recording_leaves_the_colour_sensor_on(tmp_path: Path):

@@ -505,8 +505,9 @@ def test_help_is_argparse_s_as_ros2cli_builds_it(cli):
     assert root[0] == "usage: ros2 [-h] Call `ros2 <command> -h` for more detailed usage. ..."
     assert "ros2 is an extensible command-line tool for ROS 2." in root
     at = root.index("Commands:")
-    assert root[at + 1:at + 7] == [
+    assert root[at + 1:at + 8] == [
         "  action     Various action related sub-commands",
+        "  bag        Various rosbag related sub-commands",
         "  interface  Show information about ROS interfaces",
         "  node       Various node related sub-commands",
         "  param      Various param related sub-commands",
@@ -532,8 +533,11 @@ def test_help_fits_the_width_the_console_asks_for(cli):
 
 ERRORS = [
     ("ros2 topik list", "ros2: error: invalid choice: 'topik' (did you mean 'topic'?)"),
-    ("ros2 foo", "ros2: error: invalid choice: 'foo' (choose from action, interface, node, param, service, topic)"),
-    ("ros2 run turtlesim turtlesim_node", "ros2: error: 'run' is not available in turtletui"),
+    ("ros2 foo", "ros2: error: invalid choice: 'foo' (choose from action, bag, interface, node, param, service, topic)"),
+    ("ros2 run turtlesim turtlesim_node", "ros2: error: 'run' is not available in turtletui: turtlesim runs already,"
+     " turtle_teleop_key is the arena's arrow keys (Esc first), and your own node runs with turtletui run FILE"),
+    ("ros2 launch turtlesim multisim.launch.py", "ros2: error: 'launch' is not available in turtletui: turtlesim"),
+    ("ros2 doctor", "ros2: error: 'doctor' is not available in turtletui (available: action, bag,"),
     ("ros2 topic lst", "ros2 topic: error: invalid choice: 'lst' (did you mean 'list'?)"),
     ("ros2 topic echo 'abc", "ros2: could not split the command line (no closing quotation)"),
     ("ros2 topic echo", "ros2 topic echo: error: the following arguments are required: topic_name"),

@@ -45,3 +45,10 @@ async def wait_for(pilot, condition, timeout: float = 30.0) -> None:
     while not condition():
         assert time.monotonic() < deadline, "timed out waiting for the app"
         await pilot.pause(0.05)
+
+
+async def type_command(pilot, line: str) -> None:
+    """Type a ros2 command on the app's command line (opening it first) and run it."""
+    if pilot.app.focused is not pilot.app.query_one("#command"):
+        await pilot.press("colon")
+    await pilot.press(*line, "enter")

@@ -8,7 +8,7 @@ import textwrap
 from pathlib import Path
 
 import pytest
-from support.pilot import log_text, pilot_test, wait_for
+from support.pilot import SIZE, log_text, pilot_test, type_command, wait_for
 from textual.widgets import DataTable
 from textual.widgets._markdown import MarkdownFence
 
@@ -22,12 +22,6 @@ from turtletui.tui.widgets.panels import ConsolePanel
 from turtletui.tui.widgets.textlog import TextLog
 
 SMALL = (80, 24)
-
-
-async def type_command(pilot, line: str) -> None:
-    if pilot.app.focused is not pilot.app.query_one("#command"):
-        await pilot.press("colon")
-    await pilot.press(*line, "enter")
 
 
 @pilot_test
@@ -103,19 +97,30 @@ async def test_a_new_command_stops_the_last_stream_and_publishers_can_be_listed(
 
 
 @pilot_test
-async def test_the_key_bar_keeps_help_and_quit_at_80_columns() -> None:
-    app = TurtleApp()
+async def test_the_key_bar_keeps_help_and_quit_at_80_columns(tmp_path: Path) -> None:
+    node = tmp_path / "node.py"
+    node.write_text("import rclpy\n")
+    app = TurtleApp([ControllerSpec("node", path=node)])
     async with app.run_test(size=SMALL) as pilot:
         await pilot.pause()
         bar = app.query_one(KeyBar)
         text = str(bar.render())
-        assert {"?", ":", "k", "q"} <= set(bar.shown)
+        assert {"?", ":", "k", "E", "q"} <= set(bar.shown)
         assert text.startswith(" ? Help") and text.rstrip().endswith("q Quit")
         assert len(text.rstrip()) <= 80
         await pilot.press("colon")
         assert "Esc" in bar.shown and "^C" in bar.shown  # the command line's own keys
         await pilot.press("escape")
         assert "?" in bar.shown
+
+
+@pilot_test
+async def test_the_key_bar_leaves_out_keys_that_do_nothing_here() -> None:
+    app = TurtleApp()  # turtlesim alone: no file to edit, no node to stop
+    async with app.run_test(size=(120, 30)) as pilot:
+        await pilot.pause()
+        shown = app.query_one(KeyBar).shown
+        assert not {"E", "s", "k"} & set(shown) and {"?", "n", "l", "q"} <= set(shown)
 
 
 @pytest.mark.parametrize("key", ["question_mark", "f1"])
@@ -160,6 +165,9 @@ async def _topics_scenario(size) -> None:
         used = sum(column.get_render_width(table) for column in table.columns.values())
         assert used <= table.scrollable_content_region.width
         assert ("type" in labels) == (size == (120, 40))
+        hint = app.query_one("#topics-hint")
+        shown = " ".join(line.text.strip() for line in hint.render_lines(hint.region.reset_offset))
+        assert shown.endswith("echoes it live (ctrl+c stops it).")  # whole, not cut at the pane's edge
 
 
 @pilot_test
@@ -218,12 +226,55 @@ async def test_the_lesson_switcher_opens_a_lesson_and_shows_progress(tmp_path: P
         assert app.query_one("#side").current == "lesson"
         assert "pose" in app.query_one("#lesson").source.lower()
         assert "restart with" not in app.query_one("#lesson").source  # same (empty) world
-        await pilot.press("l")
-        options = app.screen.query_one("#lessons-list")
-        options.highlighted = list(labels).index("lidar-obstacles")
-        await pilot.press("enter")
-        await pilot.pause()
-        assert "restart with `turtletui run FILE --lesson lidar-obstacles`" in app.query_one("#lesson").source
+
+
+async def choose_lesson(pilot, lesson_id: str) -> None:
+    """l (from the arena), then Enter on ``lesson_id`` in the switcher."""
+    await pilot.press("escape", "l")
+    options = pilot.app.screen.query_one("#lessons-list")
+    ids = [options.get_option_at_index(i).id for i in range(options.option_count)]
+    options.highlighted = ids.index(lesson_id)
+    await pilot.press("enter")
+    await pilot.pause()
+
+
+@pilot_test
+async def test_a_lesson_in_another_world_starts_the_simulation_again_in_it(tmp_path: Path) -> None:
+    node = tmp_path / "node.py"
+    node.write_text("import rclpy\nfrom rclpy.node import Node\n\n\ndef main():\n"
+                    "    rclpy.init()\n    rclpy.spin(Node('mine'))\n")
+    app = TurtleApp([ControllerSpec("node", path=node)], lesson=find_lesson("part6-closed-loop").path)
+    async with app.run_test(size=SIZE) as pilot:
+        await wait_for(pilot, lambda: any(n.name == "mine" for n in app.session.sim.graph.nodes), timeout=15)
+        arena = app.query_one("#arena")
+        assert arena.overlays  # Part 6's safe box
+        await type_command(pilot, "ros2 topic echo /turtle1/pose")
+        old = app.session.sim
+        await choose_lesson(pilot, "lidar-obstacles")
+        sim = app.session.sim
+        assert sim is not old and app.session.world_spec.name == "lidar-course"
+        assert sim.world.obstacles and arena.world is sim.world and arena.overlays == ()
+        assert "started again in this lesson's world, `lidar-course`" in app.query_one("#lesson").source
+        assert app.terminal.foreground is None and "a new world: the ros2 commands stopped" in log_text(app, "#console")
+        # the controller runs again, in the new world, and the LiDAR scans in it
+        await wait_for(pilot, lambda: any(n.name == "mine" for n in sim.graph.nodes), timeout=15)
+        await type_command(pilot, "ros2 topic list")
+        assert "/turtle1/scan" in log_text(app, "#console").split("$ ros2 topic list")[-1]
+        await wait_for(pilot, lambda: sim.t > 0.2)
+        await choose_lesson(pilot, "part3-first-node")  # back to turtlesim's empty arena
+        assert app.session.world_spec is None and not app.session.sim.world.obstacles
+        assert "started again in this lesson's world, `empty`" in app.query_one("#lesson").source
+
+
+@pilot_test
+async def test_a_recording_keeps_the_session_in_its_world(tmp_path: Path) -> None:
+    app = TurtleApp(lesson=find_lesson("part6-closed-loop").path, record=str(tmp_path / "run.mcap"))
+    async with app.run_test(size=SMALL) as pilot:
+        old = app.session.sim
+        await choose_lesson(pilot, "lidar-obstacles")
+        assert app.session.sim is old and not old.world.obstacles
+        assert (f"but the recording to {tmp_path / 'run.mcap'} (--record) keeps this session in `empty`:"
+                " restart with `turtletui run FILE --lesson lidar-obstacles`") in app.query_one("#lesson").source
 
 
 @pilot_test

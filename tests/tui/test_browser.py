@@ -181,3 +181,27 @@ def test_behind_a_proxy_that_serves_it_under_a_path(browser, tmp_path: Path) -> 
         with served("idle.py", "--public-url", public, cwd=tmp_path, port=port):
             page, terminal = open_app(browser, public + "/")
             assert "idle.py" in terminal.text
+
+
+def braille(text: str) -> bool:
+    return any("\u2801" <= ch <= "\u28ff" for ch in text)
+
+
+def test_pixels_in_the_browser_half_blocks_unless_braille_is_asked(browser, tmp_path: Path, monkeypatch) -> None:
+    """Served from kitty (whose TERM would mean braille in a terminal), the page
+    gets half blocks, which xterm.js draws itself; --pixels braille is passed on."""
+    monkeypatch.setenv("TERM", "xterm-kitty")
+    monkeypatch.setenv("KITTY_WINDOW_ID", "1")
+    (tmp_path / "idle.py").write_text(IDLE, encoding="utf-8")
+    for option, finer in (((), False), (("--pixels", "braille"), True)):
+        with served("idle.py", *option, cwd=tmp_path) as url:
+            page, terminal = open_app(browser, url)
+            leave_the_editor(page, terminal)
+            for _ in range(3):
+                page.keyboard.press("ArrowUp")  # a trail to draw
+                page.wait_for_timeout(300)
+            if finer:
+                terminal.wait_for(braille, "braille dots")
+            else:
+                wait_for_pixels(page, PEN, 30, "the trail")
+                assert not braille(terminal.text)

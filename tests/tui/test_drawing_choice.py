@@ -64,6 +64,14 @@ def test_graphics_asks_any_terminal_but_not_through_tmux():
     assert choose_drawing("graphics", env={"TERM": "tmux-256color"}, probe=never) == Drawing("half", None)
 
 
+def test_in_a_browser_auto_is_half_blocks_whatever_terminal_the_server_runs_in():
+    """turtletui serve started in kitty: TERM is kitty's, the app draws in xterm.js."""
+    web = {"TERM": "xterm-kitty", "KITTY_WINDOW_ID": "1", "TEXTUAL_DRIVER": "textual.drivers.web_driver:WebDriver"}
+    assert choose_drawing("auto", env=web, probe=never) == Drawing("half", None)
+    assert choose_drawing("graphics", env=web, probe=never) == Drawing("half", None)
+    assert choose_drawing("braille", env=web, probe=never) == Drawing("braille", None)
+
+
 def test_an_unknown_choice_is_one_clear_error():
     with pytest.raises(TerminalError, match="expected one of auto, half, braille, graphics, got 'sixels'"):
         choose_drawing("sixels", env={})

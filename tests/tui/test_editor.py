@@ -20,6 +20,7 @@ from turtletui.tui.app import TurtleApp
 from turtletui.tui.source_file import SourceFile
 from turtletui.tui.widgets.arena import ArenaView
 from turtletui.tui.widgets.editor import EditorPanel
+from turtletui.tui.widgets.keybar import KeyBar
 
 NODE = textwrap.dedent("""
     import rclpy
@@ -68,6 +69,10 @@ async def test_type_save_and_the_node_reloads_with_the_new_code(tmp_path: Path) 
         assert app.query_one(ContentSwitcher).current == "editor"
         assert app.focused is panel.code and panel.code.text == NODE
         assert panel.code.language == "python"
+        await pilot.press("x")
+        assert panel.modified and "(modified)" in status(app)
+        await pilot.press("ctrl+z")  # undone: the text is the file's again
+        assert not panel.modified and "(modified)" not in status(app)
         select(panel, "one")
         await pilot.press(*"two")
         assert panel.modified and "(modified)" in status(app)
@@ -140,6 +145,28 @@ async def test_escape_returns_the_keys_to_the_arena_and_E_takes_them_back(tmp_pa
         await pilot.press("E")  # back, with the edits and the cursor where they were
         assert switcher.current == "editor" and app.focused is panel.code
         assert len(app.query(EditorPanel)) == 1
+
+
+@pilot_test
+async def test_ctrl_c_copies_in_the_editor_and_stops_commands_everywhere_else(tmp_path: Path) -> None:
+    app, _ = started(tmp_path)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("colon", *"ros2 topic echo /turtle1/pose", "enter")
+        assert app.terminal.foreground is not None
+        await pilot.press("escape", "E")
+        panel = app.query_one(EditorPanel)
+        keys = app.query_one(KeyBar)
+        assert keys.shown == ["^S", "^C", "^Z", "Esc", "F1"]  # the arena's keys would type here
+        select(panel, "rclpy.init()")
+        await pilot.press("ctrl+c")
+        assert app.clipboard == "rclpy.init()"
+        assert app.terminal.foreground is not None and panel.code.text == NODE  # the echo goes on
+        await pilot.press("escape")
+        assert "E" in keys.shown and "^S" not in keys.shown
+        await pilot.press("ctrl+c")  # from the arena: stops the command
+        assert app.terminal.foreground is None
+        await pilot.press("colon", *"ros2 topic hz /turtle1/pose", "enter", "ctrl+c")  # and from the command line
+        assert app.terminal.foreground is None
 
 
 @pilot_test

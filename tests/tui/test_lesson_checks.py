@@ -158,6 +158,29 @@ async def test_checking_without_a_lesson_says_how_to_open_one() -> None:
 
 
 @pilot_test
+async def test_turtletuis_own_node_is_neither_checked_as_yours_nor_edited() -> None:
+    """turtletui run with no file: the course's Part 6 node drives; k must not
+    mark Part 6 passed with it, nor E open it."""
+    from turtletui.lessons.loader import find_lesson
+    from turtletui.runtime.resolve import resolve_controllers
+    from turtletui.tui.widgets.keybar import KeyBar
+
+    app = TurtleApp(resolve_controllers(["part6_wall_avoider"]), lesson=find_lesson("part6-closed-loop").path)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.pause()
+        assert "E" not in app.query_one(KeyBar).shown
+        await pilot.press("k")
+        await pilot.pause()
+        assert ("**Nothing to check:** part6_wall_avoider is a node that comes with turtletui: write yours with"
+                " `turtletui new --lesson part6-closed-loop my_node.py`") in app.query_one("#lesson").source
+        assert app.progress.lessons == {}
+        await pilot.press("E")
+        await pilot.pause(0.1)
+        assert not app.query("#editor")
+        assert any("Nothing to edit: part6_wall_avoider" in str(n.message) for n in app._notifications)
+
+
+@pilot_test
 async def test_a_recording_replays_in_the_arena(tmp_path: Path) -> None:
     from turtletui.api import run
     from turtletui.runtime.replay import read_recording

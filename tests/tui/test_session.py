@@ -91,3 +91,46 @@ def test_log_rates_are_lines_per_wall_second_per_node() -> None:
         assert session.log_rates(103.0) == {}  # nothing since
     finally:
         session.close()
+
+
+def test_a_new_world_starts_the_simulation_again_with_the_controllers_as_they_were(tmp_path: Path) -> None:
+    from turtletui.runtime.turtlesim_args import parse_turtlesim_args
+    from turtletui.worlds import resolve_world
+
+    path = tmp_path / "quiet.py"
+    path.write_text("import rclpy\nfrom rclpy.node import Node\n\n\ndef main():\n"
+                    "    rclpy.init()\n    rclpy.spin(Node('quiet'))\n")
+    args = parse_turtlesim_args(["-p", "background_r:=0", "-r", "__node:=my_sim"])
+    session = LiveSession([ControllerSpec("one", path=path), ControllerSpec("two", path=path)], turtlesim=args)
+    try:
+        session.teleop.drive(1.0)
+        run_until(session, lambda: session.sim.world.turtles["turtle1"].distance > 0.5)
+        first, second = session.slots
+        session.toggle_controllers()
+        session.toggle_controllers()
+        first.held = True  # stopped with s: it stays stopped in the new world
+        session.change_world(resolve_world("lidar-course"))
+        sim = session.sim
+        assert session.t == 0.0 and sim.world.obstacles and sim.world.turtles["turtle1"].distance == 0.0
+        assert sim.world.background[0] == 0 and any(n.fqn == "/my_sim" for n in sim.graph.nodes)  # its --ros-args
+        assert first.host is None and second.host is not None and second.status == "running"
+        session.teleop.drive(1.0)  # teleop drives the new turtle
+        run_until(session, lambda: sim.world.turtles["turtle1"].distance > 0.5)
+        assert any("starts again in the world lidar-course" in r.msg for r in session.logs)
+    finally:
+        session.close()
+
+
+def test_a_recording_keeps_the_world(tmp_path: Path) -> None:
+    import pytest
+
+    from turtletui.worlds import resolve_world
+
+    session = LiveSession(record=str(tmp_path / "run.jsonl"))
+    try:
+        assert session.world_fixed_by() == f"the recording to {tmp_path / 'run.jsonl'} (--record)"
+        with pytest.raises(ValueError, match="keeps this session in its world"):
+            session.change_world(resolve_world("lidar-course"))
+        assert not session.sim.world.obstacles
+    finally:
+        session.close()

@@ -118,18 +118,19 @@ def new(
 ) -> None:
     """Write a lesson's starter file to FILE, ready to edit and run."""
     found = _find(lesson_id, folder, plugin)
-    source = found.starter_path
-    if source is None:
+    if found.starter_path is None:
         fail(f"lesson {found.id!r} has no starter file")
     if file.exists() and not force:
         fail(f"{file} already exists; use --force to overwrite it")
     if file.is_dir():
         fail(f"{file} is a folder; name the file to write")
-    try:
-        file.write_bytes(source.read_bytes())
-    except OSError as err:
-        fail(f"cannot write {file}: {' '.join(str(err).split())}")
+    from turtletui.lessons.starter import starter_for
+
     # `run --lesson` finds bundled lessons by id; one from --folder or a plugin by its file
     lesson_arg = str(found.path) if folder or plugin else found.id
+    try:
+        file.write_bytes(starter_for(found, file, lesson_arg))
+    except OSError as err:
+        fail(f"cannot write {file}: {' '.join(str(err).split())}")
     print(f"Wrote {file} (starter of lesson {found.id}). Run it: "
           f"turtletui run {shlex.quote(str(file))} --lesson {shlex.quote(lesson_arg)}")

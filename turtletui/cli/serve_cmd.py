@@ -17,6 +17,10 @@ from turtletui.cli.errors import fail
 
 DEFAULT_LESSON = "part6-closed-loop"
 
+SERVED_PIXELS = ("auto", "half", "braille")
+"""``--pixels`` in a browser: xterm.js draws half blocks itself and shows no
+Kitty or Sixel pictures; braille is drawn from the browser's fonts."""
+
 
 def serve(
     file: Path = typer.Argument(
@@ -38,6 +42,12 @@ def serve(
         " (behind a proxy, e.g. https://hub.example.edu/user/ann/proxy/8000).",
     ),
     ascii_only: bool = typer.Option(False, "--ascii", help="Draw with plain ASCII and no colour."),
+    pixels: str = typer.Option(
+        "auto",
+        "--pixels",
+        help="How the arena is drawn in the browser: half (half blocks, drawn by the page itself), braille"
+        " (finer trails where the browser's fonts have braille) or auto (half).",
+    ),
     plugin: list[Path] = typer.Option(None, "--plugin", help="Load a plugin file or folder (repeatable)."),
     distro: str = typer.Option(
         None,
@@ -62,6 +72,9 @@ def serve(
             distro = check_distro(distro)
         except ValueError as err:
             fail(f"--distro: {err}")
+    if pixels not in SERVED_PIXELS:
+        extra = " (a browser page has no terminal graphics)" if pixels == "graphics" else ""
+        fail(f"--pixels: expected one of {', '.join(SERVED_PIXELS)}, got {pixels!r}{extra}")
     lesson_path, file = _lesson_and_file(lesson, file, plugin)
     command = [sys.executable, "-m", "turtletui", "run", str(file.resolve())]
     if lesson_path is not None:
@@ -70,6 +83,7 @@ def serve(
         command.append("--ascii")
     if distro is not None:
         command += ["--distro", distro]
+    command += ["--pixels", pixels]
     for path in plugin or ():
         command += ["--plugin", str(path.resolve())]
     problem = _cannot_listen(host, port)
@@ -113,8 +127,10 @@ def _lesson_and_file(lesson: str | None, file: Path | None, plugins: list[Path] 
             fail(f"{file}: no such file; start from a lesson's starter: turtletui serve {file} --lesson ID")
         if found.starter_path is None:
             fail(f"{file}: no such file, and lesson {found.id!r} has no starter file to begin it with")
+        from turtletui.lessons.starter import starter_for
+
         try:
-            file.write_bytes(found.starter_path.read_bytes())
+            file.write_bytes(starter_for(found, file, found.id))
         except OSError as err:
             fail(f"cannot write {file}: {err.strerror or err}")
         sys.stderr.write(f"turtletui serve: wrote {file} (starter of lesson {found.id})\n")

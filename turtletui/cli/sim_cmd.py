@@ -39,6 +39,19 @@ def sim(
         " Default: turtlesim's empty arena.",
     ),
     seed: int = typer.Option(0, "--seed", help="Seed for everything random in the world."),
+    record: str = typer.Option(
+        None,
+        "--record",
+        metavar="PATH",
+        help="Record every message, call and log line, as turtletui run does: run.jsonl, run.mcap or run/"
+        " (a rosbag2 folder).",
+    ),
+    foxglove: str = typer.Option(
+        None,
+        "--foxglove",
+        metavar="[HOST:PORT]",
+        help="Serve it live to Foxglove or Lichtblick (default 127.0.0.1:8765), as turtletui run does.",
+    ),
     plugin: list[Path] = typer.Option(None, "--plugin", help="Load a plugin file or folder (repeatable)."),
     ros: bool = typer.Option(
         False,
@@ -52,8 +65,8 @@ def sim(
 
     turtlesim's ROS arguments go last: turtletui sim --ros-args -p background_r:=0 -p holonomic:=true
     """
-    # the same --world and --pixels as run
-    from turtletui.cli.run_cmd import _drawing, _resolve_world
+    # the same --world, --pixels, --record and --foxglove as run
+    from turtletui.cli.run_cmd import _check_outputs, _drawing, _resolve_world
     from turtletui.compat.ros_args import RosArgsError
     from turtletui.runtime.turtlesim_args import parse_turtlesim_args
 
@@ -64,8 +77,13 @@ def sim(
     if duration is not None and not 0 < duration < 1e7:
         fail(f"--duration must be a positive number of seconds, got {duration}")
     world_spec = None if world is None else _resolve_world(world, plugins_of(plugin))
+    _check_outputs(record, foxglove)
     if ros_python is not None and not ros:
         fail("--ros-python goes with --ros")
+    if ros:
+        from turtletui.cli.ros_run import check_ros_options
+
+        check_ros_options(record=record, foxglove=foxglove, in_process=False)
     if not headless:
         if duration is not None:
             fail("--duration is for --headless runs; the app runs until you quit it (q)")
@@ -82,11 +100,14 @@ def sim(
             turtlesim=args,
             pixels=drawing.pixels,
             graphics=drawing.graphics,
+            record=record,
+            foxglove=foxglove,
             ros=connection,
         ).run()
         return
     connection = _connect(ros, ros_python)
     from turtletui.graph.core import NS_PER_S
+    from turtletui.runtime.outputs import run_outputs
     from turtletui.runtime.simulation import Simulation
 
     def print_log(record) -> None:
@@ -94,28 +115,36 @@ def sim(
         sys.stdout.flush()  # a live log: a pipe must not hold lines back
 
     limit_ns = round(duration * NS_PER_S) if duration is not None else 2**62
-    printer = args.log_filter(print_log)
-    started: list = []  # turtlesim's first lines, for /rosout once the bridge is there
+    started: list = []  # turtlesim's start lines: shown once a recording is open, and on /rosout with --ros
+    show = args.log_filter(print_log)
     bridge = None
     try:  # from the first line turtlesim logs: Ctrl-C may come at any point after it
         simulation = Simulation(
             world=None if world_spec is None else world_spec.build(seed),
             realtime=True,
-            log_sinks=[printer, started.append],
+            log_sinks=[started.append],
             turtlesim_name=args.name,
         )
         args.apply(simulation)
+        sinks = simulation.graph.log_sinks
+        sinks.remove(started.append)
         if connection is not None:
             from turtletui.bridge.run import attach
 
-            sinks = simulation.graph.log_sinks
-            sinks.remove(started.append)
             bridge = attach(simulation, connection, earlier_logs=started, log_filter=args.log_filter)
             # other processes' lines (relayed from /rosout) are theirs to print
-            sinks[sinks.index(printer)] = bridge.local_only(printer)
-        simulation.run_until(limit_ns)
+            show = bridge.local_only(show)
+        sinks.append(show)
+        with run_outputs(simulation, record, foxglove, earlier_logs=started):
+            for line in started:
+                show(line)
+            simulation.run_until(limit_ns)
     except KeyboardInterrupt:
-        pass  # Ctrl-C is how turtlesim_node ends
+        pass  # Ctrl-C is how turtlesim_node ends; a recording is kept
+    except BrokenPipeError:
+        raise  # stdout closed (``| head``): Click exits quietly
+    except (OSError, ValueError) as err:  # a Foxglove port in use, a recording that cannot be written
+        fail(str(err))
     finally:
         if bridge is not None:
             bridge.close()

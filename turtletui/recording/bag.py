@@ -14,22 +14,24 @@ from __future__ import annotations
 
 import os
 import time
-from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
+from collections.abc import Collection, Iterator, Sequence
 from pathlib import Path
 from typing import Any
 
 from turtletui.errors import TurtletuiError
-from turtletui.graph.core import NS_PER_S
-from turtletui.graph.logs import INFO
+from turtletui.graph.core import NS_PER_S, NodeRecord
+from turtletui.graph.logs import ERROR, INFO
 from turtletui.interfaces import from_dict
-from turtletui.recording.read import McapReadError, mcap_file_of, read_mcap
+from turtletui.recording.read import McapReadError, iter_messages, known_channels, mcap_file_of
 from turtletui.recording.recorder import McapRecorder
-from turtletui.recording.schema import interface_of
+from turtletui.sim import DT
 
 RECORDER = "rosbag2_recorder"
 PLAYER = "rosbag2_player"
 _INDENT = " " * 19
+
+LOOP_MIN_NS = round(DT * NS_PER_S)
+"""``--loop``: a pass starts no sooner than this after the last one began."""
 
 
 class BagError(TurtletuiError, ValueError):
@@ -44,29 +46,51 @@ def default_bag_name(now: float | None = None) -> str:
 class BagRecording:
     """``ros2 bag record``: ``topics`` (every topic when None, ``-a``) of
     ``sim`` (a turtletui.runtime.simulation.Simulation) into the rosbag2
-    folder ``output`` until ``stop``."""
+    folder ``output`` until ``stop``.
 
-    def __init__(self, sim: Any, topics: Sequence[str] | None, output: str | os.PathLike[str] | None = None) -> None:
+    As rosbag2's recorder, a ``rosbag2_recorder`` node subscribes to the
+    topics (``ros2 node list`` and ``ros2 topic info`` show it); a topic named
+    that nobody publishes yet is recorded from when it appears.
+    """
+
+    def __init__(
+        self,
+        sim: Any,
+        topics: Sequence[str] | None,
+        output: str | os.PathLike[str] | None = None,
+        *,
+        node: NodeRecord | None = None,
+    ) -> None:
+        """``node``: the recorder's node, if the caller made it (else one is made)."""
         self.folder = Path(output if output is not None else default_bag_name())
         if self.folder.exists():
             raise BagError(f"Output folder '{self.folder}' already exists.")
-        self._graph = sim.graph
+        self._graph = graph = sim.graph
         try:
             self._recorder = McapRecorder(sim, f"{self.folder}/", topics=None if topics is None else list(topics))
         except OSError as err:
             raise BagError(str(err)) from None
-        log = self._log
-        log(f"Opened database '{self.folder / (self.folder.name + '_0.mcap')}' for READ_WRITE.")
-        log("Listening for topics...")
-        for topic in topics if topics is not None else sorted(self._graph.topics):
-            log(f"Subscribed to topic '{topic}'")
-        log("Recording...")
+        self.stopped = False
+        self.node = node if node is not None else graph.add_node(RECORDER, owner=RECORDER)
+        self._log(f"Opened database '{self.folder / (self.folder.name + '_0.mcap')}' for READ_WRITE.")
+        self._log("Listening for topics...")
+        live = sorted(name for name, topic in graph.topics.items() if topic.publishers or topic.subscriptions)
+        for name in live if topics is None else [t for t in dict.fromkeys(topics) if t in live]:
+            topic = graph.topics[name]
+            graph.add_subscription(self.node, name, topic.msg_type, 10, _ignore)
+            self._log(f"Subscribed to topic '{name}'")
+        self._log("Recording...")
 
     def _log(self, msg: str) -> None:
         self._graph.log(RECORDER, INFO, msg)
 
     def stop(self) -> None:
-        """End the recording (Ctrl-C): the folder appears, complete."""
+        """End the recording (Ctrl-C): the folder appears, complete; the
+        recorder's node goes. BagError if the bag cannot be written."""
+        if self.stopped:
+            return
+        self.stopped = True
+        self._graph.remove_node(self.node)
         try:
             self._recorder.close(keep=True)
         except OSError as err:
@@ -74,27 +98,14 @@ class BagRecording:
         self._log("Recording stopped")
 
 
+def _ignore(msg: Any) -> None:
+    """The recorder's subscriptions: what they receive is recorded by the tap."""
+
+
 def bag_info(path: str | os.PathLike[str]) -> str:
     """What ``ros2 bag info PATH`` prints (times in local time)."""
     path = Path(path)
-    if not path.exists():
-        raise BagError(f"{path}: no such bag")
-    try:
-        from mcap.exceptions import McapError
-        from mcap.reader import make_reader
-
-        file = mcap_file_of(path)
-        with open(file, "rb") as stream:
-            summary = make_reader(stream).get_summary()
-            distro = _ros_distro(make_reader(stream))
-    except McapReadError as err:
-        raise BagError(str(err)) from None
-    except (McapError, ValueError, KeyError, IndexError, EOFError) as err:
-        raise BagError(f"{path}: not a readable bag ({err})") from None
-    except OSError as err:
-        raise BagError(f"{path}: cannot read the bag ({err.strerror})") from None
-    if summary is None or summary.statistics is None:
-        raise BagError(f"{path}: not a readable bag (no summary: was the recording cut short?)")
+    summary, _, distro = _summary(path)
     stats = summary.statistics
     files = sorted(p.name for p in path.glob("*.mcap")) if path.is_dir() else [path.name]
     size = sum(p.stat().st_size for p in path.iterdir() if p.is_file()) if path.is_dir() else path.stat().st_size
@@ -122,6 +133,38 @@ def bag_info(path: str | os.PathLike[str]) -> str:
     lines.append("Topic information: " + f"\n{_INDENT}".join(topics))
     lines += ["Service:           0", "Service information: "]
     return "\n".join(lines) + "\n"
+
+
+def bag_topics(path: str | os.PathLike[str]) -> list[str]:
+    """The topics of a bag, as ``ros2 bag info -t PATH`` prints them."""
+    summary, _, _ = _summary(Path(path))
+    return [channel.topic for channel in summary.channels.values()]
+
+
+def _summary(path: Path, topics: Collection[str] | None = None) -> tuple[Any, dict[int, tuple[str, type]], str]:
+    """(the MCAP summary, the channels turtletui can play (of ``topics``), the
+    ROS distro it was recorded with) of a bag; BagError (one line) if it
+    cannot be read."""
+    if not path.exists():
+        raise BagError(f"{path}: no such bag")
+    try:
+        from mcap.exceptions import McapError
+        from mcap.reader import make_reader
+
+        with open(mcap_file_of(path), "rb") as stream:
+            reader = make_reader(stream)
+            summary = reader.get_summary()
+            channels = known_channels(reader, topics)
+            distro = _ros_distro(reader)
+    except McapReadError as err:
+        raise BagError(str(err)) from None
+    except (McapError, ValueError, KeyError, IndexError, EOFError) as err:
+        raise BagError(f"{path}: not a readable bag ({err})") from None
+    except OSError as err:
+        raise BagError(f"{path}: cannot read the bag ({err.strerror})") from None
+    if summary is None or summary.statistics is None:
+        raise BagError(f"{path}: not a readable bag (no summary: was the recording cut short?)")
+    return summary, channels, distro
 
 
 def _ros_distro(reader: Any) -> str:
@@ -153,65 +196,136 @@ def _file_size(size: int) -> str:
     return f"{value:.{0 if index == 0 else 1}f} {units[index]}"
 
 
-@dataclass
 class BagPlayback:
-    """``ros2 bag play``: a bag's messages published again at their recorded pace."""
+    """``ros2 bag play``: a bag's messages published again into ``sim``'s graph
+    (anything with a ``graph``) from a ``rosbag2_player`` node, each at its
+    recorded offset from the first divided by ``rate``; with ``loop`` again
+    from the start until stopped; ``topics`` limits it to those. Messages are
+    read from the file as they come due, so a long bag starts at once and
+    memory stays flat. Topics of types turtletui does not know are skipped,
+    as ROS skips unknown types. Time is the simulation's: at x2 the bag plays
+    twice as fast on the wall clock, as the turtle moves."""
 
-    path: Path
-    messages: int
-    duration_ns: int
-    timers: list[Any] = field(default_factory=list, repr=False)
-    published: int = 0
-
-    @property
-    def done(self) -> bool:
-        return self.published >= self.messages
+    def __init__(
+        self,
+        sim: Any,
+        path: str | os.PathLike[str],
+        *,
+        rate: float = 1.0,
+        loop: bool = False,
+        topics: Collection[str] | None = None,
+        node: NodeRecord | None = None,
+    ) -> None:
+        """``node``: the player's node, if the caller made it (else one is made)."""
+        if not rate > 0:
+            raise BagError(f"the rate must be a positive number, got {rate}")
+        self.path = Path(path)
+        self.rate = rate
+        self.loop = loop
+        self._topics = None if topics is None else frozenset(topics)
+        self.messages, self.duration_ns = _bag_length(self.path, self._topics)
+        """Messages played in one pass, and the time from the first to the last (ns)."""
+        self.published = 0
+        """Messages published so far (every pass)."""
+        self.done = False
+        """True once the bag was played to its end (never with ``loop``) or stopped."""
+        self._graph = sim.graph
+        self.node = node if node is not None else self._graph.add_node(PLAYER, owner=PLAYER)
+        self._publishers: dict[str, Any] = {}
+        self._reader: Iterator[tuple[int, str, type, dict[str, Any]]] | None = None
+        self._next: tuple[int, str, type, dict[str, Any]] | None = None
+        self._timer: Any = None
+        self._pass_start = self._first = 0
+        pace = "" if rate == 1.0 else f" at x{rate:g}"
+        again = ", in a loop" if loop else ""
+        self._log(INFO, f"Playing {self.path}: {self.messages} messages, {_seconds(self.duration_ns)} s{pace}{again}")
+        self._start_pass(self._graph.now_ns)
 
     def stop(self) -> None:
-        """Stop publishing (Ctrl-C)."""
-        for timer in self.timers:
-            timer.canceled = True
+        """Stop publishing (Ctrl-C); the player's node goes."""
+        self._end()
 
+    # -- internals --------------------------------------------------------------------
+    def _log(self, level: int, msg: str) -> None:
+        self._graph.log(PLAYER, level, msg)
 
-def play_bag(sim: Any, path: str | os.PathLike[str]) -> BagPlayback:
-    """Publish every message of the bag at ``path`` into ``sim``'s graph from
-    now on, each at its recorded offset, from a ``rosbag2_player`` node (topics
-    of types turtletui does not know are skipped, as ROS skips unknown types)."""
-    path = Path(path)
-    try:
-        _, events = read_mcap(path, everything=True)
-    except McapReadError as err:
-        raise BagError(str(err)) from None
-    graph = sim.graph
-    node = graph.add_node(PLAYER, owner=PLAYER)
-    publishers: dict[str, Any] = {}
-    first = events[0]["t"] if events else 0.0
-    duration = round((events[-1]["t"] - first) * NS_PER_S) if events else 0
-    playback = BagPlayback(path, len(events), duration)
-    graph.log(PLAYER, INFO, f"Playing {path}: {len(events)} messages, {_seconds(duration)} s")
+    def _start_pass(self, start_ns: int) -> None:
+        self._close_reader()
+        self._reader = iter_messages(self.path, self._topics)
+        # what is due at once goes out from a timer, in the next pump: 1 ns on
+        self._pass_start, self._first = max(start_ns, self._graph.now_ns + 1), -1
+        self._read_next()
+        if self._next is None:
+            self._end()
+            return
+        self._schedule()
 
-    def publisher(topic: str, cls: type) -> Any:
-        found = publishers.get(topic)
+    def _read_next(self) -> None:
+        try:
+            item = next(self._reader, None)
+        except McapReadError as err:
+            self._log(ERROR, str(err))
+            item = None
+        if item is None:
+            self._next = None
+            return
+        t_ns, topic, cls, fields = item
+        if self._first < 0:
+            self._first = t_ns
+        due = self._pass_start + round(max(t_ns - self._first, 0) / self.rate)
+        self._next = (due, topic, cls, fields)
+
+    def _schedule(self) -> None:
+        delay = self._next[0] - self._graph.now_ns
+        self._timer = self._graph.call_later(self.node, delay, self._publish_due)
+
+    def _publish_due(self) -> None:
+        graph = self._graph
+        now = graph.now_ns
+        while self._next is not None and self._next[0] <= now:
+            _, topic, cls, fields = self._next
+            try:
+                msg = from_dict(cls, fields)
+            except ValueError as err:
+                self._log(ERROR, f"{self.path}: {topic}: cannot play this message ({err}): stopping")
+                self._end()
+                return
+            graph.publish(self._publisher(topic, cls).topic, msg)
+            self.published += 1
+            self._read_next()
+        if self._next is not None:
+            self._schedule()
+        elif self.loop and self.published:
+            # a bag with no length loops no faster than turtlesim steps
+            self._start_pass(max(now, self._pass_start + LOOP_MIN_NS))
+        else:
+            self._end()
+
+    def _publisher(self, topic: str, cls: type) -> Any:
+        found = self._publishers.get(topic)
         if found is None:
-            found = publishers[topic] = graph.add_publisher(node, topic, cls, 10)
+            found = self._publishers[topic] = self._graph.add_publisher(self.node, topic, cls, 10)
         return found
 
-    for event in events:
-        cls = interface_of(event["type"])
-        try:
-            msg = from_dict(cls, event["msg"])
-        except ValueError as err:
-            raise BagError(f"{path}: {event['topic']} at t={event['t']:.3f} s: {err}") from None
-        delay = max(round((event["t"] - first) * NS_PER_S), 0) + 1
-        send = _sender(graph, publisher(event["topic"], cls), msg, playback)
-        playback.timers.append(graph.call_later(node, delay, send))
-    return playback
+    def _close_reader(self) -> None:
+        if self._reader is not None:
+            self._reader.close()  # closes the file
+            self._reader = None
+
+    def _end(self) -> None:
+        if self.done:
+            return
+        self.done = True
+        if self._timer is not None:
+            self._timer.canceled = True
+        self._close_reader()
+        self._graph.remove_node(self.node)
 
 
-def _sender(graph: Any, pub: Any, msg: Any, playback: BagPlayback) -> Callable[[], None]:
-    def send() -> None:
-        graph.publish(pub.topic, msg, source=PLAYER)
-        playback.published += 1
-
-    return send
-
+def _bag_length(path: Path, topics: Collection[str] | None) -> tuple[int, int]:
+    """(messages turtletui can play, ns from the first message to the last) of a bag."""
+    summary, channels, _ = _summary(path, topics)
+    stats = summary.statistics
+    count = sum(stats.channel_message_counts.get(channel_id, 0) for channel_id in channels)
+    duration = stats.message_end_time - stats.message_start_time if stats.message_count else 0
+    return count, duration

@@ -14,7 +14,8 @@ from __future__ import annotations
 import json
 import os
 import struct
-from collections.abc import Iterator
+from collections.abc import Collection, Iterator
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
@@ -45,16 +46,11 @@ def mcap_file_of(path: Path) -> Path:
     raise McapReadError(f"{path}: no .mcap file in this folder (not a rosbag2 bag with the mcap storage)")
 
 
-def read_mcap(
-    path: str | os.PathLike[str], *, everything: bool = False
-) -> tuple[dict[str, Any], list[dict[str, Any]]]:
-    """(header, events) of an MCAP recording or rosbag2 folder; McapReadError if unreadable.
-
-    Events are what a replay feeds in: the controllers' messages, service
-    calls, goals and the log. With ``everything``, every message of every
-    channel turtletui can decode, as a topic event (what ``ros2 bag play``
-    publishes)."""
-    path = Path(path)
+@contextmanager
+def _decoding_reader(path: Path) -> Iterator[Any]:
+    """An MCAP reader with mcap_ros2's decoder on a recording or rosbag2
+    folder, its file open for the ``with`` block; anything unreadable, also
+    within the block, is a McapReadError naming the file."""
     if not path.exists():
         raise McapReadError(f"{path}: no such recording")
     file = mcap_file_of(path)
@@ -66,19 +62,65 @@ def read_mcap(
         raise McapReadError(f"{path}: reading MCAP needs the mcap and mcap-ros2-support packages") from None
     try:
         with open(file, "rb") as stream:
-            reader = make_reader(stream, decoder_factories=[DecoderFactory()])
-            header = _header(reader)
-            summary = reader.get_summary()
-            epoch = header.pop("epoch_ns", None)
-            if epoch is None:
-                stats = summary.statistics if summary is not None else None
-                epoch = stats.message_start_time if stats is not None else 0
-            events = list(_events(reader, int(epoch), everything))
+            yield make_reader(stream, decoder_factories=[DecoderFactory()])
     except (McapError, ValueError, KeyError, IndexError, EOFError, NotImplementedError, struct.error) as err:
         raise McapReadError(f"{file}: not a readable MCAP recording ({_reason(err)})") from None
     except OSError as err:
         raise McapReadError(f"{file}: cannot read the recording ({err.strerror})") from None
+
+
+def read_mcap(
+    path: str | os.PathLike[str], *, everything: bool = False
+) -> tuple[dict[str, Any], list[dict[str, Any]]]:
+    """(header, events) of an MCAP recording or rosbag2 folder; McapReadError if unreadable.
+
+    Events are what a replay feeds in: the controllers' messages, service
+    calls, goals and the log. With ``everything``, every message of every
+    channel turtletui can decode, as a topic event (what ``ros2 bag play``
+    publishes)."""
+    with _decoding_reader(Path(path)) as reader:
+        header = _header(reader)
+        summary = reader.get_summary()
+        epoch = header.pop("epoch_ns", None)
+        if epoch is None:
+            stats = summary.statistics if summary is not None else None
+            epoch = stats.message_start_time if stats is not None else 0
+        events = list(_events(reader, int(epoch), everything))
     return header, events
+
+
+def iter_messages(
+    path: str | os.PathLike[str], topics: Collection[str] | None = None
+) -> Iterator[tuple[int, str, type, dict[str, Any]]]:
+    """Every message of a recording or bag that turtletui can decode (of
+    ``topics`` only, when given), in log-time order, read as it is asked for:
+    (log time in ns, topic, message class, the message as the plain dict
+    ``from_dict`` takes). The file stays open until the iterator ends or is
+    closed. McapReadError (one line) if the file is unreadable, also midway."""
+    with _decoding_reader(Path(path)) as reader:
+        classes = known_channels(reader, topics)
+        if not classes:
+            return
+        wanted = sorted({topic for topic, _ in classes.values()})
+        for _, channel, message, decoded in reader.iter_decoded_messages(topics=wanted, log_time_order=True):
+            topic, cls = classes[channel.id]
+            yield message.log_time, topic, cls, plain(cls, decoded)
+
+
+def known_channels(reader: Any, topics: Collection[str] | None = None) -> dict[int, tuple[str, type]]:
+    """{channel id: (topic, message class)} of a reader's channels whose type
+    turtletui knows (of ``topics`` only, when given)."""
+    summary = reader.get_summary()
+    if summary is None:
+        return {}
+    found = {}
+    for channel in summary.channels.values():
+        if topics is not None and channel.topic not in topics:
+            continue
+        cls = _class_of(summary.schemas.get(channel.schema_id))
+        if cls is not None:
+            found[channel.id] = (channel.topic, cls)
+    return found
 
 
 def _header(reader: Any) -> dict[str, Any]:

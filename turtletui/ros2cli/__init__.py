@@ -4,7 +4,8 @@ live turtletui graph.
 Students type the real commands (same arguments, parsed with argparse as
 ros2cli parses them; message values read with PyYAML's ``safe_load``; same
 output) and practise them safely on the simulated graph. A plain library:
-no Textual, no I/O; a front end shows the lines and drives the simulation.
+no Textual, no terminal I/O (only `ros2 bag` reads and writes bag files); a
+front end shows the lines and drives the simulation.
 
 API
 ---
@@ -17,7 +18,8 @@ API
 * ``result.error`` -- True when the command failed; ``lines`` is then exactly
   one line, e.g. ``ros2: error: invalid choice: 'topik' (did you mean 'topic'?)``;
 * ``result.stream`` -- for commands that go on (``topic echo``, ``topic hz``,
-  ``topic pub`` without ``--once``, ``service call``, ``action send_goal``) a
+  ``topic pub`` without ``--once``, ``service call``, ``action send_goal``,
+  ``bag record``, ``bag play``) a
   :class:`Stream`, else None. After each simulation step call
   ``stream.poll()`` for the lines printed since the last poll;
   ``stream.done`` turns True when the command ended by itself (``--once``, a
@@ -28,14 +30,17 @@ API
 
 ``cli.streams`` holds the streams still running, ``cli.close_all()`` stops
 them. :class:`Terminal` adds what a shell adds around ``ros2``: one command
-in the foreground, Ctrl+C, publishers in the background (``jobs``, ``kill``).
+in the foreground, Ctrl+C, publishers and recordings in the background
+(``jobs``, ``kill``).
 
 Commands: ``node list|info``, ``topic list|echo|hz|info|type|find|pub``,
 ``service list|type|find|info|call``, ``param list|get|set|dump``,
-``action list|info|send_goal``, ``interface show|list|packages|package``;
-``-h`` on each prints its help. Not modelled: ``/parameter_events``,
-``/rosout`` and the parameter services (turtletui's graph has none), QoS
-options, ``ros2 run``/``launch``/``bag``.
+``action list|info|send_goal``, ``interface show|list|packages|package``,
+``bag record|info|play`` (bags in the folder turtletui runs in; ``record``
+and ``play`` need a Simulation, not a bare Graph); ``-h`` on each prints its
+help. Not modelled: ``/parameter_events``, ``/rosout`` and the parameter
+services (turtletui's graph has none), QoS options, service recording
+(``bag record --services``), ``ros2 run``/``launch``.
 """
 
 from turtletui.ros2cli.cli import Ros2Cli

@@ -21,9 +21,16 @@ from turtletui.ros2cli.common import CommandResult, hint
 if TYPE_CHECKING:
     from turtletui.ros2cli.cli import Ros2Cli
 
-NOT_HERE = ("bag", "component", "daemon", "doctor", "launch", "lifecycle", "multicast",
+NOT_HERE = ("component", "daemon", "doctor", "launch", "lifecycle", "multicast",
             "pkg", "run", "security", "wtf")
 """Commands of the real ros2 that turtletui does not model."""
+
+INSTEAD = {
+    "run": "turtlesim runs already, turtle_teleop_key is the arena's arrow keys (Esc first),"
+           " and your own node runs with turtletui run FILE",
+    "launch": "turtlesim runs already; several nodes run with turtletui run A.py B.py",
+}
+"""What the tutorials' ``ros2 run``/``launch`` lines are in turtletui."""
 
 
 @dataclass(frozen=True)
@@ -84,7 +91,9 @@ class Ros2ArgumentParser(ArgumentParser):
         if action.choices is None or value in action.choices:
             return
         choices = sorted(action.choices)
-        if self.prog == "ros2" and value in NOT_HERE:
+        if self.prog == "ros2" and value in INSTEAD:
+            message = f"'{value}' is not available in turtletui: {INSTEAD[value]}"
+        elif self.prog == "ros2" and value in NOT_HERE:
             message = f"'{value}' is not available in turtletui (available: {', '.join(choices)})"
         else:
             message = f"invalid choice: '{value}'" + (

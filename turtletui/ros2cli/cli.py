@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING, Protocol
 
 from turtletui.graph.core import Graph, GraphError, NodeRecord
 from turtletui.interfaces import InterfaceError
-from turtletui.ros2cli import action, interface, node, param, service, topic
+from turtletui.ros2cli import action, bag, interface, node, param, service, topic
 from turtletui.ros2cli.arguments import (
     HelpShown,
     ParseError,
@@ -22,7 +22,7 @@ from turtletui.ros2cli.streams import OWNER
 if TYPE_CHECKING:
     from turtletui.ros2cli.streams import Stream
 
-COMMANDS = (action.COMMAND, interface.COMMAND, node.COMMAND, param.COMMAND, service.COMMAND,
+COMMANDS = (action.COMMAND, bag.COMMAND, interface.COMMAND, node.COMMAND, param.COMMAND, service.COMMAND,
             topic.COMMAND)
 
 HIDDEN_NODE_PREFIX = "_ros2cli_"
@@ -41,6 +41,8 @@ class Ros2Cli:
 
     def __init__(self, sim: _HasGraph | Graph, *, help_width: int = 80) -> None:
         self.graph: Graph = sim if isinstance(sim, Graph) else sim.graph
+        self.sim = None if isinstance(sim, Graph) else sim
+        """The simulation, for ``ros2 bag`` (None when only a graph was given)."""
         self.streams: list[Stream] = []
         """Streams still running, oldest first."""
         self.help_width = help_width

@@ -39,16 +39,19 @@ class Stream:
     when the command ended (by itself or closed), ``close()`` stops it.
     """
 
-    publishes = False
+    runs_in_background = False
     """True for commands whose work is their effect, not their output
-    (``topic pub``): a console may keep them running in the background."""
+    (``topic pub``, ``bag record``, ``bag play``): a console may keep them
+    running in the background."""
 
-    def __init__(self, cli: Ros2Cli, command: str) -> None:
+    def __init__(self, cli: Ros2Cli, command: str, node: NodeRecord | None = None) -> None:
         self.command = command
         """The command line that started it."""
         self._cli = cli
         self._graph = cli.graph
-        self.node: NodeRecord = cli.hidden_node()
+        self.node: NodeRecord = node if node is not None else cli.hidden_node()
+        """The command's node: a hidden one, unless the command names its own
+        (``rosbag2_recorder``); it goes when the stream ends."""
         self._blocks: deque[list[str]] = deque()
         self._buffered = 0
         self._done = False
@@ -66,18 +69,27 @@ class Stream:
         self._buffered = 0
         return lines
 
+    @property
+    def progress(self) -> str:
+        """How far it got, for a list of jobs (``120 published``); '' if nothing to say."""
+        return ""
+
     def close(self) -> None:
-        """Stop the command (Ctrl+C): remove its hidden node and endpoints."""
+        """Stop the command (Ctrl+C): remove its node and endpoints. What it
+        says as it stops (a recorder's last lines) is left for ``poll``."""
         if self._closed:
             return
-        self._closed = True
-        self._on_close()
-        self._graph.remove_node(self.node)
-        self._cli.forget(self)
+        try:
+            self._on_close()
+        finally:
+            self._closed = True
+            self._graph.remove_node(self.node)
+            self._cli.forget(self)
 
     # -- for subclasses -------------------------------------------------------
     def _on_close(self) -> None:
-        """Extra clean-up before the node goes (cancel a goal...)."""
+        """Extra clean-up before the node goes (cancel a goal, write a bag...);
+        it may still ``_emit``."""
 
     def _emit(self, lines: list[str]) -> None:
         """Buffer one message's lines, dropping the oldest whole messages."""
@@ -153,7 +165,7 @@ class HzStream(Stream):
 class PubStream(Stream):
     """``ros2 topic pub``: one message at once, then one per period."""
 
-    publishes = True
+    runs_in_background = True
 
     def __init__(self, cli: Ros2Cli, command: str, topic_name: str, msg: Message,
                  period_ns: int, times: int, print_nth: int) -> None:
@@ -170,6 +182,10 @@ class PubStream(Stream):
         self.timer = None
         if not self.done:
             self.timer = self._graph.add_timer(self.node, period_ns, self._publish)
+
+    @property
+    def progress(self) -> str:
+        return f"{self.count} published"
 
     def _publish(self) -> None:
         if self.done:

@@ -21,6 +21,7 @@ from textual.widgets import ContentSwitcher, DataTable, Input, Static
 from turtletui.graph.introspection import snapshot
 from turtletui.graph.logs import ERROR, INFO, WARN
 from turtletui.ros2cli import Ros2Cli, Terminal
+from turtletui.ros2cli.terminal import Line
 from turtletui.runtime.loader import ControllerSpec
 from turtletui.tui import lesson_checks
 from turtletui.tui.ascii_filter import AsciiFilter
@@ -31,7 +32,7 @@ from turtletui.tui.session import LiveSession
 from turtletui.tui.ticker import Ticker
 from turtletui.tui.widgets.arena import MIN_WIDTH, ArenaView, Overlay
 from turtletui.tui.widgets.command_input import CommandInput
-from turtletui.tui.widgets.keybar import APP_KEYS, COMMAND_LINE_KEYS, KeyBar
+from turtletui.tui.widgets.keybar import APP_KEYS, COMMAND_LINE_KEYS, EDITOR_KEYS, KeyBar
 from turtletui.tui.widgets.panels import (
     ConsolePanel,
     GraphPanel,
@@ -103,7 +104,7 @@ class TurtleApp(App):
         Binding("5", "panel('console')", "Console", show=False, tooltip="console panel: the ros2 commands and their output"),
         Binding("colon,slash", "command_line", "ros2 command", tooltip="the ros2 command line (Esc returns to the arena)"),
         Binding("ctrl+c", "interrupt", "Stop command", show=False, priority=True,
-                tooltip="stop the running ros2 command, as in a terminal (q quits)"),
+                tooltip="stop the running ros2 command, as in a terminal (q quits; in the editor ctrl+c copies)"),
         Binding("k", "check_lesson", "Check", tooltip="run the open lesson's checks on your controller file"),
         Binding("E", "editor", "Editor",
                 tooltip="edit the controller file beside the arena (ctrl+s saves, the node reloads)"),
@@ -215,7 +216,7 @@ class TurtleApp(App):
         yield CommandInput(
             placeholder="ros2 topic list   (Enter runs it, Esc returns to the arena)", compact=True, id="command"
         )
-        yield KeyBar(APP_KEYS, id="keys")
+        yield KeyBar(self._arena_keys(), id="keys")
 
     def _lesson_text(self) -> str:
         if self._lesson is None:
@@ -479,12 +480,33 @@ class TurtleApp(App):
             return
         self.workers.cancel_group(self, "checks")  # a check of the previous lesson
         self._lesson = lesson.path
-        running = self.session.world_spec.name if self.session.world_spec else "empty"
-        note = "" if lesson.world == running else (
-            f"*This lesson runs in the world `{lesson.world}`: restart with"
-            f" `turtletui run FILE --lesson {lesson.id}` to run in it.*\n\n")
+        note = self._enter_lesson_world(lesson)
+        self.query_one(ArenaView).overlays = self._overlays + self._lesson_overlays()
         self.query_one(LessonPanel).update(note + self._lesson_text())
         self._show_side("lesson")
+
+    def _enter_lesson_world(self, lesson: Lesson) -> str:
+        """Start the simulation again in the lesson's world when it runs in
+        another one; what the lesson pane says about it ('' when nothing changed)."""
+        running = self.session.world_spec.name if self.session.world_spec else "empty"
+        if lesson.world == running:
+            return ""
+        fixed = "the replay" if self._replay is not None else self.session.world_fixed_by()
+        world, problem = self._lesson_world()
+        if fixed is not None or problem is not None:
+            why = f"{fixed} keeps this session in `{running}`" if fixed else problem
+            return (f"*This lesson runs in the world `{lesson.world}`, but {why}: restart with"
+                    f" `turtletui run FILE --lesson {lesson.id}` to run in it.*\n\n")
+        with self.session.lock:
+            stopped = self.terminal.foreground is not None or bool(self.terminal.jobs)
+            self.action_stop_all_commands()  # they run on the old simulation's graph
+            self.session.change_world(world)
+            self.cli = Ros2Cli(self.session.sim)
+            self.terminal = Terminal(self.cli)
+        self.query_one(ArenaView).world = self.session.sim.world
+        if stopped:
+            self.query_one(ConsolePanel).show([Line("^C (a new world: the ros2 commands stopped)", "note")])
+        return f"*The simulation started again in this lesson's world, `{lesson.world}`.*\n\n"
 
     def action_drive(self, linear: int, angular: int) -> None:
         self.session.teleop.drive(float(linear), float(angular))
@@ -553,14 +575,32 @@ class TurtleApp(App):
         self._layout_side()
 
     def _editable_file(self) -> Path | None:
-        return next((spec.path for spec in self._controllers if spec.path is not None), None)
+        """The student's controller file: the first file named to run. The nodes
+        that come with turtletui (the default part6_wall_avoider) are not theirs
+        to edit, nor to be checked as their work."""
+        return next((spec.path for spec in self._controllers if spec.path is not None and not spec.trusted), None)
+
+    def _no_file_of_yours(self) -> str:
+        """Why there is nothing to edit or check, and how to start a file."""
+        from turtletui.lessons.loader import LessonError, load_lesson
+
+        try:
+            lesson = "ID" if self._lesson is None else load_lesson(self._lesson).id
+        except LessonError:
+            lesson = "ID"
+        start = f"write yours with `turtletui new --lesson {lesson} my_node.py` and run the command it prints"
+        theirs = next((spec.name for spec in self._controllers), None)
+        if theirs is None:
+            return f"no controller file is running: {start}"
+        return f"{theirs} is a node that comes with turtletui: {start}"
 
     async def action_editor(self) -> None:
         """Show the editor on the controller file and give it the keys (ctrl+s
         saves and the node reloads; Esc gives the keys back to the arena)."""
         path = self._editable_file()
         if path is None:
-            self.notify("Nothing to edit: no controller file is running.", severity="warning")
+            self.notify(f"Nothing to edit: {self._no_file_of_yours()}.".replace("`", ""), severity="warning",
+                        timeout=8)
             return
         switcher = self.query_one(ContentSwitcher)
         if not switcher.query_children("#editor"):
@@ -579,15 +619,15 @@ class TurtleApp(App):
         process, and show the result at the top of the lesson pane."""
         self._show_side("lesson")
         panel = self.query_one(LessonPanel)
-        files = [s.path for s in self._controllers if s.path is not None]
-        if self._lesson is None or not files:
+        file = self._editable_file()
+        if self._lesson is None or file is None:
             missing = "no lesson is open (turtletui run FILE --lesson ID)" if self._lesson is None else (
-                "the controller is not a file"
+                self._no_file_of_yours()
             )
             panel.update(f"## Your checks\n\n**Nothing to check:** {missing}.\n\n" + self._lesson_text())
             return
         panel.update(lesson_checks.RUNNING + "\n" + self._lesson_text())
-        self.run_worker(self._check(files[0]), exclusive=True, group="checks")
+        self.run_worker(self._check(file), exclusive=True, group="checks")
 
     async def _check(self, controller: Path) -> None:
         import asyncio
@@ -654,7 +694,7 @@ class TurtleApp(App):
         elif echo is not None:
             self.query_one(TopicsPanel).echo(["^C"])
         elif jobs:
-            self.notify(f"{jobs} publisher(s) run in the background: "
+            self.notify(f"{jobs} command(s) run in the background: "
                         "jobs lists them, kill %N or kill all stops them.", timeout=5)
         else:
             self.notify("No ros2 command is running. q quits turtletui.", timeout=3)
@@ -667,8 +707,35 @@ class TurtleApp(App):
                 self._echo = None
 
     def on_descendant_focus(self, event: DescendantFocus) -> None:
-        on_command_line = event.widget is self.query_one("#command")
-        self.query_one(KeyBar).set_keys(COMMAND_LINE_KEYS if on_command_line else APP_KEYS)
+        if event.widget is self.query_one("#command"):
+            keys = COMMAND_LINE_KEYS
+        elif self._editing(event.widget):
+            keys = EDITOR_KEYS
+        else:
+            keys = self._arena_keys()
+        self.query_one(KeyBar).set_keys(keys)
+
+    def _arena_keys(self) -> tuple:
+        """The arena's keys, without those that do nothing in this session (the
+        editor with no controller file of the student's, checks and stopping
+        nodes with no node at all, as in turtletui sim)."""
+        idle = set()
+        if self._editable_file() is None:
+            idle.add("editor")
+        if not self._controllers:
+            idle.update(("toggle_controllers", "check_lesson"))
+        return tuple(hint for hint in APP_KEYS if hint.action not in idle)
+
+    @staticmethod
+    def _editing(widget: object) -> bool:
+        return getattr(widget, "id", None) == "editor-text"
+
+    def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
+        """Ctrl+C in the editor copies, as in any editor: the app's priority
+        binding (stop the ros2 command) lets the key through to it."""
+        if action == "interrupt" and self._editing(self.focused):
+            return False
+        return True
 
     def on_data_table_row_selected(self, event: DataTable.RowSelected) -> None:
         topic = self.query_one(TopicsPanel).selected_topic()

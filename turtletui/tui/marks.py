@@ -98,6 +98,10 @@ class HitMarks:
                 break
         self._marks.append(HitMark(x, y, t))
 
+    def clear(self) -> None:
+        """Forget every mark (the simulation starts again)."""
+        self._marks.clear()
+
     def visible(self, now: float) -> tuple[tuple[float, float, int], ...]:
         """(x, y, level) of the marks still shown at ``now``; level 0 is the
         freshest, FADE_LEVELS - 1 the faintest."""

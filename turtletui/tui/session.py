@@ -182,45 +182,78 @@ class LiveSession:
         """Log lines per node since the start."""
         self._rate_sample: tuple[float, Counter[str]] | None = None
         self._rates: dict[str, float] = {}
-        self.world_spec = world
-        """The world the simulation runs in (obstacles, LiDAR); None: turtlesim's empty arena."""
-        built = None if world is None else world.build(seed)
-        turtlesim = turtlesim or TurtlesimArgs()
-        self.sim = Simulation(
-            world=built,
-            realtime=True,
-            paced=False,
-            log_sinks=[turtlesim.log_filter(self._on_log)],
-            turtlesim_name=turtlesim.name,
-            distro=distro,
-        )
-        turtlesim.apply(self.sim)
-        self.teleop = Teleop(self.sim, lock=self.lock)
+        self._seed = seed
+        self._turtlesim = turtlesim or TurtlesimArgs()
+        self._distro = distro
         self.hits = HitMarks()
         """Where turtles ran into walls and obstacles lately (the arena marks them)."""
-        self.sim.turtlesim.event_sinks.append(lambda event: self.hits.record(event, self.sim.world.time))
+        self._build(world)
         self.paused = False
         self.speed = 1.0
         self._ros_args = list(ros_args)
         if self._ros_args and self._ros_args[0] != "--ros-args":
             self._ros_args.insert(0, "--ros-args")
-        self._seed = seed
         self._limits = limits or APP_LIMITS
-        self._target_ns = 0
         self._last_wall: float | None = None
-        self._outputs: list[Any] = []
-        """The recording and the Foxglove view of this session (``--record``, ``--foxglove``)."""
+        self._outputs: dict[str, Any] = {}
+        """The recording and the Foxglove view of this session (``--record``,
+        ``--foxglove``), by what they are, for messages."""
         self._open_outputs(record, foxglove)
         self.ros: RosBridge | None = None
         """The bridge onto the real ROS 2 graph (``--ros``), else None."""
         if ros is not None:
             from turtletui.bridge.run import attach
 
-            self.ros = attach(self.sim, ros, earlier_logs=list(self.logs), log_filter=turtlesim.log_filter)
+            self.ros = attach(self.sim, ros, earlier_logs=list(self.logs), log_filter=self._turtlesim.log_filter)
         self.slots = [ControllerSlot(spec) for spec in controllers]
         self._started = False
         if start:
             self.start_controllers()
+
+    def _build(self, world: WorldSpec | None) -> None:
+        """A new simulation in ``world``, at t = 0, with turtlesim's arguments and teleop."""
+        self.world_spec = world
+        """The world the simulation runs in (obstacles, LiDAR); None: turtlesim's empty arena."""
+        self.sim = Simulation(
+            world=None if world is None else world.build(self._seed),
+            realtime=True,
+            paced=False,
+            log_sinks=[self._turtlesim.log_filter(self._on_log)],
+            turtlesim_name=self._turtlesim.name,
+            distro=self._distro,
+        )
+        self._turtlesim.apply(self.sim)
+        self.teleop = Teleop(self.sim, lock=self.lock)
+        self.sim.turtlesim.event_sinks.append(lambda event: self.hits.record(event, self.sim.world.time))
+        self._target_ns = 0
+
+    def world_fixed_by(self) -> str | None:
+        """What keeps this session in its world (a recording, the Foxglove
+        view: each follows one simulation from its start; the real ROS 2
+        graph of ``--ros``), or None."""
+        fixed = [*self._outputs, *(["the ROS 2 graph (--ros)"] if self.ros is not None else [])]
+        return " and ".join(fixed) or None
+
+    @_locked
+    def change_world(self, world: WorldSpec | None) -> None:
+        """Start the simulation again in ``world`` (None: turtlesim's empty
+        arena): a new simulation at t = 0 with that world's turtles and no
+        drawing, the controllers restarted in it (those stopped with ``s``
+        stay stopped). Callers stop what they run on the old graph (ros2
+        commands) and take the new ``sim``. ValueError while
+        ``world_fixed_by()`` says what keeps the world."""
+        fixed = self.world_fixed_by()
+        if fixed is not None:
+            raise ValueError(f"{fixed} keeps this session in its world")
+        for slot in self.slots:
+            self._stop(slot)
+        self.hits.clear()
+        self._build(world)
+        self._log(INFO, f"the simulation starts again in the world {world.name if world else 'empty'}")
+        if self._started:
+            for slot in self.slots:
+                if not slot.held:
+                    self._start(slot)
 
     @_locked
     def start_controllers(self) -> None:
@@ -344,26 +377,27 @@ class LiveSession:
             self._stop(slot)
         if self.ros is not None:
             self.ros.close()
-        for output in self._outputs:
+        for output in self._outputs.values():
             try:
                 output.close()
             except OSError as err:
                 self._log(ERROR, str(err))
-        self._outputs = []
+        self._outputs = {}
 
     def _open_outputs(self, record: str | None, foxglove: str | None) -> None:
         if record is not None:
             from turtletui.runtime.recorder import open_recorder
 
             try:
-                self._outputs.append(open_recorder(self.sim, record, earlier_logs=list(self.logs)))
+                recorder = open_recorder(self.sim, record, earlier_logs=list(self.logs))
+                self._outputs[f"the recording to {record} (--record)"] = recorder
             except OSError as err:
                 self._log(ERROR, f"not recording: {err}")
         if foxglove is not None:
             from turtletui.recording.foxglove import FoxgloveBridge
 
             try:
-                self._outputs.append(FoxgloveBridge(self.sim, foxglove))
+                self._outputs["the Foxglove view (--foxglove)"] = FoxgloveBridge(self.sim, foxglove)
             except (OSError, ValueError) as err:
                 self._log(ERROR, f"no Foxglove view: {err}")
 

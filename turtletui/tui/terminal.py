@@ -89,6 +89,12 @@ def probe_graphics() -> str | None:
     return found
 
 
+def served(env: Mapping[str, str]) -> bool:
+    """Whether the app draws through a Textual driver of its own (textual-serve's
+    web driver: a browser's xterm.js), not in the terminal TERM names."""
+    return bool(env.get("TEXTUAL_DRIVER"))
+
+
 def choose_drawing(
     option: str = "auto",
     *,
@@ -100,7 +106,9 @@ def choose_drawing(
     ``graphics`` the picture if the terminal answers (else the best text
     mode); ``auto`` the picture where the environment names a graphics
     terminal that answers, braille where the terminal draws braille itself,
-    half blocks elsewhere. ``--ascii`` is always text."""
+    half blocks elsewhere. ``--ascii`` is always text. In a browser
+    (``served``) ``auto`` and ``graphics`` are half blocks, which xterm.js
+    draws itself; braille there depends on the browser's fonts."""
     if option not in PIXEL_CHOICES:
         raise TerminalError(f"expected one of {', '.join(PIXEL_CHOICES)}, got {option!r}")
     env = os.environ if env is None else env
@@ -108,6 +116,8 @@ def choose_drawing(
         return Drawing("half", None)
     if option in ("half", "braille"):
         return Drawing(option, None)
+    if served(env):
+        return Drawing("half", None)  # TERM is the server's terminal, not the browser's
     pixels = "braille" if draws_braille(env) else "half"
     wanted = option == "graphics" or may_have_graphics(env)
     return Drawing(pixels, probe() if wanted and not multiplexed(env) else None)

@@ -34,9 +34,10 @@ CONTEXT_KEYS = (
 CONSOLE_COMMANDS = (
     ("ros2 ... -h", "the help of any ros2 command, as ros2 prints it"),
     ("ros2 topic pub ... &", "start a repeating publisher in the background"),
-    ("jobs", "list the publishers running in the background"),
-    ("kill %N  /  kill all", "stop background publisher N, or every one"),
-    ("Ctrl+C", "stop the command running in the foreground (echo, hz, pub, send_goal)"),
+    ("ros2 bag record|info|play", "record topics into a bag folder (Ctrl+C writes it), describe it, play it"),
+    ("jobs", "list the publishers and recordings running in the background"),
+    ("kill %N  /  kill all", "stop background job N, or every one"),
+    ("Ctrl+C", "stop the command running in the foreground (echo, hz, pub, send_goal, bag)"),
 )
 
 

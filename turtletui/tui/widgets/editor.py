@@ -121,9 +121,9 @@ class EditorPanel(Vertical):
     def on_text_area_changed(self, event: TextArea.Changed) -> None:
         dirty = event.text_area.text != self.source.saved_text
         if dirty != self._dirty:
-            self._dirty = dirty
-            if dirty:
-                self._status(f"{self.source.path.name} (modified)   ctrl+s saves and reloads the node")
+            self._dirty = dirty  # undone back to the saved text: no longer modified
+            modified = " (modified)" if dirty else ""
+            self._status(f"{self.source.path.name}{modified}   ctrl+s saves and reloads the node")
 
     def action_save(self) -> None:
         """Write the file; the app's hot reload picks it up within half a second."""

@@ -34,6 +34,7 @@ APP_KEYS = (
     KeyHint("1-5", "Panels", "panel('log')", 3),
     KeyHint(":", "ros2", "command_line", 1),
     KeyHint("k", "Check", "check_lesson", 1),
+    KeyHint("E", "Editor", "editor", 3),
     KeyHint("l", "Lessons", "lessons", 4),
     KeyHint("s", "Stop node", "toggle_controllers", 5),
     KeyHint("q", "Quit", "quit", 0),
@@ -48,6 +49,15 @@ COMMAND_LINE_KEYS = (
     KeyHint("F1", "Help", "help", 1),
 )
 """The keys while the ros2 command line has the focus."""
+
+EDITOR_KEYS = (
+    KeyHint("^S", "Save", "", 0),
+    KeyHint("^C", "Copy", "", 2),
+    KeyHint("^Z", "Undo", "", 3),
+    KeyHint("Esc", "Arena", "focus_arena", 0),
+    KeyHint("F1", "Help", "help", 1),
+)
+"""The keys while the editor has the focus (the others type into it)."""
 
 
 def fit_keys(keys: Sequence[KeyHint], width: int) -> list[KeyHint]:

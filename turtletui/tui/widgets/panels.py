@@ -105,7 +105,7 @@ class TopicsPanel(Vertical):
 
     def compose(self) -> ComposeResult:
         yield DataTable(id="topics-table", cursor_type="row", zebra_stripes=True)
-        yield Static("Select a topic and press Enter to echo it.", id="topics-hint")
+        yield Static("Tab to the table, then Enter on a topic echoes it live (ctrl+c stops it).", id="topics-hint")
         yield TextLog(400, id="topics-echo")
 
     def on_mount(self) -> None:
