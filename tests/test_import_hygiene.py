@@ -100,7 +100,7 @@ def test_headless_sim_never_imports_textual():
         import turtletui.cli
 
         sys.argv = ["turtletui", "sim", "--headless", "--duration", "0.1", "--ros-args", "-p", "holonomic:=true"]
-        with contextlib.redirect_stdout(io.StringIO()) as out:
+        with contextlib.redirect_stderr(io.StringIO()) as out:
             try:
                 turtletui.cli.main()
             except SystemExit as exc:

@@ -326,7 +326,7 @@ def test_a_run_whose_ros_side_dies_fails_with_one_line(ros_python: str, ros_doma
             run.kill()
     assert run.returncode == 1
     assert "the ROS 2 side (the bridge's twin) ended" in err
-    assert "ROS 2 bridge: the ROS 2 side ended" in out
+    assert "ROS 2 bridge: the ROS 2 side ended" in err
 
 
 def test_ros2_action_send_goal_in_the_app_reaches_another_processes_server(running: Running, ros_python: str) -> None:
@@ -405,12 +405,12 @@ def test_sim_ros_headless_is_turtlesim_for_the_unchanged_course_controller(ros_p
     assert sim.returncode == 0, err
     assert done.returncode == 0, done.stderr[-3000:]
     report = json.loads(done.stdout.strip().splitlines()[-1])
-    assert "turtlesim" in report["nodes"] and "turtle_controller" in report["nodes"], (report, out[-2000:])
+    assert "turtlesim" in report["nodes"] and "turtle_controller" in report["nodes"], (report, err[-2000:])
     assert 50.0 < report["pose_rate"] < 75.0, report
-    assert report["turtle1_travel"] > 3.0, (report, out[-2000:])  # driven: about 3 s at up to 5 m/s while the probe measured
+    assert report["turtle1_travel"] > 3.0, (report, err[-2000:])  # driven: about 3 s at up to 5 m/s while the probe measured
     assert report["spawned"] == "turtle2"
     assert report["get"][0] == 10  # the probe set background_r; background_g came from --ros-args
-    lines = out.splitlines()
+    lines = err.splitlines()  # as turtlesim_node's, the log is on stderr
     assert lines[0].endswith("[turtlesim]: Starting turtlesim with node name /turtlesim")
     assert any("Spawning turtle [turtle2] at x=[2.000000], y=[3.000000], theta=[0.500000]" in line for line in lines)
     assert not any("hit the wall" in line for line in lines), [line for line in lines if "wall" in line]

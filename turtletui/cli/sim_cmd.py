@@ -111,8 +111,9 @@ def sim(
     from turtletui.runtime.simulation import Simulation
 
     def print_log(record) -> None:
-        sys.stdout.write(record.format() + "\n")
-        sys.stdout.flush()  # a live log: a pipe must not hold lines back
+        # as turtlesim_node: rcutils writes log lines to stderr
+        sys.stderr.write(record.format() + "\n")
+        sys.stderr.flush()  # a live log: a pipe must not hold lines back
 
     limit_ns = round(duration * NS_PER_S) if duration is not None else 2**62
     started: list = []  # turtlesim's start lines: shown once a recording is open, and on /rosout with --ros
