@@ -14,10 +14,11 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from turtletui.compat.distro import distro_of_imports
 from turtletui.compat.ros_args import RosArgsError, parse_ros_args
 from turtletui.errors import TurtletuiError, UsageError
 from turtletui.graph.core import NS_PER_S
-from turtletui.graph.logs import LogRecord
+from turtletui.graph.logs import INFO, LogRecord
 from turtletui.runtime.loader import ControllerError, ControllerSpec, check_source
 from turtletui.runtime.outputs import run_outputs
 from turtletui.runtime.report import CrashReport
@@ -119,7 +120,8 @@ def run(
     ``foxglove`` (``HOST:PORT``) serves the run live to Foxglove, in real time.
     ``distro`` is the ROS 2 distribution controllers run as (``"jazzy"``:
     ``turtlesim.msg``; ``"kilted"``, ``"lyrical"``: ``turtlesim_msgs.msg``);
-    None: ``$TURTLETUI_DISTRO`` or the newest LTS.
+    None: ``$TURTLETUI_DISTRO``, else Jazzy for files that import
+    ``turtlesim`` (logged as turtletui says why), else the newest LTS.
     """
     if not (duration > 0 and duration < 1e7):
         raise UsageError(f"duration must be a positive number of seconds, got {duration}")
@@ -138,9 +140,16 @@ def run(
 
         parse_address(foxglove)  # a bad address is a ValueError before anything starts
         realtime = True  # a live view of a run that ends in a blink shows nothing
+    distro_note = None
+    if distro is None:
+        chosen = distro_of_imports(spec.path for spec in specs if spec.path is not None)
+        if chosen is not None:
+            distro, distro_note = chosen
     logs: list[LogRecord] = []
     sinks = [logs.append] if on_log is None else [logs.append, on_log]
     sim = Simulation(world=world, realtime=realtime, log_sinks=sinks, distro=distro)
+    if distro_note is not None:
+        sim.graph.log("turtletui", INFO, distro_note)
     if setup is not None:
         setup(sim)
     calls: list[tuple[float, str, Any, Any]] = []

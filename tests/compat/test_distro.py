@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 from turtletui.api import run
-from turtletui.compat.distro import DISTROS, NEWEST_LTS, resolve_distro
+from turtletui.compat.distro import DISTROS, NEWEST_LTS, distro_of_imports, resolve_distro
 from turtletui.lessons.loader import LessonError, load_lesson
 
 HOSTS = [True, False]  # sandboxed, in-process
@@ -102,3 +102,41 @@ def test_the_command_line_option(tmp_path):
     assert bad.returncode == 2
     assert bad.stderr.strip() == (
         "turtletui: error: --distro: unknown ROS 2 distro 'dashing': use one of humble, jazzy, kilted, lyrical")
+
+
+def test_without_a_choice_files_that_import_turtlesim_run_as_jazzy_and_are_told_why(tmp_path, monkeypatch):
+    monkeypatch.delenv("TURTLETUI_DISTRO", raising=False)
+    course = controller(tmp_path, "turtlesim")
+    newer = controller(tmp_path, "turtlesim_msgs")
+    distro, note = distro_of_imports([course])
+    assert distro == "jazzy"
+    assert note.startswith("uses_turtlesim.py imports turtlesim.msg: running as ROS 2 Jazzy")
+    assert distro_of_imports([newer]) is None and distro_of_imports([course, newer]) is None
+    for sandbox in HOSTS:
+        result = run([course], duration=0.5, sandbox=sandbox)
+        assert result.ok, result.crashes
+        assert ("turtletui", note) in [(r.node, r.msg) for r in result.logs]
+    # an explicit choice (or the environment) is never second-guessed
+    assert not run([course], duration=0.5, distro="kilted").ok
+    monkeypatch.setenv("TURTLETUI_DISTRO", "lyrical")
+    assert distro_of_imports([course]) is None and not run([course], duration=0.5).ok
+
+
+def test_headless_runs_take_the_lessons_distro_and_refuse_a_bad_lesson_or_pixels(tmp_path, monkeypatch):
+    monkeypatch.delenv("TURTLETUI_DISTRO", raising=False)
+    path = controller(tmp_path, "turtlesim")
+
+    def cli(*args: str) -> subprocess.CompletedProcess[str]:
+        return subprocess.run([sys.executable, "-m", "turtletui", "run", str(path), "--headless", "-d", "0.5", *args],
+                              cwd=tmp_path, capture_output=True, text=True, timeout=120, stdin=subprocess.DEVNULL)
+
+    lesson = cli("--lesson", "part6-closed-loop")
+    assert lesson.returncode == 0, lesson.stderr
+    assert "Pose and Spawn from turtlesim" in lesson.stderr and "running as ROS 2 Jazzy" not in lesson.stderr
+    for args, message in [
+        (["--lesson", "nosuch"], "turtletui: error: --lesson: no lesson 'nosuch'"),
+        (["--pixels", "nonsense"], "turtletui: error: --pixels: expected one of auto, half, braille, graphics"),
+    ]:
+        bad = cli(*args)
+        assert bad.returncode == 2 and bad.stderr.startswith(message), bad.stderr
+        assert len(bad.stderr.strip().splitlines()) == 1

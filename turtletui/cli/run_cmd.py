@@ -1,7 +1,8 @@
-"""``turtletui run``: run controllers headless (the terminal app arrives with issue 3)."""
+"""``turtletui run``: run controllers in the terminal app, or headless."""
 
 from __future__ import annotations
 
+import os
 import re
 import sys
 from pathlib import Path
@@ -64,13 +65,14 @@ def run(
         "--distro",
         metavar="NAME",
         help="The ROS 2 your nodes run as: humble, jazzy (turtlesim.msg), kilted or lyrical"
-        " (turtlesim_msgs.msg). Default: $TURTLETUI_DISTRO, else the lesson's, else lyrical, the newest LTS.",
+        " (turtlesim_msgs.msg). Default: $TURTLETUI_DISTRO, else the lesson's, else jazzy for files that"
+        " import turtlesim.msg, else lyrical, the newest LTS.",
     ),
     world: str = typer.Option(
         None,
         "--world",
         help="World to run in: a registered name (see turtletui plugins) or a .toml world file."
-        " Default: the lesson's world in the app, else turtlesim's empty arena.",
+        " Default: the lesson's world, else turtlesim's empty arena.",
     ),
     ros: bool = typer.Option(
         False,
@@ -110,18 +112,13 @@ def run(
 
     plugins = plugins_of(plugin)
     specs = resolve_controllers(controllers or ["part6_wall_avoider"], plugins=plugins)
-    if not controllers:
-        # the course's Part 6 node, as the app runs it with its lesson: written for Jazzy
-        from turtletui.compat.distro import resolve_distro
-
-        try:
-            distro = resolve_distro(distro, "jazzy")
-        except ValueError as err:
-            fail(str(err))
     if not duration > 0:
         fail(f"--duration must be a positive number of seconds, got {duration}")
+    _check_pixels(pixels)
     _check_outputs(record, foxglove)
-    sim_world = None if world is None else _resolve_world(world, plugins).build(seed)
+    # no distro yet: turtletui.api.run lets the files' imports choose, and says so
+    _, distro, world_spec = _lesson_distro_world(lesson, plugins, distro, world)
+    sim_world = None if world_spec is None else world_spec.build(seed)
 
     def print_log(record) -> None:
         # As under ROS: a node's log lines go to stderr in rcutils' console
@@ -201,30 +198,20 @@ def _run_app(
 ) -> None:
     """The Textual app (imported only here: headless runs never load Textual)."""
     _check_outputs(record, foxglove)
-    from turtletui.lessons.loader import LessonError, find_lesson
     from turtletui.runtime.resolve import resolve_controllers
 
     if not controllers:
         controllers = ["part6_wall_avoider"]
         lesson = lesson or "part6-closed-loop"
-    lesson_path = None
-    if lesson is not None:
-        try:
-            found = find_lesson(lesson, plugins=plugins)
-        except LessonError as err:
-            fail(f"--lesson: {err}")
-        lesson_path = found.path
-    from turtletui.compat.distro import resolve_distro
-
-    try:
-        distro = resolve_distro(distro, found.distro if lesson is not None else None)
-    except ValueError as err:
-        fail(str(err))
-    what = "--world"
-    if lesson is not None and world is None and found.world != "empty":
-        world, what = found.world, f"lesson {found.id}: world"
-    world_spec = None if world is None else _resolve_world(world, plugins, what)
+    lesson_path, distro, world_spec = _lesson_distro_world(lesson, plugins, distro, world)
     specs = resolve_controllers(controllers, plugins=plugins)
+    distro_note = None
+    if distro is None:
+        from turtletui.compat.distro import distro_of_imports
+
+        chosen = distro_of_imports(spec.path for spec in specs if spec.path is not None)
+        if chosen is not None:
+            distro, distro_note = chosen
     connection = None
     if ros:
         from turtletui.cli.ros_run import connect_or_fail
@@ -245,8 +232,42 @@ def _run_app(
         record=record,
         foxglove=foxglove,
         distro=distro,
+        distro_note=distro_note,
         ros=connection,
     ).run()
+
+
+def _lesson_distro_world(lesson: str | None, plugins: Plugins, distro: str | None, world: str | None):
+    """The lesson file (``--lesson``: an id or a file), the distro (``--distro``,
+    else ``$TURTLETUI_DISTRO``, else the lesson's; None when none of them
+    says) and the world (``--world``, else the lesson's) of a run."""
+    from turtletui.compat.distro import ENV_VAR, resolve_distro
+    from turtletui.lessons.loader import LessonError, find_lesson
+
+    found = None
+    if lesson is not None:
+        try:
+            found = find_lesson(lesson, plugins=plugins)
+        except LessonError as err:
+            fail(f"--lesson: {err}")
+    if distro is not None or os.environ.get(ENV_VAR) or (found is not None and found.distro is not None):
+        try:
+            distro = resolve_distro(distro, None if found is None else found.distro)
+        except ValueError as err:
+            fail(str(err))
+    what = "--world"
+    if found is not None and world is None and found.world != "empty":
+        world, what = found.world, f"lesson {found.id}: world"
+    world_spec = None if world is None else _resolve_world(world, plugins, what)
+    return (None if found is None else found.path), distro, world_spec
+
+
+def _check_pixels(pixels: str) -> None:
+    """--pixels names a way of drawing, also where nothing is drawn (headless)."""
+    from turtletui.tui.terminal import PIXEL_CHOICES  # no Textual
+
+    if pixels not in PIXEL_CHOICES:
+        fail(f"--pixels: expected one of {', '.join(PIXEL_CHOICES)}, got {pixels!r}")
 
 
 def _drawing(pixels: str, ascii_only: bool):

@@ -9,10 +9,13 @@ fails as it would there, with one line saying why and what to do.
 
 from __future__ import annotations
 
+import ast
 import os
 import sys
+from collections.abc import Iterable
 from dataclasses import dataclass
 from importlib.abc import MetaPathFinder
+from pathlib import Path
 
 
 @dataclass(frozen=True)
@@ -70,6 +73,43 @@ def resolve_distro(name: str | None = None, fallback: str | None = None) -> str:
         except ValueError as err:
             raise ValueError(f"${ENV_VAR}: {err}") from None
     return check_distro(fallback) if fallback is not None else NEWEST_LTS
+
+
+def distro_of_imports(paths: Iterable[Path]) -> tuple[str, str] | None:
+    """The distro controller files need when nothing else chose one: files
+    that import ``turtlesim`` (the course's ``from turtlesim.msg import Pose``)
+    and none ``turtlesim_msgs`` run as Jazzy, the newest distro with that
+    package; returns it with a line saying so, or None (the default holds).
+    ``$TURTLETUI_DISTRO``, ``--distro`` and a lesson's distro come first."""
+    if os.environ.get(ENV_VAR, "").strip():
+        return None
+    importers = {"turtlesim": [], "turtlesim_msgs": []}
+    for path in paths:
+        try:
+            tree = ast.parse(Path(path).read_bytes())
+        except (OSError, SyntaxError, ValueError):
+            continue  # the run reports an unreadable file itself
+        for package in _imported_packages(tree) & set(importers):
+            importers[package].append(Path(path).name)
+    if not importers["turtlesim"] or importers["turtlesim_msgs"]:
+        return None
+    newest = max((d for d in DISTROS.values() if d.turtlesim_package == "turtlesim"), key=lambda d: d.year)
+    files = ", ".join(importers["turtlesim"])
+    return newest.name, (
+        f"{files} import{'s' if len(importers['turtlesim']) == 1 else ''} turtlesim.msg: running as ROS 2"
+        f" {newest.name.capitalize()}, the newest with that package (from Kilted on turtlesim's types are in"
+        f" turtlesim_msgs); --distro chooses another"
+    )
+
+
+def _imported_packages(tree: ast.AST) -> set[str]:
+    found = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            found.update(alias.name.partition(".")[0] for alias in node.names)
+        elif isinstance(node, ast.ImportFrom) and node.module and not node.level:
+            found.add(node.module.partition(".")[0])
+    return found
 
 
 def missing_package_message(package: str, distro: str) -> str:

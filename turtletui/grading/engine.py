@@ -343,7 +343,8 @@ def run_scenario(
             keep_calls=False,
             world=plan.worlds[world_name](run.seed),
             on_log=start_logs.append if record is not None else None,
-            distro=resolve_distro(None, plan.lesson.distro),
+            # a lesson without a distro: the files' imports choose (turtletui.api.run)
+            distro=None if plan.lesson.distro is None else resolve_distro(None, plan.lesson.distro),
         )
         if result.interrupted:
             raise KeyboardInterrupt

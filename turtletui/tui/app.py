@@ -153,10 +153,13 @@ class TurtleApp(App):
         turtlesim: TurtlesimArgs | None = None,
         distro: str | None = None,
         ros: RosConnection | None = None,
+        distro_note: str | None = None,
     ) -> None:
         super().__init__()
         self._distro = distro
         """The ROS 2 distro nodes run as (--distro); None: the default."""
+        self._distro_note = distro_note
+        """Why the nodes run as this distro when the files' imports chose it, for the log."""
         self._record = record
         """Where to record the session (--record), or None."""
         self._foxglove = foxglove
@@ -277,6 +280,8 @@ class TurtleApp(App):
             ros=self._ros,
         )
         self.sub_title = f"ROS 2 {self.session.sim.distro.capitalize()}"
+        if self._distro_note is not None:
+            self.session.sim.graph.log("turtletui", INFO, self._distro_note)
         if problem is not None:
             self.session.sim.graph.log("turtletui", ERROR, problem)
         if self._replay is not None:
