@@ -395,3 +395,16 @@ def test_a_new_report_gets_the_usual_file_mode(tmp_path: Path):
     path = tmp_path / "grades.csv"
     write_report(batch(), "csv", path)
     assert path.stat().st_mode & 0o777 == 0o666 & ~reports._umask()
+
+
+def test_a_check_that_was_not_judged_is_not_shown_as_failed():
+    tests = [
+        make_test("distance", "centre", 0.0, 0.5, output="0 m (needs >= 5 m)"),
+        make_test("no_crash", "centre", 0.0, 0.5,
+                  output="not judged: no_crash counts only in runs where distance passes; here distance did not"),
+    ]
+    idle = SubmissionResult(submission="subs/idle.py", student="idle", score=0.0, max_score=1.0, tests=tests)
+    text = reports.render_table(single(idle), width=120)
+    assert "1 of 2 checks failed, 1 not judged" in text
+    assert "✗ distance [centre]" in text and "- no_crash: not judged [centre]" in text
+    assert "✗ no_crash" not in text

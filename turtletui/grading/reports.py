@@ -504,19 +504,25 @@ def _table(report: GradeReport) -> Any:
             )
             continue
         checks = _checks_of(sub.tests)
-        failed = _checks_of(test for test in sub.tests if not test.passed)
-        summary = (
-            Text("all checks passed", style="green")
-            if not failed
-            else Text(f"{len(failed)} of {plural(len(checks), 'check')} failed", style="yellow")
-        )
+        failed = _checks_of(test for test in sub.tests if not test.passed and test.judged)
+        unjudged = [c for c in _checks_of(t for t in sub.tests if not t.passed) if c not in failed]
+        if not failed and not unjudged:
+            summary = Text("all checks passed", style="green")
+        else:
+            words = [f"{len(failed)} of {plural(len(checks), 'check')} failed"]
+            if unjudged:
+                words.append(f"{len(unjudged)} not judged")
+            summary = Text(", ".join(words), style="yellow")
         if sub.graded:
             summary.append(f" ({_printable(sub.graded)})", style="dim")
         table.add_row(Text(_printable(sub.student), style="bold"), score, summary)
         for check, tests in _failed_by_check(sub.tests).items():
             first = tests[0]
-            where = ", ".join(t.scenario for t in tests)
-            feedback = Text(f"✗ {_printable(check)} [{_printable(where)}]", style="red")
+            where = "; ".join(t.scenario for t in tests)
+            if any(t.judged for t in tests):
+                feedback = Text(f"✗ {_printable(check)} [{_printable(where)}]", style="red")
+            else:  # it earned nothing, but it did not fail: the output says what it waits for
+                feedback = Text(f"- {_printable(check)}: not judged [{_printable(where)}]", style="yellow")
             if first.output:
                 # what was measured in the first of them, and the lesson's hint once
                 feedback.append(f"\n{_printable(first.output)}", style="default")

@@ -15,6 +15,10 @@ PASSED = "passed"
 FAILED = "failed"
 
 
+NOT_JUDGED = "not judged:"
+"""How the output of a check that was not judged begins."""
+
+
 @dataclass(frozen=True)
 class TestResult:
     """One check judged on one scenario run."""
@@ -37,6 +41,12 @@ class TestResult:
     @property
     def passed(self) -> bool:
         return self.status == PASSED
+
+    @property
+    def judged(self) -> bool:
+        """False for a check that was not judged in its run (it earns nothing;
+        its output says why: ``not judged: ...``)."""
+        return not self.output.startswith(NOT_JUDGED)
 
 
 @dataclass(frozen=True)

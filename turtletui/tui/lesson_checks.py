@@ -22,6 +22,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from turtletui.grading.results import NOT_JUDGED
 from turtletui.messages import plural
 
 RUNNING = "## Your checks\n\n*Running the lesson's scenarios...*\n"
@@ -217,8 +218,11 @@ def describe_report(report: dict) -> str:
         if not failed:
             lines.append(f"- ✓ `{check}`: passed in {'its only run' if len(group) == 1 else f'all {len(group)} runs'}")
             continue
-        where = ", ".join(t["scenario"] for t in failed)
-        lines.append(f"- ✗ `{check}`: failed in {len(failed)} of {plural(len(group), 'run')} ({where})")
+        where = "; ".join(t["scenario"] for t in failed)
+        if all(str(t.get("output", "")).startswith(NOT_JUDGED) for t in failed):
+            lines.append(f"- – `{check}`: not judged in {len(failed)} of {plural(len(group), 'run')} ({where})")
+        else:
+            lines.append(f"- ✗ `{check}`: failed in {len(failed)} of {plural(len(group), 'run')} ({where})")
         # each line its own quoted paragraph: Markdown would run them together
         lines.append("\n  >\n".join(f"  > {line}" for line in (failed[0].get("output") or "").splitlines()))
     if submission.get("recordings"):
