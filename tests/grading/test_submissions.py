@@ -88,3 +88,21 @@ def test_one_upload_as_a_platform_hands_it_over(tmp_path: Path):
     (plain / "node.py").write_text(HONEST)
     (sub,) = find_submissions([plain], single=True, executable=EXECUTABLE)  # a package's name; a file upload
     assert sub.controller == plain / "node.py"
+
+
+def test_a_folder_of_several_complete_nodes_is_a_class_of_one_file_submissions(tmp_path: Path):
+    klass = tmp_path / "class"
+    klass.mkdir()
+    for name in ("ann", "ben", "cat"):
+        (klass / f"{name}.py").write_text(HONEST)
+    (klass / "notes.txt").write_text("marks due friday\n")
+    found = find_submissions([klass])
+    assert [(s.student, s.controller) for s in found] == [(n, klass / f"{n}.py") for n in ("ann", "ben", "cat")]
+    # one student's folder: one node and its helper module, or a node named by --executable
+    one = tmp_path / "dan"
+    one.mkdir()
+    (one / "turtle_controller.py").write_text(HONEST)
+    (one / "helpers.py").write_text("SPEED = 1.0\n")
+    assert [s.controller for s in find_submissions([one])] == [one / "turtle_controller.py"]
+    assert [s.student for s in find_submissions([klass], executable="ben")] == ["class"]
+    assert [s.student for s in find_submissions([klass], default_executable="ann")] == ["class"]

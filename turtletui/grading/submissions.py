@@ -428,6 +428,21 @@ def _is_one_student(folder: Path) -> bool:
     return (folder / "src").is_dir() and bool(_package_roots(folder / "src"))
 
 
+def _is_class_of_files(folder: Path, choice: _Choice) -> bool:
+    """A folder whose top level holds several complete nodes (``.py`` files
+    with a ``main()`` or a Node class), no package and no workspace, and where
+    no executable was named, is a class of one-file submissions: each file is
+    a student (the lesson's starter, copied in unchanged, is nobody's)."""
+    if choice.executable is not None or any((folder / name).exists() for name in _PACKAGE_FILES):
+        return False
+    if (folder / "src").is_dir() and _package_roots(folder / "src"):
+        return False
+    nodes = [p for p in folder.iterdir() if p.is_file() and p.suffix == ".py" and not ignored(p) and _has_entry(p)]
+    if choice.default_executable is not None and any(p.stem == choice.default_executable for p in nodes):
+        return False  # one student's folder with the lesson's node (turtle_controller.py) among others
+    return len(nodes) >= 2
+
+
 def find_submissions(
     paths: list[Path],
     *,
@@ -448,7 +463,7 @@ def find_submissions(
     for path in paths:
         if not path.exists():
             raise SubmissionError(f"{path}: no such file or folder")
-        if path.is_file() or single or _is_one_student(path):
+        if path.is_file() or single or (_is_one_student(path) and not _is_class_of_files(path, choice)):
             found.append(_single(path, choice) if single else _student(path, choice))
             continue
         students = sorted(p for p in path.iterdir() if p.is_dir() and not ignored(p))
