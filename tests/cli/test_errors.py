@@ -130,9 +130,18 @@ def test_ctrl_c_is_not_an_internal_error(monkeypatch: pytest.MonkeyPatch):
     assert result.exit_code != 3 and "internal error" not in result.stderr
 
 
-def test_usage_errors_and_help_stay_clicks(_cache: Path):
+def test_usage_errors_are_one_line_naming_the_option_and_the_value(_cache: Path):
     bad = CliRunner().invoke(app, ["autograder", "github", "--bogus"])
     assert bad.exit_code == 2 and "No such option: --bogus" in bad.stderr
+    assert bad.stderr.strip().splitlines() == [bad.stderr.strip()]
+    for args, line in [
+        (["run", "x.py", "--headless", "-d", "abc"], "--duration: input should be a valid number"),
+        (["sim", "--headless", "--seed=1.5"], "--seed: input should be a valid integer"),
+    ]:
+        wrong = CliRunner().invoke(app, args)
+        value = "'abc'" if "abc" in args else "'1.5'"
+        assert wrong.exit_code == 2 and wrong.stderr.startswith(f"turtletui: error: {line}"), wrong.stderr
+        assert f"(got {value})" in wrong.stderr and len(wrong.stderr.strip().splitlines()) == 1
     helped = CliRunner().invoke(app, ["autograder", "--help"])
     assert helped.exit_code == 0 and "gradescope" in helped.stdout
     assert "internal error" not in bad.stderr + helped.stderr

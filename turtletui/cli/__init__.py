@@ -37,16 +37,39 @@ _CLICK_ENDS = (
 """How a command may end that Click handles itself: --help and exits, usage
 errors, Ctrl-C, a closed stdout (``| head``)."""
 
+_USAGE_ERROR = next(c for c in typer.BadParameter.__mro__ if c.__name__ == "UsageError")
+
+
+def usage_line(err: Any, argv: list[str]) -> str:
+    """A usage error as one line naming the option and the value given
+    (Click prints three lines, and for a bad number not the value)."""
+    message = " ".join(err.format_message().split())
+    where = f" (see {err.ctx.command_path} --help)" if getattr(err, "ctx", None) is not None else ""
+    opts = list(getattr(getattr(err, "param", None), "opts", None) or [])
+    if not message.startswith("Invalid value") or not opts or not opts[0].startswith("-"):
+        return message + where
+    value = None
+    for i, word in enumerate(argv):
+        name, eq, given = word.partition("=")
+        if name in opts:
+            value = given if eq else (argv[i + 1] if i + 1 < len(argv) else None)
+    why = message.split(": ", 1)[-1].rstrip(".")
+    got = "" if value is None else f" (got {value!r})"
+    return f"{max(opts, key=len)}: {why[:1].lower()}{why[1:]}{got}{where}"
+
 
 class _Commands(TyperGroup):
     """turtletui's commands: a TurtletuiError is a one-line error with exit
     status 2, anything else a bug reported as one (see cli.errors)."""
 
     def invoke(self, ctx: Any) -> Any:
+        words = list(ctx.args)  # the subcommand's own words (the group takes them off as it runs)
         try:
             return super().invoke(ctx)
         except TurtletuiError as err:
             fail(" ".join(str(err).split()) or type(err).__name__)
+        except _USAGE_ERROR as err:
+            fail(usage_line(err, words))
         except _CLICK_ENDS:
             raise
         except Exception as err:  # noqa: BLE001 - a bug in turtletui: one line, the details in a file

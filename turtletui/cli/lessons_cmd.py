@@ -131,6 +131,8 @@ def new(
     try:
         file.write_bytes(starter_for(found, file, lesson_arg))
     except OSError as err:
-        fail(f"cannot write {file}: {' '.join(str(err).split())}")
+        parent = file.parent
+        why = f"{parent} is not a folder" if not parent.is_dir() else (err.strerror or str(err)).lower()
+        fail(f"cannot write {file}: {why}")
     print(f"Wrote {file} (starter of lesson {found.id}). Run it: "
           f"turtletui run {shlex.quote(str(file))} --lesson {shlex.quote(lesson_arg)}")

@@ -112,7 +112,7 @@ def run(
 
     plugins = plugins_of(plugin)
     specs = resolve_controllers(controllers or ["part6_wall_avoider"], plugins=plugins)
-    if not duration > 0:
+    if not 0 < duration < 1e7:
         fail(f"--duration must be a positive number of seconds, got {duration}")
     _check_pixels(pixels)
     _check_outputs(record, foxglove)
