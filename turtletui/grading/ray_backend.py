@@ -31,7 +31,7 @@ import os
 import shutil
 import sys
 import tempfile
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Iterator
 from contextlib import ExitStack, contextmanager, redirect_stdout
 from dataclasses import dataclass, replace
 from pathlib import Path
@@ -44,6 +44,7 @@ from turtletui.grading.engine import GradingPlan, RunOutcome, failed_run
 from turtletui.grading.store import store_key
 from turtletui.grading.submissions import Submission
 from turtletui.messages import one_line
+from turtletui.plugins.manager import Plugins, extra_paths
 from turtletui.runtime.sandbox import Limits
 
 RAY_EXTRA = "pip install 'turtletui[ray]'"
@@ -100,12 +101,13 @@ class RayBackend:
         self,
         address: str | None = None,
         *,
-        plugins: Sequence[str | Path] = (),
+        plugins: Plugins = (),
         same_user: bool = False,
         jobs: int = 0,
     ) -> None:
         self.address = address
-        self.plugins = [Path(p) for p in plugins]
+        self.plugins = [Path(p) for p in extra_paths(plugins)]
+        """The plugin files and folders each worker loads again."""
         self.same_user = same_user
         """Run student code as the worker's user even when it is root."""
         self.jobs = jobs
