@@ -40,19 +40,20 @@ def test_ctrl_c_stops_a_real_time_run_with_a_summary(tmp_path: Path, where: str)
     env = dict(os.environ, PYTHONPATH=str(Path(turtletui.__file__).resolve().parents[1]), PYTHONUNBUFFERED="1")
     proc = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
     try:
-        out = lines_of(proc.stdout)
+        log = lines_of(proc.stderr)  # the nodes' log, on stderr as under ROS
         seen: list[str] = []
         while not seen or READY not in seen[-1]:
             # however slow the start on a busy machine: wait for the controller to run
-            line = out.get(timeout=120)
-            assert line is not None, (seen, proc.stderr.read())
+            line = log.get(timeout=120)
+            assert line is not None, seen
             seen.append(line)
         proc.send_signal(signal.SIGINT)
         proc.wait(timeout=120)
-        err = proc.stderr.read()
-        rest = []
-        while (line := out.get(timeout=30)) is not None:
-            rest.append(line)
+        rest = proc.stdout.read().splitlines()
+        err = []
+        while (line := log.get(timeout=30)) is not None:
+            err.append(line)
+        err = "".join(err)
     finally:
         proc.kill()
         proc.wait()

@@ -380,8 +380,13 @@ def test_param_list_with_types_and_get_without(cli):
 
 
 def test_interface_list_and_packages_by_kind(cli):
-    assert ok(cli, "ros2 interface list -a").lines == ["Actions:", "    turtlesim/action/RotateAbsolute"]
-    assert ok(cli, "ros2 interface packages -a").lines == ["turtlesim"]
+    assert ok(cli, "ros2 interface list -a").lines == [
+        "Actions:",
+        "    example_interfaces/action/Fibonacci",
+        "    tf2_msgs/action/LookupTransform",
+        "    turtlesim/action/RotateAbsolute",
+    ]
+    assert ok(cli, "ros2 interface packages -a").lines == ["example_interfaces", "tf2_msgs", "turtlesim"]
     assert ok(cli, "ros2 interface package turtlesim -s").lines[0] == "turtlesim/srv/Kill"
 
 

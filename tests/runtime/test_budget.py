@@ -195,12 +195,12 @@ def test_output_over_the_budget_is_counted_and_one_line_says_how_much(tmp_path: 
     """)
     result = CliRunner().invoke(app, ["run", str(path), "--headless", "--duration", "1"])
     assert result.exit_code == 0, result.output
-    # 10,000 lines of 100 bytes, each shown with its log prefix (about 45 characters)
+    # 10,000 printed lines of 100 bytes on stdout; the node's log and turtletui's notices on stderr
     assert 900_000 < len(result.stdout) < 1_600_000
-    assert "printed" in result.stdout
-    [notice] = [line for line in result.stdout.splitlines() if "output over its budget" in line]
+    assert "printed" in result.stderr
+    [notice] = [line for line in result.stderr.splitlines() if "output over its budget" in line]
     assert "of 1.0 MB or 10,000 lines per run: the rest is dropped" in notice
-    [dropped] = [line for line in result.stdout.splitlines() if "of output dropped" in line]
+    [dropped] = [line for line in result.stderr.splitlines() if "of output dropped" in line]
     assert f"{path}: 19.0 MB of output dropped (190,001 lines over its budget" in dropped
 
 
