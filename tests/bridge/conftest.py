@@ -11,13 +11,9 @@ machine, so parallel runs and other people's ROS 2 never meet it.
 from __future__ import annotations
 
 import random
-import subprocess
-from pathlib import Path
 
 import pytest
 from support import real_ros
-
-HERE = Path(__file__).resolve().parent
 
 
 @pytest.fixture(scope="session")
@@ -37,9 +33,3 @@ def ros_domain(monkeypatch: pytest.MonkeyPatch) -> str:
     monkeypatch.setenv("ROS_AUTOMATIC_DISCOVERY_RANGE", "LOCALHOST")
     return domain
 
-
-def run_ros_script(ros_python: str, script: str, *args: str, timeout: float = 120.0) -> subprocess.CompletedProcess:
-    """Run one of this folder's scripts with the real rclpy (another ROS 2 process)."""
-    return subprocess.run(
-        [ros_python, str(HERE / script), *args], capture_output=True, text=True, timeout=timeout
-    )

@@ -17,7 +17,7 @@ import time
 from pathlib import Path
 
 import pytest
-from conftest import run_ros_script
+from support.real_ros import run_ros_script
 
 from turtletui.bridge.run import attach
 from turtletui.graph.introspection import snapshot

@@ -50,3 +50,14 @@ def ros_python() -> str:
 def run_real(args: list[str], *, cwd: Path, timeout: float = 120.0, env: dict | None = None) -> subprocess.CompletedProcess:
     """Run the real ROS 2's python with ``args`` (text output captured)."""
     return subprocess.run([ros_python(), *args], cwd=cwd, capture_output=True, text=True, timeout=timeout, env=env)
+
+
+BRIDGE_SCRIPTS = Path(__file__).resolve().parents[1] / "bridge"
+"""The ROS 2 programs the bridge tests run beside turtletui (ros_probe.py...)."""
+
+
+def run_ros_script(ros_python: str, script: str, *args: str, timeout: float = 120.0) -> subprocess.CompletedProcess:
+    """Run one of tests/bridge's scripts with the real rclpy (another ROS 2 process)."""
+    return subprocess.run(
+        [ros_python, str(BRIDGE_SCRIPTS / script), *args], capture_output=True, text=True, timeout=timeout
+    )
