@@ -207,9 +207,9 @@ def test_csv_has_one_row_per_student(klass: Path, lesson: Path):
     assert result.exit_code == 0, result.stderr
     rows = list(csv.reader(io.StringIO(result.stdout)))
     assert rows == [
-        ["student", "score", "max_score", "wall_hits", "no_crash", "graded"],
-        ["ann", "3", "3", "2", "1", "controller.py"],
-        ["ben", "1", "3", "0", "1", "controller.py"],
+        ["student", "score", "max_score", "wall_hits", "no_crash", "graded", "error"],
+        ["ann", "3", "3", "2", "1", "controller.py", ""],
+        ["ben", "1", "3", "0", "1", "controller.py", ""],
     ]
 
 

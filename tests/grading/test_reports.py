@@ -214,11 +214,12 @@ def test_junit_survives_control_characters_and_markup_in_log_lines():
 
 def test_csv_has_one_row_per_student_and_a_column_per_check():
     rows = list(csv.reader(io.StringIO(render_report(batch(), "csv"))))
-    assert rows[0] == ["student", "score", "max_score", "no_wall_hits", "keeps_moving", "graded"]
+    assert rows[0] == ["student", "score", "max_score", "no_wall_hits", "keeps_moving", "graded", "error"]
     assert len(rows) == 4
-    assert rows[1] == ["alice", "4", "6", "2", "2", ""]
-    assert rows[2] == ["bob", "0", "6", "0", "0", ""]
-    assert rows[3][1:] == ["1", "3", "0", "1", ""]
+    assert rows[1] == ["alice", "4", "6", "2", "2", "", ""]
+    assert rows[2][:6] == ["bob", "0", "6", "0", "0", ""]
+    assert "no controller found" in rows[2][6]  # a 0 not earned says why
+    assert rows[3][1:] == ["1", "3", "0", "1", "", ""]
 
 
 def test_csv_neutralises_formula_injection():

@@ -379,13 +379,15 @@ def _csv_number(value: float) -> str:
 
 
 def render_csv(report: GradeReport) -> str:
-    """A gradebook CSV: ``student,score,max_score,<check>...,graded``, one row per
-    student, each check column the points of that check summed over its
-    scenarios, and the file (and executable) graded."""
+    """A gradebook CSV: ``student,score,max_score,<check>...,graded,error``, one
+    row per student, each check column the points of that check summed over
+    its scenarios, the file (and executable) graded, and why a submission
+    could not be graded (empty when it was): a 0 for a syntax error or a
+    missing file is then told apart from a 0 earned."""
     checks = _check_names(report)
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\n")
-    writer.writerow(["student", "score", "max_score", *(_csv_cell(c) for c in checks), "graded"])
+    writer.writerow(["student", "score", "max_score", *(_csv_cell(c) for c in checks), "graded", "error"])
     for sub in report.submissions:
         per_check = dict.fromkeys(checks, 0.0)
         for test in sub.tests:
@@ -398,6 +400,7 @@ def render_csv(report: GradeReport) -> str:
                 _csv_number(_max_score(report, sub)),
                 *(_csv_number(per_check[c]) for c in checks),
                 _csv_cell(sub.graded),
+                _csv_cell(" ".join((sub.error or "").split())),
             ]
         )
     return out.getvalue()
