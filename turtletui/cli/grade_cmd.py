@@ -293,7 +293,8 @@ def _grade(
         sys.stderr.write(f"[{finished}/{total}] {result.student}: {status}\n")
 
     def slow(student: str, text: str) -> None:
-        sys.stderr.write(f"[{finished}/{total}] {student}: {text}\n")
+        # no count: the counter numbers submissions as they end, and this one has not
+        sys.stderr.write(f"{' ' * len(f'[{total}/{total}]')} {student}: {text}\n")
 
     cluster = nullcontext()
     if backend_name == "ray":
