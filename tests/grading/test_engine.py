@@ -371,3 +371,29 @@ def test_the_twin_run_is_run_only_where_a_check_that_needs_it_is_judged(tmp_path
     assert all(not test.passed for _, test in outcome.tests)
     engine.grade_run(plan, 0, [driver(tmp_path)])  # drives: the loop is judged against its twin
     assert starts[1:] == [None, plan.runs[0].twin_start]
+
+
+
+def test_a_run_killed_from_outside_is_run_again_and_one_that_kills_itself_is_not_forgiven(tmp_path):
+    plan = prepare(load_lesson(lesson(tmp_path, SCENARIOS + CHECKS)))
+    marks = tmp_path / "marks"
+    marks.mkdir()
+    # every first attempt of a run is killed (SIGKILL), as the OOM killer or a stray kill would
+    body = "\n        ".join([
+        "import os, signal",
+        "if not hasattr(self, 'seen'):",
+        "    self.seen = n = len(os.listdir(MARKS))",
+        "    open(os.path.join(MARKS, str(n)), 'w').close()",
+        "    if n % 2 == 0:",
+        "        os.kill(os.getpid(), signal.SIGKILL)",
+    ]).replace("MARKS", repr(str(marks)))
+    once = driver(tmp_path, body, name="killed_once.py")
+    killed_once = grade_controllers(plan, [once])
+    assert len(list(marks.iterdir())) == 2 * len(plan.runs)  # each run, killed, was run again
+    assert killed_once.score == grade_controllers(plan, [driver(tmp_path)]).score > 0
+    assert not any("SIGKILL" in t.output for t in killed_once.tests)
+    always = driver(tmp_path, "import os, signal; os.kill(os.getpid(), signal.SIGKILL)", name="suicide.py")
+    result = grade_controllers(plan, [always])
+    assert result.score == 0.0
+    crash = next(t for t in result.tests if t.check == "no_crash" and not t.hidden)
+    assert "SIGKILL" in crash.output

@@ -433,6 +433,14 @@ def grade_run(
     if path is not None:
         recordings.mkdir(parents=True, exist_ok=True)
     trace, recorder = run_scenario(plan, run, controllers, limits=limits, record=path)
+    if _killed_from_outside(trace):
+        # SIGKILL that none of the run's own limits sent (the machine's OOM
+        # killer, an operator, a busy machine's accident) is no verdict on the
+        # student: the deterministic run is run again, once. A controller that
+        # kills itself is killed again, the same way, and marked so.
+        if recorder is not None:
+            recorder.close(keep=False)
+        trace, recorder = run_scenario(plan, run, controllers, limits=limits, record=path)
     trace.crashes = [as_the_student_sees_it(crash, controllers) for crash in trace.crashes]
     broken = forbidden_call(plan, trace, hidden=run.hidden)
 
@@ -461,6 +469,10 @@ def grade_run(
         recorder.close(keep=failed)
     picture = picture_of_trace(trace, run.label) if failed and not run.hidden else None
     return RunOutcome(run_index, tests, str(path) if recorder is not None and failed else None, picture)
+
+
+def _killed_from_outside(trace: Trace) -> bool:
+    return any(crash.kind == "killed" and "(SIGKILL)" in crash.message for crash in trace.crashes)
 
 
 def _judge_run(
