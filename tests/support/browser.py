@@ -3,8 +3,9 @@ chromium driven by playwright, and the terminal's text read back by replaying
 what the page's xterm.js receives into a terminal emulator (pyte).
 
 Used by the browser tests and by bench/bench_serve.py. Playwright's own
-browser download is not used: chromium must be installed at CHROMIUM
-(``apt-get install -y chromium``; .ci/run does it).
+browser download is not used: Debian's chromium at CHROMIUM is, installed
+on first use where it can be (as root with apt-get: a fresh CI machine),
+else named in the failure (``apt-get install -y chromium``).
 """
 
 from __future__ import annotations
@@ -12,6 +13,7 @@ from __future__ import annotations
 import json
 import os
 import re
+import shutil
 import signal
 import socket
 import subprocess
@@ -45,11 +47,16 @@ PEN = (179, 184, 255)
 
 
 def require_chromium() -> Path:
-    """The chromium to drive; a clear error when it is missing (never a skip)."""
+    """The chromium to drive, installed first if missing and this is root with
+    apt-get; a clear error otherwise (never a skip)."""
+    if not CHROMIUM.exists() and os.geteuid() == 0 and shutil.which("apt-get"):
+        env = dict(os.environ, DEBIAN_FRONTEND="noninteractive")
+        for command in (["apt-get", "update", "-q"], ["apt-get", "install", "-y", "-q", "chromium"]):
+            subprocess.run(command, env=env, capture_output=True, timeout=1800)
     if not CHROMIUM.exists():
         raise RuntimeError(
             f"the browser tests need Debian's chromium at {CHROMIUM}: apt-get install -y chromium"
-            " (.ci/run installs it; playwright's own browser download is not used)"
+            " (playwright's own browser download is not used)"
         )
     return CHROMIUM
 
