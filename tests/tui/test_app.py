@@ -16,12 +16,16 @@ from turtletui.tui.app import TurtleApp
 
 
 @pilot_test
-async def test_the_default_app_runs_part6_and_shows_its_log() -> None:
+async def test_the_default_app_runs_part6_and_shows_its_log(monkeypatch) -> None:
+    monkeypatch.delenv("TURTLETUI_DISTRO")  # as a student's machine: no distro chosen
     app = TurtleApp(resolve_controllers(["part6_wall_avoider"]))
     async with app.run_test(size=SIZE) as pilot:
         await wait_for(pilot, lambda: app.session.t > 0.5)
         await wait_for(pilot, lambda: "Collision Avoidance Mode" in log_text(app))
         assert "[turtlesim] Starting turtlesim with node name /turtlesim" in log_text(app)
+        # the course's file imports turtlesim.msg: with no --distro and no lesson it runs as Jazzy, and says so
+        assert "turtle_controller.py imports turtlesim.msg: running as ROS 2 Jazzy" in " ".join(log_text(app).split())
+        assert app.sub_title == "ROS 2 Jazzy"
         assert app.session.slots[0].status == "running"
         assert app.session.sim.world.turtles["turtle1"].distance > 1.0
 

@@ -116,7 +116,7 @@ def run(
         fail(f"--duration must be a positive number of seconds, got {duration}")
     _check_pixels(pixels)
     _check_outputs(record, foxglove)
-    # no distro yet: turtletui.api.run lets the files' imports choose, and says so
+    # no distro yet: turtletui.api.run (the app: its session) lets the files' imports choose, and says so
     _, distro, world_spec = _lesson_distro_world(lesson, plugins, distro, world)
     sim_world = None if world_spec is None else world_spec.build(seed)
 
@@ -205,13 +205,6 @@ def _run_app(
         lesson = lesson or "part6-closed-loop"
     lesson_path, distro, world_spec = _lesson_distro_world(lesson, plugins, distro, world)
     specs = resolve_controllers(controllers, plugins=plugins)
-    distro_note = None
-    if distro is None:
-        from turtletui.compat.distro import distro_of_imports
-
-        chosen = distro_of_imports(spec.path for spec in specs if spec.path is not None)
-        if chosen is not None:
-            distro, distro_note = chosen
     connection = None
     if ros:
         from turtletui.cli.ros_run import connect_or_fail
@@ -232,7 +225,6 @@ def _run_app(
         record=record,
         foxglove=foxglove,
         distro=distro,
-        distro_note=distro_note,
         ros=connection,
     ).run()
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import gc
+import os
 import time
 from collections import deque
 from collections.abc import Iterable, Sequence
@@ -153,13 +154,10 @@ class TurtleApp(App):
         turtlesim: TurtlesimArgs | None = None,
         distro: str | None = None,
         ros: RosConnection | None = None,
-        distro_note: str | None = None,
     ) -> None:
         super().__init__()
         self._distro = distro
         """The ROS 2 distro nodes run as (--distro); None: the default."""
-        self._distro_note = distro_note
-        """Why the nodes run as this distro when the files' imports chose it, for the log."""
         self._record = record
         """Where to record the session (--record), or None."""
         self._foxglove = foxglove
@@ -263,7 +261,26 @@ class TurtleApp(App):
         except WorldError as err:
             return None, f"{err}: running in the empty arena"
 
+    def _default_distro(self) -> tuple[str | None, str | None]:
+        """The distro when none was given: the lesson's (after
+        ``$TURTLETUI_DISTRO``), else the one the files' imports need (with the
+        line that says so), else None (the newest LTS)."""
+        from turtletui.compat.distro import ENV_VAR, distro_of_imports, resolve_distro
+
+        if self._lesson is not None and not os.environ.get(ENV_VAR):
+            from turtletui.lessons.loader import LessonError, load_lesson
+
+            try:
+                lesson_distro = load_lesson(self._lesson).distro
+            except LessonError:
+                lesson_distro = None  # the lesson pane says what is wrong with it
+            if lesson_distro is not None:
+                return resolve_distro(None, lesson_distro), None
+        chosen = distro_of_imports(spec.path for spec in self._controllers if spec.path is not None)
+        return (None, None) if chosen is None else chosen
+
     def on_mount(self) -> None:
+        distro, distro_note = (self._distro, None) if self._distro is not None else self._default_distro()
         world, problem = (self._world, None) if self._world is not None else self._lesson_world()
         # The controllers start once the first frame is on the screen: a
         # sandbox takes a few hundred milliseconds to start.
@@ -276,12 +293,12 @@ class TurtleApp(App):
             record=self._record,
             foxglove=self._foxglove,
             turtlesim=self._turtlesim,
-            distro=self._distro,
+            distro=distro,
             ros=self._ros,
         )
         self.sub_title = f"ROS 2 {self.session.sim.distro.capitalize()}"
-        if self._distro_note is not None:
-            self.session.sim.graph.log("turtletui", INFO, self._distro_note)
+        if distro_note is not None:
+            self.session.sim.graph.log("turtletui", INFO, distro_note)
         if problem is not None:
             self.session.sim.graph.log("turtletui", ERROR, problem)
         if self._replay is not None:
