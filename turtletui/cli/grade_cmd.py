@@ -367,8 +367,14 @@ def checks(
     ),
 ) -> None:
     """List the checks a lesson can name, with their thresholds."""
+    import shutil
+    import textwrap
+
     from turtletui.grading.engine import available_checks
 
+    width = max(shutil.get_terminal_size().columns, 40)
     for name, check in sorted(available_checks(plugins_of(plugin)).items()):
         params = "?" if check.params is None else ", ".join(check.params) or "none"
-        print(f"{name}\n    {check.description or '(no description)'}\n    thresholds: {params}")
+        print(name)
+        for text in (check.description or "(no description)", f"thresholds: {params}"):
+            print(textwrap.fill(text, width, initial_indent="    ", subsequent_indent="    "))

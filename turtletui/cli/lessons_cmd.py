@@ -57,10 +57,16 @@ def lessons(
         print("No lessons found.")
         return
     id_width = max(len("ID"), *(len(lesson.id) for lesson in found))
+    import shutil
+    import textwrap
+
+    indent = " " * (id_width + 8)
+    width = max(shutil.get_terminal_size().columns, len(indent) + 20)
     print(f"{'ID':<{id_width}}  PART  TITLE")
     for lesson in found:
         part = "-" if lesson.part is None else str(lesson.part)
-        print(f"{lesson.id:<{id_width}}  {part:>4}  {lesson.title}")
+        head = f"{lesson.id:<{id_width}}  {part:>4}  "
+        print(textwrap.fill(lesson.title, width, initial_indent=head, subsequent_indent=indent))
 
 
 def _find(lesson_id: str, folder: list[Path] | None, plugin: list[Path] | None):
