@@ -66,12 +66,27 @@ def test_node_list_hides_the_cli_s_own_nodes(sim, cli):
     assert hidden_nodes(sim) == []
 
 
+PARAMETER_SERVICES = [
+    "describe_parameters: rcl_interfaces/srv/DescribeParameters",
+    "get_parameter_types: rcl_interfaces/srv/GetParameterTypes",
+    "get_parameters: rcl_interfaces/srv/GetParameters",
+    "get_type_description: type_description_interfaces/srv/GetTypeDescription",
+    "list_parameters: rcl_interfaces/srv/ListParameters",
+    "set_parameters: rcl_interfaces/srv/SetParameters",
+    "set_parameters_atomically: rcl_interfaces/srv/SetParametersAtomically",
+]
+"""What every node serves (Jazzy's turtlesim in the official 'Understanding nodes' tutorial)."""
+
+
 def test_node_info_turtlesim_as_ros2node_prints_it(cli):
     assert ok(cli, "ros2 node info /turtlesim").lines == [
         "/turtlesim",
         "  Subscribers:",
+        "    /parameter_events: rcl_interfaces/msg/ParameterEvent",
         "    /turtle1/cmd_vel: geometry_msgs/msg/Twist",
         "  Publishers:",
+        "    /parameter_events: rcl_interfaces/msg/ParameterEvent",
+        "    /rosout: rcl_interfaces/msg/Log",
         "    /turtle1/color_sensor: turtlesim/msg/Color",
         "    /turtle1/pose: turtlesim/msg/Pose",
         "  Service Servers:",
@@ -82,6 +97,7 @@ def test_node_info_turtlesim_as_ros2node_prints_it(cli):
         "    /turtle1/set_pen: turtlesim/srv/SetPen",
         "    /turtle1/teleport_absolute: turtlesim/srv/TeleportAbsolute",
         "    /turtle1/teleport_relative: turtlesim/srv/TeleportRelative",
+        *(f"    /turtlesim/{service}" for service in PARAMETER_SERVICES),
         "  Service Clients:",
         "",
         "  Action Servers:",
@@ -100,14 +116,36 @@ def test_node_info_shows_the_clients_of_a_running_command(cli):
 # -- ros2 topic -----------------------------------------------------------------
 
 def test_topic_list(cli):
+    # as the tutorials show it: every node also publishes /parameter_events and /rosout
     assert ok(cli, "ros2 topic list").lines == [
-        "/turtle1/cmd_vel", "/turtle1/color_sensor", "/turtle1/pose"]
+        "/parameter_events", "/rosout", "/turtle1/cmd_vel", "/turtle1/color_sensor", "/turtle1/pose"]
     assert ok(cli, "topic list -t").lines == [
+        "/parameter_events [rcl_interfaces/msg/ParameterEvent]",
+        "/rosout [rcl_interfaces/msg/Log]",
         "/turtle1/cmd_vel [geometry_msgs/msg/Twist]",
         "/turtle1/color_sensor [turtlesim/msg/Color]",
         "/turtle1/pose [turtlesim/msg/Pose]",
     ]
-    assert ok(cli, "topic list -c").lines == ["3"]
+    assert ok(cli, "topic list -c").lines == ["5"]
+    assert ok(cli, "ros2 topic info /rosout").lines == [
+        "Type: rcl_interfaces/msg/Log", "Publisher count: 1", "Subscription count: 0"]
+    assert ok(cli, "ros2 topic type /parameter_events").lines == ["rcl_interfaces/msg/ParameterEvent"]
+
+
+def test_topic_echo_rosout_prints_every_nodes_log_lines_as_log_messages(sim, cli):
+    echo = ok(cli, "ros2 topic echo /rosout")
+    sim.graph.log("talker", 20, "Publishing: hello")
+    assert echo.stream.poll() == [
+        "stamp:", "  sec: 1700000000", "  nanosec: 0", "level: 20", "name: talker",
+        "msg: 'Publishing: hello'", "file: ''", "function: ''", "line: 0", "---",
+    ]
+    once = ok(cli, "ros2 topic echo /rosout --field msg --once")
+    sim.graph.log("talker", 30, "careful")
+    assert once.stream.poll() == ["careful", "---"] and once.stream.done
+    assert "msg: careful" in echo.stream.poll()
+    echo.stream.close()
+    sim.graph.log("talker", 20, "after")
+    assert echo.stream.poll() == []
 
 
 def test_topic_info_counts_endpoints_including_a_running_echo(cli):
@@ -297,7 +335,11 @@ def test_topic_pub_warns_about_a_topic_nobody_listens_to(cli):
 def test_service_list_type_find_info(cli):
     assert ok(cli, "ros2 service list").lines == [
         "/clear", "/kill", "/reset", "/spawn", "/turtle1/set_pen",
-        "/turtle1/teleport_absolute", "/turtle1/teleport_relative"]
+        "/turtle1/teleport_absolute", "/turtle1/teleport_relative",
+        *(f"/turtlesim/{service.split(':')[0]}" for service in PARAMETER_SERVICES)]
+    assert ok(cli, "ros2 service type /turtlesim/get_parameters").lines == ["rcl_interfaces/srv/GetParameters"]
+    refused = cli.run("ros2 service call /turtlesim/list_parameters rcl_interfaces/srv/ListParameters")
+    assert refused.error and "use ros2 param list|get|set /turtlesim" in refused.lines[0]
     assert ok(cli, "ros2 service list -t").lines[3] == "/spawn [turtlesim/srv/Spawn]"
     assert ok(cli, "ros2 service type /spawn").lines == ["turtlesim/srv/Spawn"]
     assert ok(cli, "ros2 service find std_srvs/srv/Empty").lines == ["/clear", "/reset"]

@@ -38,7 +38,7 @@ def texts(lines: list[Line]) -> list[str]:
 def test_a_command_is_echoed_and_its_output_follows(term):
     out = term.run("ros2 topic list")
     assert out[0] == Line("$ ros2 topic list", "prompt")
-    assert texts(out[1:]) == ["/turtle1/cmd_vel", "/turtle1/color_sensor", "/turtle1/pose"]
+    assert texts(out[1:]) == ["/parameter_events", "/rosout", "/turtle1/cmd_vel", "/turtle1/color_sensor", "/turtle1/pose"]
     assert term.run("ros2 topik list")[-1].kind == "error"
     assert term.run("   ") == []
 

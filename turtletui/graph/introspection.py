@@ -7,7 +7,7 @@ to live endpoints.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from difflib import get_close_matches
 from typing import Any
 
@@ -189,3 +189,62 @@ def _dangling(node: str, verb: str, topic: str, other: str, live: set[str]) -> s
     close = _close(topic, live)
     hint = f" (did you mean {' or '.join(close)}?)" if close else ""
     return f"{node} {verb} {topic}, but nothing {other} it{hint}"
+
+
+PLUMBING_TOPICS = (
+    ("/parameter_events", "rcl_interfaces/msg/ParameterEvent"),
+    ("/rosout", "rcl_interfaces/msg/Log"),
+)
+"""What every ROS 2 node publishes besides its own topics."""
+PARAMETER_SERVICES = (
+    ("describe_parameters", "rcl_interfaces/srv/DescribeParameters"),
+    ("get_parameter_types", "rcl_interfaces/srv/GetParameterTypes"),
+    ("get_parameters", "rcl_interfaces/srv/GetParameters"),
+    ("get_type_description", "type_description_interfaces/srv/GetTypeDescription"),
+    ("list_parameters", "rcl_interfaces/srv/ListParameters"),
+    ("set_parameters", "rcl_interfaces/srv/SetParameters"),
+    ("set_parameters_atomically", "rcl_interfaces/srv/SetParametersAtomically"),
+)
+"""The services every ROS 2 node serves as ``<node>/<name>`` (get_type_description from Iron on)."""
+
+
+def with_ros_plumbing(
+    snap: GraphSnapshot, *, type_description: bool = True, parameter_event_subscribers: tuple[str, ...] = ()
+) -> GraphSnapshot:
+    """``snap`` as the ros2 tools show a real graph: every node also publishes
+    /parameter_events and /rosout and serves its parameter services, as rcl
+    makes every node do (``type_description``: also get_type_description,
+    Iron and later). ``parameter_event_subscribers`` are the nodes that also
+    subscribe to /parameter_events (rclcpp nodes such as turtlesim).
+    turtletui's graph keeps none of these: its log and parameters are its own."""
+    services = [(name, kind) for name, kind in PARAMETER_SERVICES if type_description or name != "get_type_description"]
+    names = tuple(node.name for node in snap.nodes)
+    listeners = tuple(sorted(n for n in parameter_event_subscribers if n in names))
+    nodes = []
+    for node in snap.nodes:
+        own = tuple((f"{node.name}/{name}", kind) for name, kind in services)
+        subs = (PLUMBING_TOPICS[0],) if node.name in listeners else ()
+        nodes.append(replace(
+            node,
+            publishers=tuple(sorted({*node.publishers, *PLUMBING_TOPICS})),
+            subscribers=tuple(sorted({*node.subscribers, *subs})),
+            service_servers=tuple(sorted({*node.service_servers, *own})),
+        ))
+    topics = {t.name: t for t in snap.topics}
+    for name, kind in PLUMBING_TOPICS:
+        if names and name not in topics:
+            subscribers = listeners if name == "/parameter_events" else ()
+            topics[name] = TopicInfo(name, kind, names, subscribers, 0.0, 0)
+    known = {s.name for s in snap.services}
+    extra = [
+        ServiceInfo(f"{node}/{name}", kind, node, ())
+        for node in names
+        for name, kind in services
+        if f"{node}/{name}" not in known
+    ]
+    return replace(
+        snap,
+        nodes=tuple(nodes),
+        topics=tuple(sorted(topics.values(), key=lambda t: t.name)),
+        services=tuple(sorted([*snap.services, *extra], key=lambda s: s.name)),
+    )

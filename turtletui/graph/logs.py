@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from typing import Any, NamedTuple
 
 DEBUG, INFO, WARN, ERROR, FATAL = 10, 20, 30, 40, 50
 LEVEL_NAMES = {DEBUG: "DEBUG", INFO: "INFO", WARN: "WARN", ERROR: "ERROR", FATAL: "FATAL"}
@@ -44,3 +44,12 @@ def parse_level(value: str | int) -> int:
     except KeyError:
         names = ", ".join(n.lower() for n in LEVEL_NAMES.values())
         raise ValueError(f"unknown log level {value!r}: use one of {names}") from None
+
+
+def to_log_message(record: LogRecord) -> Any:
+    """The record as the rcl_interfaces/msg/Log a node publishes on /rosout."""
+    from turtletui.interfaces.builtin_interfaces import Time
+    from turtletui.interfaces.rcl_interfaces import Log
+
+    sec, nanosec = divmod(record.stamp_ns, 1_000_000_000)
+    return Log(stamp=Time(sec=sec, nanosec=nanosec), level=max(0, min(record.level, 255)), name=record.node, msg=record.msg)

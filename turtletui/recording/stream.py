@@ -26,11 +26,10 @@ from collections.abc import Callable, Collection
 from dataclasses import dataclass
 from typing import Any, Protocol
 
-from turtletui.graph.logs import LogRecord
+from turtletui.graph.logs import LogRecord, to_log_message
 from turtletui.interfaces import interface_name
 from turtletui.interfaces.builtin_interfaces import Time
 from turtletui.interfaces.geometry_msgs import Quaternion, Transform, TransformStamped, Vector3
-from turtletui.interfaces.rcl_interfaces import Log
 from turtletui.interfaces.std_msgs import Header
 from turtletui.interfaces.tf2_msgs import TFMessage
 from turtletui.recording import cdr
@@ -162,13 +161,7 @@ class RosStream:
         self._write(self.channel(TF_TOPIC, "tf2_msgs/msg/TFMessage"), t_ns, TFMessage._trusted([transform]))
 
     def _log(self, record: LogRecord) -> None:
-        sec, nanosec = divmod(record.stamp_ns, _NS_PER_S)
-        msg = Log(
-            stamp=Time(sec=sec, nanosec=nanosec),
-            level=max(0, min(record.level, 255)),
-            name=record.node,
-            msg=record.msg,
-        )
+        msg = to_log_message(record)
         channel = self.channel(ROSOUT_TOPIC, "rcl_interfaces/msg/Log", ROSOUT)
         if channel.id == _SKIPPED:
             return

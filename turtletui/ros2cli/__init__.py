@@ -38,8 +38,11 @@ Commands: ``node list|info``, ``topic list|echo|hz|info|type|find|pub``,
 ``action list|info|send_goal``, ``interface show|list|packages|package``,
 ``bag record|info|play`` (bags in the folder turtletui runs in; ``record``
 and ``play`` need a Simulation, not a bare Graph); ``-h`` on each prints its
-help. Not modelled: ``/parameter_events``, ``/rosout`` and the parameter
-services (turtletui's graph has none), QoS options, service recording
+help. What rcl gives every node is shown as the real tools show it
+(``/parameter_events``, ``/rosout``, the parameter services: see
+graph.introspection.with_ros_plumbing) though turtletui's graph keeps none of
+it: ``topic echo /rosout`` prints the log, and a parameter service call
+points at ``ros2 param``. Not modelled: QoS options, service recording
 (``bag record --services``), ``ros2 run``/``launch``.
 """
 

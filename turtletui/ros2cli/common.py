@@ -7,10 +7,10 @@ import difflib
 import re
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, TypeVar
+from typing import TYPE_CHECKING, Any, TypeVar
 
 from turtletui.graph.core import Graph, Topic
-from turtletui.graph.introspection import GraphSnapshot, NodeInfo
+from turtletui.graph.introspection import GraphSnapshot, NodeInfo, snapshot, with_ros_plumbing
 from turtletui.interfaces import Action, Service, get_interface, interface_name
 
 if TYPE_CHECKING:
@@ -97,6 +97,19 @@ def topic_or_error(graph: Graph, name: str, what: str) -> Topic:
     if topic is None:
         raise CommandError(f"topic '{name}' {what}{hint(name, live_topic_names(graph))}")
     return topic
+
+
+def ros_view(cli: Any) -> GraphSnapshot:
+    """The graph as the ros2 tools show it: with what rcl gives every node
+    (/rosout, /parameter_events, the parameter services), which turtletui's
+    graph does not keep."""
+    sim = cli.sim
+    turtlesim = getattr(getattr(sim, "turtlesim", None), "node", None)
+    return with_ros_plumbing(
+        snapshot(cli.graph),
+        type_description=getattr(sim, "distro", None) != "humble",  # get_type_description: Iron on
+        parameter_event_subscribers=(turtlesim.fqn,) if turtlesim is not None else (),  # rclcpp's own
+    )
 
 
 def node_or_error(snap: GraphSnapshot, name: str) -> NodeInfo:

@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING
 
 from turtletui.graph.introspection import snapshot
 from turtletui.ros2cli.arguments import Command, Verb
-from turtletui.ros2cli.common import CommandResult, is_hidden, node_or_error
+from turtletui.ros2cli.common import CommandResult, is_hidden, node_or_error, ros_view
 
 if TYPE_CHECKING:
     from turtletui.ros2cli.cli import Ros2Cli
@@ -32,7 +32,7 @@ def _info_arguments(parser: ArgumentParser) -> None:
 
 
 def _info(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
-    node = node_or_error(snapshot(cli.graph), args.node_name)
+    node = node_or_error(ros_view(cli), args.node_name)
     lines = [node.name]
     for title, entries in (
         ("Subscribers", node.subscribers),

@@ -5,15 +5,17 @@ from __future__ import annotations
 from argparse import ArgumentParser, Namespace
 from typing import TYPE_CHECKING, Any
 
-from turtletui.graph.introspection import snapshot
 from turtletui.interfaces import Service, interface_name
 from turtletui.ros2cli.arguments import Command, Verb, list_options
 from turtletui.ros2cli.common import (
+    CommandError,
     CommandResult,
+    absolute,
     check_type,
     entity_or_error,
     interface_or_error,
     name_list,
+    ros_view,
 )
 from turtletui.ros2cli.streams import CallStream
 from turtletui.ros2cli.values import message_values
@@ -33,7 +35,7 @@ def _list_arguments(parser: ArgumentParser) -> None:
 
 
 def _list(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
-    return name_list(snapshot(cli.graph).services, count=args.count_services, show_types=args.show_types,
+    return name_list(ros_view(cli).services, count=args.count_services, show_types=args.show_types,
                      hidden=args.include_hidden_services)
 
 
@@ -43,7 +45,18 @@ def _name_arguments(help_text: str):
     return add
 
 
+def _parameter_service(cli: Ros2Cli, name: str) -> Any:
+    """A node's parameter service as ros2 shows it (not in turtletui's graph), or None."""
+    name = absolute(name)
+    if name in cli.graph.services:
+        return None
+    return next((s for s in ros_view(cli).services if s.name == name), None)
+
+
 def _type(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
+    plumbing = _parameter_service(cli, args.service_name)
+    if plumbing is not None:
+        return CommandResult([plumbing.type])
     return CommandResult([_service(cli, args.service_name, "does not exist").type_name])
 
 
@@ -55,11 +68,14 @@ def _find_arguments(parser: ArgumentParser) -> None:
 
 def _find(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
     wanted = interface_name(interface_or_error(args.service_type, Service, "service"))
-    found = [s for s in snapshot(cli.graph).services if s.type == wanted]
+    found = [s for s in ros_view(cli).services if s.type == wanted]
     return name_list(found, count=args.count_services, show_types=False, hidden=args.include_hidden_services)
 
 
 def _info(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
+    plumbing = _parameter_service(cli, args.service_name)
+    if plumbing is not None:
+        return CommandResult([f"Type: {plumbing.type}", "Clients count: 0", "Services count: 1"])
     service = _service(cli, args.service_name, "does not exist")
     clients = [c for c in cli.graph.clients if c.name == service.name]
     return CommandResult([f"Type: {service.type_name}", f"Clients count: {len(clients)}",
@@ -77,6 +93,9 @@ def _call_arguments(parser: ArgumentParser) -> None:
 
 
 def _call(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
+    if _parameter_service(cli, args.service_name) is not None:
+        node = absolute(args.service_name).rsplit("/", 1)[0]
+        raise CommandError(f"turtletui does not serve the parameter services: use ros2 param list|get|set {node}")
     service = _service(cli, args.service_name)
     srv_type, values = args.service_type, args.values
     if _looks_like_values(srv_type) and values == "{}":

@@ -16,6 +16,7 @@ from collections import deque
 from typing import TYPE_CHECKING, Any
 
 from turtletui.graph.core import NS_PER_S, GoalHandle, NodeRecord, Topic
+from turtletui.graph.logs import LogRecord, to_log_message
 from turtletui.interfaces import Message, from_dict, to_dict
 from turtletui.ros2cli.values import message_yaml, yaml_lines
 
@@ -116,6 +117,9 @@ class EchoStream(Stream):
         super().__init__(cli, command)
         self._once = once
         self._field = field_path
+        self._subscribe(topic)
+
+    def _subscribe(self, topic: Topic) -> None:
         self.subscription = self._graph.add_subscription(
             self.node, topic.name, topic.msg_type, DEFAULT_DEPTH, self._on_message)
 
@@ -128,6 +132,21 @@ class EchoStream(Stream):
         self._emit([*yaml_lines(value), "---"])
         if self._once:
             self._finish()
+
+
+class RosoutEchoStream(EchoStream):
+    """``ros2 topic echo /rosout``: every node's log lines as rcl_interfaces/msg/Log
+    (turtletui's graph keeps its log itself, not as a topic)."""
+
+    def _subscribe(self, topic: Any) -> None:
+        self._graph.log_sinks.append(self._on_log)
+
+    def _on_log(self, record: LogRecord) -> None:
+        self._on_message(to_log_message(record))
+
+    def _on_close(self) -> None:
+        if self._on_log in self._graph.log_sinks:
+            self._graph.log_sinks.remove(self._on_log)
 
 
 class HzStream(Stream):

@@ -6,8 +6,9 @@ from argparse import ArgumentParser, Namespace
 from typing import TYPE_CHECKING, Any
 
 from turtletui.graph.core import NS_PER_S
-from turtletui.graph.introspection import snapshot
+from turtletui.graph.introspection import TopicInfo
 from turtletui.interfaces import Message, get_interface, interface_name
+from turtletui.interfaces.rcl_interfaces import Log
 from turtletui.ros2cli.arguments import (
     Command,
     Verb,
@@ -26,9 +27,10 @@ from turtletui.ros2cli.common import (
     live_topic,
     live_topic_names,
     name_list,
+    ros_view,
     topic_or_error,
 )
-from turtletui.ros2cli.streams import EchoStream, HzStream, PubStream
+from turtletui.ros2cli.streams import EchoStream, HzStream, PubStream, RosoutEchoStream
 from turtletui.ros2cli.values import message_values
 
 if TYPE_CHECKING:
@@ -48,7 +50,7 @@ def _list_arguments(parser: ArgumentParser) -> None:
 
 
 def _list(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
-    return name_list(snapshot(cli.graph).topics, count=args.count_topics, show_types=args.show_types,
+    return name_list(ros_view(cli).topics, count=args.count_topics, show_types=args.show_types,
                      hidden=args.include_hidden_topics)
 
 
@@ -68,6 +70,11 @@ def _echo_arguments(parser: ArgumentParser) -> None:
 
 def _echo(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
     name = absolute(args.topic_name)
+    if name == "/rosout" and _plumbing(cli, name) is not None:
+        if args.message_type is not None:
+            check_type(get_interface(args.message_type), "rcl_interfaces/msg/Log", f"topic '{name}'")
+        path = _field_path(Log, args.field) if args.field is not None else []
+        return cli.start(RosoutEchoStream(cli, line, None, args.once, path))
     topic = topic_or_error(cli.graph, name, "does not appear to be published yet")
     if args.message_type is not None:
         check_type(get_interface(args.message_type), topic.type_name, f"topic '{name}'")
@@ -114,8 +121,19 @@ def _info_arguments(parser: ArgumentParser) -> None:
                              "to this topic")
 
 
+def _plumbing(cli: Ros2Cli, name: str) -> TopicInfo | None:
+    """/rosout or /parameter_events as ros2 shows them (not in turtletui's graph)."""
+    if live_topic(cli.graph, name) is not None:
+        return None
+    return next((t for t in ros_view(cli).topics if t.name == name), None)
+
+
 def _info(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
     name = absolute(args.topic_name)
+    plumbing = _plumbing(cli, name)
+    if plumbing is not None:
+        return CommandResult([f"Type: {plumbing.type}", f"Publisher count: {len(plumbing.publishers)}",
+                              f"Subscription count: {len(plumbing.subscribers)}"])
     topic = topic_or_error(cli.graph, name, "does not exist")
     if not args.verbose:
         return CommandResult([
@@ -152,6 +170,9 @@ def _type_arguments(parser: ArgumentParser) -> None:
 
 def _type(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
     name = absolute(args.topic_name)
+    plumbing = _plumbing(cli, name)
+    if plumbing is not None:
+        return CommandResult([plumbing.type])
     return CommandResult([topic_or_error(cli.graph, name, "does not exist").type_name])
 
 
@@ -163,7 +184,7 @@ def _find_arguments(parser: ArgumentParser) -> None:
 
 def _find(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
     wanted = interface_name(interface_or_error(args.topic_type, Message, "message"))
-    found = [t for t in snapshot(cli.graph).topics if t.type == wanted]
+    found = [t for t in ros_view(cli).topics if t.type == wanted]
     return name_list(found, count=args.count_topics, show_types=False, hidden=args.include_hidden_topics)
 
 
