@@ -290,19 +290,24 @@ class Node(Destroyable):
         ros_args = self._context.ros_args
         local = parse_ros_args(["--ros-args", *cli_args]) if cli_args else None
         remaps: dict[str, str] = {}
-        overrides: dict[str, Any] = {}
         if use_global_arguments:
             remaps.update(ros_args.remaps_for(node_name))
-            overrides.update(ros_args.params_for(node_name))
         if local is not None:
             remaps.update(local.remaps_for(node_name))
-            overrides.update(local.params_for(node_name))
+        given_name = node_name
         node_name = remaps.pop("__node", remaps.pop("__name", node_name))
         namespace = remaps.pop("__ns", namespace or "")
         if namespace and not namespace.startswith("/"):
             namespace = "/" + namespace
         if namespace:
             validate_namespace(namespace)
+        # parameter files name the node as it ends up (after -r __node/__ns)
+        fqn = f"{namespace.rstrip('/')}/{node_name}"
+        overrides: dict[str, Any] = {}
+        if use_global_arguments:
+            overrides.update(ros_args.params_for(given_name, fqn))
+        if local is not None:
+            overrides.update(local.params_for(given_name, fqn))
         self._overrides = overrides
         for param in parameter_overrides or ():
             self._overrides.setdefault(param.name, param.value)

@@ -26,9 +26,28 @@ class RosArgs:
     remaps: list[tuple[str | None, str, str]] = field(default_factory=list)
     log_level: str | None = None
     user_args: list[str] = field(default_factory=list)
+    file_params: list[tuple[str, str, Any]] = field(default_factory=list)
+    """(node name pattern, name, value) from ``--params-file`` files, in order."""
 
-    def params_for(self, node_name: str) -> dict[str, Any]:
-        return {name: value for node, name, value in self.params if node in (None, node_name)}
+    def params_for(self, node_name: str, fqn: str | None = None) -> dict[str, Any]:
+        """The parameters for a node, as rclpy applies them: first those for
+        every node (``--params-file`` sections with ``*`` or ``**``, matched on
+        its fully qualified name ``fqn``, then ``-p NAME:=V``), then those for
+        this node by name (a file's ``/ns/node:`` section, then ``-p node:NAME:=V``),
+        which win."""
+        return {name: value for _, name, value in self.param_rules(fqn or f"/{node_name}", node_name)}
+
+    def param_rules(self, fqn: str, *names: str) -> list[tuple[str, str, Any]]:
+        """(where it came from, name, value) for the node ``fqn`` (``-p NODE:...``
+        naming it by one of ``names``), in the order they apply (a later one
+        wins); where is ``--params-file`` or ``-p``."""
+        files = [(pattern, name, value) for pattern, name, value in self.file_params if node_matches(pattern, fqn)]
+        return [
+            *(("--params-file", name, value) for pattern, name, value in files if "*" in pattern),
+            *(("-p", name, value) for node, name, value in self.params if node is None),
+            *(("--params-file", name, value) for pattern, name, value in files if "*" not in pattern),
+            *(("-p", name, value) for node, name, value in self.params if node is not None and node in names),
+        ]
 
     def remaps_for(self, node_name: str) -> dict[str, str]:
         return {src: dst for node, src, dst in self.remaps if node in (None, node_name)}
@@ -105,10 +124,85 @@ def parse_ros_args(argv: list[str]) -> RosArgs:
             elif arg == "--log-level":
                 result.log_level = text.split(":=")[-1]
             elif arg == "--params-file":
-                raise RosArgsError(
-                    f"--params-file {text}: parameter files are not supported yet; pass each with -p NAME:=VALUE"
-                )
+                result.file_params.extend(read_params_file(text))
         else:
             raise RosArgsError(f"Found unknown ROS arguments: ['{arg}']")
         i += 1
     return result
+
+
+def node_matches(pattern: str, fqn: str) -> bool:
+    """Whether a parameter file's node key names the node ``fqn``: a full name
+    (``/ns/node``; without its leading slash, from the root), ``*`` one name
+    part, ``**`` any number of them (``/**`` every node)."""
+    pattern = pattern if pattern.startswith("/") else f"/{pattern}"
+    regex = "".join(
+        "(/[^/]+)*" if part == "**" else "/[^/]+" if part == "*" else "/" + re.escape(part)
+        for part in pattern.strip("/").split("/")
+    )
+    return re.fullmatch(regex or "/", fqn) is not None
+
+
+def read_params_file(path: str) -> list[tuple[str, str, Any]]:
+    """The (node pattern, name, value) entries of a ROS 2 parameter file:
+
+    .. code-block:: yaml
+
+        /turtlesim:             # or turtlesim, /**, /ns/*
+          ros__parameters:
+            background_r: 0
+            pid: {kp: 1.5}      # the parameter pid.kp
+
+    RosArgsError (one line naming the file) when it cannot be read or is not one."""
+    import yaml
+
+    where = f"--params-file {path}"
+    try:
+        with open(path, encoding="utf-8") as stream:
+            data = yaml.safe_load(stream)
+    except FileNotFoundError:
+        raise RosArgsError(f"{where}: no such file") from None
+    except (OSError, UnicodeDecodeError) as err:
+        raise RosArgsError(f"{where}: cannot read it ({getattr(err, 'strerror', None) or err})") from None
+    except yaml.YAMLError as err:
+        mark = getattr(err, "problem_mark", None)
+        at = f" at line {mark.line + 1}" if mark is not None else ""
+        raise RosArgsError(f"{where}: not valid YAML{at} ({getattr(err, 'problem', None) or 'syntax error'})") from None
+    if not isinstance(data, dict):
+        raise RosArgsError(f"{where}: expected node names at the top, e.g. '/turtlesim:'")
+    entries: list[tuple[str, str, Any]] = []
+    for node, section in data.items():
+        if not isinstance(section, dict) or "ros__parameters" not in section:
+            raise RosArgsError(f"{where}: node {node!r} needs a 'ros__parameters:' mapping under it")
+        params = section["ros__parameters"]
+        if not isinstance(params, dict):
+            raise RosArgsError(f"{where}: {node}: 'ros__parameters' must hold name: value pairs")
+        for name, value in _flatten(params, ""):
+            entries.append((str(node), name, _file_value(value, f"{where}: {node}: {name}")))
+    return entries
+
+
+def _flatten(params: dict, prefix: str) -> list[tuple[str, Any]]:
+    flat = []
+    for key, value in params.items():
+        name = f"{prefix}{key}"
+        if isinstance(value, dict):
+            flat.extend(_flatten(value, f"{name}."))
+        else:
+            flat.append((name, value))
+    return flat
+
+
+def _file_value(value: Any, what: str) -> Any:
+    if isinstance(value, (bool, int, float, str)):
+        return value
+    if isinstance(value, list):
+        kinds = {bool if isinstance(v, bool) else type(v) for v in value}
+        if not kinds <= {bool, int, float, str}:
+            raise RosArgsError(f"{what}: a list of parameters holds only numbers, booleans or strings")
+        if kinds == {int, float}:
+            return [float(v) for v in value]
+        if len(kinds) > 1:
+            raise RosArgsError(f"{what}: the list mixes types: ROS needs one type per list")
+        return value
+    raise RosArgsError(f"{what}: {value!r} is not a value a ROS parameter can hold")

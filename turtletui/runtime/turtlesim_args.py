@@ -82,13 +82,16 @@ def parse_turtlesim_args(argv: Sequence[str]) -> TurtlesimArgs:
             )
         name = target
     parameters: dict[str, Any] = {}
-    for node, param, value in parsed.params:
-        if node not in (None, own, name):
+    for source, param, value in parsed.param_rules(f"/{name}", own, name):
+        # an rclcpp node leaves a file's parameters that it does not declare
+        # (a /** section is for every node); -p names them, and is told
+        if source == "--params-file" and param not in (*PARAMETERS, "use_sim_time"):
             continue
+        flag = "--params-file: " if source == "--params-file" else "-p "
         if param == "use_sim_time":
             if value is not False:
                 raise RosArgsError(
-                    f"-p use_sim_time:={_shown(value)}: turtletui's turtlesim keeps its own clock; "
+                    f"{flag}use_sim_time:={_shown(value)}: turtletui's turtlesim keeps its own clock; "
                     "use_sim_time can only be false"
                 )
             continue
@@ -98,7 +101,7 @@ def parse_turtlesim_args(argv: Sequence[str]) -> TurtlesimArgs:
                 close = difflib.get_close_matches(param, PARAMETERS, n=1)
                 hint = f" (did you mean {close[0]}?)" if close else f" (it has {', '.join(PARAMETERS)})"
                 problem += hint
-            raise RosArgsError(f"-p {param}:={_shown(value)}: {problem}")
+            raise RosArgsError(f"{flag}{param}:={_shown(value)}: {problem}")
         parameters[param] = value
     log_level = INFO
     if parsed.log_level is not None:
