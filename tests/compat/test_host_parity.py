@@ -134,7 +134,6 @@ def main():
 )
 
 
-@pytest.mark.differs_in_sandbox("destroy_service does not reach the parent: other nodes still see the service")
 def test_destroy_service_takes_the_service_off_the_graph(controller_host):
     result = controller_host.run(DESTROY_SERVICE, duration=1.0)
     assert result.ok, result.crashes
@@ -299,7 +298,6 @@ class Watcher(Node):
 )
 
 
-@pytest.mark.differs_in_sandbox("the child answers graph queries from its own nodes only")
 def test_graph_queries_see_turtlesim_and_the_nodes_own_endpoints(controller_host):
     result = controller_host.run(GRAPH_QUERIES, duration=0.2)
     assert result.ok, result.crashes
