@@ -302,10 +302,12 @@ class ChildHost(CallbackTracking):
             return
         graph = self.graph
         now = message["now"]
-        graph.receive(message)
+        # Timers due now first, as in-process: there they become ready before
+        # anything the parent's callbacks of this instant publish.
         while graph.advance(now):
             pass
         graph.now_ns = now
+        graph.receive(message)
 
     def spin_once(self, timeout_ns: int | None) -> bool:
         ready = self.graph.ready
