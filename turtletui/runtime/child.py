@@ -98,7 +98,8 @@ class ChildGraph(Graph):
         pub = super().add_publisher(node, name, msg_type, depth, **options)
         pub.wire_id = next(self._ids)
         self._own[pub.wire_id] = pub
-        self.out["decl"].append(["pub", pub.wire_id, node.wire_id, name, pub.topic.type_name, depth])
+        qos = graph_mirror.QosPolicies.of(pub.qos)
+        self.out["decl"].append(["pub", pub.wire_id, node.wire_id, name, pub.topic.type_name, depth, "", qos])
         return pub
 
     def add_subscription(self, node, name, msg_type, depth, callback, **options) -> Subscription:
@@ -106,7 +107,8 @@ class ChildGraph(Graph):
         sub.wire_id = next(self._ids)
         self._own[sub.wire_id] = sub
         label = getattr(callback, "label", "")
-        self.out["decl"].append(["sub", sub.wire_id, node.wire_id, name, sub.topic.type_name, depth, label])
+        qos = graph_mirror.QosPolicies.of(sub.qos)
+        self.out["decl"].append(["sub", sub.wire_id, node.wire_id, name, sub.topic.type_name, depth, label, qos])
         return sub
 
     def add_timer(self, node: NodeRecord, period_ns: int, callback: Callable[[], None], **options: Any) -> Any:

@@ -50,6 +50,21 @@ class QosPolicies(NamedTuple):
         except (AttributeError, TypeError, ValueError):
             return None
 
+    @classmethod
+    def parse(cls, fields: Any) -> QosPolicies:
+        """Check what an untrusted child sent."""
+        if (
+            not isinstance(fields, list)
+            or len(fields) != 3
+            or any(type(v) is not int or v not in known for v, known in zip(fields, _KNOWN_POLICIES, strict=True))
+        ):
+            raise ValueError(f"not QoS policies: {str(fields)[:100]}")
+        return cls(*fields)
+
+
+_KNOWN_POLICIES = (range(5), range(5), (0, 1, 3, 4, 5))
+"""rclpy's values of each policy (ReliabilityPolicy, DurabilityPolicy, LivelinessPolicy)."""
+
 
 class MirrorNode(NamedTuple):
     name: str

@@ -766,19 +766,19 @@ class SandboxHost:
             if node is not None:
                 graph.remove_node(node)
         elif kind == "pub":
-            _, wire_id, node_id, topic, type_name, depth = decl
+            _, wire_id, node_id, topic, type_name, depth, *rest = decl
             self._endpoints[wire_id] = graph.add_publisher(
-                self._nodes[node_id], str(topic), get_interface(type_name), int(depth)
+                self._nodes[node_id], str(topic), get_interface(type_name), int(depth), qos=_qos(rest)
             )
         elif kind == "sub":
-            _, wire_id, node_id, topic, type_name, depth, *label = decl
-            self._pace.subscriptions[wire_id] = (_label(label), str(topic)[:200])
+            _, wire_id, node_id, topic, type_name, depth, *rest = decl
+            self._pace.subscriptions[wire_id] = (_label(rest), str(topic)[:200])
 
             def forward(msg: Any, wire_id: int = wire_id) -> None:
                 self._inbox.append((wire_id, to_values(msg)))
 
             self._endpoints[wire_id] = graph.add_subscription(
-                self._nodes[node_id], str(topic), get_interface(type_name), int(depth), forward
+                self._nodes[node_id], str(topic), get_interface(type_name), int(depth), forward, qos=_qos(rest)
             )
         elif kind == "timer":
             if len(self._pace.timers) < 100:
@@ -870,6 +870,11 @@ def _label(rest: list) -> str:
     short identifier is kept)."""
     label = rest[0] if rest else ""
     return label if isinstance(label, str) and label.isidentifier() and len(label) <= 60 else ""
+
+
+def _qos(rest: list) -> graph_mirror.QosPolicies | None:
+    """An endpoint's QoS policies as the child declared them (after its label)."""
+    return graph_mirror.QosPolicies.parse(rest[1]) if len(rest) > 1 and rest[1] is not None else None
 
 
 def _is_scalar(value: Any) -> bool:
