@@ -1,6 +1,8 @@
 """The sandboxed side: runs one controller in a child process.
 
-The child has its own Graph holding the controller's nodes. Whenever the
+The child has its own Graph holding the controller's nodes, and records
+standing for everyone else's, rebuilt from the mirror of the parent's graph
+the parent sends when it changed (turtletui.runtime.graph_mirror). Whenever the
 controller waits (spin, spin_once, sleeps, waiting for a future) and has
 nothing ready, the child sends the parent what its nodes did (declarations,
 messages, calls, logs) and blocks until the parent answers with the new time
