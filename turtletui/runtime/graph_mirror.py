@@ -148,21 +148,30 @@ def snapshot(graph: Graph, owner: str, own_ids: Mapping[int, int]) -> GraphMirro
     ``own_ids`` maps ``id(record)`` of its nodes and topic endpoints to their
     wire ids."""
     index: dict[int, int] = {}
+    """``id(node)`` to its place in the mirror's nodes."""
     nodes = []
-    for i, node in enumerate(graph.nodes):
-        index[id(node)] = i
-        nodes.append(MirrorNode(node.name, node.namespace, own_ids.get(id(node), 0) if node.owner == owner else 0))
+    for node in graph.nodes:
+        own = own_ids.get(id(node), 0) if node.owner == owner else 0
+        if own or node.owner != owner:
+            index[id(node)] = len(nodes)
+            nodes.append(MirrorNode(node.name, node.namespace, own))
 
     def endpoints(records: Iterable[Publisher | Subscription]) -> tuple[MirrorEndpoint, ...]:
-        return tuple(
-            MirrorEndpoint(0, None, own_ids.get(id(e), 0))
-            if e.owner == owner
-            else MirrorEndpoint(index[id(e.node)], QosPolicies.of(e.qos), 0)
-            for e in records
-        )
+        listed = []
+        for e in records:
+            if e.owner == owner:
+                if id(e) in own_ids:
+                    listed.append(MirrorEndpoint(0, None, own_ids[id(e)]))
+            elif id(e.node) in index:
+                listed.append(MirrorEndpoint(index[id(e.node)], QosPolicies.of(e.qos), 0))
+        return tuple(listed)
 
     def others(records: Iterable[Any]) -> tuple[MirrorRecord, ...]:
-        return tuple(MirrorRecord(index[id(r.node)], r.name, r.type_name) for r in records if r.owner != owner)
+        return tuple(
+            MirrorRecord(index[id(r.node)], r.name, r.type_name)
+            for r in records
+            if r.owner != owner and id(r.node) in index
+        )
 
     return GraphMirror(
         tuple(nodes),
