@@ -462,3 +462,14 @@ def test_what_a_node_destroys_is_gone_for_the_nodes_of_another_process(controlle
         "['observer'] pubs 0 [] subs 0 clear clients 0 ping False",
     ]
     assert node_logs(result, "leaver") == ["ping answered"]
+
+
+def test_the_same_program_logs_and_moves_the_same_in_both_hosts(tmp_path):
+    """Not one expectation per host: both hosts' whole runs, side by side."""
+    from support.hosts import HOSTS, ControllerHost
+
+    runs = [ControllerHost(host, tmp_path).run(WAITER, duration=2.0, keep_poses=True) for host in HOSTS]
+    logs = [[(r.t, r.level, r.node, r.msg) for r in result.logs] for result in runs]
+    assert logs[0] == logs[1]
+    assert runs[0].poses == runs[1].poses
+    assert set(runs[0].poses) == {"turtle1", "t2"}
