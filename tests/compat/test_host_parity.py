@@ -134,7 +134,6 @@ def main():
 )
 
 
-@pytest.mark.differs_in_sandbox("destroy_service does not reach the parent: other nodes still see the service")
 def test_destroy_service_takes_the_service_off_the_graph(controller_host):
     result = controller_host.run(DESTROY_SERVICE, duration=1.0)
     assert result.ok, result.crashes
@@ -299,7 +298,6 @@ class Watcher(Node):
 )
 
 
-@pytest.mark.differs_in_sandbox("the child answers graph queries from its own nodes only")
 def test_graph_queries_see_turtlesim_and_the_nodes_own_endpoints(controller_host):
     result = controller_host.run(GRAPH_QUERIES, duration=0.2)
     assert result.ok, result.crashes
@@ -313,3 +311,165 @@ def test_graph_queries_see_turtlesim_and_the_nodes_own_endpoints(controller_host
         "by node [('/turtle1/cmd_vel', ['geometry_msgs/msg/Twist'])]",
         "actions [('/turtle1/rotate_absolute', ['turtlesim/action/RotateAbsolute'])]",
     ]
+
+
+def test_node_names_come_in_creation_order_with_turtlesim_first(controller_host):
+    result = controller_host.run(
+        HEADER
+        + """
+def main():
+    rclpy.init()
+    first = rclpy.create_node("first")
+    second = rclpy.create_node("second", namespace="/ns")
+    log = first.get_logger().info
+    log(f"names {first.get_node_names()}")
+    log(f"with namespaces {second.get_node_names_and_namespaces()}")
+    log(f"qualified {first.get_fully_qualified_node_names()}")
+    second.destroy_node()
+    third = rclpy.create_node("third")
+    rclpy.spin_once(first, timeout_sec=0.1)
+    log(f"after {first.get_node_names()} {third.wait_for_node('/turtlesim', 1.0)}")
+"""
+    )
+    assert result.ok, result.crashes
+    assert node_logs(result, "first") == [
+        "names ['turtlesim', 'first', 'second']",
+        "with namespaces [('turtlesim', '/'), ('first', '/'), ('second', '/ns')]",
+        "qualified ['/turtlesim', '/first', '/ns/second']",
+        "after ['turtlesim', 'first', 'third'] True",
+    ]
+
+
+WAITER = (
+    HEADER
+    + """
+from turtlesim.srv import SetPen, Spawn
+
+def main():
+    rclpy.init()
+    node = rclpy.create_node("waiter")
+    log = node.get_logger().info
+    spawn = node.create_client(Spawn, "/spawn")
+    while not spawn.wait_for_service(timeout_sec=1.0):
+        log("waiting for /spawn")
+    log("spawn ready")
+    pen = node.create_client(SetPen, "/t2/set_pen")
+    log(f"t2 pen ready {pen.wait_for_service(timeout_sec=0.5)}")
+    pub = node.create_publisher(Twist, "/t2/cmd_vel", 10)
+    log(f"t2 subscribers {pub.get_subscription_count()} {node.count_subscribers('/t2/cmd_vel')}")
+    future = spawn.call_async(Spawn.Request(x=2.0, y=2.0, theta=0.0, name="t2"))
+    while pub.get_subscription_count() == 0:  # the usual 'wait until turtlesim listens'
+        rclpy.spin_once(node, timeout_sec=0.1)
+    log(f"t2 subscribed, spawned {future.done()} {future.result().name}")
+    log(f"t2 pen ready {pen.wait_for_service(timeout_sec=0.5)}")
+    log(f"t2 pose publishers {node.count_publishers('/t2/pose')}")
+    msg = Twist()
+    msg.linear.x = 1.0
+    pub.publish(msg)
+    rclpy.spin_once(node, timeout_sec=0.5)
+"""
+)
+
+
+def test_waiting_for_turtlesims_services_and_subscriptions(controller_host):
+    result = controller_host.run(WAITER, duration=2.0)
+    assert result.ok, result.crashes
+    logs = [(round(r.t, 3), r.msg) for r in result.logs if r.node == "waiter"]
+    assert logs == [
+        (0.0, "spawn ready"),
+        (0.5, "t2 pen ready False"),
+        (0.5, "t2 subscribers 0 0"),
+        (0.5, "t2 subscribed, spawned True t2"),
+        (0.5, "t2 pen ready True"),
+        (0.5, "t2 pose publishers 1"),
+    ]
+    assert result.turtles["t2"].distance > 0.5
+
+
+LEAVER = (
+    HEADER
+    + """
+from rclpy.qos import QoSProfile, ReliabilityPolicy
+
+class Leaver(Node):
+    def __init__(self):
+        super().__init__("leaver")
+        best_effort = QoSProfile(depth=5, reliability=ReliabilityPolicy.BEST_EFFORT)
+        self.pub = self.create_publisher(Twist, "/chatter", best_effort)
+        self.sub = self.create_subscription(Twist, "/chatter", lambda m: None, 10)
+        self.client = self.create_client(Empty, "/clear")
+        self.service = self.create_service(Empty, "/ping", self.ping)
+        self.steps = [self.drop_service, self.drop_endpoints, self.destroy_node]
+        self.create_timer(0.25, lambda: self.steps.pop(0)())
+
+    def ping(self, request, response):
+        self.get_logger().info("ping answered")
+        return response
+
+    def drop_service(self):
+        self.destroy_service(self.service)
+
+    def drop_endpoints(self):
+        self.destroy_publisher(self.pub)
+        self.destroy_subscription(self.sub)
+        self.destroy_client(self.client)
+"""
+)
+OBSERVER = (
+    HEADER
+    + """
+class Observer(Node):
+    def __init__(self):
+        super().__init__("observer")
+        self.ping = self.create_client(Empty, "/ping")
+        self.create_timer(0.2, self.look)
+
+    def look(self):
+        log = self.get_logger().info
+        names = [n for n in self.get_node_names() if n != "turtlesim"]
+        qos = [i.qos_profile.reliability.name for i in self.get_publishers_info_by_topic("/chatter")]
+        log(
+            f"{names} pubs {self.count_publishers('/chatter')} {qos} subs {self.count_subscribers('/chatter')}"
+            f" clear clients {self.count_clients('/clear')} ping {self.ping.service_is_ready()}"
+        )
+        if self.ping.service_is_ready():
+            self.ping.call_async(Empty.Request()).add_done_callback(lambda f: log("pinged"))
+"""
+)
+
+
+def test_what_a_node_destroys_is_gone_for_the_nodes_of_another_process(controller_host):
+    """The leaver runs in the host under test; the observer, always sandboxed,
+    sees its service, endpoints and then the node itself go."""
+    from turtletui.api import run
+    from turtletui.runtime.loader import ControllerSpec
+
+    leaver = controller_host.write(LEAVER, "leaver.py")
+    observer = controller_host.write(OBSERVER, "observer.py")
+    result = run(
+        [
+            ControllerSpec("observer", path=observer),
+            ControllerSpec("leaver", path=leaver, trusted=not controller_host.sandboxed),
+        ],
+        duration=0.9,
+    )
+    assert result.ok, result.crashes
+    assert node_logs(result, "observer") == [
+        "['observer', 'leaver'] pubs 1 ['BEST_EFFORT'] subs 1 clear clients 1 ping True",
+        "pinged",
+        "['observer', 'leaver'] pubs 1 ['BEST_EFFORT'] subs 1 clear clients 1 ping False",
+        "['observer', 'leaver'] pubs 0 [] subs 0 clear clients 0 ping False",
+        "['observer'] pubs 0 [] subs 0 clear clients 0 ping False",
+    ]
+    assert node_logs(result, "leaver") == ["ping answered"]
+
+
+def test_the_same_program_logs_and_moves_the_same_in_both_hosts(tmp_path):
+    """Not one expectation per host: both hosts' whole runs, side by side."""
+    from support.hosts import HOSTS, ControllerHost
+
+    runs = [ControllerHost(host, tmp_path).run(WAITER, duration=2.0, keep_poses=True) for host in HOSTS]
+    logs = [[(r.t, r.level, r.node, r.msg) for r in result.logs] for result in runs]
+    assert logs[0] == logs[1]
+    assert runs[0].poses == runs[1].poses
+    assert set(runs[0].poses) == {"turtle1", "t2"}

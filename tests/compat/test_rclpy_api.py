@@ -39,10 +39,10 @@ def line_of(path: Path, marker: str) -> int:
 # -- the course's Part 6 node -------------------------------------------------------------
 
 
-def test_part6_reference_controller_drives_60_s_without_hitting_a_wall():
+def test_part6_reference_controller_drives_60_s_without_hitting_a_wall(controller_host):
     path = reference_path("turtle_controller.py")
     assert path.exists()
-    result = run([path], duration=60.0, sandbox=False)
+    result = run([path], duration=60.0, sandbox=controller_host.sandboxed)
     assert result.crashes == []
     assert result.sim_time == 60.0
     logs = node_logs(result, "turtle_controller")
@@ -55,8 +55,8 @@ def test_part6_reference_controller_drives_60_s_without_hitting_a_wall():
     assert 0.0 < turtle.x < 11.0889 and 0.0 < turtle.y < 11.0889
 
 
-def test_part4_reference_draw_circle_runs_open_loop_on_a_circle():
-    result = run([reference_path("draw_circle.py")], duration=10.0, sandbox=False, keep_poses=True)
+def test_part4_reference_draw_circle_runs_open_loop_on_a_circle(controller_host):
+    result = run([reference_path("draw_circle.py")], duration=10.0, sandbox=controller_host.sandboxed, keep_poses=True)
     assert result.crashes == []
     assert node_logs(result, "draw_circle") == ["Draw circle node has been started"]
     # linear 2 m/s, angular 1 rad/s from the centre facing +x: radius 2 around (c, c + 2)
@@ -69,8 +69,8 @@ def test_part4_reference_draw_circle_runs_open_loop_on_a_circle():
     assert result.wall_hits == 0
 
 
-def test_part5_reference_pose_subscriber_logs_every_pose():
-    result = run([reference_path("pose_subscriber.py")], duration=1.0, sandbox=False)
+def test_part5_reference_pose_subscriber_logs_every_pose(controller_host):
+    result = run([reference_path("pose_subscriber.py")], duration=1.0, sandbox=controller_host.sandboxed)
     assert result.crashes == []
     logs = node_logs(result, "pose_subscriber")
     assert len(logs) == 61  # ticks 2..62 publish a pose
@@ -80,7 +80,7 @@ def test_part5_reference_pose_subscriber_logs_every_pose():
 # -- timers and logging --------------------------------------------------------------------
 
 
-def test_timer_node_logs_once_per_simulated_second(tmp_path):
+def test_timer_node_logs_once_per_simulated_second(tmp_path, controller_host):
     path = write(
         tmp_path,
         "counter_node.py",
@@ -106,7 +106,7 @@ def test_timer_node_logs_once_per_simulated_second(tmp_path):
             rclpy.shutdown()
         """,
     )
-    result = run([path], duration=5.0, sandbox=False)
+    result = run([path], duration=5.0, sandbox=controller_host.sandboxed)
     assert result.crashes == []
     records = [r for r in result.logs if r.node == "counter"]
     assert [r.msg for r in records] == [f"count {i}" for i in range(5)]
@@ -114,7 +114,7 @@ def test_timer_node_logs_once_per_simulated_second(tmp_path):
     assert all(r.level_name == "INFO" for r in records)
 
 
-def test_node_subclass_without_main_is_run(tmp_path):
+def test_node_subclass_without_main_is_run(tmp_path, controller_host):
     path = write(
         tmp_path,
         "no_main_node.py",
@@ -128,12 +128,12 @@ def test_node_subclass_without_main_is_run(tmp_path):
                 self.create_timer(0.5, lambda: self.get_logger().info("hi"))
         """,
     )
-    result = run([path], duration=2.0, sandbox=False)
+    result = run([path], duration=2.0, sandbox=controller_host.sandboxed)
     assert result.crashes == []
     assert node_logs(result, "hello") == ["hi"] * 4
 
 
-def test_logger_throttle_duration_and_once(tmp_path):
+def test_logger_throttle_duration_and_once(tmp_path, controller_host):
     path = write(
         tmp_path,
         "throttle_node.py",
@@ -158,7 +158,7 @@ def test_logger_throttle_duration_and_once(tmp_path):
             rclpy.spin(Chatty())
         """,
     )
-    result = run([path], duration=3.0, sandbox=False)
+    result = run([path], duration=3.0, sandbox=controller_host.sandboxed)
     assert result.crashes == []
     records = [r for r in result.logs if r.node == "chatty"]
     throttled = [r.t for r in records if r.msg == "throttled"]
@@ -168,7 +168,7 @@ def test_logger_throttle_duration_and_once(tmp_path):
     assert not any(r.msg == "hidden at INFO level" for r in records)
 
 
-def test_clock_now_follows_simulated_time(tmp_path):
+def test_clock_now_follows_simulated_time(tmp_path, controller_host):
     path = write(
         tmp_path,
         "clock_node.py",
@@ -192,7 +192,7 @@ def test_clock_now_follows_simulated_time(tmp_path):
             rclpy.spin(Clocky())
         """,
     )
-    result = run([path], duration=2.0, sandbox=False)
+    result = run([path], duration=2.0, sandbox=controller_host.sandboxed)
     assert result.crashes == []
     logs = node_logs(result, "clocky")
     assert logs[0] == f"start {LOCKSTEP_EPOCH_NS}"
@@ -259,7 +259,7 @@ def test_comparing_a_time_with_another_type_is_false_as_in_rclpy():
 # -- services -------------------------------------------------------------------------------------
 
 
-def test_service_client_call_async_with_done_callback_changes_the_pen(tmp_path):
+def test_service_client_call_async_with_done_callback_changes_the_pen(tmp_path, controller_host):
     path = write(
         tmp_path,
         "pen_client.py",
@@ -296,7 +296,7 @@ def test_service_client_call_async_with_done_callback_changes_the_pen(tmp_path):
         """,
     )
     sims = []
-    result = run([path], duration=2.0, sandbox=False, setup=sims.append)
+    result = run([path], duration=2.0, sandbox=controller_host.sandboxed, setup=sims.append)
     assert result.crashes == []
     calls = [c for c in result.service_calls if c[1] == "/turtle1/set_pen"]
     assert len(calls) == 1
@@ -308,9 +308,9 @@ def test_service_client_call_async_with_done_callback_changes_the_pen(tmp_path):
     assert turtle.pen_color == (255, 0, 0) and turtle.pen_width == 5
 
 
-def test_part7_reference_pen_controller_switches_colours(tmp_path):
+def test_part7_reference_pen_controller_switches_colours(tmp_path, controller_host):
     path = reference_path("turtle_controller_pen.py")
-    result = run([path], duration=20.0, sandbox=False)
+    result = run([path], duration=20.0, sandbox=controller_host.sandboxed)
     assert result.crashes == []
     pens = [(c[2].r, c[2].g, c[2].b) for c in result.service_calls if c[1] == "/turtle1/set_pen"]
     assert pens[:2] == [(255, 0, 0), (0, 255, 0)]
@@ -318,7 +318,7 @@ def test_part7_reference_pen_controller_switches_colours(tmp_path):
     assert result.wall_hits == 0
 
 
-def test_spin_until_future_complete_in_main_spawns_a_turtle(tmp_path):
+def test_spin_until_future_complete_in_main_spawns_a_turtle(tmp_path, controller_host):
     path = write(
         tmp_path,
         "spawner.py",
@@ -340,7 +340,7 @@ def test_spin_until_future_complete_in_main_spawns_a_turtle(tmp_path):
             rclpy.shutdown()
         """,
     )
-    result = run([path], duration=1.0, sandbox=False)
+    result = run([path], duration=1.0, sandbox=controller_host.sandboxed)
     assert result.crashes == []
     assert node_logs(result, "spawner") == ["spawned turtle2 done=True"]
     assert sorted(result.turtles) == ["turtle1", "turtle2"]
@@ -351,7 +351,7 @@ def test_spin_until_future_complete_in_main_spawns_a_turtle(tmp_path):
     assert len(spawn_calls) == 1 and spawn_calls[0][3].name == "turtle2"
 
 
-def test_spin_until_future_complete_inside_a_callback_is_a_crash_not_a_hang(tmp_path):
+def test_spin_until_future_complete_inside_a_callback_is_a_crash_not_a_hang(tmp_path, controller_host):
     path = write(
         tmp_path,
         "deadlock_node.py",
@@ -377,7 +377,7 @@ def test_spin_until_future_complete_inside_a_callback_is_a_crash_not_a_hang(tmp_
             rclpy.spin(Deadlock())
         """,
     )
-    result = run([path], duration=3.0, sandbox=False)
+    result = run([path], duration=3.0, sandbox=controller_host.sandboxed)
     assert len(result.crashes) == 1
     crash = result.crashes[0]
     assert crash.kind == "exception"
@@ -390,7 +390,7 @@ def test_spin_until_future_complete_inside_a_callback_is_a_crash_not_a_hang(tmp_
     assert not result.ok
 
 
-def test_client_call_inside_a_callback_is_refused_with_an_explanation(tmp_path):
+def test_client_call_inside_a_callback_is_refused_with_an_explanation(tmp_path, controller_host):
     path = write(
         tmp_path,
         "sync_call_node.py",
@@ -415,7 +415,7 @@ def test_client_call_inside_a_callback_is_refused_with_an_explanation(tmp_path):
             rclpy.spin(SyncCall())
         """,
     )
-    result = run([path], duration=1.0, sandbox=False)
+    result = run([path], duration=1.0, sandbox=controller_host.sandboxed)
     assert len(result.crashes) == 1
     assert result.crashes[0].message.startswith("RuntimeError: /clear: Client.call() inside a callback would deadlock")
 
@@ -423,7 +423,7 @@ def test_client_call_inside_a_callback_is_refused_with_an_explanation(tmp_path):
 # -- actions ------------------------------------------------------------------------------------------
 
 
-def test_action_client_rotate_absolute_with_feedback_and_result(tmp_path):
+def test_action_client_rotate_absolute_with_feedback_and_result(tmp_path, controller_host):
     path = write(
         tmp_path,
         "rotator.py",
@@ -466,7 +466,7 @@ def test_action_client_rotate_absolute_with_feedback_and_result(tmp_path):
             rclpy.spin(Rotator())
         """,
     )
-    result = run([path], duration=3.0, sandbox=False)
+    result = run([path], duration=3.0, sandbox=controller_host.sandboxed)
     assert result.crashes == []
     logs = node_logs(result, "rotator")
     assert logs[0] == "accepted True"
@@ -504,28 +504,28 @@ def main():
 """
 
 
-def test_parameter_from_the_command_line_overrides_the_default(tmp_path):
+def test_parameter_from_the_command_line_overrides_the_default(tmp_path, controller_host):
     path = write(tmp_path, "speedy.py", PARAM_NODE)
-    result = run([path], duration=0.5, sandbox=False, ros_args=["-p", "speed:=3.0"])
+    result = run([path], duration=0.5, sandbox=controller_host.sandboxed, ros_args=["-p", "speed:=3.0"])
     assert result.crashes == []
     assert node_logs(result, "speedy") == ["speed 3.0 float double 3.0"]
 
 
-def test_parameter_default_without_override(tmp_path):
+def test_parameter_default_without_override(tmp_path, controller_host):
     path = write(tmp_path, "speedy_default.py", PARAM_NODE)
-    result = run([path], duration=0.5, sandbox=False)
+    result = run([path], duration=0.5, sandbox=controller_host.sandboxed)
     assert node_logs(result, "speedy") == ["speed 1.0 float double 1.0"]
 
 
-def test_parameter_override_with_explicit_ros_args_marker(tmp_path):
+def test_parameter_override_with_explicit_ros_args_marker(tmp_path, controller_host):
     path = write(tmp_path, "speedy_marker.py", PARAM_NODE)
-    result = run([path], duration=0.5, sandbox=False, ros_args=["--ros-args", "-p", "speedy:speed:=2.5"])
+    result = run([path], duration=0.5, sandbox=controller_host.sandboxed, ros_args=["--ros-args", "-p", "speedy:speed:=2.5"])
     assert node_logs(result, "speedy") == ["speed 2.5 float double 2.5"]
 
 
-def test_integer_override_of_a_double_parameter_is_refused_with_a_hint(tmp_path):
+def test_integer_override_of_a_double_parameter_is_refused_with_a_hint(tmp_path, controller_host):
     path = write(tmp_path, "speedy_int.py", PARAM_NODE)
-    result = run([path], duration=0.5, sandbox=False, ros_args=["-p", "speed:=3"])
+    result = run([path], duration=0.5, sandbox=controller_host.sandboxed, ros_args=["-p", "speed:=3"])
     assert len(result.crashes) == 1
     message = result.crashes[0].message
     assert message.startswith("InvalidParameterTypeException: ")
@@ -543,7 +543,7 @@ def test_malformed_ros_args_raise_ros_args_error(tmp_path):
         run([path], duration=0.5, sandbox=False, ros_args=["-p"])
 
 
-def test_remap_sends_turtle1_commands_to_turtle2(tmp_path):
+def test_remap_sends_turtle1_commands_to_turtle2(tmp_path, controller_host):
     path = write(
         tmp_path,
         "remapped.py",
@@ -572,7 +572,7 @@ def test_remap_sends_turtle1_commands_to_turtle2(tmp_path):
             rclpy.spin(node)
         """,
     )
-    result = run([path], duration=2.0, sandbox=False, ros_args=["--remap", "/turtle1/cmd_vel:=/turtle2/cmd_vel"])
+    result = run([path], duration=2.0, sandbox=controller_host.sandboxed, ros_args=["--remap", "/turtle1/cmd_vel:=/turtle2/cmd_vel"])
     assert result.crashes == []
     assert node_logs(result, "remapped") == ["publishing on /turtle2/cmd_vel"]
     assert result.turtles["turtle1"].distance == 0.0
@@ -580,7 +580,7 @@ def test_remap_sends_turtle1_commands_to_turtle2(tmp_path):
     assert result.turtles["turtle2"].x > 3.5
 
 
-def test_remap_with_short_flag_and_relative_topic(tmp_path):
+def test_remap_with_short_flag_and_relative_topic(tmp_path, controller_host):
     path = write(
         tmp_path,
         "remapped_rel.py",
@@ -596,14 +596,14 @@ def test_remap_with_short_flag_and_relative_topic(tmp_path):
             node.get_logger().info(pub.topic_name)
         """,
     )
-    result = run([path], duration=0.5, sandbox=False, ros_args=["-r", "cmd_vel:=/turtle1/cmd_vel"])
+    result = run([path], duration=0.5, sandbox=controller_host.sandboxed, ros_args=["-r", "cmd_vel:=/turtle1/cmd_vel"])
     assert node_logs(result, "rel") == ["/turtle1/cmd_vel"]
 
 
 # -- messages --------------------------------------------------------------------------------------------
 
 
-def test_assigning_an_int_to_a_float_field_fails_mentioning_the_float(tmp_path):
+def test_assigning_an_int_to_a_float_field_fails_mentioning_the_float(tmp_path, controller_host):
     path = write(
         tmp_path,
         "int_field.py",
@@ -623,7 +623,7 @@ def test_assigning_an_int_to_a_float_field_fails_mentioning_the_float(tmp_path):
             node.get_logger().info(f"x stays {msg.linear.x!r}")
         """,
     )
-    result = run([path], duration=0.5, sandbox=False)
+    result = run([path], duration=0.5, sandbox=controller_host.sandboxed)
     logs = node_logs(result, "int_field")
     assert len(logs) == 2
     assert logs[0].startswith("AssertionError: ")
@@ -641,7 +641,7 @@ def test_int_field_assertion_directly():
     assert msg.linear.x == 2.0
 
 
-def test_publishing_the_wrong_message_type_names_both_types(tmp_path):
+def test_publishing_the_wrong_message_type_names_both_types(tmp_path, controller_host):
     path = write(
         tmp_path,
         "wrong_type.py",
@@ -661,7 +661,7 @@ def test_publishing_the_wrong_message_type_names_both_types(tmp_path):
                 node.get_logger().error(f"TypeError: {err}")
         """,
     )
-    result = run([path], duration=0.5, sandbox=False)
+    result = run([path], duration=0.5, sandbox=controller_host.sandboxed)
     logs = node_logs(result, "wrong_type")
     assert len(logs) == 1
     assert logs[0].startswith("TypeError: ")
@@ -669,7 +669,7 @@ def test_publishing_the_wrong_message_type_names_both_types(tmp_path):
     assert "turtlesim/msg/Pose" in logs[0]
 
 
-def test_uncaught_wrong_message_type_is_a_crash(tmp_path):
+def test_uncaught_wrong_message_type_is_a_crash(tmp_path, controller_host):
     path = write(
         tmp_path,
         "wrong_type_crash.py",
@@ -686,7 +686,7 @@ def test_uncaught_wrong_message_type_is_a_crash(tmp_path):
             pub.publish(String(data="go"))  # BAD PUBLISH
         """,
     )
-    result = run([path], duration=0.5, sandbox=False)
+    result = run([path], duration=0.5, sandbox=controller_host.sandboxed)
     assert len(result.crashes) == 1
     message = result.crashes[0].message
     assert message.startswith("TypeError: ")
@@ -694,7 +694,7 @@ def test_uncaught_wrong_message_type_is_a_crash(tmp_path):
     assert any(f"line {line_of(path, 'BAD PUBLISH')}" in f for f in result.crashes[0].frames)
 
 
-def test_a_turtlesim_msgs_subscriber_receives_turtlesims_poses(tmp_path):
+def test_a_turtlesim_msgs_subscriber_receives_turtlesims_poses(tmp_path, controller_host):
     path = write(
         tmp_path,
         "msgs_sub.py",
@@ -712,7 +712,7 @@ def test_a_turtlesim_msgs_subscriber_receives_turtlesims_poses(tmp_path):
             rclpy.spin(node)
         """,
     )
-    result = run([path], duration=1.0, sandbox=False, distro="kilted")  # turtlesim_msgs from Kilted on
+    result = run([path], duration=1.0, sandbox=controller_host.sandboxed, distro="kilted")  # turtlesim_msgs from Kilted on
     assert result.crashes == []
     assert node_logs(result, "msgs_sub") == ["61 5.544445"]  # ticks 2..62
 
@@ -720,7 +720,7 @@ def test_a_turtlesim_msgs_subscriber_receives_turtlesims_poses(tmp_path):
 # -- QoS -----------------------------------------------------------------------------------------------
 
 
-def test_qos_profile_and_sensor_data_profile_are_accepted(tmp_path):
+def test_qos_profile_and_sensor_data_profile_are_accepted(tmp_path, controller_host):
     path = write(
         tmp_path,
         "qos_node.py",
@@ -768,7 +768,7 @@ def test_qos_profile_and_sensor_data_profile_are_accepted(tmp_path):
             depths["sub"] = [s.depth for s in mine]
             depths["pub"] = [p.depth for p in pubs]
 
-    result = run([path], duration=2.0, sandbox=False, setup=sims.append, on_log=on_log)
+    result = run([path], duration=2.0, sandbox=controller_host.sandboxed, setup=sims.append, on_log=on_log)
     assert result.crashes == []
     logs = node_logs(result, "qos_node")
     assert logs[0] == "ready 4 5"
@@ -824,9 +824,9 @@ def main():
 """
 
 
-def test_a_crash_in_a_callback_is_reported_with_frames_and_the_run_goes_on(tmp_path):
+def test_a_crash_in_a_callback_is_reported_with_frames_and_the_run_goes_on(tmp_path, controller_host):
     path = write(tmp_path, "crasher.py", CRASHER)
-    result = run([path], duration=4.0, sandbox=False)
+    result = run([path], duration=4.0, sandbox=controller_host.sandboxed)
     assert result.sim_time == 4.0
     assert len(result.crashes) == 1
     crash = result.crashes[0]
@@ -850,11 +850,11 @@ def test_a_crash_in_a_callback_is_reported_with_frames_and_the_run_goes_on(tmp_p
     assert result.turtles["turtle1"].x > 5.544
 
 
-def test_the_turtle_stops_at_once_when_its_controller_crashes(tmp_path):
+def test_the_turtle_stops_at_once_when_its_controller_crashes(tmp_path, controller_host):
     # The crashing callback published a Twist just before raising; that command
     # must not keep the turtle driving for another second after the crash.
     path = write(tmp_path, "crasher_stop.py", CRASHER)
-    result = run([path], duration=4.0, sandbox=False, keep_poses=True)
+    result = run([path], duration=4.0, sandbox=controller_host.sandboxed, keep_poses=True)
     crash = result.crashes[0]
     poses = result.poses["turtle1"]
     before = [x for t, x, _, _ in poses if t < crash.t]
@@ -907,17 +907,17 @@ def main():
 
 
 @pytest.mark.parametrize("main", ["", MAIN_WITH_FINALLY], ids=["node-class-only", "main-with-finally"])
-def test_the_turtle_stops_when_the_controller_crashes_in_another_callback(tmp_path, main):
+def test_the_turtle_stops_when_the_controller_crashes_in_another_callback(tmp_path, main, controller_host):
     path = tmp_path / "crasher.py"
     path.write_text(DRIVE_THEN_CRASH + main)
-    result = run([path], duration=3.0, sandbox=False, keep_poses=True)
+    result = run([path], duration=3.0, sandbox=controller_host.sandboxed, keep_poses=True)
     assert [c.message for c in result.crashes] == ["KeyError: 'gone'"]
     after = {(x, y, theta) for t, x, y, theta in result.poses["turtle1"] if t > 1.05}
     assert len(after) == 1
     assert result.turtles["turtle1"].distance == pytest.approx(0.944, abs=0.02)
 
 
-def test_a_crash_at_import_time_reports_the_line(tmp_path):
+def test_a_crash_at_import_time_reports_the_line(tmp_path, controller_host):
     path = write(
         tmp_path,
         "bad_import.py",
@@ -931,14 +931,14 @@ def test_a_crash_at_import_time_reports_the_line(tmp_path):
             rclpy.init()
         """,
     )
-    result = run([path], duration=0.5, sandbox=False)
+    result = run([path], duration=0.5, sandbox=controller_host.sandboxed)
     assert len(result.crashes) == 1
     assert result.crashes[0].message == "ZeroDivisionError: division by zero"
     assert any(f"line {line_of(path, 'ZERO')}" in f for f in result.crashes[0].frames)
     assert result.sim_time == 0.5
 
 
-def test_sys_exit_with_an_error_status_is_reported(tmp_path):
+def test_sys_exit_with_an_error_status_is_reported(tmp_path, controller_host):
     path = write(
         tmp_path,
         "exits.py",
@@ -950,7 +950,7 @@ def test_sys_exit_with_an_error_status_is_reported(tmp_path):
             sys.exit(3)
         """,
     )
-    result = run([path], duration=0.5, sandbox=False)
+    result = run([path], duration=0.5, sandbox=controller_host.sandboxed)
     assert [(c.kind, c.message) for c in result.crashes] == [("exit", "exited with status 3")]
 
 

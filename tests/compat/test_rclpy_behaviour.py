@@ -7,22 +7,24 @@ profiles and Futures. The tests that need no turtletui host (Duration, Time, Clo
 Parameter, QoS, Future) were also run unchanged against the real rclpy and pass there, as do
 the host-based init/shutdown, logging-filter, level and parameter-callback ones (with a
 fixture doing rclpy.init/try_shutdown, and without the checks of captured log records).
+
+The host-based ones run as a controller's main() (run_body) under both hosts, in-process
+and sandboxed, and must behave the same in each.
 """
 
 from __future__ import annotations
 
+import inspect
 import json
+import textwrap
 import warnings
 from pathlib import Path
 
 import pytest
+from support.hosts import node_logs
 
 from turtletui import compat
-from turtletui.compat import context as compat_context
-from turtletui.compat import logging as compat_logging
-from turtletui.graph.core import NS_PER_S
-from turtletui.runtime.inprocess import InProcessHost
-from turtletui.runtime.simulation import Simulation
+from turtletui.api import RunResult
 
 SURFACE = json.loads(Path(__file__).with_name("rclpy_surface.json").read_text(encoding="utf-8"))
 
@@ -45,36 +47,42 @@ from rclpy.task import Future  # noqa: E402
 from rclpy.time import Time  # noqa: E402
 
 
-class Host:
-    """A simulation bound as the host of rclpy calls made by the test itself."""
-
-    def __init__(self) -> None:
-        self.records = []
-        self.sim = Simulation(log_sinks=[self.records.append])
-        self.inproc = InProcessHost(self.sim, "test", 60 * NS_PER_S)
-
-    def logs(self, node: str | None = None) -> list[str]:
-        return [r.msg for r in self.records if node is None or r.node == node]
-
-
-@pytest.fixture
-def host():
-    compat.install()
-    compat_context.reset_default_context()
-    compat_logging.reset_levels()
-    bound = Host()
-    compat_context.bind_host(bound.inproc)
-    try:
-        yield bound
-    finally:
-        bound.inproc._ended = True
-        compat_context.get_default_context().try_shutdown()
-        compat_context.bind_host(None)
-        compat_logging.reset_levels()
+def run_body(controller_host, body, *, duration: float = 2.0, **options) -> RunResult:
+    """Run ``body`` (a function of this module, no arguments) as a controller's
+    main() under ``controller_host``; an assertion failing in it is a crash."""
+    source = "\n".join(
+        [
+            BODY_HEADER,
+            f"SURFACE = {SURFACE!r}",
+            *(inspect.getsource(helper) for helper in (beh_node, calls)),
+            textwrap.dedent(inspect.getsource(body)),
+            f"def main():\n    {body.__name__}()\n",
+        ]
+    )
+    result = controller_host.run(source, duration=duration, **options)
+    assert result.ok, result.crashes
+    return result
 
 
-@pytest.fixture
-def node(host):
+BODY_HEADER = """
+import pytest
+import rclpy
+from rclpy.clock import Clock, ClockType
+from rclpy.duration import Duration
+from rclpy.logging import LoggingSeverity
+from rclpy.parameter import Parameter
+from rclpy.qos import QoSProfile, qos_profile_sensor_data, qos_profile_system_default
+from rclpy.task import Future
+"""
+"""What the bodies run by run_body may use besides SURFACE."""
+
+
+def calls(log, n=3):
+    return [log() for _ in range(n)]
+
+
+def beh_node():
+    """The node most bodies log with (as a fixture of the host would make it)."""
     rclpy.init(args=[])
     return rclpy.create_node("beh")
 
@@ -82,24 +90,36 @@ def node(host):
 # -- init and shutdown ---------------------------------------------------------------------------
 
 
-def test_ok_is_false_before_init(host):
+def ok_is_false_before_init():
     assert rclpy.ok() is False
 
 
-def test_shutdown_before_init_raises_and_try_shutdown_does_not(host):
+def test_ok_is_false_before_init(controller_host):
+    run_body(controller_host, ok_is_false_before_init)
+
+
+def shutdown_before_init_raises_and_try_shutdown_does_not():
     with pytest.raises(RuntimeError, match="Context must be initialized before it can be shutdown"):
         rclpy.shutdown()
     assert rclpy.try_shutdown() is None
 
 
-def test_init_twice_raises(host):
+def test_shutdown_before_init_raises_and_try_shutdown_does_not(controller_host):
+    run_body(controller_host, shutdown_before_init_raises_and_try_shutdown_does_not)
+
+
+def init_twice_raises():
     rclpy.init(args=[])
     with pytest.raises(RuntimeError, match="must only be called once"):
         rclpy.init(args=[])
     assert rclpy.ok() is True
 
 
-def test_shutdown_twice_raises_then_init_works_again(host):
+def test_init_twice_raises(controller_host):
+    run_body(controller_host, init_twice_raises)
+
+
+def shutdown_twice_raises_then_init_works_again():
     rclpy.init(args=[])
     assert rclpy.shutdown() is None
     assert rclpy.ok() is False
@@ -111,7 +131,11 @@ def test_shutdown_twice_raises_then_init_works_again(host):
     rclpy.shutdown()
 
 
-def test_init_is_a_context_manager_that_shuts_down(host):
+def test_shutdown_twice_raises_then_init_works_again(controller_host):
+    run_body(controller_host, shutdown_twice_raises_then_init_works_again)
+
+
+def init_is_a_context_manager_that_shuts_down():
     with rclpy.init(args=[]) as manager:
         inside = rclpy.ok()
     assert inside is True
@@ -122,37 +146,58 @@ def test_init_is_a_context_manager_that_shuts_down(host):
     assert rclpy.ok() is False
 
 
+def test_init_is_a_context_manager_that_shuts_down(controller_host):
+    run_body(controller_host, init_is_a_context_manager_that_shuts_down)
+
+
 # -- loggers --------------------------------------------------------------------------------------
 
 
-def test_logging_calls_return_whether_they_logged(host, node):
-    logger = node.get_logger()
+def logging_calls_return_whether_they_logged():
+    logger = beh_node().get_logger()
     assert logger.info("x") is True
     assert logger.debug("x") is False
-    assert host.logs("beh") == ["x"]
 
 
-def test_non_string_messages_are_handled_as_rclpy_does(host, node):
-    logger = node.get_logger()
+def test_logging_calls_return_whether_they_logged(controller_host):
+    result = run_body(controller_host, logging_calls_return_whether_they_logged)
+    assert node_logs(result, "beh") == ["x"]
+
+
+def non_string_messages_are_handled_as_rclpy_does():
+    logger = beh_node().get_logger()
     with pytest.raises(TypeError):
         logger.info(5)
     assert logger.debug(5) is False  # below the level: never converted, no error
     assert logger.info(None) is True
     assert logger.info(b"ab") is True
-    assert host.logs("beh") == ["(null)", "ab"]
 
 
-def test_unknown_logging_keyword_is_a_type_error(host, node):
+def test_non_string_messages_are_handled_as_rclpy_does(controller_host):
+    result = run_body(controller_host, non_string_messages_are_handled_as_rclpy_does)
+    assert node_logs(result, "beh") == ["(null)", "ab"]
+
+
+def unknown_logging_keyword_is_a_type_error():
     with pytest.raises(TypeError, match='parameter "foo" is not one of the recognized logging options'):
-        node.get_logger().info("x", foo=1)
+        beh_node().get_logger().info("x", foo=1)
 
 
-def test_name_keyword_logs_under_another_name(host, node):
-    assert node.get_logger().info("x", name="other") is True
-    assert [(r.node, r.msg) for r in host.records if r.node != "turtlesim"] == [("other", "x")]
+def test_unknown_logging_keyword_is_a_type_error(controller_host):
+    run_body(controller_host, unknown_logging_keyword_is_a_type_error)
 
 
-def test_every_recorded_logging_keyword_is_accepted(host, node):
+def name_keyword_logs_under_another_name():
+    assert beh_node().get_logger().info("x", name="other") is True
+
+
+def test_name_keyword_logs_under_another_name(controller_host):
+    result = run_body(controller_host, name_keyword_logs_under_another_name)
+    assert [(r.node, r.msg) for r in result.logs if r.node in ("beh", "other")] == [("other", "x")]
+
+
+def every_recorded_logging_keyword_is_accepted():
+    node = beh_node()
     values = {
         "name": "beh",
         "once": True,
@@ -173,23 +218,28 @@ def test_every_recorded_logging_keyword_is_accepted(host, node):
             kwargs["throttle_duration_sec"] = 1.0
         logged = rclpy.logging.get_logger("kw").log(f"log {keyword}", LoggingSeverity.INFO, **kwargs)
         assert logged is (keyword != "skip_first")
-    assert host.logs("beh") == ["with name"]
 
 
-def calls(log, n=3):
-    return [log() for _ in range(n)]
+def test_every_recorded_logging_keyword_is_accepted(controller_host):
+    result = run_body(controller_host, every_recorded_logging_keyword_is_accepted)
+    assert node_logs(result, "beh") == ["with name"]
 
 
-def test_once_skip_first_and_their_combination(host, node):
-    logger = node.get_logger()
+def once_skip_first_and_their_combination():
+    logger = beh_node().get_logger()
     assert calls(lambda: logger.info("once", once=True)) == [True, False, False]
     assert calls(lambda: logger.info("skip", skip_first=True)) == [False, True, True]
     assert calls(lambda: logger.info("so", skip_first=True, once=True)) == [False, True, False]
     assert calls(lambda: logger.info("of", once=False), 2) == [True, True]
-    assert host.logs("beh") == ["once", "skip", "skip", "so", "of", "of"]
 
 
-def test_throttle_logs_first_then_once_per_period_of_simulated_time(host, node):
+def test_once_skip_first_and_their_combination(controller_host):
+    result = run_body(controller_host, once_skip_first_and_their_combination)
+    assert node_logs(result, "beh") == ["once", "skip", "skip", "so", "of", "of"]
+
+
+def throttle_logs_first_then_once_per_period_of_simulated_time():
+    node = beh_node()
     logger = node.get_logger()
 
     def tick():
@@ -202,16 +252,25 @@ def test_throttle_logs_first_then_once_per_period_of_simulated_time(host, node):
     assert tick() is True
 
 
-def test_throttle_parameters_are_checked(host, node):
-    logger = node.get_logger()
+def test_throttle_logs_first_then_once_per_period_of_simulated_time(controller_host):
+    result = run_body(controller_host, throttle_logs_first_then_once_per_period_of_simulated_time)
+    assert [r.t for r in result.logs if r.node == "beh"] == [0.0, 1.1]
+
+
+def throttle_parameters_are_checked():
+    logger = beh_node().get_logger()
     with pytest.raises(TypeError, match="throttle_duration_sec"):
         logger.info("x", throttle_time_source_type=Clock())
     with pytest.raises(ValueError, match="is not a clock instance"):
         logger.info("x", throttle_duration_sec=1, throttle_time_source_type=5)
 
 
-def test_one_call_site_keeps_its_severity_and_filters(host, node):
-    logger = node.get_logger()
+def test_throttle_parameters_are_checked(controller_host):
+    run_body(controller_host, throttle_parameters_are_checked)
+
+
+def one_call_site_keeps_its_severity_and_filters():
+    logger = beh_node().get_logger()
     with pytest.raises(ValueError, match="Logger severity cannot be changed between calls"):
         for severity in (LoggingSeverity.INFO, LoggingSeverity.WARN):
             logger.log("x", severity)
@@ -222,8 +281,13 @@ def test_one_call_site_keeps_its_severity_and_filters(host, node):
         logger.info("a") if i else logger.warning("b")
 
 
-def test_levels_belong_to_names_and_are_validated(host, node):
-    logger = node.get_logger()
+def test_one_call_site_keeps_its_severity_and_filters(controller_host):
+    result = run_body(controller_host, one_call_site_keeps_its_severity_and_filters)
+    assert node_logs(result, "beh") == ["x", "t", "b", "a"]
+
+
+def levels_belong_to_names_and_are_validated():
+    logger = beh_node().get_logger()
     assert logger.set_level(LoggingSeverity.DEBUG) is None
     assert logger.get_effective_level() is LoggingSeverity.DEBUG
     assert rclpy.logging.get_logger("beh").get_effective_level() is LoggingSeverity.DEBUG
@@ -239,7 +303,12 @@ def test_levels_belong_to_names_and_are_validated(host, node):
     assert logger.log("y", 20) is True
 
 
-def test_module_level_logging_functions(host):
+def test_levels_belong_to_names_and_are_validated(controller_host):
+    result = run_body(controller_host, levels_belong_to_names_and_are_validated)
+    assert node_logs(result, "beh") == ["now shown", "y"]
+
+
+def module_level_logging_functions():
     assert rclpy.logging.get_logger("a") is not rclpy.logging.get_logger("a")  # new object per call
     with pytest.raises(ValueError, match="Logger name must not be empty"):
         rclpy.logging.get_logger("")
@@ -248,6 +317,11 @@ def test_module_level_logging_functions(host):
     assert rclpy.logging.get_logger_effective_level("a.b") is LoggingSeverity.DEBUG
     assert rclpy.logging.get_logger_effective_level("z") is LoggingSeverity.INFO
     assert rclpy.logging.get_logger("a").debug("shown") is True
+
+
+def test_module_level_logging_functions(controller_host):
+    result = run_body(controller_host, module_level_logging_functions)
+    assert node_logs(result, "a") == ["shown"]
 
 
 # -- Duration, Time, Clock --------------------------------------------------------------------------
@@ -340,12 +414,17 @@ def test_clock_types():
         Clock(clock_type=1)
 
 
-def test_node_clock_reads_simulated_ros_time(host, node):
+def node_clock_reads_simulated_ros_time():
+    node = beh_node()
     now = node.get_clock().now()
     assert now.clock_type == ClockType.ROS_TIME
     assert Clock().now().clock_type == ClockType.SYSTEM_TIME
     assert node.get_clock().sleep_for(Duration(seconds=2)) is True
     assert node.get_clock().now() - now == Duration(seconds=2)
+
+
+def test_node_clock_reads_simulated_ros_time(controller_host):
+    run_body(controller_host, node_clock_reads_simulated_ros_time, duration=3.0)
 
 
 # -- parameters ---------------------------------------------------------------------------------------
@@ -426,9 +505,10 @@ def test_parameter_messages_come_from_turtletui_interfaces():
         assert getattr(parameter, name) is getattr(interfaces, name)
 
 
-def test_on_set_callback_returning_the_rcl_interfaces_result(host, node):
+def on_set_callback_returning_the_rcl_interfaces_result():
     from rcl_interfaces.msg import ParameterDescriptor, SetParametersResult
 
+    node = beh_node()
     node.declare_parameter("speed", 1.0)
     node.declare_parameter("fixed", 2, ParameterDescriptor(read_only=True))
 
@@ -443,6 +523,10 @@ def test_on_set_callback_returning_the_rcl_interfaces_result(host, node):
     assert (bad.successful, bad.reason) == (False, "negative")
     assert node.get_parameter("speed").get_parameter_value().double_value == 2.0
     assert node.set_parameters([Parameter("fixed", value=3)])[0].successful is False
+
+
+def test_on_set_callback_returning_the_rcl_interfaces_result(controller_host):
+    run_body(controller_host, on_set_callback_returning_the_rcl_interfaces_result)
 
 
 # -- QoS --------------------------------------------------------------------------------------------
@@ -531,7 +615,8 @@ def test_future_callbacks():
     assert seen[-1] is cancelled
 
 
-def test_spin_until_future_complete_ends_on_cancel(host, node):
+def spin_until_future_complete_ends_on_cancel():
+    node = beh_node()
     future = Future()
     node.create_timer(1.0, future.cancel)
     start = node.get_clock().now()
@@ -540,10 +625,14 @@ def test_spin_until_future_complete_ends_on_cancel(host, node):
     assert node.get_clock().now() - start == Duration(seconds=1)
 
 
+def test_spin_until_future_complete_ends_on_cancel(controller_host):
+    run_body(controller_host, spin_until_future_complete_ends_on_cancel, duration=3.0)
+
+
 # -- parameters turtletui accepts and ignores ------------------------------------------------------
 
 
-def test_accepted_but_ignored_arguments_change_nothing(host):
+def accepted_but_ignored_arguments_change_nothing():
     from geometry_msgs.msg import Twist
     from rclpy.action import ActionClient
     from rclpy.callback_groups import ReentrantCallbackGroup
@@ -577,3 +666,7 @@ def test_accepted_but_ignored_arguments_change_nothing(host):
     assert executor.shutdown(wait_for_threads=False) is True
     rclpy.shutdown(uninstall_handlers=True)
     assert rclpy.ok() is False
+
+
+def test_accepted_but_ignored_arguments_change_nothing(controller_host):
+    run_body(controller_host, accepted_but_ignored_arguments_change_nothing)

@@ -971,3 +971,25 @@ def test_the_graders_secrets_never_reach_student_code(tmp_path: Path, monkeypatc
     assert not any("secret" in value or "0123456789abcdef" in value for value in seen.values())
     assert seen["ROS_DOMAIN_ID"] == "17"
     assert seen["PATH"] == os.environ["PATH"]
+
+
+@pytest.mark.parametrize(
+    ("key", "forged", "says"),
+    [
+        ("removed", [["service", 1]], "not enough values to unpack"),
+        ("removed", [["turtle", 1, "/turtle1"]], "not a removal"),
+        ("decl", [["pub", 99, 1, "/x", "geometry_msgs/msg/Twist", 1, "", [7, 7, 7]]], "not QoS policies"),
+    ],
+    ids=["short removal", "unknown removal", "unknown qos"],
+)
+def test_forged_graph_changes_are_refused(tmp_path: Path, key: str, forged: list, says: str) -> None:
+    path = write(tmp_path, f"""
+        from turtletui.compat import context
+
+        def misbehave(node):
+            context.current_host().graph.out[{key!r}].extend({forged!r})
+    """)
+    result = go(path)
+    crash = only_crash(result, "exception", path)
+    assert "sent something turtlesim cannot accept" in crash.message and says in crash.message
+    assert_gone(read_pid(tmp_path))

@@ -244,6 +244,10 @@ class Graph:
         self._timers: list[tuple[int, int, Timer]] = []
         self._seq = 0
         self._goal_ids = 0
+        self.version = 0
+        """Bumped by every change of who is on the graph (nodes, endpoints,
+        services, clients, actions): a sandbox sends its child a new mirror
+        of the graph when it moved."""
 
     # -- time ---------------------------------------------------------------
     @property
@@ -315,12 +319,14 @@ class Graph:
     ) -> NodeRecord:
         """A new node; ``parameter_setter`` is how ``ros2 param set`` reaches it
         (see NodeRecord.parameter_setter)."""
+        self.version += 1
         node = NodeRecord(name, namespace or "", owner, parameter_setter=parameter_setter)
         self.nodes.append(node)
         return node
 
     def remove_node(self, node: NodeRecord) -> None:
         """Destroy a node and every endpoint it owns."""
+        self.version += 1
         node.alive = False
         if node in self.nodes:
             self.nodes.remove(node)
@@ -399,6 +405,7 @@ class Graph:
     def add_publisher(
         self, node: NodeRecord, name: str, msg_type: type, depth: int, *, qos: Any = None
     ) -> Publisher:
+        self.version += 1
         topic = self.topic(name, msg_type)
         pub = Publisher(node, topic, depth, node.owner, qos)
         topic.publishers.append(pub)
@@ -418,6 +425,7 @@ class Graph:
     ) -> Subscription:
         """Subscribe ``callback`` to topic ``name``; with ``copy``, each message is
         queued as ``copy(msg)``, the subscription's own (see Subscription.copy)."""
+        self.version += 1
         topic = self.topic(name, msg_type)
         sub = Subscription(node, topic, depth, callback, node.owner, qos, copy)
         topic.subscriptions.append(sub)
@@ -425,6 +433,7 @@ class Graph:
 
     def remove_endpoint(self, endpoint: Publisher | Subscription) -> bool:
         """Take a publisher or subscription off its topic; False if it was not on it."""
+        self.version += 1
         topic = endpoint.topic
         if isinstance(endpoint, Publisher):
             kept = [p for p in topic.publishers if p is not endpoint]
@@ -528,6 +537,7 @@ class Graph:
         srv_type: type,
         handler: Callable[[Any, Callable[[Any], None]], None],
     ) -> Service:
+        self.version += 1
         if name in self.services:
             raise GraphError(f"service {name} is already provided by {self.services[name].node.fqn}")
         service = Service(node, name, srv_type, self._type_name(srv_type), handler, node.owner)
@@ -537,6 +547,7 @@ class Graph:
     def remove_service(self, service: Service) -> bool:
         """Take a service server off the graph: calls queued to it stay
         unanswered, as in ROS. False if it was not on the graph."""
+        self.version += 1
         if self.services.get(service.name) is not service:
             return False
         del self.services[service.name]
@@ -557,12 +568,14 @@ class Graph:
         return sum(1 for c in self.clients if c.name == name)
 
     def add_client(self, node: NodeRecord, name: str, srv_type: type) -> ServiceClient:
+        self.version += 1
         client = ServiceClient(node, name, srv_type, self._type_name(srv_type), node.owner)
         self.clients.append(client)
         return client
 
     def remove_client(self, client: ServiceClient) -> bool:
         """Take a service client off the graph; False if it was not on it."""
+        self.version += 1
         if client not in self.clients:
             return False
         self.clients.remove(client)
@@ -592,6 +605,7 @@ class Graph:
     def add_action_server(
         self, node: NodeRecord, name: str, action_type: type, on_goal: Callable[[GoalHandle], None]
     ) -> ActionServer:
+        self.version += 1
         if name in self.action_servers:
             raise GraphError(f"action {name} is already provided by {self.action_servers[name].node.fqn}")
         server = ActionServer(node, name, action_type, self._type_name(action_type), on_goal, node.owner)
@@ -600,6 +614,7 @@ class Graph:
 
     def remove_action_server(self, server: ActionServer) -> bool:
         """Take an action server off the graph; False if it was not on it."""
+        self.version += 1
         if self.action_servers.get(server.name) is not server:
             return False
         del self.action_servers[server.name]
@@ -616,12 +631,14 @@ class Graph:
         return [(name, [type_name]) for name, type_name in sorted(found)]
 
     def add_action_client(self, node: NodeRecord, name: str, action_type: type) -> ActionClientRecord:
+        self.version += 1
         client = ActionClientRecord(node, name, action_type, self._type_name(action_type), node.owner)
         self.action_clients.append(client)
         return client
 
     def remove_action_client(self, client: ActionClientRecord) -> bool:
         """Take an action client off the graph; False if it was not on it."""
+        self.version += 1
         if client not in self.action_clients:
             return False
         self.action_clients.remove(client)

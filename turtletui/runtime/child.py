@@ -1,6 +1,8 @@
 """The sandboxed side: runs one controller in a child process.
 
-The child has its own Graph holding the controller's nodes. Whenever the
+The child has its own Graph holding the controller's nodes, and records
+standing for everyone else's, rebuilt from the mirror of the parent's graph
+the parent sends when it changed (turtletui.runtime.graph_mirror). Whenever the
 controller waits (spin, spin_once, sleeps, waiting for a future) and has
 nothing ready, the child sends the parent what its nodes did (declarations,
 messages, calls, logs) and blocks until the parent answers with the new time
@@ -22,10 +24,19 @@ from select import select as _select
 from time import monotonic as _monotonic
 from typing import Any
 
-from turtletui.graph.core import Graph, NodeRecord, Publisher, Subscription, Topic
+from turtletui.graph.core import (
+    ActionClientRecord,
+    Graph,
+    NodeRecord,
+    Publisher,
+    Service,
+    ServiceClient,
+    Subscription,
+    Topic,
+)
 from turtletui.graph.logs import WARN, LogRecord
 from turtletui.interfaces import get_interface, interface_name, to_values, trusted_from_values
-from turtletui.runtime import wire
+from turtletui.runtime import graph_mirror, wire
 from turtletui.runtime.host import CallbackTracking
 from turtletui.runtime.scheduler import Scheduler
 
@@ -46,12 +57,12 @@ class ChildGraph(Graph):
 
     def __init__(self) -> None:
         super().__init__(type_name=interface_name)
-        self.out: dict[str, list] = {"decl": [], "pub": [], "call": [], "goal": [], "cancel": [], "log": [], "resp": []}
+        self.out: dict[str, list] = {
+            "decl": [], "pub": [], "call": [], "goal": [], "cancel": [], "log": [], "resp": [], "removed": []
+        }
         self._ids = itertools.count(1)
-        self.remote_services: set[str] = set()
-        self.remote_actions: set[str] = set()
-        self.remote_action_types: dict[str, Any] = {}
-        self._subs: dict[int, Subscription] = {}
+        self._own: dict[int, Any] = {}
+        """The controller's nodes, publishers and subscriptions by wire id."""
         self._calls: dict[int, Callable[[Any], None]] = {}
         self._goals: dict[int, tuple] = {}
 
@@ -70,6 +81,7 @@ class ChildGraph(Graph):
     def add_node(self, name: str, namespace: str = "", owner: str = OWNER, **options: Any) -> NodeRecord:
         node = super().add_node(name, namespace, owner, **options)
         node.wire_id = next(self._ids)
+        self._own[node.wire_id] = node
         self.out["decl"].append(["node", node.wire_id, name, namespace])
         return node
 
@@ -81,20 +93,24 @@ class ChildGraph(Graph):
 
     def remove_node(self, node: NodeRecord) -> None:
         super().remove_node(node)
+        self._own.pop(node.wire_id, None)
         self.out["decl"].append(["rmnode", node.wire_id])
 
     def add_publisher(self, node: NodeRecord, name: str, msg_type: type, depth: int, **options: Any) -> Publisher:
         pub = super().add_publisher(node, name, msg_type, depth, **options)
         pub.wire_id = next(self._ids)
-        self.out["decl"].append(["pub", pub.wire_id, node.wire_id, name, pub.topic.type_name, depth])
+        self._own[pub.wire_id] = pub
+        qos = graph_mirror.QosPolicies.of(pub.qos)
+        self.out["decl"].append(["pub", pub.wire_id, node.wire_id, name, pub.topic.type_name, depth, "", qos])
         return pub
 
     def add_subscription(self, node, name, msg_type, depth, callback, **options) -> Subscription:
         sub = super().add_subscription(node, name, msg_type, depth, callback, **options)
         sub.wire_id = next(self._ids)
-        self._subs[sub.wire_id] = sub
+        self._own[sub.wire_id] = sub
         label = getattr(callback, "label", "")
-        self.out["decl"].append(["sub", sub.wire_id, node.wire_id, name, sub.topic.type_name, depth, label])
+        qos = graph_mirror.QosPolicies.of(sub.qos)
+        self.out["decl"].append(["sub", sub.wire_id, node.wire_id, name, sub.topic.type_name, depth, label, qos])
         return sub
 
     def add_timer(self, node: NodeRecord, period_ns: int, callback: Callable[[], None], **options: Any) -> Any:
@@ -105,7 +121,7 @@ class ChildGraph(Graph):
 
     def remove_endpoint(self, endpoint: Publisher | Subscription) -> bool:
         removed = super().remove_endpoint(endpoint)
-        self._subs.pop(getattr(endpoint, "wire_id", None), None)
+        self._own.pop(endpoint.wire_id, None)
         self.out["decl"].append(["rm", endpoint.wire_id])
         return removed
 
@@ -124,36 +140,43 @@ class ChildGraph(Graph):
         self.out["decl"].append(["aclient", node.wire_id, name, client.type_name])
         return client
 
+    def remove_service(self, service: Service) -> bool:
+        return self._removed("service", service, super().remove_service(service))
+
+    def remove_client(self, client: ServiceClient) -> bool:
+        return self._removed("client", client, super().remove_client(client))
+
+    def remove_action_client(self, client: ActionClientRecord) -> bool:
+        return self._removed("action_client", client, super().remove_action_client(client))
+
+    def _removed(self, kind: str, record: Any, removed: bool) -> bool:
+        """Tell the parent (other nodes see it gone from the next exchange on)."""
+        if removed:
+            self.out["removed"].append(graph_mirror.Removed(kind, record.node.wire_id, record.name))
+        return removed
+
     # -- traffic ------------------------------------------------------------------
     def publish(self, topic: Topic, msg: Any, source: str | None = None) -> None:
-        super().publish(topic, msg, source)
+        super().publish(topic, msg, graph_mirror.MIRROR_OWNER)  # the parent delivers to those
         self.out["pub"].append([topic.name, to_values(msg)])
 
-    def has_service(self, name: str) -> bool:
-        return name in self.services or name in self.remote_services
-
-    def has_action_server(self, name: str) -> bool:
-        return name in self.action_servers or name in self.remote_actions
-
     def call(self, name: str, request: Any, on_response: Callable[[Any], None], owner: str) -> None:
-        if name in self.services:
-            super().call(name, request, on_response, owner)
+        service = self.services.get(name)
+        if service is None or service.owner != graph_mirror.MIRROR_OWNER:
+            super().call(name, request, on_response, owner)  # ours, or never answered (as in ROS)
             return
-        if name not in self.remote_services:
-            return  # as in ROS, a call to a missing service is never answered
         call_id = next(self._ids)
         self._calls[call_id] = on_response
         self.out["call"].append([call_id, name, to_values(request)])
 
     def send_goal(self, name, goal, owner, on_accepted, on_feedback, on_result) -> None:
-        if name in self.action_servers:
+        server = self.action_servers.get(name)
+        if server is None or server.owner != graph_mirror.MIRROR_OWNER:
             super().send_goal(name, goal, owner, on_accepted, on_feedback, on_result)
-            return
-        if name not in self.remote_actions:
             return
         goal_id = next(self._ids)
         handle = _RemoteGoal(goal_id)
-        self._goals[goal_id] = (handle, on_accepted, on_feedback, on_result, name)
+        self._goals[goal_id] = (handle, on_accepted, on_feedback, on_result, server.action_type)
         self.out["goal"].append([goal_id, name, to_values(goal)])
 
     def cancel_goal(self, handle: Any) -> None:
@@ -180,8 +203,10 @@ class ChildGraph(Graph):
     # -- what the parent sent ---------------------------------------------------------
     def receive(self, message: dict) -> None:
         ready = self.ready
+        if "graph" in message:  # first: what arrives with it may come from nodes it adds
+            graph_mirror.apply(self, graph_mirror.GraphMirror.from_wire(message["graph"]), self._own)
         for sub_id, fields in message.get("msgs", ()):
-            sub = self._subs.get(sub_id)
+            sub = self._own.get(sub_id)
             if sub is None:
                 continue
             sub.queue.append(trusted_from_values(sub.topic.msg_type)(fields))
@@ -197,8 +222,7 @@ class ChildGraph(Graph):
             entry = self._goals.get(goal_id)
             if entry is None:
                 continue
-            handle, on_accepted, on_feedback, on_result, name = entry
-            action = self.remote_action_types.get(name)
+            handle, on_accepted, on_feedback, on_result, action = entry
             if kind == "accepted":
                 ready.append((OWNER, lambda cb=on_accepted, h=handle: cb(h)))
             elif kind == "feedback":
@@ -223,12 +247,6 @@ class ChildGraph(Graph):
             node = next((n for n in self.nodes if getattr(n, "wire_id", None) == node_id), None)
             if node is not None and node.parameter_setter is not None:
                 ready.append((OWNER, lambda n=node, k=name, v=value: self._set_parameter(n, k, v)))
-        if "services" in message:
-            self.remote_services = set(message["services"])
-        if "actions" in message:
-            self.remote_actions = set(message["actions"])
-            self.remote_action_types = {name: get_interface(t) for name, t in message["action_types"].items()}
-
 
     def _set_parameter(self, node: NodeRecord, name: str, value: Any) -> None:
         """``ros2 param set`` from the app; the parent checked the name and type,
@@ -288,10 +306,12 @@ class ChildHost(CallbackTracking):
             return
         graph = self.graph
         now = message["now"]
-        graph.receive(message)
+        # Timers due now first, as in-process: there they become ready before
+        # anything the parent's callbacks of this instant publish.
         while graph.advance(now):
             pass
         graph.now_ns = now
+        graph.receive(message)
 
     def spin_once(self, timeout_ns: int | None) -> bool:
         ready = self.graph.ready

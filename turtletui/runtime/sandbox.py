@@ -26,7 +26,7 @@ from typing import Any
 from turtletui.graph.core import GraphError, NodeRecord
 from turtletui.graph.logs import ERROR, INFO, OUTPUT_SUFFIX, WARN
 from turtletui.interfaces import InterfaceError, from_values, get_interface, to_values
-from turtletui.runtime import forkserver, wire
+from turtletui.runtime import forkserver, graph_mirror, wire
 from turtletui.runtime.budget import CALLS, WAKE, OutputBudget, Pace, size_text
 from turtletui.runtime.loader import ControllerSpec, check_source, factory_reference, import_root
 from turtletui.runtime.processes import (
@@ -116,8 +116,11 @@ class SandboxHost:
         self._endpoints: dict[int, Any] = {}
         self._goals: dict[int, Any] = {}
         self._service_calls: dict[int, Any] = {}
-        self._known_services: tuple = ()
-        self._known_keys: tuple = (None, None)
+        self._mirror: graph_mirror.GraphMirror | None = None
+        """The graph as the child last heard of it."""
+        self._mirrored_version = -1
+        """The graph's version when the child was last sent the mirror (or
+        when only the child's own doings changed it)."""
         self._read_buffer = b""
         self._output = OutputBudget(
             self._show_output,
@@ -315,8 +318,8 @@ class SandboxHost:
             return True  # real time: see whether the answer has come
         if self._inbox or self._responses or self._goal_events or self._requests or self._params:
             return True
-        if self._poll:
-            return True
+        if self._poll or self.graph.version != self._mirrored_version:
+            return True  # a change on the graph: a waiting node may be waiting for it
         return self.wake_ns is not None and self.wake_ns <= now_ns
 
     def exchange(self, timeout: float | None = None, *, wait: bool = False) -> bool:
@@ -351,20 +354,12 @@ class SandboxHost:
         if inbox:
             message["msgs"], self._inbox = inbox, []
             cause = inbox[0][0] if len(inbox) == 1 else _subscriptions(inbox)
-        graph = self.graph
-        keys = graph.services.keys(), graph.action_servers.keys()
-        known = self._known_keys
-        if known[0] != keys[0] or known[1] != keys[1]:
-            # Sorted only when the set of names changed (dict-key views compare as sets).
-            self._known_keys = (frozenset(keys[0]), frozenset(keys[1]))
-            services = (tuple(sorted(keys[0])), tuple(sorted(keys[1])))
-        else:
-            services = self._known_services
-        if services != self._known_services:
-            self._known_services = services
-            message["services"] = list(services[0])
-            message["actions"] = list(services[1])
-            message["action_types"] = {n: a.type_name for n, a in self.graph.action_servers.items()}
+        if self.graph.version != self._mirrored_version:
+            self._mirrored_version = self.graph.version
+            mirror = graph_mirror.snapshot(self.graph, self.owner, self._own_ids())
+            if mirror != self._mirror:
+                self._mirror = mirror
+                message["graph"] = mirror.to_wire()
         timeout = timeout or self.limits.step_timeout
         sent = _perf_counter()
         try:
@@ -391,6 +386,12 @@ class SandboxHost:
             answered = _perf_counter()
             self._meter(cause, answered - sent, answered)
         return True
+
+    def _own_ids(self) -> dict[int, int]:
+        """``id(record)`` to wire id, for the child's nodes and topic endpoints here."""
+        ids = {id(node): wire_id for wire_id, node in self._nodes.items()}
+        ids.update((id(endpoint), wire_id) for wire_id, endpoint in self._endpoints.items())
+        return ids
 
     def _meter(self, cause: Any, seconds: float, answered: float) -> None:
         """Charge one answer's wall time (it came at ``answered``, perf_counter);
@@ -624,8 +625,14 @@ class SandboxHost:
     # -- applying what the child did ------------------------------------------------
     def _apply(self, reply: dict) -> None:
         graph = self.graph
+        unchanged = graph.version == self._mirrored_version
         for decl in reply.get("decl", ()):
             self._declare(decl)
+        for removed in reply.get("removed", ()):
+            self._remove(graph_mirror.Removed.parse(removed))
+        if unchanged:
+            # The child knows what it did itself: no exchange just to tell it.
+            self._mirrored_version = graph.version
         for level, node, msg in reply.get("log", ()):
             text = str(msg)[:10_000]
             self._log_lines += 1
@@ -722,6 +729,24 @@ class SandboxHost:
         self._params.append([wire_id, name, value])
         return None
 
+    def _remove(self, removed: graph_mirror.Removed) -> None:
+        """The child destroyed a service, client or action client."""
+        graph = self.graph
+        node = self._nodes.get(removed.node)
+        if removed.kind == "service":
+            service = graph.services.get(removed.name)
+            if service is not None and service.node is node:
+                graph.remove_service(service)
+            return
+        records = graph.clients if removed.kind == "client" else graph.action_clients
+        record = next((r for r in records if r.node is node and r.name == removed.name), None)
+        if record is None:
+            return
+        if removed.kind == "client":
+            graph.remove_client(record)
+        else:
+            graph.remove_action_client(record)
+
     def _goal_accepted(self, goal_id: int, handle: Any) -> None:
         self._goals[goal_id] = handle
         self._goal_events.append([goal_id, "accepted", None])
@@ -741,19 +766,19 @@ class SandboxHost:
             if node is not None:
                 graph.remove_node(node)
         elif kind == "pub":
-            _, wire_id, node_id, topic, type_name, depth = decl
+            _, wire_id, node_id, topic, type_name, depth, *rest = decl
             self._endpoints[wire_id] = graph.add_publisher(
-                self._nodes[node_id], str(topic), get_interface(type_name), int(depth)
+                self._nodes[node_id], str(topic), get_interface(type_name), int(depth), qos=_qos(rest)
             )
         elif kind == "sub":
-            _, wire_id, node_id, topic, type_name, depth, *label = decl
-            self._pace.subscriptions[wire_id] = (_label(label), str(topic)[:200])
+            _, wire_id, node_id, topic, type_name, depth, *rest = decl
+            self._pace.subscriptions[wire_id] = (_label(rest), str(topic)[:200])
 
             def forward(msg: Any, wire_id: int = wire_id) -> None:
                 self._inbox.append((wire_id, to_values(msg)))
 
             self._endpoints[wire_id] = graph.add_subscription(
-                self._nodes[node_id], str(topic), get_interface(type_name), int(depth), forward
+                self._nodes[node_id], str(topic), get_interface(type_name), int(depth), forward, qos=_qos(rest)
             )
         elif kind == "timer":
             if len(self._pace.timers) < 100:
@@ -845,6 +870,11 @@ def _label(rest: list) -> str:
     short identifier is kept)."""
     label = rest[0] if rest else ""
     return label if isinstance(label, str) and label.isidentifier() and len(label) <= 60 else ""
+
+
+def _qos(rest: list) -> graph_mirror.QosPolicies | None:
+    """An endpoint's QoS policies as the child declared them (after its label)."""
+    return graph_mirror.QosPolicies.parse(rest[1]) if len(rest) > 1 and rest[1] is not None else None
 
 
 def _is_scalar(value: Any) -> bool:
