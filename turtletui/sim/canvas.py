@@ -202,16 +202,36 @@ class PenCanvas:
         if not count.size:
             return
         # A fixed-width grid per sample; steps past a sample's count repeat its
-        # last pixel, which paints nothing new and avoids a masked copy.
-        steps = np.minimum(np.arange(int(count.max())), (count - 1)[:, None])
-        across_px = np.clip(low[:, None] + steps, 0, _LAST_PX).astype(np.int64)
-        along_px = np.clip(along, 0, _LAST_PX).astype(np.int64)[:, None]
-        major = x_major[seg][:, None]
-        index = np.where(major, along_px + across_px * PIXELS, along_px * PIXELS + across_px)
+        # last pixel, which paints nothing new and avoids a masked copy. Pixel
+        # indices fit int32 (the grid is the bulk of the work: half the bytes).
+        width = int(count.max())
+        steps = np.minimum(np.arange(width, dtype=np.int32), (count - 1).astype(np.int32)[:, None])
+        # Past the arena a pixel clips to its edge; moving ``low`` to just past
+        # it first keeps the sum in int32 and clips the same.
+        low_px = np.clip(low, -width, PIXELS).astype(np.int32)[:, None]
+        across_px = np.clip(low_px + steps, 0, _LAST_PX)
+        along_px = np.clip(along, 0, _LAST_PX).astype(np.int32)
+        major = x_major[seg]
+        along_stride = np.where(major, 1, PIXELS).astype(np.int32)
+        across_stride = np.where(major, PIXELS, 1).astype(np.int32)
+        index = across_px * across_stride[:, None]
+        index += (along_px * along_stride)[:, None]
         # Row-major order of the (sample, step) grid keeps later segments over
         # earlier ones: numpy assigns repeated indices in order.
         flat = index.ravel()
-        self._packed.ravel()[flat] = np.repeat(colors[seg], steps.shape[1])
+        self._packed.ravel()[flat] = np.repeat(colors[seg], width)
         self._painted.ravel()[flat] = True
-        rows, cols = np.divmod(flat, PIXELS)
-        self._changes.append((self.version, (int(rows.min()), int(rows.max()), int(cols.min()), int(cols.max()))))
+        # The changed box: a sample's pixels across grow along its grid row.
+        first, last, minor = across_px[:, 0], across_px[:, -1], ~major
+        rows = _bounds(first, last, major, along_px, along_px, minor)
+        cols = _bounds(along_px, along_px, major, first, last, minor)
+        self._changes.append((self.version, (*rows, *cols)))
+
+
+def _bounds(
+    lo_a: np.ndarray, hi_a: np.ndarray, in_a: np.ndarray, lo_b: np.ndarray, hi_b: np.ndarray, in_b: np.ndarray
+) -> tuple[int, int]:
+    """The lowest of lo_a where in_a and lo_b where in_b, and the highest of hi_a, hi_b likewise."""
+    low = min(int(lo_a.min(initial=_LAST_PX, where=in_a)), int(lo_b.min(initial=_LAST_PX, where=in_b)))
+    high = max(int(hi_a.max(initial=0, where=in_a)), int(hi_b.max(initial=0, where=in_b)))
+    return low, high
