@@ -2,6 +2,8 @@
 
 Segments are queued as data and rasterised in vectorised batches when the
 image is read, so a turtle drawing every 16 ms costs a list append per step.
+A colour sensor read (every step while a run is recorded) tests the few
+queued segments near its pixel instead of rasterising the queue.
 Coordinates follow turtlesim: pixel = metres * 45 with the y axis flipped
 (pixel row 0 is the top, y = 11.0889 m).
 
@@ -16,6 +18,7 @@ the trails over the background), so renderers stay a plain read.
 
 from __future__ import annotations
 
+import math
 from array import array
 from collections import deque
 
@@ -24,6 +27,8 @@ import numpy as np
 from turtletui.sim.constants import BACKGROUND, METER_PX, PIXELS
 
 _FLUSH_AT = 4096
+_LAZY_READS_AT = 32
+"""Queued segments up to which a colour read tests them one by one instead of flushing."""
 _CHANGES_KEPT = 256
 """Recent changes remembered for changed_since (older asks get the whole image)."""
 _LAST_PX = PIXELS - 1
@@ -148,13 +153,46 @@ class PenCanvas:
     def color_at(self, x: float, y: float) -> tuple[int, int, int]:
         """RGB of the pen image under world point (x, y), as turtlesim's
         color_sensor: UNPAINTED (255, 255, 255) where no pen has drawn."""
-        if self._pending:
-            self._flush()
         col, row = to_pixel(x, y)
-        if not self._painted[row, col]:
-            return UNPAINTED
-        value = self._flat[row * PIXELS + col]
+        value = self._pending_color(col, row) if self._pending else None
+        if value is None:
+            if not self._painted[row, col]:
+                return UNPAINTED
+            value = self._flat[row * PIXELS + col]
         return value & 0xFF, value >> 8 & 0xFF, value >> 16 & 0xFF
+
+    def _pending_color(self, col: int, row: int) -> int | None:
+        """The packed colour the newest queued segment over pixel (col, row)
+        gives it, or None when no queued segment covers it (the queue may then
+        have been flushed). A sensor read every tick so costs a few float
+        operations, where rasterising each tick's one segment costs a batch."""
+        pending = self._pending
+        end = len(pending)
+        if end > _LAZY_READS_AT * 6:
+            self._flush()
+            return None
+        # The pixel's centre in metres, and whether it is on an edge, where
+        # segments beyond the arena land too (clipped).
+        x = col / METER_PX
+        y = (_LAST_PX - row) / METER_PX
+        x_edge = col == 0 or col == _LAST_PX
+        y_edge = row == 0 or row == _LAST_PX
+        for i in range(end - 6, -1, -6):
+            x0, y0, x1, y1, packed, width = pending[i : i + 6]
+            # A quick no: a pen reaches less than its width (cap, half-width
+            # over the cosine) plus a pixel of rounding past the segment's ends.
+            reach = ((width if width > 1.0 else 1.0) + 2.0) / METER_PX
+            if not x_edge and (x0 < x - reach > x1 or x0 > x + reach < x1):
+                continue
+            if not y_edge and (y0 < y - reach > y1 or y0 > y + reach < y1):
+                continue
+            covered = _covers(x0, y0, x1, y1, width, col, row)
+            if covered is None or (covered and not 0 <= packed < 1 << 24):
+                self._flush()  # beyond the exact test: the raster decides
+                return None
+            if covered:
+                return int(packed)
+        return None
 
     def _flush(self) -> None:
         if not self._pending:
@@ -235,3 +273,46 @@ def _bounds(
     low = min(int(lo_a.min(initial=_LAST_PX, where=in_a)), int(lo_b.min(initial=_LAST_PX, where=in_b)))
     high = max(int(hi_a.max(initial=0, where=in_a)), int(hi_b.max(initial=0, where=in_b)))
     return low, high
+
+
+def _covers(x0: float, y0: float, x1: float, y1: float, width: float, col: int, row: int) -> bool | None:
+    """Whether ``_flush`` paints pixel (col, row) for this one segment: its
+    arithmetic for one sample, in the same order on the same doubles (hypot
+    is numpy's, as there). None when that is not a plain yes or no
+    (non-finite values, many samples clipped onto an edge pixel)."""
+    top = _LAST_PX / METER_PX
+    ax, bx = x0 * METER_PX, x1 * METER_PX
+    ay, by = (top - y0) * METER_PX, (top - y1) * METER_PX
+    dx = bx - ax
+    dy = by - ay
+    width = max(width, 1.0)
+    length = float(np.hypot(dx, dy))
+    ux, uy = (dx / length, dy / length) if length > 1e-9 else (1.0, 0.0)
+    cap = width / 2.0
+    ax = ax - ux * cap
+    ay = ay - uy * cap
+    dx = dx + 2.0 * ux * cap
+    dy = dy + 2.0 * uy * cap
+    if abs(dx) >= abs(dy):
+        start, delta, minor0, slope, along_px, across_px = ax, dx, ay, dy / dx, col, row
+    else:
+        start, delta, minor0, slope, along_px, across_px = ay, dy, ax, dx / dy, row, col
+    half = width * float(np.hypot(dx, dy)) / abs(delta) / 2.0
+    if not (math.isfinite(start + delta) and math.isfinite(slope) and math.isfinite(half) and math.isfinite(minor0)):
+        return None
+    lo = math.ceil(min(start, start + delta))
+    hi = math.ceil(max(start, start + delta)) - 1
+    # the samples whose along coordinate clips to along_px (all past an edge)
+    first = lo if along_px == 0 else max(lo, along_px)
+    last = hi if along_px == _LAST_PX else min(hi, along_px)
+    if last - first > 8:
+        return None
+    for along in range(first, last + 1):
+        across = minor0 + (float(along) - start) * slope
+        low = math.ceil(across - half)
+        count = math.ceil(across + half) - low
+        reach_lo = min(max(low + min(0, count - 1), 0), _LAST_PX)
+        reach_hi = min(max(low + count - 1, 0), _LAST_PX)
+        if reach_lo <= across_px <= reach_hi:
+            return True
+    return False
