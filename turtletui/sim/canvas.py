@@ -27,6 +27,8 @@ import numpy as np
 from turtletui.sim.constants import BACKGROUND, METER_PX, PIXELS
 
 _FLUSH_AT = 4096
+_RASTER_CHUNK = 512
+"""Segments rasterised at once."""
 _LAZY_READS_AT = 32
 """Queued segments up to which a colour read tests them one by one instead of flushing."""
 _CHANGES_KEPT = 256
@@ -197,9 +199,20 @@ class PenCanvas:
     def _flush(self) -> None:
         if not self._pending:
             return
-        segments = np.frombuffer(self._pending, dtype=np.float64).reshape(-1, 6).copy()
+        queued = np.frombuffer(self._pending, dtype=np.float64).reshape(-1, 6).copy()
         del self._pending[:]
         self.version += 1
+        # In chunks: their scratch arrays stay small enough to be reused rather
+        # than mapped afresh (page faults cost more than the arithmetic).
+        boxes = [self._rasterise(queued[i : i + _RASTER_CHUNK]) for i in range(0, len(queued), _RASTER_CHUNK)]
+        boxes = [box for box in boxes if box is not None]
+        if boxes:
+            rows0, rows1, cols0, cols1 = zip(*boxes, strict=True)
+            self._changes.append((self.version, (min(rows0), max(rows1), min(cols0), max(cols1))))
+
+    def _rasterise(self, segments: np.ndarray) -> tuple[int, int, int, int] | None:
+        """Paint queued segments (rows of x0, y0, x1, y1, packed colour,
+        width) in order; the box (r0, r1, c0, c1) they touched, None if none."""
         top = _LAST_PX / METER_PX
         x0 = segments[:, 0] * METER_PX
         y0 = (top - segments[:, 1]) * METER_PX
@@ -238,7 +251,7 @@ class PenCanvas:
         low = np.ceil(across - half[seg])
         count = (np.ceil(across + half[seg]) - low).astype(np.int64)
         if not count.size:
-            return
+            return None
         # A fixed-width grid per sample; steps past a sample's count repeat its
         # last pixel, which paints nothing new and avoids a masked copy. Pixel
         # indices fit int32 (the grid is the bulk of the work: half the bytes).
@@ -263,7 +276,7 @@ class PenCanvas:
         first, last, minor = across_px[:, 0], across_px[:, -1], ~major
         rows = _bounds(first, last, major, along_px, along_px, minor)
         cols = _bounds(along_px, along_px, major, first, last, minor)
-        self._changes.append((self.version, (*rows, *cols)))
+        return (*rows, *cols)
 
 
 def _bounds(
