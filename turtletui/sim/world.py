@@ -207,7 +207,9 @@ class World:
 
     def command_velocity(self, name: str, vx: float, vy: float, wz: float) -> None:
         """A Twist on /<name>/cmd_vel: set the velocities and the command time."""
-        turtle = self.turtle(name)
+        turtle = self.turtles.get(name)
+        if turtle is None:
+            raise SimError(f"There is no turtle named [{name}]")
         if not (_isfinite(vx) and _isfinite(vy) and _isfinite(wz)):
             self.events.append(
                 Warning_(
@@ -217,7 +219,7 @@ class World:
                 )
             )
             vx = vy = wz = 0.0
-        turtle.last_command_time = self.time
+        turtle.last_command_time = self.ticks * DT  # self.time, on every command
         turtle.vx = vx
         turtle.vy = vy if self.holonomic else 0.0
         turtle.wz = wz
