@@ -1,7 +1,8 @@
 """The pen image: a 500 x 500 raster, as turtlesim's ``path_image``.
 
 Segments are queued as data and rasterised in vectorised batches when the
-image is read, so a turtle drawing every 16 ms costs a list append per step.
+image is read, so a turtle drawing every 16 ms costs a list append per step;
+a run nobody watches (headless, grading) draws only to bound the queue.
 A colour sensor read (every step while a run is recorded) tests the few
 queued segments near its pixel instead of rasterising the queue.
 Coordinates follow turtlesim: pixel = metres * 45 with the y axis flipped
@@ -26,7 +27,8 @@ import numpy as np
 
 from turtletui.sim.constants import BACKGROUND, METER_PX, PIXELS
 
-_FLUSH_AT = 4096
+_FLUSH_AT = 65536
+"""Queued segments (3 MB) that are rasterised even if nobody reads the image."""
 _RASTER_CHUNK = 512
 """Segments rasterised at once."""
 _LAZY_READS_AT = 32
