@@ -7,6 +7,9 @@ Run from the repository root:  python bench/bench_ratios.py [--repeats N]
 2. The marginal in-process tick of the Part 6 controller: a 600 s run less a
    1 s run, over the ticks between them (start-up and loading cancel out).
 3. The marginal sandboxed tick, measured the same way.
+   Beside them, the in-process tick while turtlesim publishes its colour
+   sensor every tick, as it does while a run is recorded (no target: a
+   recorded run should cost about what a plain one does).
 4. One Part 6 submission graded by the whole ``turtletui grade`` command
    (--jobs 2, process start included): simulated seconds per wall second.
 
@@ -35,6 +38,7 @@ from bench_core import baseline_wall, cpu_model, ticks_for  # noqa: E402
 
 from turtletui.api import run  # noqa: E402
 from turtletui.runtime.loader import ControllerSpec  # noqa: E402
+from turtletui.runtime.simulation import Simulation  # noqa: E402
 
 PART6 = ROOT / "plugins" / "reference" / "turtle_controller.py"
 DISTRO = "jazzy"
@@ -50,22 +54,27 @@ def median_of(fn: Callable[[], float], repeats: int) -> float:
     return statistics.median(fn() for _ in range(repeats))
 
 
-def run_wall(duration: float, *, trusted: bool) -> float:
+def sense_colour(sim: Simulation) -> None:
+    sim.graph.record_everything = True  # what a recording sets
+
+
+def run_wall(duration: float, *, trusted: bool, sensed: bool = False) -> float:
     """Wall seconds of one ``api.run`` of Part 6, start-up included; a run
     whose controller failed would measure nothing, so it stops the bench."""
     controller = ControllerSpec("tc", PART6, trusted=trusted) if trusted else str(PART6)
+    setup = sense_colour if sensed else None
     started = time.perf_counter()
-    result = run([controller], duration=duration, keep_calls=False, distro=DISTRO)
+    result = run([controller], duration=duration, keep_calls=False, distro=DISTRO, setup=setup)
     wall = time.perf_counter() - started
     if not result.ok:
         sys.exit(f"bench_ratios: the Part 6 controller failed: {result.crashes[0].message}")
     return wall
 
 
-def marginal_tick_us(repeats: int, *, trusted: bool) -> float:
+def marginal_tick_us(repeats: int, *, trusted: bool, sensed: bool = False) -> float:
     """Microseconds per tick between a SHORT and a LONG run."""
-    long = median_of(lambda: run_wall(LONG, trusted=trusted), repeats)
-    short = median_of(lambda: run_wall(SHORT, trusted=trusted), repeats)
+    long = median_of(lambda: run_wall(LONG, trusted=trusted, sensed=sensed), repeats)
+    short = median_of(lambda: run_wall(SHORT, trusted=trusted, sensed=sensed), repeats)
     return (long - short) / (ticks_for(LONG) - ticks_for(SHORT)) * 1e6
 
 
@@ -99,6 +108,7 @@ def main() -> None:
     ticks = ticks_for(LONG)
     bare_us = median_of(lambda: baseline_wall(ticks), repeats) / ticks * 1e6
     inproc_us = marginal_tick_us(repeats, trusted=True)
+    sensed_us = marginal_tick_us(repeats, trusted=True, sensed=True)
     sandbox_us = marginal_tick_us(repeats, trusted=False)
     with tempfile.TemporaryDirectory() as tmp:
         submission = Path(tmp) / "student" / "turtle_controller.py"
@@ -111,6 +121,8 @@ def main() -> None:
         ("bare loop (baseline)", f"{bare_us:.3f} us/tick", "", "", ""),
         ("in-process tick (marginal)", f"{inproc_us:.2f} us/tick", f"{inproc_us / bare_us:.1f}x bare",
          f"<= {IN_PROCESS_MAX:g}x", verdict(inproc_us / bare_us <= IN_PROCESS_MAX)),
+        ("  the same, colour sensed (recorded)", f"{sensed_us:.2f} us/tick", f"{sensed_us / inproc_us:.2f}x in-process",
+         "", ""),
         ("sandboxed tick (marginal)", f"{sandbox_us:.2f} us/tick", f"{sandbox_us / inproc_us:.1f}x in-process",
          f"<= {SANDBOXED_MAX:g}x", verdict(sandbox_us / inproc_us <= SANDBOXED_MAX)),
         (f"grade, one Part 6 ({LESSON_SECONDS:g} sim s)", f"{grade_s:.2f} s wall", f"{grading_x:,.0f}x real time",
