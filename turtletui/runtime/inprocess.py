@@ -11,12 +11,12 @@ import random
 import sys
 import threading
 from collections.abc import Callable
-from typing import Any
+from types import SimpleNamespace
 
 from turtletui import compat
 from turtletui.compat import context as compat_context
 from turtletui.compat import logging as compat_logging
-from turtletui.runtime.host import callback_label
+from turtletui.runtime.host import CallbackTracking
 from turtletui.runtime.loader import (
     ControllerError,
     ControllerSpec,
@@ -29,7 +29,7 @@ from turtletui.runtime.simulation import MAX_ROUNDS_PER_INSTANT, Simulation
 from turtletui.runtime.virtual_time import simulated_time
 
 
-class InProcessHost:
+class InProcessHost(CallbackTracking):
     """Implements turtletui.compat.context.Host over a Simulation in this process."""
 
     def __init__(self, sim: Simulation, owner: str, end_ns: int) -> None:
@@ -43,27 +43,13 @@ class InProcessHost:
         self._reads_instant = -1
         self._reads = 0
         self._thread = threading.get_ident()
-        self._depth = 0
+        self._depth = SimpleNamespace(n=0)
 
     @property
     def callback_depth(self) -> int:
-        # Callbacks run on the controller's thread only (see _one_thread), so
-        # a plain counter does what turtletui.runtime.host.CallbackTracking's
-        # thread-local one does, for less.
-        return self._depth if threading.get_ident() == self._thread else 0
-
-    def wrap_callback(self, callback: Callable) -> Callable:
-        """``callback`` as the graph should call it: counted while it runs."""
-
-        def run(*args: Any) -> Any:
-            self._depth += 1
-            try:
-                return callback(*args)
-            finally:
-                self._depth -= 1
-
-        run.label = callback_label(callback)  # type: ignore[attr-defined]
-        return run
+        # Callbacks run on the controller's thread only (see _one_thread): a
+        # plain counter (see CallbackTracking) costs less per delivery.
+        return self._depth.n if threading.get_ident() == self._thread else 0
 
     def _one_thread(self) -> None:
         """Only the thread that runs the controller may wait here: threads that

@@ -207,9 +207,7 @@ class World:
 
     def command_velocity(self, name: str, vx: float, vy: float, wz: float) -> None:
         """A Twist on /<name>/cmd_vel: set the velocities and the command time."""
-        turtle = self.turtles.get(name)
-        if turtle is None:
-            raise SimError(f"There is no turtle named [{name}]")
+        turtle = self.turtle(name)
         if not (_isfinite(vx) and _isfinite(vy) and _isfinite(wz)):
             self.events.append(
                 Warning_(
