@@ -2,6 +2,7 @@
 
 import math
 import random
+import tracemalloc
 
 import numpy as np
 
@@ -156,3 +157,27 @@ def test_a_sensor_read_every_tick_does_not_redraw_the_image_every_tick():
     assert world.turtles["turtle1"].color == PEN_COLOR  # it reads its own trail
     assert world.canvas.version - version <= 200 // 16
     assert world.canvas.painted.any()
+
+
+
+def test_a_teleport_far_outside_the_arena_draws_its_line_in_bounded_memory():
+    # A student may teleport to x = 1e5 m (or 1e30): the line there is cut
+    # where it leaves a margin around the image instead of being sampled
+    # pixel by pixel (millions of samples, or a crash of the trusted side).
+    for far_x in (1e5, 1e30, -1e30):
+        world = World()
+        y = world.turtles["turtle1"].y
+        world.teleport_absolute("turtle1", far_x, y, 0.0)
+        tracemalloc.start()
+        try:
+            world.step()
+            world.step()  # the teleport's line, then the clamp back to the wall
+            pixels = world.canvas.pixels
+            peak = tracemalloc.get_traced_memory()[1]
+        finally:
+            tracemalloc.stop()
+        assert peak < 20_000_000, f"x={far_x}: {peak / 1e6:.0f} MB"
+        edge = _LAST if far_x > 0 else 0
+        row = to_pixel(0.0, y)[1]
+        assert tuple(pixels[row, edge]) == PEN_COLOR, far_x  # the line reaches the wall it points at
+        assert tuple(pixels[row, 250]) == PEN_COLOR, far_x

@@ -36,6 +36,8 @@ _LAZY_READS_AT = 32
 _CHANGES_KEPT = 256
 """Recent changes remembered for changed_since (older asks get the whole image)."""
 _LAST_PX = PIXELS - 1
+_MARGIN_PX = 4096.0
+"""How far (pixels) past the image a pen line is followed; beyond, it is cut."""
 UNPAINTED = (255, 255, 255)
 """What the colour sensor reads where no pen has drawn: the pen layer's transparent white."""
 
@@ -212,6 +214,7 @@ class PenCanvas:
             rows0, rows1, cols0, cols1 = zip(*boxes, strict=True)
             self._changes.append((self.version, (min(rows0), max(rows1), min(cols0), max(cols1))))
 
+    @np.errstate(over="ignore", invalid="ignore")  # lines to absurd teleports are cut below
     def _rasterise(self, segments: np.ndarray) -> tuple[int, int, int, int] | None:
         """Paint queued segments (rows of x0, y0, x1, y1, packed colour,
         width) in order; the box (r0, r1, c0, c1) they touched, None if none."""
@@ -222,6 +225,12 @@ class PenCanvas:
         dy = (top - segments[:, 3]) * METER_PX - y0
         colors = segments[:, 4].astype("<u4")
         widths = np.maximum(segments[:, 5], 1.0)
+        far = _far(x0, y0, x0 + dx, y0 + dy)
+        if far.any():
+            # A line to a teleport far outside (x = 1e7 m) would have millions
+            # of samples: it is cut where it leaves the margin, or dropped.
+            keep, x0, y0, dx, dy = _cut(x0, y0, dx, dy, far)
+            x0, y0, dx, dy, colors, widths = x0[keep], y0[keep], dx[keep], dy[keep], colors[keep], widths[keep]
         # Qt's default square cap extends a wide line by half its width at
         # both ends (a zero-length line becomes a width x width square).
         length = np.hypot(dx, dy)
@@ -246,7 +255,7 @@ class PenCanvas:
         half = widths * np.hypot(dx, dy) / np.abs(delta) / 2.0
         lo = np.ceil(np.minimum(start, start + delta))
         samples = np.maximum(np.ceil(np.maximum(start, start + delta)) - lo, 0).astype(np.int64)
-        seg = np.repeat(np.arange(len(segments)), samples)
+        seg = np.repeat(np.arange(len(x0)), samples)
         first = np.cumsum(samples) - samples
         along = lo[seg] + (np.arange(seg.size) - first[seg])
         across = minor0[seg] + (along - start[seg]) * slope[seg]
@@ -290,6 +299,38 @@ def _bounds(
     return low, high
 
 
+def _far(x0: np.ndarray, y0: np.ndarray, x1: np.ndarray, y1: np.ndarray) -> np.ndarray:
+    """Which segments (pixel coordinates) reach past the margin around the image (or are not finite)."""
+    near = (np.minimum(x0, x1) >= -_MARGIN_PX) & (np.maximum(x0, x1) <= _LAST_PX + _MARGIN_PX)
+    near &= (np.minimum(y0, y1) >= -_MARGIN_PX) & (np.maximum(y0, y1) <= _LAST_PX + _MARGIN_PX)
+    return ~near
+
+
+def _cut(
+    x0: np.ndarray, y0: np.ndarray, dx: np.ndarray, dy: np.ndarray, far: np.ndarray
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The ``far`` segments cut to the margin around the image (Liang-Barsky);
+    the others as they are. Returns which to keep (none of a far one may be
+    inside, or it is not finite) and the segments."""
+    lo, hi = -_MARGIN_PX, _LAST_PX + _MARGIN_PX
+    t0 = np.zeros_like(x0)
+    t1 = np.ones_like(x0)
+    keep = np.ones(len(x0), dtype=bool)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        for p, q in ((-dx, x0 - lo), (dx, hi - x0), (-dy, y0 - lo), (dy, hi - y0)):
+            r = q / p
+            keep &= ~((p == 0) & (q < 0))
+            t0 = np.where(p < 0, np.maximum(t0, r), t0)
+            t1 = np.where(p > 0, np.minimum(t1, r), t1)
+        keep &= ~far | (np.isfinite(t0) & np.isfinite(t1) & (t0 <= t1))
+        cut_x0 = np.where(far, x0 + t0 * dx, x0)
+        cut_y0 = np.where(far, y0 + t0 * dy, y0)
+        cut_dx = np.where(far, (t1 - t0) * dx, dx)
+        cut_dy = np.where(far, (t1 - t0) * dy, dy)
+    keep &= np.isfinite(cut_x0) & np.isfinite(cut_y0) & np.isfinite(cut_dx) & np.isfinite(cut_dy)
+    return keep, cut_x0, cut_y0, cut_dx, cut_dy
+
+
 def _covers(x0: float, y0: float, x1: float, y1: float, width: float, col: int, row: int) -> bool | None:
     """Whether ``_flush`` paints pixel (col, row) for this one segment: its
     arithmetic for one sample, in the same order on the same doubles (hypot
@@ -298,6 +339,10 @@ def _covers(x0: float, y0: float, x1: float, y1: float, width: float, col: int, 
     top = _LAST_PX / METER_PX
     ax, bx = x0 * METER_PX, x1 * METER_PX
     ay, by = (top - y0) * METER_PX, (top - y1) * METER_PX
+    if not (-_MARGIN_PX <= min(ax, bx) and max(ax, bx) <= _LAST_PX + _MARGIN_PX):
+        return None  # cut by the raster (see _cut), or not finite
+    if not (-_MARGIN_PX <= min(ay, by) and max(ay, by) <= _LAST_PX + _MARGIN_PX):
+        return None
     dx = bx - ax
     dy = by - ay
     width = max(width, 1.0)
