@@ -22,19 +22,17 @@ import argparse
 import os
 import platform
 import shutil
-import statistics
 import subprocess
 import sys
 import tempfile
 import time
-from collections.abc import Callable
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "bench"))
 
-from bench_core import baseline_wall, cpu_model, ticks_for  # noqa: E402
+from bench_core import baseline_wall, cpu_model, median_of, ticks_for  # noqa: E402
 
 from turtletui.api import run  # noqa: E402
 from turtletui.runtime.loader import ControllerSpec  # noqa: E402
@@ -48,10 +46,6 @@ LESSON, LESSON_SECONDS = "part6-closed-loop", 540.0
 """The lesson graded, and the simulated seconds its runs add up to."""
 
 IN_PROCESS_MAX, SANDBOXED_MAX, GRADING_MIN = 8.0, 2.0, 1000.0
-
-
-def median_of(fn: Callable[[], float], repeats: int) -> float:
-    return statistics.median(fn() for _ in range(repeats))
 
 
 def sense_colour(sim: Simulation) -> None:
