@@ -46,13 +46,13 @@ def ticks_for(duration: float) -> int:
 
 def inprocess_wall(duration: float) -> float:
     spec = ControllerSpec("tc", PART6, trusted=True)
-    result = run([spec], duration=duration, keep_calls=False)
+    result = run([spec], duration=duration, keep_calls=False, distro="jazzy")
     return result.wall_time
 
 
 def sandboxed_wall(duration: float) -> float:
     started = time.perf_counter()
-    run([str(PART6)], duration=duration, keep_calls=False)
+    run([str(PART6)], duration=duration, keep_calls=False, distro="jazzy")
     return time.perf_counter() - started
 
 
@@ -132,7 +132,7 @@ def main() -> None:
     row("turtletui --help wall", f"{statistics.median(helps):.3f} s", "< 0.15 s")
     textual_code = (
         "import sys; from turtletui.api import run; "
-        f"run([{str(PART6)!r}], duration=5); print('textual' in sys.modules)"
+        f"run([{str(PART6)!r}], duration=5, distro='jazzy'); print('textual' in sys.modules)"
     )
     row("textual imported by a headless run", subprocess_wall(textual_code)[1] or "?", "False")
 
@@ -140,7 +140,7 @@ def main() -> None:
     rss_code = (
         "import resource; from pathlib import Path; from turtletui.api import run; "
         "from turtletui.runtime.loader import ControllerSpec; "
-        f"run([ControllerSpec('tc', Path({str(PART6)!r}), trusted=True)], duration=600, keep_calls=False); "
+        f"run([ControllerSpec('tc', Path({str(PART6)!r}), trusted=True)], duration=600, keep_calls=False, distro='jazzy'); "
         "print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss)"
     )
     out = subprocess_wall(rss_code)[1]

@@ -1,9 +1,16 @@
 """The pen raster draws lines the way turtlesim's Qt pen does (square caps, width across the line)."""
 
+import math
+import random
+import tracemalloc
+
 import numpy as np
 
+from turtletui.sim import World
 from turtletui.sim.canvas import UNPAINTED, PenCanvas, to_pixel
-from turtletui.sim.constants import BACKGROUND, METER_PX
+from turtletui.sim.constants import BACKGROUND, METER_PX, PEN_COLOR, PIXELS
+
+_LAST = PIXELS - 1
 
 RED, GREEN, BLUE = (255, 0, 0), (0, 255, 0), (0, 0, 255)
 
@@ -98,3 +105,79 @@ def test_changed_since_bounds_what_was_drawn():
     assert canvas.changed_since(canvas.version) is None
     canvas.clear()
     assert canvas.changed_since(start) == (0, 499, 0, 499)
+
+
+def _random_segments(rng: random.Random, n: int) -> list[tuple[float, float, float, float, tuple[int, int, int], int]]:
+    """Short turtle steps, long lines, lines beyond the arena (clipped onto its
+    edge pixels) and zero-length ones, in assorted colours and widths."""
+    segments = []
+    for _ in range(n):
+        kind = rng.random()
+        if kind < 0.5:
+            x, y = rng.uniform(-0.3, 11.4), rng.uniform(-0.3, 11.4)
+            angle, length = rng.uniform(-4, 4), rng.choice([0.0, 0.01, 0.08, 0.3])
+            ends = (x, y, x + math.cos(angle) * length, y + math.sin(angle) * length)
+        elif kind < 0.8:
+            ends = tuple(rng.uniform(-2.0, 13.0) for _ in range(4))
+        else:
+            edge = rng.choice([0.0, 11.088889122009277, -5.0, 16.0])
+            ends = (edge, rng.uniform(0, 11), rng.choice([edge, rng.uniform(-1, 12)]), rng.uniform(0, 11))
+        color = (rng.randrange(256), rng.randrange(256), rng.randrange(256))
+        segments.append((*ends, color, rng.choice([1, 2, 3, 4, 7, 12, 30])))
+    return segments
+
+
+def test_a_colour_read_between_flushes_is_the_pixel_the_flushed_image_has():
+    # The sensor reads queued segments without rasterising them: every pixel
+    # near them must read as it does once they are drawn.
+    rng = random.Random(17)
+    for _ in range(40):
+        segments = _random_segments(rng, rng.randint(1, 20))
+        drawn = PenCanvas()
+        for segment in segments:
+            drawn.draw_segment(*segment)
+        pixels, painted_mask = drawn.pixels, drawn.painted
+        ends = [segment[i : i + 2] for segment in segments for i in (0, 2)]
+        for col0, row0 in (to_pixel(x, y) for x, y in ends):
+            for col, row in {(col0, row0), (0, row0), (col0, _LAST), (col0 + 2, row0 - 1), (col0 - 3, row0 + 3)}:
+                col, row = min(max(col, 0), _LAST), min(max(row, 0), _LAST)
+                queued = PenCanvas()
+                for segment in segments:
+                    queued.draw_segment(*segment)
+                expected = tuple(int(v) for v in pixels[row, col]) if painted_mask[row, col] else UNPAINTED
+                assert queued.color_at(col / METER_PX, (_LAST - row) / METER_PX) == expected, (segments, col, row)
+
+
+def test_a_sensor_read_every_tick_does_not_redraw_the_image_every_tick():
+    world = World()
+    world.command_velocity("turtle1", 2.0, 0.0, 1.0)
+    version = world.canvas.version
+    for _ in range(200):
+        world.step(sense_color=True)
+    assert world.turtles["turtle1"].color == PEN_COLOR  # it reads its own trail
+    assert world.canvas.version - version <= 200 // 16
+    assert world.canvas.painted.any()
+
+
+
+def test_a_teleport_far_outside_the_arena_draws_its_line_in_bounded_memory():
+    # A student may teleport to x = 1e5 m (or 1e30): the line there is cut
+    # where it leaves a margin around the image instead of being sampled
+    # pixel by pixel (millions of samples, or a crash of the trusted side).
+    for far_x in (1e5, 1e30, -1e30):
+        world = World()
+        y = world.turtles["turtle1"].y
+        world.teleport_absolute("turtle1", far_x, y, 0.0)
+        tracemalloc.start()
+        try:
+            world.step()
+            world.step()  # the teleport's line, then the clamp back to the wall
+            pixels = world.canvas.pixels
+            peak = tracemalloc.get_traced_memory()[1]
+        finally:
+            tracemalloc.stop()
+        assert peak < 20_000_000, f"x={far_x}: {peak / 1e6:.0f} MB"
+        edge = _LAST if far_x > 0 else 0
+        row = to_pixel(0.0, y)[1]
+        assert tuple(pixels[row, edge]) == PEN_COLOR, far_x  # the line reaches the wall it points at
+        assert tuple(pixels[row, 250]) == PEN_COLOR, far_x

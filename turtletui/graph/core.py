@@ -292,13 +292,14 @@ class Graph:
             self.now_ns = now = due
         ready = self.ready
         heappop = heapq.heappop
-        heappush = heapq.heappush
+        heapreplace = heapq.heapreplace
         while timers and timers[0][0] <= now:
-            due, _, timer = heappop(timers)
+            due, _, timer = timers[0]
             if timer.canceled or due != timer.next_due:
+                heappop(timers)
                 continue
             timer.next_due = next_due = due + timer.period_ns
-            heappush(timers, (next_due, timer.seq, timer))
+            heapreplace(timers, (next_due, timer.seq, timer))  # pop and push in one
             ready.append(timer.ready_item)
         return True
 

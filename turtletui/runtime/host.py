@@ -6,9 +6,9 @@ import threading
 from collections.abc import Callable
 from typing import Any
 
-_depth = threading.local()
-"""How deep each thread is inside controller callbacks (a thread that spins
-in a callback deadlocks in ROS; another thread spinning meanwhile does not)."""
+
+class _ThreadDepth(threading.local):
+    n = 0
 
 
 class CallbackTracking:
@@ -16,20 +16,26 @@ class CallbackTracking:
     a call that would deadlock ROS (spinning inside a callback) can say so
     instead."""
 
+    _depth: Any = _ThreadDepth()
+    """How deep each thread is inside controller callbacks (a thread that spins
+    in a callback deadlocks in ROS; another thread spinning meanwhile does not).
+    A host whose callbacks all run on one thread may keep a plain counter."""
+
     @property
     def callback_depth(self) -> int:
-        return getattr(_depth, "n", 0)
+        return self._depth.n
 
     def wrap_callback(self, callback: Callable) -> Callable:
         """``callback`` as the graph should call it: counted while it runs.
         Its ``label`` names it in reports (``pose_callback``)."""
+        depth = self._depth
 
         def run(*args: Any) -> Any:
-            _depth.n = getattr(_depth, "n", 0) + 1
+            depth.n += 1
             try:
                 return callback(*args)
             finally:
-                _depth.n -= 1
+                depth.n -= 1
 
         run.label = callback_label(callback)  # type: ignore[attr-defined]
         return run

@@ -11,6 +11,7 @@ import random
 import sys
 import threading
 from collections.abc import Callable
+from types import SimpleNamespace
 
 from turtletui import compat
 from turtletui.compat import context as compat_context
@@ -42,6 +43,13 @@ class InProcessHost(CallbackTracking):
         self._reads_instant = -1
         self._reads = 0
         self._thread = threading.get_ident()
+        self._depth = SimpleNamespace(n=0)
+
+    @property
+    def callback_depth(self) -> int:
+        # Callbacks run on the controller's thread only (see _one_thread): a
+        # plain counter (see CallbackTracking) costs less per delivery.
+        return self._depth.n if threading.get_ident() == self._thread else 0
 
     def _one_thread(self) -> None:
         """Only the thread that runs the controller may wait here: threads that

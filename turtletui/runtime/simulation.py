@@ -109,6 +109,7 @@ class Simulation:
         graph = self.graph
         ready = graph.ready
         popleft = ready.popleft
+        advance = graph.advance
         held: list | None = None
         remotes = self.remotes
         try:
@@ -126,10 +127,13 @@ class Simulation:
                     item[1]()
                 if until is not None and until():
                     return "until"
-                if remotes and self._exchange():
-                    continue
-                if not self._advance(limit_ns):
-                    return "limit"
+                if remotes or self.realtime:
+                    if remotes and self._exchange():
+                        continue
+                    if not self._advance(limit_ns):
+                        return "limit"
+                elif not advance(limit_ns):
+                    return "limit"  # lockstep alone: the next timer, or the limit
         finally:
             if held:
                 ready.extendleft(reversed(held))
@@ -149,10 +153,6 @@ class Simulation:
 
     def _advance(self, limit_ns: int) -> bool:
         graph = self.graph
-        if not self.remotes and not self.realtime:
-            # Same as below with no remote wake-ups and no waiting: Graph.advance
-            # jumps to the next timer not past the limit, or to the limit.
-            return graph.advance(limit_ns)
         due = graph.next_due()
         for remote in self.remotes:
             wake = remote.wake_ns

@@ -217,7 +217,7 @@ class World:
                 )
             )
             vx = vy = wz = 0.0
-        turtle.last_command_time = self.time
+        turtle.last_command_time = self.ticks * DT  # self.time, on every command
         turtle.vx = vx
         turtle.vy = vy if self.holonomic else 0.0
         turtle.wz = wz
