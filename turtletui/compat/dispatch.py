@@ -41,7 +41,9 @@ def dispatcher(host: Any, group: CallbackGroup, callback: Callable) -> Callable:
 
     def run(*args: Any) -> Any:
         if not group.beginning_execution(run):
-            group._deferred.append((owner, lambda: run(*args)))
+            # A timer that fires again while it waits still runs once, as in rclpy.
+            if args or all(item[1] is not run for item in group._deferred):
+                group._deferred.append((owner, (lambda: run(*args)) if args else run))
             return None
         held = False
         stack = running_groups()

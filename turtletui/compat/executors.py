@@ -105,8 +105,7 @@ class Executor:
     def spin(self) -> None:
         host = self._guard("spin()")
         if not self._stopped():
-            with self._counted():
-                host.spin(self._stopped)
+            self._run(host, lambda: host.spin(self._stopped))
 
     def spin_once(self, timeout_sec: float | None = None) -> None:
         host = self._guard("spin_once()")
@@ -119,11 +118,16 @@ class Executor:
         if self._stopped():
             return
         # As rclpy: a cancelled future is not done(), but ends the wait too.
-        with self._counted():
-            host.spin_until(lambda: future.done() or future.cancelled(), _timeout_ns(timeout_sec))
+        timeout_ns = _timeout_ns(timeout_sec)
+        self._run(host, lambda: host.spin_until(lambda: future.done() or future.cancelled(), timeout_ns))
 
     def spin_once_until_future_complete(self, future: Future, timeout_sec: float | None = None) -> None:
         self.spin_once(timeout_sec)
+
+    def _run(self, host: Any, spin: Callable[[], Any]) -> None:
+        """Run ``spin`` (which runs callbacks on the calling thread) as this executor."""
+        with self._counted():
+            spin()
 
     def _counted(self) -> _Spinning:
         return _Spinning(self)
@@ -160,21 +164,34 @@ class MultiThreadedExecutor(Executor):
             raise ValueError(f"num_threads must be at least 1, got {num_threads}")
         self._num_threads = num_threads or DEFAULT_THREADS
 
-    def spin(self) -> None:
-        host = self._guard("spin()")
-        if self._stopped():
+    def _run(self, host: Any, spin: Callable[[], Any]) -> None:
+        """Run ``spin`` on the calling thread with ``num_threads - 1`` more
+        threads running callbacks meanwhile (sandboxed; in-process there are
+        none), until it returns."""
+        if getattr(host, "scheduler", None) is None or self._num_threads < 2:
+            super()._run(host, spin)
             return
-        if getattr(host, "scheduler", None) is not None:
-            for number in range(1, self._num_threads):
-                worker = threading.Thread(
-                    target=self._work, args=(host,), name=f"MultiThreadedExecutor-{number}", daemon=True
-                )
-                worker.start()
-        self._work(host)
+        finished: list[bool] = []
 
-    def _work(self, host: Any) -> None:
+        def stop() -> bool:
+            return bool(finished) or self._stopped()
+
+        workers = [
+            threading.Thread(target=self._work, args=(host, stop), name=f"MultiThreadedExecutor-{n}", daemon=True)
+            for n in range(1, self._num_threads)
+        ]
+        for worker in workers:
+            worker.start()
+        try:
+            super()._run(host, spin)
+        finally:
+            finished.append(True)
+            for worker in workers:
+                worker.join()
+
+    def _work(self, host: Any, stop: Callable[[], bool]) -> None:
         with self._counted():
-            host.spin(self._stopped)
+            host.spin(stop)
 
     def shutdown(self, timeout_sec: float | None = None, *, wait_for_threads: bool = True) -> bool:
         return super().shutdown(timeout_sec)
