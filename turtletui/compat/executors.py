@@ -208,6 +208,14 @@ def threads_that_can_help(node: Any) -> bool:
     return isinstance(executor, MultiThreadedExecutor) and executor._spinning > 0
 
 
+def nothing_spins(node: Any) -> bool:
+    """Whether no executor spins ``node`` now, and no other thread of the
+    controller could (ROS 2 would then wait for ever for its callbacks)."""
+    executor = getattr(node, "executor", None)
+    scheduler = getattr(node.context.host, "scheduler", None)
+    return (executor is None or not executor._spinning) and (scheduler is None or scheduler.alone())
+
+
 def wait_inside_callback(node: Any, done: Callable[[], bool], timeout_ns: int | None) -> bool:
     """Wait, inside a callback of ``node`` spun by a MultiThreadedExecutor,
     until ``done()`` (True) or the timeout (False). With threads (sandboxed)

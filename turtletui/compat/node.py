@@ -24,6 +24,7 @@ from turtletui.compat.exceptions import (  # noqa: F401  (re-exported: rclpy.nod
 )
 from turtletui.compat.executors import (
     busy_exclusive_group,
+    nothing_spins,
     threads_that_can_help,
     wait_inside_callback,
 )
@@ -273,9 +274,7 @@ class Client(Destroyable):
         """Why nothing could deliver the response of a synchronous call made
         now ("" if something can)."""
         if not inside:
-            executor = self._node.executor
-            scheduler = getattr(self._node.context.host, "scheduler", None)
-            if (executor is None or not executor._spinning) and (scheduler is None or scheduler.alone()):
+            if nothing_spins(self._node):
                 return "with nothing spinning the node waits for a response that nothing can deliver"
             return ""
         if not threads_that_can_help(self._node):
@@ -373,9 +372,7 @@ class Rate:
                     "too and cannot fire while it waits"
                 )
             return ""
-        executor = node.executor
-        scheduler = getattr(host, "scheduler", None)
-        if (executor is None or not executor._spinning) and (scheduler is None or scheduler.alone()):
+        if nothing_spins(node):
             return "with nothing spinning the node: the rate's timer never fires"
         return ""
 
