@@ -88,21 +88,22 @@ def start_task(
     the task and ``release(task)`` runs when it ends; else each step runs
     under ``group``'s rules."""
     task = Task(handler, args, kwargs)
-    counted = host.wrap_callback(task)
-    step = counted if release is not None else dispatcher(host, group, task)
     ready = host.graph.ready
     owner = host.owner
-
-    def resume() -> None:
-        ready.append((owner, lambda: _in_group(group, step)))
-
-    task._resume = resume
-    if release is not None:
-        task.add_done_callback(release)
-    if now:
-        _in_group(group, counted)
+    if release is None:
+        step = dispatcher(host, group, task)
     else:
-        resume()
+        counted = host.wrap_callback(task)
+
+        def step() -> None:
+            _in_group(group, counted)
+
+        task.add_done_callback(release)
+    task._resume = lambda: ready.append((owner, step))
+    if now:
+        step()
+    else:
+        task._resume()
     return task
 
 
