@@ -197,3 +197,4 @@ def main():
         "No messages will be sent to it. Last incompatible policy: RELIABILITY_QOS_POLICY"
     ) in [r.msg for r in result.logs if r.node == "turtlesim"]
     assert {(x, y) for _, x, y, _ in result.poses["turtle1"]} == {(result.poses["turtle1"][0][1], result.poses["turtle1"][0][2])}
+
