@@ -645,7 +645,8 @@ def accepted_but_ignored_arguments_change_nothing():
     group = ReentrantCallbackGroup()
     seen = []
     node.create_subscription(
-        Twist, "/t", seen.append, 10, callback_group=group, raw=False, content_filter_options=None
+        Twist, "/t", seen.append, qos_profile_sensor_data, callback_group=group, raw=False,
+        content_filter_options=None,
     )
     pub = node.create_publisher(Twist, "/t", qos_profile_sensor_data, callback_group=group)
     node.create_client(Empty, "/e", qos_profile=qos_profile_system_default, callback_group=group)

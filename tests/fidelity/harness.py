@@ -94,3 +94,14 @@ def run_turtletui(program: Path, cwd: Path, host: str) -> Output:
 def programs() -> list[Path]:
     """Every program of the suite, by name."""
     return sorted(PROGRAMS.glob("*.py"))
+
+
+SANDBOXED_ONLY = "Sandboxed only:"
+"""What a program's docstring says when it needs threads, which only the
+sandbox runs (in-process, a controller's threads are refused)."""
+
+
+def hosts_for(program: Path) -> tuple[str, ...]:
+    """The turtletui hosts a program is compared in."""
+    head = program.read_text().split('"""')[1]
+    return ("sandboxed",) if SANDBOXED_ONLY in " ".join(head.split()) else HOSTS

@@ -14,7 +14,7 @@ import os
 from pathlib import Path
 
 import pytest
-from harness import HOSTS, Output, programs, run_real, run_turtletui
+from harness import Output, hosts_for, programs, run_real, run_turtletui
 
 pytestmark = pytest.mark.realros
 
@@ -30,15 +30,18 @@ def real_output(program: Path, tmp_path: Path) -> Output:
 
 
 def test_the_suite_has_its_programs():
-    assert len(PROGRAMS) >= 15
+    assert len(PROGRAMS) >= 25
     for program in PROGRAMS:
         text = program.read_text()
         assert text.startswith('"""'), f"{program.name}: say what it exercises in a docstring"
         assert 'if __name__ == "__main__":' in text, program.name
 
 
-@pytest.mark.parametrize("host", HOSTS)
-@pytest.mark.parametrize("program", PROGRAMS, ids=lambda p: p.stem)
+@pytest.mark.parametrize(
+    ("program", "host"),
+    [(program, host) for program in PROGRAMS for host in hosts_for(program)],
+    ids=lambda value: value.stem if isinstance(value, Path) else value,
+)
 def test_turtletui_prints_what_the_real_rclpy_prints(program: Path, host: str, tmp_path: Path):
     real = real_output(program, tmp_path)
     assert real.returncode == 0, "the program fails under the real rclpy:\n" + "\n".join(real.stderr)

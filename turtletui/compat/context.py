@@ -71,6 +71,9 @@ class Context:
         self._ok = False
         self._nodes: list[Any] = []
         self._callbacks: list[Any] = []
+        self._made = 0
+        self.qos_events: list[tuple[int, int, Any, str]] = []
+        """QoS warnings waiting for an executor (turtletui.compat.matching)."""
         self.ros_args = RosArgs()
 
     @property
@@ -116,6 +119,18 @@ class Context:
 
     def track_node(self, node: Any) -> None:
         self._nodes.append(node)
+        self._made += 1
+        node._order = self._made
+
+    def node_order(self, node: Any) -> int:
+        """When ``node`` was made, among this context's nodes."""
+        return getattr(node, "_order", 0)
+
+    def flush_qos_events(self) -> None:
+        """Log the QoS warnings waiting, as an executor runs event callbacks."""
+        events, self.qos_events = sorted(self.qos_events, key=lambda e: e[:2]), []
+        for _, _, logger, text in events:
+            logger.warning(text)
 
     def untrack_node(self, node: Any) -> None:
         if node in self._nodes:

@@ -1,14 +1,30 @@
-"""``rclpy.executors``. Every executor runs callbacks one at a time in arrival
-order on the host's simulated clock, which keeps runs deterministic."""
+"""``rclpy.executors``, deterministic on the host's simulated clock.
+
+A SingleThreadedExecutor runs one callback at a time, in the order they
+became ready. A MultiThreadedExecutor, in a sandboxed controller, spins in
+``num_threads`` threads that take turns (turtletui.runtime.scheduler): while
+one callback waits (a synchronous service call, a sleep, an event), another
+may run, as far as callback groups allow. In-process there are no threads: a
+callback that waits for a service's response runs the other ready callbacks
+meanwhile, one at a time, under the same group rules.
+"""
 
 from __future__ import annotations
 
+import threading
+from collections.abc import Callable
 from typing import Any
 
+from turtletui.compat.callback_groups import MutuallyExclusiveCallbackGroup, ReentrantCallbackGroup
 from turtletui.compat.context import Context, get_default_context
-from turtletui.compat.task import Future
+from turtletui.compat.dispatch import running_groups, start_task
+from turtletui.compat.task import Future, Task
 
 _NS = 1_000_000_000
+
+DEFAULT_THREADS = 4
+"""Threads of a MultiThreadedExecutor made without ``num_threads`` (rclpy
+takes the machine's CPU count: fixed here, so runs repeat on any machine)."""
 
 
 class ExternalShutdownException(Exception):
@@ -26,7 +42,7 @@ class TimeoutException(Exception):
 def _timeout_ns(timeout_sec: float | None) -> int | None:
     if timeout_sec is None or timeout_sec < 0:
         return None
-    return int(timeout_sec * _NS)
+    return int(min(timeout_sec, 1e9) * _NS)
 
 
 class Executor:
@@ -35,6 +51,9 @@ class Executor:
     def __init__(self, *, context: Context | None = None) -> None:
         self._context = context or get_default_context()
         self._nodes: list[Any] = []
+        self._spinning = 0
+        """Threads inside this executor's spin calls now."""
+        self._is_shutdown = False
 
     @property
     def context(self) -> Context:
@@ -55,6 +74,8 @@ class Executor:
         return list(self._nodes)
 
     def shutdown(self, timeout_sec: float | None = None) -> bool:
+        """Stop spinning and forget the nodes."""
+        self._is_shutdown = True
         self._nodes.clear()
         return True
 
@@ -63,6 +84,10 @@ class Executor:
 
     def __exit__(self, exc_type: Any, exc_val: Any, exc_tb: Any) -> None:
         self.shutdown()
+
+    def create_task(self, callback: Callable | Any, *args: Any, **kwargs: Any) -> Task:
+        """Run ``callback(*args)`` (or a coroutine) soon, as a Task of this executor."""
+        return start_task(self._context.host, ReentrantCallbackGroup(), callback, args, kwargs, now=False)
 
     def _guard(self, what: str) -> Any:
         host = self._context.host
@@ -74,44 +99,138 @@ class Executor:
             )
         return host
 
+    def _stopped(self) -> bool:
+        return self._is_shutdown or not self._context.ok()
+
     def spin(self) -> None:
         host = self._guard("spin()")
-        context = self._context
-        if context.ok():
-            host.spin(lambda: not context.ok())
+        if not self._stopped():
+            self._run(host, lambda: host.spin(self._stopped))
 
     def spin_once(self, timeout_sec: float | None = None) -> None:
         host = self._guard("spin_once()")
-        if self._context.ok():
-            host.spin_once(_timeout_ns(timeout_sec))
+        if not self._stopped():
+            with self._counted():
+                host.spin_once(_timeout_ns(timeout_sec))
 
     def spin_until_future_complete(self, future: Future, timeout_sec: float | None = None) -> None:
         host = self._guard("spin_until_future_complete()")
-        if not self._context.ok():
+        if self._stopped():
             return
         # As rclpy: a cancelled future is not done(), but ends the wait too.
-        host.spin_until(lambda: future.done() or future.cancelled(), _timeout_ns(timeout_sec))
+        timeout_ns = _timeout_ns(timeout_sec)
+        self._run(host, lambda: host.spin_until(lambda: future.done() or future.cancelled(), timeout_ns))
 
     def spin_once_until_future_complete(self, future: Future, timeout_sec: float | None = None) -> None:
         self.spin_once(timeout_sec)
 
+    def _run(self, host: Any, spin: Callable[[], Any]) -> None:
+        """Run ``spin`` (which runs callbacks on the calling thread) as this executor."""
+        with self._counted():
+            spin()
+
+    def _counted(self) -> _Spinning:
+        return _Spinning(self)
+
+
+class _Spinning:
+    """Counts the calling thread as spinning the executor while inside."""
+
+    __slots__ = ("_executor",)
+
+    def __init__(self, executor: Executor) -> None:
+        self._executor = executor
+
+    def __enter__(self) -> None:
+        self._executor._spinning += 1
+
+    def __exit__(self, *exc: object) -> None:
+        self._executor._spinning -= 1
+
 
 class SingleThreadedExecutor(Executor):
-    pass
+    """Runs one callback at a time."""
 
 
 class MultiThreadedExecutor(Executor):
+    """Runs callbacks of different callback groups (or of a Reentrant one) at
+    the same time, in ``num_threads`` threads taking turns (sandboxed)."""
+
     def __init__(self, num_threads: int | None = None, *, context: Context | None = None) -> None:
         super().__init__(context=context)
-        self._num_threads = num_threads or 2
+        if num_threads is not None and (isinstance(num_threads, bool) or not isinstance(num_threads, int)):
+            raise TypeError(f"num_threads must be an int, got {num_threads!r}")
+        if num_threads is not None and num_threads < 1:
+            raise ValueError(f"num_threads must be at least 1, got {num_threads}")
+        self._num_threads = num_threads or DEFAULT_THREADS
+
+    def _run(self, host: Any, spin: Callable[[], Any]) -> None:
+        """Run ``spin`` on the calling thread with ``num_threads - 1`` more
+        threads running callbacks meanwhile (sandboxed; in-process there are
+        none), until it returns."""
+        if getattr(host, "scheduler", None) is None or self._num_threads < 2:
+            super()._run(host, spin)
+            return
+        finished: list[bool] = []
+
+        def stop() -> bool:
+            return bool(finished) or self._stopped()
+
+        workers = [
+            threading.Thread(target=self._work, args=(host, stop), name=f"MultiThreadedExecutor-{n}", daemon=True)
+            for n in range(1, self._num_threads)
+        ]
+        for worker in workers:
+            worker.start()
+        try:
+            super()._run(host, spin)
+        finally:
+            finished.append(True)
+            for worker in workers:
+                worker.join()
+
+    def _work(self, host: Any, stop: Callable[[], bool]) -> None:
+        with self._counted():
+            host.spin(stop)
 
     def shutdown(self, timeout_sec: float | None = None, *, wait_for_threads: bool = True) -> bool:
-        """``wait_for_threads`` is accepted and ignored: callbacks run on one thread here."""
         return super().shutdown(timeout_sec)
 
 
 class EventsExecutor(SingleThreadedExecutor):
     pass
+
+
+def threads_that_can_help(node: Any) -> bool:
+    """Whether, while the calling thread waits inside one of ``node``'s
+    callbacks, an executor can still run the node's other callbacks."""
+    executor = getattr(node, "executor", None)
+    return isinstance(executor, MultiThreadedExecutor) and executor._spinning > 0
+
+
+def nothing_spins(node: Any) -> bool:
+    """Whether no executor spins ``node`` now, and no other thread of the
+    controller could (ROS 2 would then wait for ever for its callbacks)."""
+    executor = getattr(node, "executor", None)
+    scheduler = getattr(node.context.host, "scheduler", None)
+    return (executor is None or not executor._spinning) and (scheduler is None or scheduler.alone())
+
+
+def wait_inside_callback(node: Any, done: Callable[[], bool], timeout_ns: int | None) -> bool:
+    """Wait, inside a callback of ``node`` spun by a MultiThreadedExecutor,
+    until ``done()`` (True) or the timeout (False). With threads (sandboxed)
+    the executor's other threads run callbacks meanwhile; without (in-process)
+    this thread runs them, one at a time, as far as their groups allow."""
+    host = node.context.host
+    if getattr(host, "scheduler", None) is not None and not host.scheduler.alone():
+        return host.spin_until(done, timeout_ns, callbacks=False)
+    return host.spin_until(done, timeout_ns)
+
+
+def busy_exclusive_group(group: Any) -> bool:
+    """Whether ``group`` is a mutually exclusive group the calling thread is
+    running a callback of (nothing else of it can run until that returns)."""
+    return isinstance(group, MutuallyExclusiveCallbackGroup) and group in running_groups()
 
 
 _global_executor: Executor | None = None

@@ -3,11 +3,14 @@
 from __future__ import annotations
 
 import math
+from collections import deque
 from collections.abc import Callable, Sequence
 from typing import Any
 
+from turtletui.compat.callback_groups import CallbackGroup, MutuallyExclusiveCallbackGroup
 from turtletui.compat.context import Context, get_default_context
 from turtletui.compat.destroyable import Destroyable
+from turtletui.compat.dispatch import dispatcher
 from turtletui.compat.exceptions import (  # noqa: F401  (re-exported: rclpy.node users import them here)
     InvalidHandle,
     InvalidParameterTypeException,
@@ -19,6 +22,12 @@ from turtletui.compat.exceptions import (  # noqa: F401  (re-exported: rclpy.nod
     validate_node_name,
     validate_topic_name,
 )
+from turtletui.compat.executors import (
+    busy_exclusive_group,
+    nothing_spins,
+    threads_that_can_help,
+    wait_inside_callback,
+)
 from turtletui.compat.graph_info import (
     NodeNameNonExistentError,
     TopicEndpointInfo,
@@ -26,6 +35,7 @@ from turtletui.compat.graph_info import (
     endpoints_info,
 )
 from turtletui.compat.logging import RcutilsLogger, get_logger
+from turtletui.compat.matching import match_publisher, match_subscription, muted
 from turtletui.compat.parameter import (
     Parameter,
     ParameterDescriptor,
@@ -37,6 +47,7 @@ from turtletui.compat.parameter import (
 from turtletui.compat.qos import (
     QoSProfile,
     depth_of,
+    is_transient_local,
     qos_profile_rosout_default,
     qos_profile_services_default,
 )
@@ -69,6 +80,11 @@ class Publisher(Destroyable):
         self._copy = copier(self.msg_type)
         self._topic = record.topic
         self._destroyed = False  # read on every publish: an instance attribute is quicker
+        self._topic_as_given = record.topic.name
+        self._muted = muted(record)
+        self.history: deque | None = deque(maxlen=depth_of(qos_profile)) if is_transient_local(qos_profile) else None
+        """The last messages, kept for late-joining transient-local subscriptions."""
+        record.entity = self
 
     @property
     def topic_name(self) -> str:
@@ -89,11 +105,25 @@ class Publisher(Destroyable):
                 f"publish() on {self._topic.name} expects a {self._topic.type_name} message, got "
                 + (_describe(msg))
             )
-        self._publish(self._topic, self._copy(msg))
+        msg = self._copy(msg)
+        if self.history is not None:
+            self.history.append(msg)
+        if not self._muted:
+            self._publish(self._topic, msg)
+            return
+        # Subscriptions with incompatible QoS get nothing from this publisher.
+        topic = self._topic
+        everyone = topic.subscriptions
+        topic.subscriptions = [sub for sub in everyone if sub not in self._muted]
+        try:
+            self._publish(topic, msg)
+        finally:
+            topic.subscriptions = everyone
 
     def get_subscription_count(self) -> int:
+        """The subscriptions this publisher matches (QoS compatible)."""
         self._require_alive()
-        return self._node._graph.count_subscribers(self._topic.name)
+        return sum(1 for sub in self._topic.subscriptions if sub not in self._muted)
 
     def wait_for_all_acked(self, timeout: Duration = Duration(seconds=-1)) -> bool:
         self._require_alive()
@@ -101,6 +131,17 @@ class Publisher(Destroyable):
 
     def destroy(self) -> None:
         self._node.destroy_publisher(self)
+
+
+_FIX_INSIDE = (
+    "Use call_async() (await it in an async def callback, or add_done_callback()), or give the client "
+    "(and the service) a callback group of its own (ReentrantCallbackGroup) and spin the node with a "
+    "MultiThreadedExecutor."
+)
+_FIX_OUTSIDE = (
+    "Spin the node in a thread first (threading.Thread(target=rclpy.spin, args=(node,), daemon=True).start()), "
+    "or use call_async() with rclpy.spin_until_future_complete()."
+)
 
 
 def _describe(msg: Any) -> str:
@@ -119,11 +160,19 @@ class Subscription(Destroyable):
         self.msg_type = record.topic.msg_type
         self.callback = callback
         self.qos_profile = qos_profile
+        self._topic_as_given = record.topic.name
+        record.entity = self
 
     @property
     def topic_name(self) -> str:
         self._require_alive()
         return self._record.topic.name
+
+    def get_publisher_count(self) -> int:
+        """The publishers this subscription matches (QoS compatible)."""
+        self._require_alive()
+        record = self._record
+        return sum(1 for pub in record.topic.publishers if record not in muted(pub))
 
     def destroy(self) -> None:
         self._node.destroy_subscription(self)
@@ -175,14 +224,16 @@ class Timer(Destroyable):
 class Client(Destroyable):
     """A service client: ``call_async(request)`` returns a Future of the response."""
 
-    def __init__(self, node: Node, record: core.ServiceClient) -> None:
+    def __init__(self, node: Node, record: core.ServiceClient, callback_group: CallbackGroup) -> None:
         self._node = node
         self._record = record
         self.srv_type = record.srv_type
         self.srv_name = record.name
+        self.callback_group = callback_group
 
     def call_async(self, request: Any) -> Future:
-        """Send ``request``; the Future completes when the response arrives."""
+        """Send ``request``; the Future completes when the response arrives
+        (handled in the client's callback group, as rclpy does)."""
         self._require_alive()
         if type(request) is not self.srv_type.Request:
             raise TypeError(
@@ -191,21 +242,59 @@ class Client(Destroyable):
             )
         future = Future()
         host = self._node.context.host
-        host.graph.call(self.srv_name, request, future.set_result, host.owner)
+        host.graph.call(self.srv_name, request, dispatcher(host, self.callback_group, future.set_result), host.owner)
         return future
 
     def call(self, request: Any, timeout_sec: float | None = None) -> Any:
-        """Call and wait for the response (never inside a callback: ROS deadlocks)."""
+        """Call and wait for the response; TimeoutError after ``timeout_sec``.
+
+        Where ROS 2 would wait for ever (nothing can deliver the response),
+        raises RuntimeError saying why and what to do instead."""
         host = self._node.context.host
-        if host.callback_depth:
+        inside = host.callback_depth > 0
+        hang = self._why_call_hangs(inside)
+        if hang:
             raise RuntimeError(
-                f"{self.srv_name}: Client.call() inside a callback would deadlock in ROS 2 "
-                "(the executor cannot deliver the response while your callback waits). "
-                "Use call_async() with add_done_callback() instead."
+                f"{self.srv_name}: Client.call() {hang}: in ROS 2 it would wait for ever. "
+                + (_FIX_INSIDE if inside else _FIX_OUTSIDE)
             )
         future = self.call_async(request)
-        host.spin_until(future.done, None if timeout_sec is None else int(timeout_sec * _NS))
+        timeout_ns = None if timeout_sec is None else int(min(max(timeout_sec, 0), 1e9) * _NS)
+        if inside:
+            wait_inside_callback(self._node, future.done, timeout_ns)
+        else:
+            host.spin_until(future.done, timeout_ns, callbacks=False)
+        if not future.done():
+            if timeout_sec is not None and host.running:
+                raise TimeoutError()
+            return None
         return future.result()
+
+    def _why_call_hangs(self, inside: bool) -> str:
+        """Why nothing could deliver the response of a synchronous call made
+        now ("" if something can)."""
+        if not inside:
+            if nothing_spins(self._node):
+                return "with nothing spinning the node waits for a response that nothing can deliver"
+            return ""
+        if not threads_that_can_help(self._node):
+            return (
+                "inside a callback would deadlock in ROS 2: the executor running your callback has one "
+                "thread, busy waiting, so it cannot deliver the response"
+            )
+        if busy_exclusive_group(self.callback_group):
+            return (
+                "inside a callback would deadlock in ROS 2: the client is in the same mutually exclusive "
+                "callback group as the callback that waits (the node's default group, if you gave none), "
+                "so its response cannot be handled until that callback returns"
+            )
+        service = self._node._graph.services.get(self.srv_name)
+        if service is not None and busy_exclusive_group(getattr(service.handler, "group", None)):
+            return (
+                "inside a callback would deadlock in ROS 2: the service it calls is in the same mutually "
+                "exclusive callback group as the callback that waits, so it cannot run until that returns"
+            )
+        return ""
 
     def service_is_ready(self) -> bool:
         self._require_alive()
@@ -239,23 +328,56 @@ class Service(Destroyable):
 
 
 class Rate:
-    """``node.create_rate(hz).sleep()``: sleeps in simulated time."""
+    """``node.create_rate(hz).sleep()``: as rclpy's, a timer of the node (in
+    its default callback group) that ticks every period from the rate's
+    creation; ``sleep()`` returns at the next tick, at once if one passed
+    since the last sleep. The ticks need an executor spinning the node."""
 
     def __init__(self, node: Node, frequency: float) -> None:
-        if frequency <= 0:
-            raise ValueError("frequency must be > 0")
+        if isinstance(frequency, bool) or not isinstance(frequency, (int, float)):
+            raise TypeError(f"frequency must be a number of Hz, got {frequency!r}")
+        if not math.isfinite(frequency) or frequency <= 0:
+            raise ValueError(f"frequency must be positive and finite, got {frequency}")
         self._node = node
-        self._period_ns = int(_NS / frequency)
-        self._next: int | None = None
+        self._period_ns = max(1, int(round(_NS / frequency)))
+        self._start = self._last = node.context.host.graph.now_ns
+        self._destroyed = False
 
     def sleep(self) -> None:
+        """Wait for the next tick (in simulated time)."""
+        if self._destroyed:
+            raise RuntimeError("Rate cannot sleep because it has been destroyed")
         host = self._node.context.host
-        now = host.graph.now_ns
-        self._next = now + self._period_ns if self._next is None else max(self._next + self._period_ns, now)
-        host.sleep_until(self._next)
+        hang = self._why_sleep_hangs(host)
+        if hang:
+            raise RuntimeError(
+                f"Rate.sleep() {hang}: in ROS 2 it would wait for ever. Spin the node in a thread "
+                "(threading.Thread(target=rclpy.spin, args=(node,), daemon=True).start()) and keep the loop "
+                "in main, or drive the loop from a timer (create_timer) instead."
+            )
+        period = self._period_ns
+        due = self._start + ((self._last - self._start) // period + 1) * period
+        if due > host.graph.now_ns:
+            host.sleep_until(due)
+        self._last = host.graph.now_ns
+
+    def _why_sleep_hangs(self, host: Any) -> str:
+        node = self._node
+        if host.callback_depth:
+            if not threads_that_can_help(node):
+                return "inside a callback of a single-threaded executor: the rate's timer cannot fire while it waits"
+            if busy_exclusive_group(node.default_callback_group):
+                return (
+                    "inside a callback of the node's default callback group: the rate's timer is in that group "
+                    "too and cannot fire while it waits"
+                )
+            return ""
+        if nothing_spins(node):
+            return "with nothing spinning the node: the rate's timer never fires"
+        return ""
 
     def destroy(self) -> None:
-        pass
+        self._destroyed = True
 
 
 class Node(Destroyable):
@@ -322,6 +444,8 @@ class Node(Destroyable):
         self._descriptors: dict[str, ParameterDescriptor] = {}
         self._on_set: list[Callable] = []
         self._entities: list[Any] = []
+        self._default_callback_group = MutuallyExclusiveCallbackGroup()
+        self._callback_groups: list[CallbackGroup] = [self._default_callback_group]
         self._logger = get_logger(f"{namespace.strip('/').replace('/', '.')}.{node_name}".lstrip("."))
         self._clock = clock_for(self._context, ClockType.ROS_TIME)
         self._context.track_node(self)
@@ -341,6 +465,41 @@ class Node(Destroyable):
     @executor.setter
     def executor(self, value: Any) -> None:
         self._executor = value
+
+    @property
+    def default_callback_group(self) -> CallbackGroup:
+        """The group of callbacks created without one: mutually exclusive, as in rclpy."""
+        return self._default_callback_group
+
+    @property
+    def callback_groups(self) -> list[CallbackGroup]:
+        return list(self._callback_groups)
+
+    def add_callback_group(self, callback_group: CallbackGroup) -> None:
+        if callback_group not in self._callback_groups:
+            self._callback_groups.append(callback_group)
+
+    def _group(self, callback_group: CallbackGroup | None) -> CallbackGroup:
+        """The group an entity's callbacks run in (the node's default if None)."""
+        if callback_group is None:
+            return self._default_callback_group
+        if not isinstance(callback_group, CallbackGroup):
+            raise TypeError(
+                "callback_group must be a MutuallyExclusiveCallbackGroup or a ReentrantCallbackGroup, "
+                f"got {callback_group!r}"
+            )
+        self.add_callback_group(callback_group)
+        return callback_group
+
+    def _qos_event(self, entity: Any, text: str) -> None:
+        """Log ``text`` as rclpy's default QoS event callback of ``entity``
+        does: when an executor next runs the node's callbacks, a node's events
+        in the order of its entities, nodes in the order they were made."""
+        events = self._context.qos_events
+        if not events:
+            host = self._context.host
+            host.graph.ready.append((host.owner, self._context.flush_qos_events))
+        events.append((self._context.node_order(self), self._entities.index(entity), self._logger, text))
 
     def get_name(self) -> str:
         self._require_alive()
@@ -406,7 +565,9 @@ class Node(Destroyable):
             self._record, self.resolve_topic_name(topic), msg_type, depth, qos=qos_profile
         )
         publisher = Publisher(self, record, qos_profile)
+        publisher._topic_as_given = topic
         self._entities.append(publisher)
+        match_publisher(self, publisher)
         return publisher
 
     def create_subscription(
@@ -433,12 +594,14 @@ class Node(Destroyable):
             self.resolve_topic_name(topic),
             msg_type,
             depth,
-            host.wrap_callback(callback),
+            dispatcher(host, self._group(callback_group), callback),
             qos=qos_profile,
             copy=copier(msg_type),
         )
         subscription = Subscription(self, record, callback, qos_profile)
+        subscription._topic_as_given = topic
         self._entities.append(subscription)
+        match_subscription(self, subscription)
         return subscription
 
     def create_timer(
@@ -459,7 +622,7 @@ class Node(Destroyable):
         record = self._graph.add_timer(
             self._record,
             max(1, int(round(timer_period_sec * _NS))),
-            host.wrap_callback(callback),
+            dispatcher(host, self._group(callback_group), callback),
             # rclpy lets a destroyed node make a timer; no executor calls it
             autostart=autostart and not self._destroyed,
         )
@@ -481,7 +644,7 @@ class Node(Destroyable):
         self._require_alive()
         _check_srv_type(srv_type, "create_client()")
         record = self._graph.add_client(self._record, self._resolve(srv_name, True), srv_type)
-        client = Client(self, record)
+        client = Client(self, record, self._group(callback_group))
         self._entities.append(client)
         return client
 
@@ -508,7 +671,10 @@ class Node(Destroyable):
                 )
             respond(response)
 
-        record = self._graph.add_service(self._record, name, srv_type, host.wrap_callback(handler))
+        handler.__name__ = getattr(callback, "__name__", "handler")
+        record = self._graph.add_service(
+            self._record, name, srv_type, dispatcher(host, self._group(callback_group), handler)
+        )
         service = Service(self, record, callback)
         self._entities.append(service)
         return service
@@ -533,6 +699,7 @@ class Node(Destroyable):
         return self._destroy_entity(service, self._graph.remove_service)
 
     def destroy_rate(self, rate: Rate) -> bool:
+        rate.destroy()
         return True
 
     def _destroy_entity(self, entity: Any, remove: Callable[[Any], Any]) -> bool:

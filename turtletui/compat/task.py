@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import inspect
 from collections.abc import Callable
 from typing import Any
 
@@ -18,8 +19,9 @@ class Future:
         self._callbacks: list[Callable[[Future], None]] = []
 
     def __await__(self):
+        # Yields itself: the Task awaiting it resumes when it is done.
         while self._state == "PENDING":
-            yield
+            yield self
         return self.result()
 
     def cancel(self) -> None:
@@ -73,3 +75,50 @@ class Future:
         callbacks, self._callbacks = self._callbacks, []
         for callback in callbacks:
             callback(self)
+
+
+class Task(Future):
+    """A coroutine (an ``async def`` callback) run by an executor: it runs
+    until it awaits a Future that is not done, and goes on, in its callback
+    group, once that Future is done. The Task is done when the coroutine
+    returns (or raises)."""
+
+    def __init__(self, handler: Any, args: tuple = (), kwargs: dict | None = None, *, executor: Any = None) -> None:
+        super().__init__(executor=executor)
+        self._handler = handler
+        self._args = args
+        self._kwargs = kwargs or {}
+        self._resume: Callable[[], None] | None = None
+        """How to run the next step later (queue it with the executor)."""
+
+    def executing(self) -> bool:
+        return False
+
+    def __call__(self) -> None:
+        """Run the task's next step; an exception from the handler is set on
+        the task and raised, as rclpy's executor raises it from spin."""
+        if self._state != "PENDING":
+            return
+        handler = self._handler
+        if not inspect.iscoroutine(handler):
+            try:
+                result = handler(*self._args, **self._kwargs)
+            except Exception as exc:
+                self.set_exception(exc)
+                raise
+            if not inspect.iscoroutine(result):
+                self.set_result(result)
+                return
+            self._handler = handler = result
+        try:
+            awaited = handler.send(None)
+        except StopIteration as stop:
+            self.set_result(stop.value)
+            return
+        except Exception as exc:
+            self.set_exception(exc)
+            raise
+        if isinstance(awaited, Future) and self._resume is not None:
+            awaited.add_done_callback(lambda _future: self._resume())
+        elif self._resume is not None:
+            self._resume()

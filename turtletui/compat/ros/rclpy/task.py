@@ -1,1 +1,1 @@
-from turtletui.compat.task import Future  # noqa: F401
+from turtletui.compat.task import Future, Task  # noqa: F401

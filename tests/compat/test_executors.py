@@ -1,0 +1,200 @@
+"""Where ROS 2 would wait for ever, turtletui says why and what to do, in both
+hosts, and the run goes on to its end; what ROS 2 allows (a synchronous call in
+a callback of its own group under a MultiThreadedExecutor) works. The programs
+that ROS 2 runs to the end are in tests/fidelity (compared with the real rclpy)."""
+
+from __future__ import annotations
+
+import sys
+import textwrap
+from pathlib import Path
+
+import pytest
+
+from turtletui.api import run
+
+HOSTS = [
+    pytest.param(False, id="in-process"),
+    pytest.param(
+        True, id="sandboxed", marks=pytest.mark.skipif(sys.platform == "win32", reason="the sandbox needs POSIX")
+    ),
+]
+
+SERVICE_NODE = """
+import threading
+import rclpy
+from rclpy.callback_groups import MutuallyExclusiveCallbackGroup, ReentrantCallbackGroup
+from rclpy.executors import MultiThreadedExecutor, SingleThreadedExecutor
+from rclpy.node import Node
+from std_srvs.srv import SetBool
+
+
+class Caller(Node):
+    def __init__(self, client_group):
+        super().__init__("caller")
+        self.create_service(SetBool, "toggle", self.on_toggle, callback_group=ReentrantCallbackGroup())
+        self.client = self.create_client(SetBool, "toggle", callback_group=client_group)
+        self.create_timer(0.5, self.tick)
+
+    def on_toggle(self, request, response):
+        response.success = request.data
+        return response
+
+    def tick(self):
+        response = self.client.call(SetBool.Request(data=True))  # CALLS HERE
+        self.get_logger().info(f"answer {response.success}")
+"""
+
+
+def write(tmp_path: Path, name: str, source: str) -> Path:
+    path = tmp_path / name
+    path.write_text(textwrap.dedent(source).lstrip(), encoding="utf-8")
+    return path
+
+
+def only_crash(result):
+    assert len(result.crashes) == 1, result.crashes
+    return result.crashes[0]
+
+
+@pytest.mark.parametrize("sandbox", HOSTS)
+def test_a_synchronous_call_in_a_single_threaded_callback_explains_the_deadlock(tmp_path, sandbox):
+    path = write(tmp_path, "single.py", SERVICE_NODE + """
+def main():
+    rclpy.init()
+    node = Caller(None)
+    rclpy.spin(node)
+""")
+    result = run([path], duration=2.0, sandbox=sandbox)
+    crash = only_crash(result)
+    assert crash.t == pytest.approx(0.5)
+    assert crash.message.startswith("RuntimeError: /toggle: Client.call() inside a callback would deadlock in ROS 2")
+    assert "one thread" in crash.message
+    assert "call_async()" in crash.message and "MultiThreadedExecutor" in crash.message
+    assert any("CALLS HERE" in frame or "single.py" in frame for frame in crash.frames)
+    assert result.sim_time == 2.0  # the run went on to its end
+
+
+@pytest.mark.parametrize("sandbox", HOSTS)
+def test_a_client_in_the_callbacks_own_exclusive_group_is_a_deadlock_even_multithreaded(tmp_path, sandbox):
+    path = write(tmp_path, "same_group.py", SERVICE_NODE + """
+def main():
+    rclpy.init()
+    node = Caller(None)  # the client in the node's default group, as the timer
+    executor = MultiThreadedExecutor()
+    executor.add_node(node)
+    executor.spin()
+""")
+    crash = only_crash(run([path], duration=2.0, sandbox=sandbox))
+    assert "same mutually exclusive callback group as the callback that waits" in crash.message
+
+
+@pytest.mark.parametrize("sandbox", HOSTS)
+def test_a_client_in_a_group_of_its_own_answers_under_a_multithreaded_executor(tmp_path, sandbox):
+    path = write(tmp_path, "own_group.py", SERVICE_NODE + """
+def main():
+    rclpy.init()
+    node = Caller(MutuallyExclusiveCallbackGroup())
+    executor = MultiThreadedExecutor(num_threads=2)
+    executor.add_node(node)
+    executor.spin()
+""")
+    result = run([path], duration=1.6, sandbox=sandbox)
+    assert result.ok, result.crashes
+    assert [r.msg for r in result.logs if r.node == "caller"] == ["answer True"] * 3
+
+
+@pytest.mark.parametrize("sandbox", HOSTS)
+def test_a_call_from_main_with_nothing_spinning_explains_the_hang(tmp_path, sandbox):
+    path = write(tmp_path, "main_call.py", """
+import rclpy
+from rclpy.node import Node
+from std_srvs.srv import Empty
+
+
+def main():
+    rclpy.init()
+    node = Node("main_caller")
+    client = node.create_client(Empty, "/clear")
+    client.wait_for_service()
+    client.call(Empty.Request())
+""")
+    crash = only_crash(run([path], duration=1.0, sandbox=sandbox))
+    assert crash.message.startswith("RuntimeError: /clear: Client.call() with nothing spinning the node")
+    assert "threading.Thread(target=rclpy.spin" in crash.message
+
+
+@pytest.mark.parametrize("sandbox", HOSTS)
+def test_a_rate_with_nothing_spinning_explains_the_hang(tmp_path, sandbox):
+    path = write(tmp_path, "rate.py", """
+import rclpy
+from rclpy.node import Node
+
+
+def main():
+    rclpy.init()
+    node = Node("looper")
+    rate = node.create_rate(10)
+    rate.sleep()
+""")
+    crash = only_crash(run([path], duration=1.0, sandbox=sandbox))
+    assert crash.message.startswith("RuntimeError: Rate.sleep() with nothing spinning the node")
+    assert "create_timer" in crash.message
+
+
+def test_a_call_that_times_out_raises_timeout_error(tmp_path):
+    path = write(tmp_path, "timeout.py", """
+import threading
+import rclpy
+from rclpy.node import Node
+from std_srvs.srv import Empty
+
+
+def main():
+    rclpy.init()
+    node = Node("impatient")
+    threading.Thread(target=rclpy.spin, args=(node,), daemon=True).start()
+    client = node.create_client(Empty, "/nobody_serves_this")
+    try:
+        client.call(Empty.Request(), timeout_sec=0.5)
+    except TimeoutError:
+        node.get_logger().info("timed out")
+""")
+    result = run([path], duration=2.0, sandbox=True)
+    assert result.ok, result.crashes
+    assert [(r.t, r.msg) for r in result.logs if r.node == "impatient"] == [(0.5, "timed out")]
+
+
+def test_a_best_effort_cmd_vel_does_not_drive_turtlesim(tmp_path):
+    """In-process, where turtlesim and the controller share the graph (the
+    sandbox's wire does not carry QoS yet: README, fidelity table)."""
+    path = write(tmp_path, "sensor_qos.py", """
+import rclpy
+from geometry_msgs.msg import Twist, Vector3
+from rclpy.node import Node
+from rclpy.qos import qos_profile_sensor_data
+
+
+class Driver(Node):
+    def __init__(self):
+        super().__init__("driver")
+        self.pub = self.create_publisher(Twist, "/turtle1/cmd_vel", qos_profile_sensor_data)
+        self.create_timer(0.1, lambda: self.pub.publish(Twist(linear=Vector3(x=1.0))))
+
+
+def main():
+    rclpy.init()
+    rclpy.spin(Driver())
+""")
+    result = run([path], duration=1.0, sandbox=False, keep_poses=True)
+    assert result.ok, result.crashes
+    assert [r.msg for r in result.logs if r.node == "driver"] == [
+        "New subscription discovered on topic '/turtle1/cmd_vel', requesting incompatible QoS. "
+        "No messages will be sent to it. Last incompatible policy: RELIABILITY"
+    ]
+    assert (
+        "New publisher discovered on topic '/turtle1/cmd_vel', offering incompatible QoS. "
+        "No messages will be sent to it. Last incompatible policy: RELIABILITY_QOS_POLICY"
+    ) in [r.msg for r in result.logs if r.node == "turtlesim"]
+    assert {(x, y) for _, x, y, _ in result.poses["turtle1"]} == {(result.poses["turtle1"][0][1], result.poses["turtle1"][0][2])}
+

@@ -1,0 +1,117 @@
+"""Node callbacks as rclpy's executors run them: under their callback group's
+rules, and ``async def`` callbacks as tasks.
+
+Every timer, subscription, service and client callback reaches the graph
+through :func:`dispatcher`. A callback whose MutuallyExclusive group is busy
+(another of its callbacks is running, in another executor thread or further
+up this one's stack) waits, and runs as soon as the group is free. A callback
+that returns a coroutine becomes a Task that goes on, in the same group, each
+time the Future it awaits is done.
+"""
+
+from __future__ import annotations
+
+import inspect
+import threading
+from collections.abc import Callable
+from typing import Any
+
+from turtletui.compat.callback_groups import CallbackGroup
+from turtletui.compat.task import Task
+
+_running = threading.local()
+"""The groups whose callbacks the calling thread is running, innermost last."""
+
+
+def running_groups() -> list[CallbackGroup]:
+    """The callback groups the calling thread is inside, innermost last."""
+    stack = getattr(_running, "groups", None)
+    if stack is None:
+        stack = _running.groups = []
+    return stack
+
+
+def dispatcher(host: Any, group: CallbackGroup, callback: Callable) -> Callable:
+    """``callback`` as the graph should call it: counted as a callback
+    (host.wrap_callback), run under ``group``'s rules, a coroutine it returns
+    run as a Task."""
+    counted = host.wrap_callback(callback)
+    ready = host.graph.ready
+    owner = host.owner
+
+    def run(*args: Any) -> Any:
+        if not group.beginning_execution(run):
+            # A timer that fires again while it waits still runs once, as in rclpy.
+            if args or all(item[1] is not run for item in group._deferred):
+                group._deferred.append((owner, (lambda: run(*args)) if args else run))
+            return None
+        held = False
+        stack = running_groups()
+        stack.append(group)
+        try:
+            result = counted(*args)
+            if inspect.iscoroutine(result):
+                # As rclpy: the task holds its group until the coroutine ends.
+                held = True
+                start_task(host, group, result, now=True, release=lambda _task: release(run))
+                return None
+            return result
+        finally:
+            stack.pop()
+            if not held:
+                release(run)
+
+    def release(entity: Any) -> None:
+        group.ending_execution(entity)
+        if group._deferred and group.can_execute(entity):
+            waiting, group._deferred = group._deferred, []
+            ready.extendleft(reversed(waiting))
+
+    run.label = counted.label  # type: ignore[attr-defined]
+    run.group = group  # type: ignore[attr-defined]
+    return run
+
+
+def start_task(
+    host: Any,
+    group: CallbackGroup,
+    handler: Any,
+    args: tuple = (),
+    kwargs: dict | None = None,
+    *,
+    now: bool,
+    release: Callable[[Task], None] | None = None,
+) -> Task:
+    """Run ``handler`` (a coroutine, or a function called with ``args``) as a
+    Task: its first step now or queued, the next ones queued each time the
+    Future it awaits is done. With ``release``, the caller holds ``group`` for
+    the task and ``release(task)`` runs when it ends; else each step runs
+    under ``group``'s rules."""
+    task = Task(handler, args, kwargs)
+    ready = host.graph.ready
+    owner = host.owner
+    if release is None:
+        step = dispatcher(host, group, task)
+    else:
+        counted = host.wrap_callback(task)
+
+        def step() -> None:
+            _in_group(group, counted)
+
+        task.add_done_callback(release)
+    task._resume = lambda: ready.append((owner, step))
+    if now:
+        step()
+    else:
+        task._resume()
+    return task
+
+
+def _in_group(group: CallbackGroup, step: Callable[[], Any]) -> None:
+    """Run a task's step as inside a callback of ``group``."""
+    stack = running_groups()
+    stack.append(group)
+    try:
+        step()
+    finally:
+        stack.pop()
