@@ -396,7 +396,7 @@ class Leaver(Node):
         super().__init__("leaver")
         best_effort = QoSProfile(depth=5, reliability=ReliabilityPolicy.BEST_EFFORT)
         self.pub = self.create_publisher(Twist, "/chatter", best_effort)
-        self.sub = self.create_subscription(Twist, "/chatter", lambda m: None, 10)
+        self.sub = self.create_subscription(Twist, "/chatter", lambda m: None, best_effort)  # compatible QoS
         self.client = self.create_client(Empty, "/clear")
         self.service = self.create_service(Empty, "/ping", self.ping)
         self.steps = [self.drop_service, self.drop_endpoints, self.destroy_node]
