@@ -203,6 +203,28 @@ def test_a_controller_that_erases_the_random_start_is_told_so(tmp_path):
     assert report.end_poses["turtle1"] == (3.0, 3.0, 0.0)
 
 
+NOISY_WORLD = """
+[[circles]]
+x = 8.0
+y = 5.5
+r = 0.6
+
+[lidar]
+samples = 36
+noise_std = 0.05
+"""
+
+
+def test_lidar_noise_follows_the_seed_and_is_named_when_ignored(tmp_path):
+    world = tmp_path / "noisy.toml"
+    world.write_text(NOISY_WORLD)
+    avoider = check_controller(REFERENCE / "lidar_obstacle_avoider.py", world=world, seconds=3.0)
+    assert avoider.seed_changes_trajectory
+    ignorer = check_controller(controller(tmp_path), world=world, seconds=0.5)
+    assert not ignorer.seed_changes_trajectory
+    assert "although the LiDAR's noise is drawn from the seed" in ignorer.seed_note
+
+
 def test_ros_args_and_distro_reach_the_controller():
     report = check_controller(
         REFERENCE / "parameters_wall_avoider.py", ros_args=["-p", "speed:=1.0"], seconds=1.0, distro="jazzy"

@@ -176,15 +176,15 @@ def check_controller(
     if lesson is not None:
         if world is not None:
             raise UsageError("give a lesson or a world, not both: a lesson's scenario names its world")
-        runner, scenario_name, seconds, random_start = _lesson_runner(
+        runner, scenario_name, seconds, seeded = _lesson_runner(
             path, lesson, scenario, seconds, (seed, other), ros_args, distro, limits, plugins
         )
     else:
         if scenario is not None:
             raise UsageError(f"scenario {scenario!r} needs a lesson")
         seconds = DEFAULT_SECONDS if seconds is None else seconds
-        runner = _plain_runner(path, seconds, ros_args, world, distro, limits, plugins)
-        scenario_name, random_start = None, False
+        runner, seeded = _plain_runner(path, seconds, ros_args, world, distro, limits, plugins)
+        scenario_name = None
     shown = display_path(path)
 
     first = runner(True, seed)
@@ -204,11 +204,8 @@ def check_controller(
     differs = _first_pose_difference(first, reseeded) is not None
     if differs:
         note = f"seed {other} gives another trajectory"
-    elif random_start:
-        note = (
-            f"seed {other} gives the same trajectory although the start pose is drawn from "
-            "the seed (the controller moves the turtle to a pose of its own)"
-        )
+    elif seeded:
+        note = f"seed {other} gives the same trajectory although {seeded} (the controller does not depend on it)"
     else:
         note = (
             f"seed {other} gives the same trajectory: nothing in the run draws on the seed "
@@ -247,7 +244,16 @@ def _quiet(sandboxed: bool):
         yield
 
 
+def _seeded(world: WorldSpec | None) -> str | None:
+    """What in a world is drawn from the seed, or None."""
+    if world is not None and world.lidar is not None and world.lidar.noise_std > 0:
+        return "the LiDAR's noise is drawn from the seed"
+    return None
+
+
 def _plain_runner(path, seconds, ros_args, world, distro, limits, plugins):
+    """A runner of plain runs (turtlesim's start, ``world`` or its empty arena),
+    and what in the world draws on the seed."""
     spec: WorldSpec | None = None
     if world is not None:
         from turtletui.worlds import resolve_world
@@ -272,17 +278,17 @@ def _plain_runner(path, seconds, ros_args, world, distro, limits, plugins):
             raise KeyboardInterrupt
         return _Run(_label(sandboxed, seed), ("t", "x", "y", "theta"), result.poses, result.logs, result.crashes)
 
-    return runner
+    return runner, _seeded(spec)
 
 
 def _lesson_runner(path, lesson, scenario, seconds, seeds, ros_args, distro, limits, plugins):
     """A runner of the grader's own scenario runs, and the scenario's name,
-    duration and whether its start pose is drawn from the seed."""
-    from turtletui.grading.engine import prepare, run_scenario
+    duration and what in it draws on the seed."""
+    from turtletui.grading.engine import prepare, run_scenario, validate
     from turtletui.grading.trace import POSE_COLUMNS
     from turtletui.lessons.loader import find_lesson
 
-    if not hasattr(lesson, "scenarios"):
+    if isinstance(lesson, (str, Path)):
         lesson = find_lesson(lesson, plugins=plugins)
     chosen = _scenario(lesson, scenario)
     changes = {"seeds": seeds}
@@ -294,7 +300,11 @@ def _lesson_runner(path, lesson, scenario, seconds, seeds, ros_args, distro, lim
     lesson = replace(lesson, scenarios=(chosen,), distro=distro or lesson.distro)
     plan: GradingPlan = prepare(lesson, plugins=plugins)
     runs: dict[int, ScenarioRun] = {r.seed: r for r in plan.runs}
-    random_start = chosen.start == "random"
+    _, worlds = validate(lesson, plugins=plugins)
+    if chosen.start == "random":
+        seeded = "the start pose is drawn from the seed"
+    else:
+        seeded = _seeded(worlds[chosen.world or lesson.world])
 
     def runner(sandboxed: bool, seed: int) -> _Run:
         spec = ControllerSpec(name=path.stem, path=path, trusted=not sandboxed)
@@ -303,7 +313,7 @@ def _lesson_runner(path, lesson, scenario, seconds, seeds, ros_args, distro, lim
         poses = {turtle: [tuple(row) for row in rows.tolist()] for turtle, rows in trace.poses.items()}
         return _Run(_label(sandboxed, seed), POSE_COLUMNS, poses, trace.logs, trace.crashes)
 
-    return runner, chosen.name, chosen.duration, random_start
+    return runner, chosen.name, chosen.duration, seeded
 
 
 def _scenario(lesson: Lesson, name: str | None):
