@@ -143,6 +143,18 @@ def _init_worker(
     set_up_worker(lesson_path, plugins, limits, shared_cpus=next_cpu is not None)
 
 
+@contextmanager
+def _as_worker(plan: GradingPlan, limits: Limits | None) -> Iterator[None]:
+    """This process as a worker of ``plan`` for the block: for its own runs
+    (one job), or for the workers it forks, which start with it."""
+    global _worker
+    _worker = WorkerSetup(plan, limits or Limits())
+    try:
+        yield
+    finally:
+        _worker = None
+
+
 def set_up_worker(
     lesson_path: str, plugins: Sequence[str | Path], limits: Limits | None, *, shared_cpus: bool = False
 ) -> GradingPlan:
@@ -322,27 +334,26 @@ def grade_submissions(
     # What is built so far (modules, the plan) lives through the runs: frozen,
     # the garbage collector does not walk it during them, and forked workers
     # do not copy the pages it would touch.
-    frozen_before = gc.get_freeze_count()
-    gc.freeze()
-    try:
-        if backend is not None:
-            submitted = {student: item.submission for student, item in pending.items()}
-            backend.run(plan, tasks, submitted, limits, start, done, clock.tick)
-        elif jobs <= 1 or len(tasks) <= 1:
-            global _worker
-            _worker = WorkerSetup(plan, limits or Limits())
-            with forkserver.serving(), clock.ticking():
-                for task in tasks:
-                    started = start(task)
-                    if started is not None:
-                        done(*run_task(*started))
-        else:
-            _run_parallel(plan, tasks, jobs, limits, plugins, start, done, clock.tick)
-    finally:
-        if not frozen_before:  # a caller's own frozen heap (the app freezes its start-up) stays so
-            gc.unfreeze()
-        if store is not None:
-            store.restore()
+    with _as_worker(plan, limits):  # before the freeze: frozen too, and forked workers start with it
+        frozen_before = gc.get_freeze_count()
+        gc.freeze()
+        try:
+            if backend is not None:
+                submitted = {student: item.submission for student, item in pending.items()}
+                backend.run(plan, tasks, submitted, limits, start, done, clock.tick)
+            elif jobs <= 1 or len(tasks) <= 1:
+                with forkserver.serving(), clock.ticking():
+                    for task in tasks:
+                        started = start(task)
+                        if started is not None:
+                            done(*run_task(*started))
+            else:
+                _run_parallel(plan, tasks, jobs, limits, plugins, start, done, clock.tick)
+        finally:
+            if not frozen_before:  # a caller's own frozen heap (the app freezes its start-up) stays so
+                gc.unfreeze()
+            if store is not None:
+                store.restore()
     order = {s.student: i for i, s in enumerate(submissions)}
     ordered = sorted(results.values(), key=lambda r: order[r.student])
     return GradeReport(lesson=plan.lesson.id, submissions=ordered, max_score=round(plan.max_score, 6))
@@ -479,11 +490,9 @@ def _run_pool(
     is called about once a second. Returns the tasks that were under way when
     a worker died (the pool is broken then, and the tasks not started yet stay
     in ``queue``)."""
-    global _worker
-    # fork: workers start at once with the plan already prepared
+    # fork: workers start at once with the plan already prepared (_as_worker)
     methods = multiprocessing.get_all_start_methods()
     context = multiprocessing.get_context("fork" if "fork" in methods else "spawn")
-    _worker = WorkerSetup(plan, limits or Limits())
     # A run whose simulator and controller each have a CPU to themselves polls
     # for answers; when runs outnumber pairs of CPUs, each worker keeps to one CPU.
     next_cpu = context.Value("i", 0) if 2 * jobs > default_jobs() else None
