@@ -172,7 +172,8 @@ def check_controller(
     other = seed + 1 if other_seed is None else other_seed
     if other == seed:
         raise UsageError(f"other_seed must differ from seed, both are {seed}")
-    plugins = plugin_manager(plugins)
+    if lesson is not None or world is not None:
+        plugins = plugin_manager(plugins)  # built once for the lesson, its worlds and checks
     if lesson is not None:
         if world is not None:
             raise UsageError("give a lesson or a world, not both: a lesson's scenario names its world")
