@@ -19,7 +19,7 @@ PART6 = Path(__file__).resolve().parents[1] / "plugins" / "reference" / "turtle_
 
 CORE = [
     "turtletui.sim", "turtletui.graph", "turtletui.runtime", "turtletui.interfaces", "turtletui.compat",
-    "turtletui.ros2cli",
+    "turtletui.ros2cli", "turtletui.testing",
 ]
 FRONT_ENDS = ["textual", "typer"]
 
@@ -113,6 +113,11 @@ def test_headless_sim_never_imports_textual():
 @pytest.mark.parametrize("module", CORE)
 def test_core_imports_no_front_end(module):
     assert imported_after(f"import {module}", FRONT_ENDS) == []
+
+
+def test_check_controller_needs_no_pytest():
+    """turtletui.testing is a library API; only its pytest_plugin module imports pytest."""
+    assert imported_after("import turtletui.testing", ["pytest", "_pytest"]) == []
 
 
 @pytest.mark.parametrize("module", ["turtletui.interfaces", "turtletui.runtime.child"])

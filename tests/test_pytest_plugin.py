@@ -17,7 +17,7 @@ PART6 = Path(__file__).resolve().parents[1] / "plugins" / "reference" / "turtle_
 
 
 def installed() -> bool:
-    return any(ep.value == "turtletui.testing" for ep in entry_points(group="pytest11"))
+    return any(ep.value == "turtletui.testing.pytest_plugin" for ep in entry_points(group="pytest11"))
 
 
 @pytest.fixture(autouse=True)
@@ -38,7 +38,7 @@ def run_student_tests(pytester: pytest.Pytester, source: str) -> pytest.RunResul
     """Installed, pytest loads the plugin from its ``pytest11`` entry point (what
     students get); from a source checkout it has to be named."""
     pytester.makepyfile(test_student=source)
-    return run_pytest(pytester, *([] if installed() else ["-p", "turtletui.testing"]))
+    return run_pytest(pytester, *([] if installed() else ["-p", "turtletui.testing.pytest_plugin"]))
 
 
 def test_student_test_of_the_part6_node_passes(pytester):
@@ -82,3 +82,44 @@ def test_fixture_missing_without_the_plugin(pytester):
     result = run_pytest(pytester, "-p", "no:turtletui")
     result.assert_outcomes(errors=1)
     result.stdout.fnmatch_lines(["*fixture 'turtlesim_run' not found*"])
+
+
+NONDETERMINISTIC = '''
+import random
+
+import rclpy
+from geometry_msgs.msg import Twist, Vector3
+from rclpy.node import Node
+
+
+def main():
+    rclpy.init()
+    node = Node("driver")
+    pub = node.create_publisher(Twist, "/turtle1/cmd_vel", 10)
+    rng = random.Random()  # unseeded: another run, another path
+    node.create_timer(0.1, lambda: pub.publish(Twist(angular=Vector3(z=rng.uniform(-1, 1)))))
+    rclpy.spin(node)
+'''
+
+
+def test_check_controller_in_a_student_test(pytester):
+    """A failed check is a test failure (an AssertionError) showing the student's
+    line and the one-line reason, not turtletui's frames."""
+    node = pytester.path / "wobbly.py"
+    node.write_text(NONDETERMINISTIC)
+    result = run_student_tests(pytester, f"""
+        from turtletui.testing import check_controller
+
+        def test_part6_is_deterministic():
+            report = check_controller({str(PART6)!r}, seconds=1, distro="jazzy")
+            assert report.poses["turtle1"] == 61
+
+        def test_wobbly_is_deterministic():
+            check_controller({str(node)!r}, seconds=1)
+    """)
+    result.assert_outcomes(passed=1, failed=1)
+    result.stdout.fnmatch_lines([
+        "*check_controller(*wobbly.py*",
+        "E*turtletui.testing.ControllerCheckError: *wobbly.py: two runs (sandboxed, seed 0) differ: first at tick *",
+    ])
+    result.stdout.no_fnmatch_line("*turtletui/testing/checker.py*")

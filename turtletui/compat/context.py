@@ -42,6 +42,11 @@ class Host(Protocol):
 
 
 _current_host: Host | None = None
+"""The host controllers in this process run under. Process-wide, neither passed
+nor a contextvar: rclpy's API gives it no way in (``rclpy.init()``, ``Node()``
+take no host), and the threads a controller starts (its own, a
+MultiThreadedExecutor's) begin with an empty context, so they would not see a
+contextvar the host set. A process runs one controller at a time."""
 
 
 def bind_host(host: Host | None) -> None:

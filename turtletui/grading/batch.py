@@ -90,11 +90,21 @@ class _Pending:
 
 # -- worker side ------------------------------------------------------------------
 
-_worker_plan: GradingPlan | None = None
-_worker_limits: Limits | None = None
+@dataclass(frozen=True)
+class WorkerSetup:
+    """What :func:`set_up_worker` made ready for the runs of this worker process."""
 
+    plan: GradingPlan
+    limits: Limits
+
+
+_worker: WorkerSetup | None = None
+"""This process's setup. Held here rather than passed: tasks reach a worker (of
+the pool, or of a Ray cluster) as a few strings and numbers, and the plan is
+prepared once per worker, not pickled with every run."""
 
 _in_task = False
+"""Whether a run is under way (read by the SIGTERM handler, which gets no arguments)."""
 
 
 class _GraderGone(BaseException):
@@ -133,6 +143,18 @@ def _init_worker(
     set_up_worker(lesson_path, plugins, limits, shared_cpus=next_cpu is not None)
 
 
+@contextmanager
+def _as_worker(plan: GradingPlan, limits: Limits | None) -> Iterator[None]:
+    """This process as a worker of ``plan`` for the block: for its own runs
+    (one job), or for the workers it forks, which start with it."""
+    global _worker
+    _worker = WorkerSetup(plan, limits or Limits())
+    try:
+        yield
+    finally:
+        _worker = None
+
+
 def set_up_worker(
     lesson_path: str, plugins: Sequence[str | Path], limits: Limits | None, *, shared_cpus: bool = False
 ) -> GradingPlan:
@@ -140,17 +162,18 @@ def set_up_worker(
     worker of the local pool, or of a cluster): its plan (kept while the
     lesson file is the same), the sandbox's limits, fork servers.
     ``shared_cpus``: more runs than pairs of CPUs run side by side."""
-    global _worker_plan, _worker_limits
+    global _worker
+    limits = limits or Limits()
     if shared_cpus:
-        # A reader polling for its child's answer would take the CPU that
-        # child needs (the children read the variable too).
-        wire.SPIN_SECONDS = 0.0
-        os.environ[wire.SPIN_ENV] = "0"
+        # A reader polling for its child's answer would take the CPU that child needs.
+        limits = replace(limits, spin_seconds=0.0)
     forkserver.enable()
-    if _worker_plan is None or str(_worker_plan.lesson.path) != lesson_path:
-        _worker_plan = prepare(load_lesson(lesson_path), plugins=plugins)
-    _worker_limits = limits
-    return _worker_plan
+    if _worker is not None and str(_worker.plan.lesson.path) == lesson_path:
+        plan = _worker.plan
+    else:
+        plan = prepare(load_lesson(lesson_path), plugins=plugins)
+    _worker = WorkerSetup(plan, limits)
+    return plan
 
 
 def _pin_to_one_cpu(counter: Any) -> None:
@@ -188,13 +211,13 @@ def run_task(
     folder ``recordings``. Returns the student, the outcome and the wall
     seconds it took. Every backend runs every run through this."""
     global _in_task
-    assert _worker_plan is not None
+    assert _worker is not None
     started = time.perf_counter()
-    limits = replace(_worker_limits or Limits(), run_seconds=run_seconds, run_seconds_reason=why)
+    limits = replace(_worker.limits, run_seconds=run_seconds, run_seconds_reason=why)
     _in_task = True
     try:
         outcome = grade_run(
-            _worker_plan,
+            _worker.plan,
             run_index,
             [ControllerSpec(name=Path(controller).stem, path=Path(controller), function=function)],
             limits=limits,
@@ -311,27 +334,26 @@ def grade_submissions(
     # What is built so far (modules, the plan) lives through the runs: frozen,
     # the garbage collector does not walk it during them, and forked workers
     # do not copy the pages it would touch.
-    frozen_before = gc.get_freeze_count()
-    gc.freeze()
-    try:
-        if backend is not None:
-            submitted = {student: item.submission for student, item in pending.items()}
-            backend.run(plan, tasks, submitted, limits, start, done, clock.tick)
-        elif jobs <= 1 or len(tasks) <= 1:
-            global _worker_plan, _worker_limits
-            _worker_plan, _worker_limits = plan, limits
-            with forkserver.serving(), clock.ticking():
-                for task in tasks:
-                    started = start(task)
-                    if started is not None:
-                        done(*run_task(*started))
-        else:
-            _run_parallel(plan, tasks, jobs, limits, plugins, start, done, clock.tick)
-    finally:
-        if not frozen_before:  # a caller's own frozen heap (the app freezes its start-up) stays so
-            gc.unfreeze()
-        if store is not None:
-            store.restore()
+    with _as_worker(plan, limits):  # before the freeze: frozen too, and forked workers start with it
+        frozen_before = gc.get_freeze_count()
+        gc.freeze()
+        try:
+            if backend is not None:
+                submitted = {student: item.submission for student, item in pending.items()}
+                backend.run(plan, tasks, submitted, limits, start, done, clock.tick)
+            elif jobs <= 1 or len(tasks) <= 1:
+                with forkserver.serving(), clock.ticking():
+                    for task in tasks:
+                        started = start(task)
+                        if started is not None:
+                            done(*run_task(*started))
+            else:
+                _run_parallel(plan, tasks, jobs, limits, plugins, start, done, clock.tick)
+        finally:
+            if not frozen_before:  # a caller's own frozen heap (the app freezes its start-up) stays so
+                gc.unfreeze()
+            if store is not None:
+                store.restore()
     order = {s.student: i for i, s in enumerate(submissions)}
     ordered = sorted(results.values(), key=lambda r: order[r.student])
     return GradeReport(lesson=plan.lesson.id, submissions=ordered, max_score=round(plan.max_score, 6))
@@ -468,11 +490,9 @@ def _run_pool(
     is called about once a second. Returns the tasks that were under way when
     a worker died (the pool is broken then, and the tasks not started yet stay
     in ``queue``)."""
-    global _worker_plan
-    # fork: workers start at once with the plan already prepared
+    # fork: workers start at once with the plan already prepared (_as_worker)
     methods = multiprocessing.get_all_start_methods()
     context = multiprocessing.get_context("fork" if "fork" in methods else "spawn")
-    _worker_plan = plan
     # A run whose simulator and controller each have a CPU to themselves polls
     # for answers; when runs outnumber pairs of CPUs, each worker keeps to one CPU.
     next_cpu = context.Value("i", 0) if 2 * jobs > default_jobs() else None

@@ -266,10 +266,12 @@ class ChildHost(CallbackTracking):
 
     owner = OWNER
 
-    def __init__(self, graph: ChildGraph, fd_in: int, fd_out: int) -> None:
+    def __init__(self, graph: ChildGraph, fd_in: int, fd_out: int, *, spin_seconds: float = 0.0) -> None:
         self.graph = graph
         self.fd_in = fd_in
         self.fd_out = fd_out
+        self.spin_seconds = spin_seconds
+        """How long a read polls for the parent's answer (turtletui.runtime.wire.FrameReader)."""
         self.running = True
         self.scheduler = Scheduler(graph, self.exchange, lambda: self.running)
 
@@ -300,7 +302,7 @@ class ChildHost(CallbackTracking):
         reply["wake"] = wake_ns
         reply.update(extra)
         wire.send_to_parent(self.fd_out, reply)
-        message = wire.read_from_parent(self.fd_in)
+        message = wire.read_from_parent(self.fd_in, self.spin_seconds)
         if message.get("end"):
             self.running = False
             return
@@ -451,7 +453,7 @@ def main(config: dict[str, Any] | None = None) -> None:
     log_lines = config.get("limits", {}).get("log_lines")
     if log_lines is not None:
         graph.log_budget = int(log_lines) + 1
-    host = ChildHost(graph, fd_in, fd_out)
+    host = ChildHost(graph, fd_in, fd_out, spin_seconds=config.get("spin_seconds", 0.0))
     compat_context.reset_default_context()
     compat_context.bind_host(host)
     scheduler.install(host.scheduler)

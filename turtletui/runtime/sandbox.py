@@ -46,9 +46,9 @@ _BOOTSTRAP = (
 )
 
 
-@dataclass
+@dataclass(frozen=True)
 class Limits:
-    """What a sandboxed controller may use."""
+    """What a sandboxed controller may use (and how its pipes are read)."""
 
     step_timeout: float = 2.0
     """Wall seconds the child may take to answer one exchange (a hung callback)."""
@@ -78,6 +78,10 @@ class Limits:
     """Log records (get_logger()) kept per run; the rest is dropped with a notice."""
     log_bytes: int = 4_000_000
     """Bytes of log messages kept per run; the rest is dropped with a notice."""
+    spin_seconds: float | None = None
+    """Wall seconds the simulator and the controller poll for each other's
+    answer before sleeping in the kernel; None: the machine's default
+    (turtletui.runtime.wire.default_spin_seconds). 0 when runs share the CPUs."""
     run_as: tuple[int, int] | None = None
     """(uid, gid) the child runs as, with no supplementary groups: a grader
     running as root drops the student's code to an unprivileged user."""
@@ -97,6 +101,7 @@ class SandboxHost:
         self.graph = sim.graph
         self.spec = spec
         self.limits = limits
+        self._spin = wire.default_spin_seconds() if limits.spin_seconds is None else limits.spin_seconds
         self.owner = f"sandbox:{spec.name}:{id(self):x}"
         self.wake_ns: int | None = None
         self.crash: CrashReport | None = None
@@ -188,6 +193,7 @@ class SandboxHost:
             "distro": self.sim.distro,
             "epoch_ns": self.graph.epoch_ns,
             "realtime": self.sim.realtime,
+            "spin_seconds": self._spin,
             "limits": {
                 "cpu_seconds": self.limits.cpu_seconds,
                 "memory_bytes": self.limits.memory_bytes,
@@ -528,7 +534,7 @@ class SandboxHost:
                 )
                 raise _Stop
             size = max(min(total - have, 1 << 20), 1 << 16)
-            chunk = wire.spin_read(fd, size, wire.SPIN_SECONDS)
+            chunk = wire.spin_read(fd, size, self._spin)
             if chunk is None:
                 # Wake up now and then to notice a child that died while something
                 # it started still holds the pipe open (no end of file then).
@@ -834,7 +840,7 @@ def _child_environment(token: str) -> dict[str, str]:
 
 
 _PASSED_NAMES = frozenset(
-    {"PATH", "HOME", "USER", "LOGNAME", "LANG", "LANGUAGE", "TZ", "TERM", "TMPDIR", "LD_LIBRARY_PATH", wire.SPIN_ENV}
+    {"PATH", "HOME", "USER", "LOGNAME", "LANG", "LANGUAGE", "TZ", "TERM", "TMPDIR", "LD_LIBRARY_PATH"}
 )
 _PASSED_PREFIXES = ("LC_", "ROS_", "RCUTILS_", "RMW_")
 """Locale, and the variables ROS 2 itself reads (ROS_DOMAIN_ID, RCUTILS_CONSOLE_OUTPUT_FORMAT...)."""

@@ -24,7 +24,7 @@ MAX_REPLY_BYTES = 8 * 1024 * 1024
 
 
 SPIN_ENV = "TURTLETUI_SPIN_SECONDS"
-"""Overrides the default below (grading sets 0 when its runs share the CPUs)."""
+"""Overrides :func:`default_spin_seconds` on this machine (seconds, 0 for none)."""
 
 
 def available_cpus() -> int:
@@ -35,7 +35,13 @@ def available_cpus() -> int:
         return os.cpu_count() or 1
 
 
-def _spin_default() -> float:
+def default_spin_seconds() -> float:
+    """How long a reader polls for the other side's answer before it sleeps in the
+    kernel, unless told otherwise (``Limits.spin_seconds``). Lockstep exchanges are
+    short; with two or more CPUs a brief poll saves the cross-CPU wake-up of a
+    sleeping reader (tens of microseconds per exchange on virtual machines). Zero
+    on a single CPU, where polling would only steal time from the side being
+    waited for; ``$TURTLETUI_SPIN_SECONDS`` overrides it."""
     override = os.environ.get(SPIN_ENV)
     if override:
         try:
@@ -43,14 +49,6 @@ def _spin_default() -> float:
         except ValueError:
             pass
     return 0.0002 if available_cpus() > 1 else 0.0
-
-
-SPIN_SECONDS = _spin_default()
-"""How long a reader polls for the other side's answer before it sleeps in the
-kernel. Lockstep exchanges are short; with two or more CPUs a brief poll saves
-the cross-CPU wake-up of a sleeping reader (tens of microseconds per exchange on
-virtual machines). Zero on a single CPU, where polling would only steal time
-from the side being waited for, nor when several runs share the CPUs."""
 
 
 def spin_read(fd: int, size: int, spin: float) -> bytes | None:
@@ -131,16 +129,16 @@ def send_to_child(fd: int, obj: object, deadline: float | None = None) -> None:
 
 class FrameReader:
     """Reads frames from a pipe with few system calls: a frame sent in one write
-    (header and payload) usually arrives in one read. With ``SPIN_SECONDS``
+    (header and payload) usually arrives in one read. With ``spin`` seconds
     the descriptor is made non-blocking and waiting polls that long, then sleeps
-    in select; without, a plain blocking read waits (one system call)."""
+    in select; with 0, a plain blocking read waits (one system call)."""
 
     __slots__ = ("fd", "buffer", "spin")
 
-    def __init__(self, fd: int) -> None:
+    def __init__(self, fd: int, spin: float) -> None:
         self.fd = fd
         self.buffer = b""
-        self.spin = SPIN_SECONDS
+        self.spin = spin
         os.set_blocking(fd, self.spin <= 0)
 
     def _chunk(self, size: int) -> bytes:
@@ -180,10 +178,12 @@ class FrameReader:
 _readers: dict[int, FrameReader] = {}
 
 
-def read_from_parent(fd: int) -> object:
+def read_from_parent(fd: int, spin: float) -> object:
+    """The next message from the parent; ``spin`` as for :class:`FrameReader`
+    (the first read from ``fd`` sets it)."""
     reader = _readers.get(fd)
     if reader is None:
-        reader = _readers[fd] = FrameReader(fd)
+        reader = _readers[fd] = FrameReader(fd, spin)
     return marshal.loads(reader.read_frame())
 
 

@@ -12,6 +12,9 @@ Installed with turtletui (entry point ``pytest11``), so in any project::
 ``result`` is a turtletui.api.RunResult: ``poses`` (t, x, y, theta per pose),
 ``logs`` (records with .node, .level_name, .msg), ``service_calls``
 (t, service, request, response), ``turtles`` (final pose, distance, wall hits).
+
+Determinism needs no fixture: ``turtletui.testing.check_controller("my_node.py")``
+in a test fails it (an AssertionError) with the first difference.
 """
 
 from __future__ import annotations
