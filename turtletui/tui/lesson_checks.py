@@ -72,7 +72,7 @@ def _leave_a_cpu_to_the_app() -> int:
         return max(1, (os.cpu_count() or 1) - 1)
     if len(cpus) > 2:
         return len(cpus) - 1
-    os.environ["TURTLETUI_SPIN_SECONDS"] = "0"  # read by runtime.wire when imported
+    os.environ["TURTLETUI_SPIN_SECONDS"] = "0"  # read as each sandbox starts (wire.default_spin_seconds)
     try:
         os.sched_setaffinity(0, {cpus[-1]})
     except OSError:
