@@ -14,7 +14,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from turtletui.compat.distro import distro_of_imports
+from turtletui.compat.distro import choose_distro
 from turtletui.compat.ros_args import RosArgsError, parse_ros_args
 from turtletui.errors import TurtletuiError, UsageError
 from turtletui.graph.core import NS_PER_S
@@ -140,11 +140,7 @@ def run(
 
         parse_address(foxglove)  # a bad address is a ValueError before anything starts
         realtime = True  # a live view of a run that ends in a blink shows nothing
-    distro_note = None
-    if distro is None:
-        chosen = distro_of_imports(spec.path for spec in specs if spec.path is not None)
-        if chosen is not None:
-            distro, distro_note = chosen
+    distro, distro_note = choose_distro(distro, None, (spec.path for spec in specs if spec.path is not None))
     logs: list[LogRecord] = []
     sinks = [logs.append] if on_log is None else [logs.append, on_log]
     sim = Simulation(world=world, realtime=realtime, log_sinks=sinks, distro=distro)

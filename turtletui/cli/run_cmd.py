@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import os
 import re
 import sys
 from pathlib import Path
@@ -233,7 +232,7 @@ def _lesson_distro_world(lesson: str | None, plugins: Plugins, distro: str | Non
     """The lesson file (``--lesson``: an id or a file), the distro (``--distro``,
     else ``$TURTLETUI_DISTRO``, else the lesson's; None when none of them
     says) and the world (``--world``, else the lesson's) of a run."""
-    from turtletui.compat.distro import ENV_VAR, resolve_distro
+    from turtletui.compat.distro import choose_distro
     from turtletui.lessons.loader import LessonError, find_lesson
 
     found = None
@@ -242,11 +241,11 @@ def _lesson_distro_world(lesson: str | None, plugins: Plugins, distro: str | Non
             found = find_lesson(lesson, plugins=plugins)
         except LessonError as err:
             fail(f"--lesson: {err}")
-    if distro is not None or os.environ.get(ENV_VAR) or (found is not None and found.distro is not None):
-        try:
-            distro = resolve_distro(distro, None if found is None else found.distro)
-        except ValueError as err:
-            fail(str(err))
+    try:
+        # no file paths: with nothing chosen, the files choose as the run starts (api.run, the app)
+        distro, _ = choose_distro(distro, None if found is None else found.distro)
+    except ValueError as err:
+        fail(str(err))
     what = "--world"
     if found is not None and world is None and found.world != "empty":
         world, what = found.world, f"lesson {found.id}: world"

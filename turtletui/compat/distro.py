@@ -75,6 +75,19 @@ def resolve_distro(name: str | None = None, fallback: str | None = None) -> str:
     return check_distro(fallback) if fallback is not None else NEWEST_LTS
 
 
+def choose_distro(
+    given: str | None, lesson: str | None = None, paths: Iterable[Path] = ()
+) -> tuple[str | None, str | None]:
+    """The distro of a run, and the line that says why when the files' imports
+    chose it: ``given`` (``--distro``), else ``$TURTLETUI_DISTRO``, else the
+    lesson's, else what the files import (:func:`distro_of_imports`); (None,
+    None) when nothing chose one (the newest LTS then). ValueError (one line)
+    for an unknown name."""
+    if given is not None or lesson is not None or os.environ.get(ENV_VAR, "").strip():
+        return resolve_distro(given, lesson), None
+    return distro_of_imports(paths) or (None, None)
+
+
 def distro_of_imports(paths: Iterable[Path]) -> tuple[str, str] | None:
     """The distro controller files need when nothing else chose one: files
     that import ``turtlesim`` (the course's ``from turtlesim.msg import Pose``)

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import gc
-import os
 import time
 from collections import deque
 from collections.abc import Iterable, Sequence
@@ -262,22 +261,19 @@ class TurtleApp(App):
             return None, f"{err}: running in the empty arena"
 
     def _default_distro(self) -> tuple[str | None, str | None]:
-        """The distro when none was given: the lesson's (after
-        ``$TURTLETUI_DISTRO``), else the one the files' imports need (with the
-        line that says so), else None (the newest LTS)."""
-        from turtletui.compat.distro import ENV_VAR, distro_of_imports, resolve_distro
+        """The distro when none was given, as :func:`choose_distro` chooses it
+        from the lesson and the files (with the line that says why)."""
+        from turtletui.compat.distro import choose_distro
 
-        if self._lesson is not None and not os.environ.get(ENV_VAR):
+        lesson_distro = None
+        if self._lesson is not None:
             from turtletui.lessons.loader import LessonError, load_lesson
 
             try:
                 lesson_distro = load_lesson(self._lesson).distro
             except LessonError:
-                lesson_distro = None  # the lesson pane says what is wrong with it
-            if lesson_distro is not None:
-                return resolve_distro(None, lesson_distro), None
-        chosen = distro_of_imports(spec.path for spec in self._controllers if spec.path is not None)
-        return (None, None) if chosen is None else chosen
+                pass  # the lesson pane says what is wrong with it
+        return choose_distro(None, lesson_distro, (spec.path for spec in self._controllers if spec.path is not None))
 
     def on_mount(self) -> None:
         distro, distro_note = (self._distro, None) if self._distro is not None else self._default_distro()
