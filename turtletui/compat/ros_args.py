@@ -74,15 +74,20 @@ def parse_value(text: str) -> Any:
     if value.startswith("[") and value.endswith("]"):
         inner = value[1:-1].strip()
         items = [parse_value(part) for part in inner.split(",")] if inner else []
-        kinds = {type(item) for item in items}
-        if kinds == {int, float}:
-            items = [float(item) for item in items]
-        elif len(kinds) > 1:
-            raise RosArgsError(f"parameter list {text!r} mixes types: ROS needs one type per list")
-        return items
+        return _one_type(items, f"parameter list {text!r}")
     if len(value) >= 2 and value[0] == value[-1] and value[0] in "'\"":
         return value[1:-1]
     return value
+
+
+def _one_type(items: list, what: str) -> list:
+    """A list parameter as ROS holds it: one type (integers among floats become floats)."""
+    kinds = {type(item) for item in items}
+    if kinds == {int, float}:
+        return [float(item) for item in items]
+    if len(kinds) > 1:
+        raise RosArgsError(f"{what} mixes types: ROS needs one type per list")
+    return items
 
 
 def _split_assignment(flag: str, text: str) -> tuple[str | None, str, str]:
@@ -197,12 +202,7 @@ def _file_value(value: Any, what: str) -> Any:
     if isinstance(value, (bool, int, float, str)):
         return value
     if isinstance(value, list):
-        kinds = {bool if isinstance(v, bool) else type(v) for v in value}
-        if not kinds <= {bool, int, float, str}:
+        if not all(isinstance(v, (bool, int, float, str)) for v in value):
             raise RosArgsError(f"{what}: a list of parameters holds only numbers, booleans or strings")
-        if kinds == {int, float}:
-            return [float(v) for v in value]
-        if len(kinds) > 1:
-            raise RosArgsError(f"{what}: the list mixes types: ROS needs one type per list")
-        return value
+        return _one_type(value, f"{what}: the list")
     raise RosArgsError(f"{what}: {value!r} is not a value a ROS parameter can hold")
