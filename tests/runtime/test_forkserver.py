@@ -238,3 +238,50 @@ def test_two_controllers_of_one_run_both_run_the_second_started_afresh(tmp_path:
     tokens = noted(tmp_path / "first", "token") + noted(tmp_path / "second", "token")
     assert len(set(tokens)) == 2
     assert _settled(lambda: _processes_with(tokens[0]) | _processes_with(tokens[1]), set()) == set()
+
+
+def test_a_server_ends_with_the_process_that_started_it(tmp_path: Path) -> None:
+    """A grading worker killed outright (its memory, an operator) leaves no
+    fork server behind, even when its socket does not close (here a forked
+    copy of the worker holds it open)."""
+    import signal
+    import subprocess
+    import sys
+
+    import turtletui
+
+    root = str(Path(turtletui.__file__).resolve().parents[1])
+    starter = subprocess.Popen(
+        [sys.executable, "-c", textwrap.dedent(f"""\
+            import os, sys, time
+            sys.path.insert(0, {root!r})
+            from turtletui.runtime import forkserver
+            server = forkserver.ForkServer({root!r}, dict(os.environ), "token", {{}})
+            holder = os.fork()
+            if holder == 0:
+                time.sleep(600)
+                os._exit(0)
+            print(server.proc.pid, holder, flush=True)
+            time.sleep(600)
+        """)],
+        stdout=subprocess.PIPE, text=True,
+    )
+    server, holder = map(int, starter.stdout.readline().split())
+    try:
+        assert _running(server)
+        starter.kill()
+        starter.wait()
+        deadline = time.monotonic() + 30  # generous: a busy machine is not a leak
+        while _running(server) and time.monotonic() < deadline:
+            time.sleep(0.05)
+        assert not _running(server)
+    finally:
+        os.kill(holder, signal.SIGKILL)
+
+
+def _running(pid: int) -> bool:
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as f:
+            return f.read().rpartition(b")")[2].split()[0] != b"Z"
+    except OSError:
+        return False

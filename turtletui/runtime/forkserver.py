@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import json
 import os
+import signal
 import socket
 import subprocess
 import sys
@@ -32,9 +33,10 @@ from turtletui.runtime.processes import kill_tree, reap_zombie_children
 
 _SERVER = (
     "import sys; sys.path.insert(0, {root!r}); "
-    "from turtletui.runtime.forkserver import serve; serve(int(sys.argv[1]))"
+    "from turtletui.runtime.forkserver import serve; serve(int(sys.argv[1]), int(sys.argv[2]))"
 )
 _real_sleep = time.sleep  # an in-process controller may get a simulated one
+_PR_SET_PDEATHSIG = 1
 _PR_SET_DUMPABLE = 4
 _PR_SET_CHILD_SUBREAPER = 36
 
@@ -51,9 +53,14 @@ def _prctl(option: int, value: int) -> bool:
 # -- the server process ---------------------------------------------------------
 
 
-def serve(sock_fd: int) -> None:
+def serve(sock_fd: int, parent: int) -> None:
     """The server's loop: one request (a JSON config and three descriptors:
-    the child's input, its answers, its output) forks one run child."""
+    the child's input, its answers, its output) forks one run child. It ends
+    with the process that started it (``parent``), killed by the kernel then
+    if it is still busy, not only when its socket closes."""
+    _prctl(_PR_SET_PDEATHSIG, signal.SIGKILL)
+    if os.getppid() != parent:
+        return  # the parent died before the line above
     # What every run would import: done once, before the first fork.
     import datetime  # noqa: F401  (the child's simulated clocks and waits patch these)
     import queue  # noqa: F401
@@ -180,7 +187,7 @@ class ForkServer:
         mine, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_SEQPACKET)
         try:
             self.proc = subprocess.Popen(
-                [sys.executable, "-s", "-c", _SERVER.format(root=root), str(theirs.fileno())],
+                [sys.executable, "-s", "-c", _SERVER.format(root=root), str(theirs.fileno()), str(os.getpid())],
                 stdin=subprocess.DEVNULL,
                 stdout=subprocess.DEVNULL,
                 stderr=subprocess.DEVNULL,
