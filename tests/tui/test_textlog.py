@@ -99,3 +99,43 @@ async def test_entries_written_while_hidden_appear_wrapped_once_shown() -> None:
         log.display = True
         await pilot.pause()
         assert "THE-END 42" in shown(log)
+
+
+@pilot_test
+async def test_any_line_of_a_long_log_can_be_scrolled_to_and_read() -> None:
+    app = LogApp(max_entries=3000)
+    async with app.run_test(size=(80, 24)) as pilot:
+        log = app.query_one(TextLog)
+        log.write_all(f"entry {i} " + "x" * (i % 40) for i in range(4000))
+        await pilot.pause()
+        assert "entry 3999" in shown(log)
+        log.scroll_home(animate=False, immediate=True)
+        await pilot.pause()
+        assert log.visible_lines[0].startswith("... 1,000 older lines")
+        assert log.visible_lines[1].startswith("entry 1000 ")
+        log.scroll_to(y=log.max_scroll_y // 2, animate=False, immediate=True)
+        await pilot.pause()
+        numbers = [int(line.split()[1]) for line in log.visible_lines if line.startswith("entry ")]
+        assert numbers == sorted(numbers) and 1000 < numbers[0] < 3999
+        assert numbers == list(range(numbers[0], numbers[0] + len(numbers)))
+
+
+@pilot_test
+async def test_a_full_window_holds_few_objects_for_the_garbage_collector() -> None:
+    """The app's full collections scan every tracked object: 5,000 wrapped
+    entries kept as Textual strips (each with its own caches) made them pause
+    the 16 ms loop for a quarter second."""
+    import gc
+
+    app = LogApp()
+    async with app.run_test(size=(80, 24)) as pilot:
+        log = app.query_one(TextLog)
+        await pilot.pause()
+        gc.collect()
+        before = len(gc.get_objects())
+        log.write_all(f"[INFO] [1700000000.{i:03d}] [turtle_controller]: x={i % 11}.5 y=5.5 " + LONG
+                      for i in range(5000))
+        await pilot.pause()
+        gc.collect()
+        per_entry = (len(gc.get_objects()) - before) / 5000
+        assert per_entry < 20, per_entry  # 120 when every wrapped line was kept as a strip

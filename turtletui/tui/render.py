@@ -375,6 +375,13 @@ class _Scene(NamedTuple):
     """(N / 2, N) uint8 ASCII codes: pen characters, obstacles, overlay dots."""
 
 
+ROWS_KEPT = 256
+"""Rendered rows kept for reuse (by the renderer, and as strips by the arena
+widget): a few frames' worth. Unchanged rows come back frame after frame; a
+row that changed almost never does, and every kept row is dozens of objects
+each full garbage collection walks (2,048 made its pauses 4x longer)."""
+
+
 class _Bounded(OrderedDict):
     """A small LRU mapping: the oldest entries go past ``maxsize``."""
 
@@ -418,7 +425,7 @@ class ArenaRenderer:
         self._image: np.ndarray | None = None
         self._scene_key: Hashable = None
         self._scene: _Scene | None = None
-        self._segments: _Bounded = _Bounded(2048)
+        self._segments: _Bounded = _Bounded(ROWS_KEPT)
 
     def frame(
         self,

@@ -29,6 +29,7 @@ from turtletui.tui.picture import arena_picture
 from turtletui.tui.render import (
     MIN_HEIGHT,
     MIN_WIDTH,
+    ROWS_KEPT,
     TOO_SMALL,
     ArenaRenderer,
     Camera,
@@ -98,7 +99,7 @@ class ArenaView(Widget):
         """Zoom level and the turtle the zoomed view follows."""
         self.renderer = ArenaRenderer()
         """Renders the world; its ``lines`` are what this widget shows."""
-        self._strips: LRUCache[tuple[Hashable, Style, int], Strip] = LRUCache(1024)
+        self._strips: LRUCache[tuple[Hashable, Style, int], Strip] = LRUCache(ROWS_KEPT)
         self.graphics = graphics
         """The terminal's graphics protocol ("kitty", "sixel") or None: with one,
         ``picture`` shows turtlesim's real picture over the arena's cells."""

@@ -10,7 +10,8 @@ the latest entries and says how many older ones went ("1,234 older lines").
 
 from __future__ import annotations
 
-from collections import deque
+from bisect import bisect_right
+from collections import OrderedDict
 from collections.abc import Iterable
 
 from rich.segment import Segment
@@ -19,6 +20,9 @@ from textual.events import Resize
 from textual.geometry import Size
 from textual.scroll_view import ScrollView
 from textual.strip import Strip
+
+WRAPPED_KEPT = 256
+"""Entries whose wrapped lines are kept ready (more than a screen's worth)."""
 
 
 class TextLog(ScrollView, can_focus=True):
@@ -43,14 +47,25 @@ class TextLog(ScrollView, can_focus=True):
         """Entries kept; older ones are counted in ``older``."""
         self.older = 0
         """Entries that left the window (or never reached it)."""
-        self._entries: deque[Text] = deque()
-        self._heights: deque[int] = deque()
-        """Wrapped lines per entry, at ``_width``."""
-        self._strips: list[Strip] = []
-        """The wrapped lines of every entry, from ``_first`` on."""
-        self._first = 0
+        self._entries: list[Text] = []
+        self._starts: list[int] = []
+        """The first wrapped line of each entry, at ``_width``, counted from the
+        first line ever written (so dropping entries renumbers nothing)."""
+        self._head = 0
+        """Index of the oldest kept entry in ``_entries`` (the ones before it
+        have left the window and are deleted in batches)."""
+        self._end = 0
+        """The line after the last entry's last line."""
         self._width = 0
         """The width the entries are wrapped at (0: not known yet)."""
+        self._wrapped: OrderedDict[int, list[Strip]] = OrderedDict()
+        """Wrapped lines of recently written or shown entries, by absolute entry
+        number. Only these are kept as strips: a Textual Strip is some twenty
+        objects the garbage collector tracks (its caches refer to the strip
+        itself once it has been on screen), and 5,000 entries' worth of them
+        made every full collection pause the app for a quarter second."""
+        self._dropped = 0
+        """Absolute number of ``_entries[0]``."""
 
     # -- writing ------------------------------------------------------------------------
     def write(self, text: Text | str) -> None:
@@ -61,16 +76,22 @@ class TextLog(ScrollView, can_focus=True):
         """Append entries, then scroll once."""
         follow = self._following()
         header = self._header_lines()
-        removed = 0
+        first = self._first_line()
         for text in texts:
             entry = Text(text) if isinstance(text, str) else text
             entry.expand_tabs()
+            number = self._dropped + len(self._entries)
             self._entries.append(entry)
-            height = self._wrap_into(entry, self._strips) if self._width else 0
-            self._heights.append(height)
-            if len(self._entries) > self.max_entries:
-                removed += self._drop_oldest()
+            self._starts.append(self._end)
+            if self._width:
+                strips = self._wrap(entry)
+                self._remember(number, strips)
+                self._end += len(strips)
+            if len(self._entries) - self._head > self.max_entries:
+                self._head += 1
+                self.older += 1
         self._compact()
+        removed = self._first_line() - first
         self._update_size(follow, removed - (self._header_lines() - header))
 
     def skip(self, count: int) -> None:
@@ -81,16 +102,15 @@ class TextLog(ScrollView, can_focus=True):
 
     def clear(self) -> None:
         """Remove every entry (``older`` is kept: the owner decides)."""
-        self._entries.clear()
-        self._heights.clear()
-        self._strips = []
-        self._first = 0
+        self._dropped += len(self._entries)
+        self._entries, self._starts, self._head = [], [], 0
+        self._wrapped.clear()
         self._update_size(True, 0)
 
     @property
     def entries(self) -> list[str]:
         """The plain text of the entries kept, oldest first."""
-        return [entry.plain for entry in self._entries]
+        return [entry.plain for entry in self._entries[self._head:]]
 
     @property
     def visible_lines(self) -> list[str]:
@@ -98,37 +118,52 @@ class TextLog(ScrollView, can_focus=True):
         return [self.render_line(y).text for y in range(self.size.height)]
 
     # -- internals -----------------------------------------------------------------------
-    def _drop_oldest(self) -> int:
-        self._entries.popleft()
-        height = self._heights.popleft()
-        self._first += height
-        self.older += 1
-        return height
+    def _first_line(self) -> int:
+        return self._starts[self._head] if self._head < len(self._entries) else self._end
 
     def _compact(self) -> None:
-        if self._first > 4096 and self._first * 2 > len(self._strips):
-            del self._strips[: self._first]
-            self._first = 0
+        if self._head > 4096 and self._head * 2 > len(self._entries):
+            del self._entries[: self._head]
+            del self._starts[: self._head]
+            self._dropped += self._head
+            self._head = 0
 
-    def _wrap_into(self, entry: Text, out: list[Strip]) -> int:
+    def _wrap(self, entry: Text) -> list[Strip]:
         console = self.app.console
         options = console.options.update_width(self._width)
         lines = Segment.split_lines(console.render(entry, options))
-        strips = [Strip(line).adjust_cell_length(self._width) for line in lines] or [Strip.blank(self._width)]
-        out.extend(strips)
-        return len(strips)
+        return [Strip(line).adjust_cell_length(self._width) for line in lines] or [Strip.blank(self._width)]
+
+    def _remember(self, number: int, strips: list[Strip]) -> None:
+        self._wrapped[number] = strips
+        if len(self._wrapped) > WRAPPED_KEPT:
+            self._wrapped.popitem(last=False)
+
+    def _strips_of(self, index: int) -> list[Strip]:
+        """The wrapped lines of ``_entries[index]``, wrapped again if need be."""
+        number = self._dropped + index
+        strips = self._wrapped.get(number)
+        if strips is None:
+            strips = self._wrap(self._entries[index])
+            self._remember(number, strips)
+        else:
+            self._wrapped.move_to_end(number)
+        return strips
 
     def _rewrap(self, width: int) -> None:
         self._width = width
-        strips: list[Strip] = []
-        heights = deque(self._wrap_into(entry, strips) for entry in self._entries)
-        self._strips, self._heights, self._first = strips, heights, 0
+        self._wrapped.clear()
+        line = self._first_line()
+        for index in range(self._head, len(self._entries)):
+            self._starts[index] = line
+            line += len(self._wrap(self._entries[index]))
+        self._end = line
 
     def _header_lines(self) -> int:
         return 1 if self.older else 0
 
     def _line_count(self) -> int:
-        return self._header_lines() + len(self._strips) - self._first
+        return self._header_lines() + self._end - self._first_line()
 
     def _following(self) -> bool:
         return self.scroll_y >= self.max_scroll_y
@@ -157,10 +192,11 @@ class TextLog(ScrollView, can_focus=True):
             note = Text(f"... {self.older:,} older lines", style="dim italic", no_wrap=True)
             strip = Strip(note.render(self.app.console)).crop_extend(0, width, None)
             return strip.apply_style(self.rich_style)
-        index += self._first - self._header_lines()
-        if not self._first <= index < len(self._strips):
+        line = self._first_line() + index - self._header_lines()
+        if not self._first_line() <= line < self._end:
             return Strip.blank(width, self.rich_style)
-        strip = self._strips[index]
+        entry = bisect_right(self._starts, line, self._head) - 1
+        strip = self._strips_of(entry)[line - self._starts[entry]]
         if width != self._width:
             strip = strip.crop_extend(0, width, None)
         return strip.apply_style(self.rich_style)
