@@ -54,6 +54,7 @@ from turtletui.compat.qos import (
 from turtletui.compat.task import Future
 from turtletui.compat.time import Clock, ClockType, Duration, clock_for
 from turtletui.graph import core
+from turtletui.graph.logs import WARN
 from turtletui.interfaces import copier, interface_name
 
 _NS = 1_000_000_000
@@ -82,6 +83,8 @@ class Publisher(Destroyable):
         self._destroyed = False  # read on every publish: an instance attribute is quicker
         self._topic_as_given = record.topic.name
         self._muted = muted(record)
+        self._graph = node._graph
+        self._told_undiscovered = False
         self.history: deque | None = deque(maxlen=depth_of(qos_profile)) if is_transient_local(qos_profile) else None
         """The last messages, kept for late-joining transient-local subscriptions."""
         record.entity = self
@@ -108,22 +111,37 @@ class Publisher(Destroyable):
         msg = self._copy(msg)
         if self.history is not None:
             self.history.append(msg)
+        record = self._record
+        if record.created_ns + self._graph.discovery_ns > self._graph.now_ns:
+            self._tell_if_lost()
         if not self._muted:
-            self._publish(self._topic, msg)
+            self._publish(self._topic, msg, None, record)
             return
         # Subscriptions with incompatible QoS get nothing from this publisher.
         topic = self._topic
         everyone = topic.subscriptions
         topic.subscriptions = [sub for sub in everyone if sub not in self._muted]
         try:
-            self._publish(topic, msg)
+            self._publish(topic, msg, None, record)
         finally:
             topic.subscriptions = everyone
 
+    def _tell_if_lost(self) -> None:
+        """Say once why a message reached no one in another process, if someone
+        there would have had it but has not discovered this publisher yet."""
+        if self._told_undiscovered:
+            return
+        graph, record = self._graph, self._record
+        if any(sub not in self._muted and not graph.matched(record, sub) for sub in self._topic.subscriptions):
+            self._told_undiscovered = True
+            node = self._node.get_fully_qualified_name()
+            graph.log("turtletui", WARN, _UNDISCOVERED.format(node=node, topic=self._topic.name))
+
     def get_subscription_count(self) -> int:
-        """The subscriptions this publisher matches (QoS compatible)."""
+        """The subscriptions this publisher matches (QoS compatible, discovered)."""
         self._require_alive()
-        return sum(1 for sub in self._topic.subscriptions if sub not in self._muted)
+        graph, record = self._graph, self._record
+        return sum(1 for sub in self._topic.subscriptions if sub not in self._muted and graph.matched(record, sub))
 
     def wait_for_all_acked(self, timeout: Duration = Duration(seconds=-1)) -> bool:
         self._require_alive()
@@ -132,6 +150,12 @@ class Publisher(Destroyable):
     def destroy(self) -> None:
         self._node.destroy_publisher(self)
 
+
+_UNDISCOVERED = (
+    "{node} published on {topic} before the subscribers had discovered it, so no one got that message: "
+    "ROS 2 nodes take a moment to discover each other, here and on a real robot. Publish from a timer, "
+    "or wait until publisher.get_subscription_count() > 0 before the first message."
+)
 
 _FIX_INSIDE = (
     "Use call_async() (await it in an async def callback, or add_done_callback()), or give the client "
@@ -169,10 +193,11 @@ class Subscription(Destroyable):
         return self._record.topic.name
 
     def get_publisher_count(self) -> int:
-        """The publishers this subscription matches (QoS compatible)."""
+        """The publishers this subscription matches (QoS compatible, discovered)."""
         self._require_alive()
         record = self._record
-        return sum(1 for pub in record.topic.publishers if record not in muted(pub))
+        graph = self._node._graph
+        return sum(1 for pub in record.topic.publishers if record not in muted(pub) and graph.matched(pub, record))
 
     def destroy(self) -> None:
         self._node.destroy_subscription(self)

@@ -23,6 +23,10 @@ from turtletui.graph.logs import INFO, LogRecord
 
 NS_PER_S = 1_000_000_000
 LOCKSTEP_EPOCH_NS = 1_700_000_000 * NS_PER_S
+DISCOVERY_NS = 50_000_000
+"""How long nodes of a run take to discover a new publisher or subscription
+(Graph.discovery_ns): Fast DDS on one machine took 22 ms to 1.8 s to match a
+new publisher (Kilted, rclpy 9.1, a quiet to a busy 2-core VM)."""
 """ROS time at simulated t = 0 in lockstep runs: fixed, so logs repeat bit for bit."""
 
 _RATE_WINDOW = 64
@@ -66,6 +70,8 @@ class Subscription:
     copy: Callable[[Any], Any] | None = None
     """Makes the subscription's own copy of each message it queues, as a middleware
     that deserialises per subscription would; None to queue the published object."""
+    created_ns: int = 0
+    """When it was made, in simulated ns (for discovery: Graph.discovery_ns)."""
     queue: deque = field(init=False)
     pending: bool = False
     ready_item: tuple = field(init=False, repr=False)
@@ -93,6 +99,8 @@ class Publisher:
     owner: str
     qos: Any = None
     """The QoS the creator asked for, as it gave it."""
+    created_ns: int = 0
+    """When it was made, in simulated ns (for discovery: Graph.discovery_ns)."""
 
 
 class Topic:
@@ -240,6 +248,13 @@ class Graph:
         publishes its colour sensor anyway): set while a run is recorded."""
         self.ready: deque[tuple[str, Callable[[], None]]] = deque()
         """Callbacks to run, each with the owner it runs for, in arrival order."""
+        self.discovery_ns = 0
+        """How long processes take to discover each other's new publishers and
+        subscriptions, as DDS discovery does: a publisher and a subscription of
+        different owners (processes) match ``discovery_ns`` after the younger
+        of the two was made, and what is published before that is not
+        delivered to it. Within one process they match at once (one DDS
+        participant). 0: always at once; a run uses DISCOVERY_NS."""
         self._type_name = type_name
         self._timers: list[tuple[int, int, Timer]] = []
         self._seq = 0
@@ -408,7 +423,7 @@ class Graph:
     ) -> Publisher:
         self.version += 1
         topic = self.topic(name, msg_type)
-        pub = Publisher(node, topic, depth, node.owner, qos)
+        pub = Publisher(node, topic, depth, node.owner, qos, self.now_ns)
         topic.publishers.append(pub)
         topic.publisher_owners.add(node.owner)
         return pub
@@ -428,7 +443,7 @@ class Graph:
         queued as ``copy(msg)``, the subscription's own (see Subscription.copy)."""
         self.version += 1
         topic = self.topic(name, msg_type)
-        sub = Subscription(node, topic, depth, callback, node.owner, qos, copy)
+        sub = Subscription(node, topic, depth, callback, node.owner, qos, copy, self.now_ns)
         topic.subscriptions.append(sub)
         return sub
 
@@ -465,6 +480,10 @@ class Graph:
         topic = self.topics.get(name)
         return list(topic.subscriptions) if topic is not None else []
 
+    def matched(self, pub: Publisher, sub: Subscription) -> bool:
+        """Whether ``pub`` and ``sub`` have discovered each other (QoS aside)."""
+        return pub.owner == sub.owner or max(pub.created_ns, sub.created_ns) + self.discovery_ns <= self.now_ns
+
     def count_publishers(self, name: str) -> int:
         topic = self.topics.get(name)
         return len(topic.publishers) if topic is not None else 0
@@ -473,15 +492,23 @@ class Graph:
         topic = self.topics.get(name)
         return len(topic.subscriptions) if topic is not None else 0
 
-    def publish(self, topic: Topic, msg: Any, source: str | None = None) -> None:
-        """Deliver ``msg`` to every subscription of ``topic`` except those owned by
-        ``source`` (a sandboxed host already delivered to its own subscribers)."""
+    def publish(
+        self, topic: Topic, msg: Any, source: str | None = None, publisher: Publisher | None = None
+    ) -> None:
+        """Deliver ``msg`` to every subscription of ``topic`` that has discovered
+        ``publisher`` (see ``discovery_ns``; without one, the subscription's own
+        age decides), except those owned by ``source`` (a sandboxed host already
+        delivered to its own subscribers)."""
+        now = self.now_ns
         topic.count += 1
         topic.last = msg
-        topic._stamps.append(self.now_ns)
+        topic._stamps.append(now)
+        settled = now - self.discovery_ns  # endpoints made by then: discovered by all
+        owner = source if publisher is None else publisher.owner
+        young = publisher is not None and publisher.created_ns > settled
         ready = None
         for sub in topic.subscriptions:
-            if sub.owner == source:
+            if sub.owner == source or (sub.owner != owner and (young or sub.created_ns > settled)):
                 continue
             copy = sub.copy
             sub.queue.append(msg if copy is None else copy(msg))

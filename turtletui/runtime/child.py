@@ -156,9 +156,10 @@ class ChildGraph(Graph):
         return removed
 
     # -- traffic ------------------------------------------------------------------
-    def publish(self, topic: Topic, msg: Any, source: str | None = None) -> None:
-        super().publish(topic, msg, graph_mirror.MIRROR_OWNER)  # the parent delivers to those
-        self.out["pub"].append([topic.name, to_values(msg)])
+    def publish(self, topic: Topic, msg: Any, source: str | None = None, publisher: Publisher | None = None) -> None:
+        super().publish(topic, msg, graph_mirror.MIRROR_OWNER, publisher)  # the parent delivers to those
+        if publisher is None or publisher.created_ns + self.discovery_ns <= self.now_ns:
+            self.out["pub"].append([topic.name, to_values(msg)])  # else no other process knows it yet
 
     def call(self, name: str, request: Any, on_response: Callable[[Any], None], owner: str) -> None:
         service = self.services.get(name)
@@ -450,6 +451,7 @@ def main(config: dict[str, Any] | None = None) -> None:
     compat.install(config.get("distro"))
     graph = ChildGraph()
     graph.epoch_ns = config["epoch_ns"]
+    graph.discovery_ns = config.get("discovery_ns", 0)
     log_lines = config.get("limits", {}).get("log_lines")
     if log_lines is not None:
         graph.log_budget = int(log_lines) + 1

@@ -81,6 +81,8 @@ class MirrorEndpoint(NamedTuple):
     qos: QosPolicies | None
     own: int
     """The child's wire id if it is the child's own endpoint, else 0."""
+    created_ns: int = 0
+    """When it was made (for discovery: Graph.discovery_ns; unused for the child's own)."""
 
 
 class MirrorTopic(NamedTuple):
@@ -118,7 +120,7 @@ class GraphMirror(NamedTuple):
         nodes, topics, services, clients, action_servers, action_clients = fields
 
         def endpoint(e: Any) -> MirrorEndpoint:
-            return MirrorEndpoint(e[0], None if e[1] is None else QosPolicies(*e[1]), e[2])
+            return MirrorEndpoint(e[0], None if e[1] is None else QosPolicies(*e[1]), e[2], e[3])
 
         def records(rows: Any) -> tuple[MirrorRecord, ...]:
             return tuple(MirrorRecord(*row) for row in rows)
@@ -163,7 +165,7 @@ def snapshot(graph: Graph, owner: str, own_ids: Mapping[int, int]) -> GraphMirro
                 if id(e) in own_ids:
                     listed.append(MirrorEndpoint(0, None, own_ids[id(e)]))
             elif id(e.node) in index:
-                listed.append(MirrorEndpoint(index[id(e.node)], QosPolicies.of(e.qos), 0))
+                listed.append(MirrorEndpoint(index[id(e.node)], QosPolicies.of(e.qos), 0, e.created_ns))
         return tuple(listed)
 
     def others(records: Iterable[Any]) -> tuple[MirrorRecord, ...]:
@@ -203,12 +205,17 @@ def apply(graph: Graph, mirror: GraphMirror, own: Mapping[int, Any]) -> None:
             continue  # the child's own topic of another type: the parent refuses that
         topic.publishers = _ordered(
             topic.publishers,
-            [own.get(e.own) if e.own else Publisher(nodes[e.node], topic, 1, MIRROR_OWNER, e.qos) for e in t.publishers],
+            [
+                own.get(e.own) if e.own else Publisher(nodes[e.node], topic, 1, MIRROR_OWNER, e.qos, e.created_ns)
+                for e in t.publishers
+            ],
         )
         topic.subscriptions = _ordered(
             topic.subscriptions,
             [
-                own.get(e.own) if e.own else Subscription(nodes[e.node], topic, 1, _never, MIRROR_OWNER, e.qos)
+                own.get(e.own)
+                if e.own
+                else Subscription(nodes[e.node], topic, 1, _never, MIRROR_OWNER, e.qos, None, e.created_ns)
                 for e in t.subscriptions
             ],
         )

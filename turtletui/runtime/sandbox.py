@@ -192,6 +192,7 @@ class SandboxHost:
             "seed": seed,
             "distro": self.sim.distro,
             "epoch_ns": self.graph.epoch_ns,
+            "discovery_ns": self.graph.discovery_ns,
             "realtime": self.sim.realtime,
             "spin_seconds": self._spin,
             "limits": {

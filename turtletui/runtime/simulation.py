@@ -8,7 +8,7 @@ from collections.abc import Callable, Sequence
 from typing import Protocol
 
 from turtletui.compat.distro import resolve_distro
-from turtletui.graph.core import LOCKSTEP_EPOCH_NS, NS_PER_S, Graph
+from turtletui.graph.core import DISCOVERY_NS, LOCKSTEP_EPOCH_NS, NS_PER_S, Graph
 from turtletui.graph.introspection import dangling_endpoints
 from turtletui.graph.logs import WARN, LogRecord
 from turtletui.graph.turtlesim_node import TurtlesimNode
@@ -65,6 +65,7 @@ class Simulation:
         """The ROS 2 distro controllers run as (turtletui.compat.distro)."""
         epoch = time.time_ns() if realtime else LOCKSTEP_EPOCH_NS
         self.graph = Graph(epoch_ns=epoch, type_name=interface_name)
+        self.graph.discovery_ns = DISCOVERY_NS
         self.graph.log_sinks.extend(log_sinks)
         self.world = world if world is not None else World(spawn_turtle1=False)
         self.turtlesim = TurtlesimNode(self.graph, self.world, name=turtlesim_name)

@@ -1,0 +1,143 @@
+"""Discovery takes time, as in ROS 2: a new publisher and the subscriptions on
+its topic match DISCOVERY_NS (simulated) after the younger was made, and what
+is published before that reaches no one. The same in both hosts."""
+
+from __future__ import annotations
+
+import pytest
+from support.hosts import node_logs
+
+from turtletui.api import run
+from turtletui.graph.core import DISCOVERY_NS, NS_PER_S
+
+HEADER = """
+import rclpy
+from rclpy.node import Node
+from geometry_msgs.msg import Twist
+from turtlesim.msg import Pose
+from std_msgs.msg import String
+"""
+
+DISCOVERY_S = DISCOVERY_NS / NS_PER_S
+
+
+def test_a_message_published_right_after_create_publisher_is_lost_and_the_log_says_why(controller_host):
+    result = controller_host.run(
+        HEADER
+        + """
+def main():
+    rclpy.init()
+    node = Node("eager")
+    pub = node.create_publisher(Twist, "/turtle1/cmd_vel", 10)
+    msg = Twist()
+    msg.linear.x = 2.0
+    pub.publish(msg)
+    pub.publish(msg)
+    node.get_logger().info(f"matched at once: {pub.get_subscription_count()}")
+    rclpy.spin_once(node, timeout_sec=0.5)
+    rclpy.shutdown()
+""",
+        duration=1.0,
+    )
+    assert result.ok, result.crashes
+    assert node_logs(result, "eager") == ["matched at once: 0"]
+    assert result.turtles["turtle1"].distance == 0.0
+    notes = [r.msg for r in result.logs if r.node == "turtletui" and "discovered" in r.msg]
+    assert len(notes) == 1, notes  # once, though published twice
+    assert "/eager published on /turtle1/cmd_vel" in notes[0]
+    assert "get_subscription_count() > 0" in notes[0]
+
+
+def test_waiting_for_a_subscriber_then_publishing_drives_the_turtle(controller_host):
+    result = controller_host.run(
+        HEADER
+        + """
+def main():
+    rclpy.init()
+    node = Node("patient")
+    pub = node.create_publisher(Twist, "/turtle1/cmd_vel", 10)
+    while pub.get_subscription_count() == 0:
+        rclpy.spin_once(node, timeout_sec=0.005)
+    node.get_logger().info(f"matched after {node.get_clock().now().nanoseconds - 1_700_000_000 * 10**9} ns")
+    msg = Twist()
+    msg.linear.x = 1.0
+    pub.publish(msg)
+    rclpy.spin_once(node, timeout_sec=0.5)
+    rclpy.shutdown()
+""",
+        duration=2.0,
+    )
+    assert result.ok, result.crashes
+    assert node_logs(result, "patient") == [f"matched after {DISCOVERY_NS} ns"]
+    assert result.turtles["turtle1"].distance == pytest.approx(1.0, abs=0.05)  # one command: 1 s at 1 m/s
+    assert not [r for r in result.logs if r.node == "turtletui" and "discovered" in r.msg]
+
+
+def test_within_one_program_a_new_subscription_matches_at_once(controller_host):
+    # One process is one DDS participant: its endpoints match as they are made
+    # (real rclpy: get_subscription_count() is 1 right after create_publisher).
+    result = controller_host.run(
+        HEADER
+        + """
+def main():
+    rclpy.init()
+    talker = Node("talker")
+    listener = Node("listener")
+    heard = []
+    listener.create_subscription(String, "/chat", lambda m: heard.append(m.data), 10)
+    pub = talker.create_publisher(String, "/chat", 10)
+    talker.get_logger().info(f"matched at once: {pub.get_subscription_count()}")
+    pub.publish(String(data="early"))
+    executor = rclpy.executors.SingleThreadedExecutor()
+    executor.add_node(talker)
+    executor.add_node(listener)
+    executor.spin_once(timeout_sec=0.1)
+    listener.get_logger().info(" ".join(heard))
+    rclpy.shutdown()
+""",
+        duration=1.0,
+    )
+    assert result.ok, result.crashes
+    assert node_logs(result, "talker") == ["matched at once: 1"]
+    assert node_logs(result, "listener") == ["early"]
+    assert not [r for r in result.logs if r.node == "turtletui" and "discovered" in r.msg]
+
+
+TALKER = HEADER + """
+class Talker(Node):
+    def __init__(self):
+        super().__init__("talker")
+        self.pub = self.create_publisher(String, "/chat", 10)
+        self.sent = 0
+        self.create_timer(0.02, self.talk)
+
+    def talk(self):
+        self.sent += 1
+        self.pub.publish(String(data=str(self.sent)))
+        if self.sent == 5:
+            self.get_logger().info(f"subscribers {self.pub.get_subscription_count()}")
+"""
+
+LISTENER = HEADER + """
+class Listener(Node):
+    def __init__(self):
+        super().__init__("listener")
+        self.heard = []
+        self.sub = self.create_subscription(String, "/chat", self.heard.append, 10)
+        self.create_timer(0.11, self.report)
+
+    def report(self):
+        self.get_logger().info(" ".join(m.data for m in self.heard) + f" from {self.sub.get_publisher_count()}")
+        self.heard.clear()
+"""
+
+
+def test_two_programs_discover_each_other_after_the_delay(tmp_path):
+    # Two controller files are two processes (sandboxed: in-process runs one).
+    (tmp_path / "talker.py").write_text(TALKER)
+    (tmp_path / "listener.py").write_text(LISTENER)
+    result = run([tmp_path / "talker.py", tmp_path / "listener.py"], duration=0.15)
+    assert result.ok, result.crashes
+    # sent every 20 ms; those of 20 and 40 ms went before discovery (50 ms)
+    assert node_logs(result, "listener") == ["3 4 5 from 1"]
+    assert node_logs(result, "talker") == ["subscribers 1"]
