@@ -379,9 +379,11 @@ def test_waiting_for_turtlesims_services_and_subscriptions(controller_host):
         (0.0, "spawn ready"),
         (0.5, "t2 pen ready False"),
         (0.5, "t2 subscribers 0 0"),
-        (0.5, "t2 subscribed, spawned True t2"),
-        (0.5, "t2 pen ready True"),
-        (0.5, "t2 pose publishers 1"),
+        # turtlesim's new subscription is discovered 50 ms after the spawn; the
+        # loop's spin_once(timeout_sec=0.1) then returns at its timeout
+        (0.6, "t2 subscribed, spawned True t2"),
+        (0.6, "t2 pen ready True"),
+        (0.6, "t2 pose publishers 1"),
     ]
     assert result.turtles["t2"].distance > 0.5
 

@@ -73,7 +73,7 @@ def test_part5_reference_pose_subscriber_logs_every_pose(controller_host):
     result = run([reference_path("pose_subscriber.py")], duration=1.0, sandbox=controller_host.sandboxed)
     assert result.crashes == []
     logs = node_logs(result, "pose_subscriber")
-    assert len(logs) == 61  # ticks 2..62 publish a pose
+    assert len(logs) == 59  # ticks 2..62 publish a pose; the first two come before discovery (50 ms)
     assert set(logs) == {"(5.544444561004639, 5.544444561004639)"}
 
 
@@ -714,7 +714,7 @@ def test_a_turtlesim_msgs_subscriber_receives_turtlesims_poses(tmp_path, control
     )
     result = run([path], duration=1.0, sandbox=controller_host.sandboxed, distro="kilted")  # turtlesim_msgs from Kilted on
     assert result.crashes == []
-    assert node_logs(result, "msgs_sub") == ["61 5.544445"]  # ticks 2..62
+    assert node_logs(result, "msgs_sub") == ["59 5.544445"]  # ticks 4..62: discovery takes 50 ms
 
 
 # -- QoS -----------------------------------------------------------------------------------------------
@@ -774,7 +774,7 @@ def test_qos_profile_and_sensor_data_profile_are_accepted(tmp_path, controller_h
     assert logs[0] == "ready 4 5"
     assert depths == {"sub": [5], "pub": [3]}
     # poses from ticks 2..31, ..62, ..93, ..124 (tick 125 at exactly 2.0 s is delivered after the timer)
-    assert logs[1:] == ["poses 30", "poses 61", "poses 92", "poses 123"]
+    assert logs[1:] == ["poses 28", "poses 59", "poses 90", "poses 121"]  # none before discovery (50 ms)
     assert result.turtles["turtle1"].distance > 1.0
 
 

@@ -132,10 +132,14 @@ def test_info_prints_rosbag2s_layout(sim, term):
 def test_play_drives_the_turtle_along_the_recorded_path(sim, term):
     record_subset(sim, term)
     term.run("kill all")
+    step(sim, 1.5)  # turtlesim stops 1 s after the last command
     recorded = sim.world.turtles["turtle1"]
     fresh = Simulation()
     player = Terminal(Ros2Cli(fresh))
-    step(fresh, 1.0)
+    # Play from the sim time of the bag's first message, so that the commands
+    # come at the same instants between turtlesim's ticks as when recorded.
+    first = min(min(times) for times in read_back(Path("subset")).values())
+    fresh.run_until(first - fresh.graph.epoch_ns)
     out = texts(player.run("ros2 bag play subset"))
     assert re.fullmatch(r"\[INFO\] \[\d+\.\d{9}\] \[rosbag2_player\]: Playing subset: \d+ messages, \d\.\d{9} s", out[1])
     step(fresh, 2.0)
@@ -143,6 +147,7 @@ def test_play_drives_the_turtle_along_the_recorded_path(sim, term):
     step(fresh, 1.1)
     player.poll()
     assert player.foreground is None and "rosbag2_player" not in node_names(fresh)  # played to its end
+    step(fresh, 1.5)
     turtle = fresh.world.turtles["turtle1"]
     assert (turtle.x, turtle.y, turtle.theta) == pytest.approx((recorded.x, recorded.y, recorded.theta), abs=1e-5)
     assert turtle.distance > 4

@@ -49,6 +49,19 @@ def ok(cli: Ros2Cli, line: str) -> CommandResult:
     return result
 
 
+WAITING = ["Waiting for at least 1 matching subscription(s)..."]
+
+
+def published(sim: Simulation, cli: Ros2Cli, line: str) -> list[str]:
+    """What ``ros2 topic pub --once`` prints: it waits for turtlesim to match
+    its new publisher (discovery, 50 ms; ros2cli looks every 100 ms)."""
+    result = ok(cli, line)
+    assert result.lines[-1:] == WAITING
+    step(sim, 0.1)
+    assert result.stream.done
+    return result.stream.poll()
+
+
 def hidden_nodes(sim: Simulation) -> list[str]:
     return [n.fqn for n in sim.graph.nodes if n.name.startswith("_")]
 
@@ -177,6 +190,8 @@ def test_topic_echo_prints_poses_as_yaml(sim, cli):
     assert result.lines == [] and not result.stream.done
     assert result.stream.poll() == []
     step(sim, 0.05)
+    assert result.stream.poll() == []  # not discovered yet (50 ms)
+    step(sim, 0.05)
     lines = result.stream.poll()
     assert lines[:6] == [
         "x: 5.544444561004639",
@@ -207,8 +222,8 @@ def test_topic_echo_field(sim, cli):
 
 def test_topic_echo_nested_message_from_topic_pub(sim, cli):
     echo = ok(cli, "ros2 topic echo /turtle1/cmd_vel")
-    ok(cli, "ros2 topic pub --once /turtle1/cmd_vel geometry_msgs/msg/Twist "
-            "'{linear: {x: 2.0}, angular: {z: 1.8}}'")
+    published(sim, cli, "ros2 topic pub --once /turtle1/cmd_vel geometry_msgs/msg/Twist "
+                        "'{linear: {x: 2.0}, angular: {z: 1.8}}'")
     step(sim, 0.02)
     assert echo.stream.poll() == [
         "linear:", "  x: 2.0", "  y: 0.0", "  z: 0.0",
@@ -244,15 +259,15 @@ def test_topic_hz_window(sim, cli):
 
 
 def test_topic_pub_once_moves_the_turtle(sim, cli):
-    result = ok(cli, "ros2 topic pub --once /turtle1/cmd_vel geometry_msgs/msg/Twist "
-                     "'{linear: {x: 2.0, y: 0.0, z: 0.0}, angular: {x: 0.0, y: 0.0, z: 0.0}}'")
-    assert result.lines == [
+    lines = published(sim, cli, "ros2 topic pub --once /turtle1/cmd_vel geometry_msgs/msg/Twist "
+                                "'{linear: {x: 2.0, y: 0.0, z: 0.0}, angular: {x: 0.0, y: 0.0, z: 0.0}}'")
+    assert lines == [
         "publisher: beginning loop",
         "publishing #1: geometry_msgs.msg.Twist(linear=geometry_msgs.msg.Vector3(x=2.0, y=0.0, z=0.0),"
         " angular=geometry_msgs.msg.Vector3(x=0.0, y=0.0, z=0.0))",
         "",
     ]
-    assert result.stream is None and hidden_nodes(sim) == []
+    assert hidden_nodes(sim) == [] and cli.streams == []
     step(sim, 1.5)  # turtlesim stops 1 s after the last command
     turtle = sim.world.turtles["turtle1"]
     assert turtle.x == pytest.approx(5.544 + 2.0, abs=0.05)
@@ -267,9 +282,9 @@ def test_topic_pub_without_outer_braces_and_with_ints(sim, cli):
 
 def test_unquoted_yaml_is_joined_back_together(sim, cli):
     """The shell would split it; students forget the quotes, so join the rest."""
-    pub = ok(cli, "ros2 topic pub --once /turtle1/cmd_vel geometry_msgs/msg/Twist "
-                  "{linear: {x: -1.0}, angular: {z: -1.5}} ")
-    assert "angular=geometry_msgs.msg.Vector3(x=0.0, y=0.0, z=-1.5)" in pub.lines[1]
+    pub = published(sim, cli, "ros2 topic pub --once /turtle1/cmd_vel geometry_msgs/msg/Twist "
+                              "{linear: {x: -1.0}, angular: {z: -1.5}} ")
+    assert "angular=geometry_msgs.msg.Vector3(x=0.0, y=0.0, z=-1.5)" in pub[1]
     goal = ok(cli, "ros2 action send_goal /turtle1/rotate_absolute turtlesim/action/RotateAbsolute "
                    "{theta: -1.57} --feedback")
     assert goal.lines[2] == "     theta: -1.57"
@@ -280,11 +295,14 @@ def test_unquoted_yaml_is_joined_back_together(sim, cli):
 def test_topic_pub_rate_and_times(sim, cli):
     result = ok(cli, "ros2 topic pub -r 10 -t 3 /turtle1/cmd_vel geometry_msgs/Twist '{}'")
     topic = sim.graph.topics["/turtle1/cmd_vel"]
+    assert result.lines == WAITING and topic.count == 0  # --times waits for one subscription
+    step(sim, 0.1)
     assert topic.count == 1 and not result.stream.done
     step(sim, 0.25)
     assert topic.count == 3 and result.stream.done
     lines = result.stream.poll()
-    assert [line.split(":")[0] for line in lines if line] == ["publishing #2", "publishing #3"]
+    assert [line.split(":")[0] for line in lines if line] == [
+        "publisher", "publishing #1", "publishing #2", "publishing #3"]
     step(sim, 1.0)
     assert topic.count == 3 and hidden_nodes(sim) == []
 
@@ -392,10 +410,10 @@ def test_an_unquoted_off_key_is_read_as_a_boolean_as_pyyaml_reads_it(sim, cli):
 
 def test_values_are_converted_as_set_message_fields_converts_them(sim, cli):
     """float('1e3'), int(2.9), str(42), as rosidl_runtime_py does."""
-    pub = ok(cli, "ros2 topic pub --once /turtle1/cmd_vel geometry_msgs/msg/Twist "
-                  "'{linear: {x: 1e3, y: 017}, angular: {z: !!float 1}}'")
+    pub = published(sim, cli, "ros2 topic pub --once /turtle1/cmd_vel geometry_msgs/msg/Twist "
+                              "'{linear: {x: 1e3, y: 017}, angular: {z: !!float 1}}'")
     assert ("linear=geometry_msgs.msg.Vector3(x=1000.0, y=15.0, z=0.0), "
-            "angular=geometry_msgs.msg.Vector3(x=0.0, y=0.0, z=1.0)") in pub.lines[1]
+            "angular=geometry_msgs.msg.Vector3(x=0.0, y=0.0, z=1.0)") in pub[1]
     spawn = ok(cli, "ros2 service call /spawn turtlesim/srv/Spawn '{x: 2, y: 3.5, name: 0o17}'")
     assert spawn.lines[0] == ("requester: making request: "
                               "turtlesim.srv.Spawn_Request(x=2.0, y=3.5, theta=0.0, name='0o17')")

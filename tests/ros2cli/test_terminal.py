@@ -45,7 +45,7 @@ def test_a_command_is_echoed_and_its_output_follows(term):
 
 def test_the_foreground_stream_prints_until_ctrl_c(sim, term):
     term.run("ros2 topic echo /turtle1/pose")
-    step(sim, 0.05)
+    step(sim, 0.1)  # turtlesim discovers the echo's subscription after 50 ms
     assert "---" in texts(term.poll())
     step(sim, 0.016)  # printed, not polled yet: it shows before the ^C
     stopped = term.interrupt()

@@ -707,7 +707,7 @@ def test_patching_child_publish_is_validated_by_the_parent(tmp_path: Path) -> No
     path = write(tmp_path, """
         from turtletui.runtime import child
 
-        def forged_publish(self, topic, msg, source=None):
+        def forged_publish(self, topic, msg, source=None, publisher=None):
             self.out["pub"].append([topic.name, {"linear": {"x": "fast"}}])
 
         def misbehave(node):

@@ -96,9 +96,10 @@ class Ros2Cli:
 
     # -- for the verbs and streams ---------------------------------------------------
     def hidden_node(self) -> NodeRecord:
-        """A new hidden node for one command (``/_ros2cli_1``, ``/_ros2cli_2``...)."""
+        """A new hidden node for one command (``/_ros2cli_1``, ``/_ros2cli_2``...),
+        its process's own (the others discover its endpoints in time)."""
         self._hidden += 1
-        return self.graph.add_node(f"{HIDDEN_NODE_PREFIX}{self._hidden}", owner=OWNER)
+        return self.graph.add_node(f"{HIDDEN_NODE_PREFIX}{self._hidden}", owner=f"{OWNER}:{self._hidden}")
 
     def start(self, stream: Stream) -> CommandResult:
         """The result of a streaming command: its first lines, and the stream

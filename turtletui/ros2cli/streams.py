@@ -29,8 +29,12 @@ MAX_BUFFERED_LINES = 200
 DEFAULT_DEPTH = 10
 """rclpy's default QoS depth, as ``ros2 topic echo`` and ``pub`` use it."""
 
+WAIT_CHECK_NS = 100_000_000
+"""How often ``ros2 topic pub -w N`` looks for matching subscriptions (ros2cli: 0.1 s)."""
+
 OWNER = "ros2cli"
-"""Owner of the hidden nodes' endpoints in the graph."""
+"""Prefix of the owners of the commands' nodes ("ros2cli:3"): each command is a
+process of its own, as in a terminal."""
 
 
 class Stream:
@@ -182,25 +186,53 @@ class HzStream(Stream):
 
 
 class PubStream(Stream):
-    """``ros2 topic pub``: one message at once, then one per period."""
+    """``ros2 topic pub``: once ``wait`` subscriptions match (discovery takes
+    time), one message at once, then one per period."""
 
     runs_in_background = True
 
     def __init__(self, cli: Ros2Cli, command: str, topic_name: str, msg: Message,
-                 period_ns: int, times: int, print_nth: int) -> None:
+                 period_ns: int, times: int, print_nth: int, wait: int = 0) -> None:
         super().__init__(cli, command)
         self._cls = type(msg)
         self._values = to_dict(msg)
         self._times = times
         self._print_nth = print_nth
+        self._period_ns = period_ns
+        self._wait = wait
         self.count = 0
         """Messages published so far."""
         self.publisher = self._graph.add_publisher(self.node, topic_name, self._cls, DEFAULT_DEPTH)
+        self.timer = None
+        if self._matched() < wait:
+            self._checks = 0
+            self.timer = self._graph.add_timer(self.node, WAIT_CHECK_NS, self._check_matching)
+            self._check_matching()
+        else:
+            self._begin()
+
+    def _matched(self) -> int:
+        graph, pub = self._graph, self.publisher
+        return sum(1 for sub in pub.topic.subscriptions if graph.matched(pub, sub))
+
+    def _check_matching(self) -> None:
+        """ros2cli checks every 100 ms and says so every second."""
+        if self.done:
+            return
+        if self._matched() >= self._wait:
+            self._graph.cancel_timer(self.timer)
+            self._begin()
+            return
+        if self._checks % 10 == 0:
+            self._emit([f"Waiting for at least {self._wait} matching subscription(s)..."])
+        self._checks += 1
+
+    def _begin(self) -> None:
         self._emit(["publisher: beginning loop"])
         self._publish()  # ros2 topic pub publishes once at once, then on its timer
         self.timer = None
         if not self.done:
-            self.timer = self._graph.add_timer(self.node, period_ns, self._publish)
+            self.timer = self._graph.add_timer(self.node, self._period_ns, self._publish)
 
     @property
     def progress(self) -> str:
@@ -213,7 +245,7 @@ class PubStream(Stream):
         self.count += 1
         if self._print_nth and self.count % self._print_nth == 0:
             self._emit([f"publishing #{self.count}: {msg!r}", ""])
-        self._graph.publish(self.publisher.topic, msg)
+        self._graph.publish(self.publisher.topic, msg, None, self.publisher)
         if self._times and self.count >= self._times:
             self._finish()
 
@@ -225,7 +257,7 @@ class CallStream(Stream):
         super().__init__(cli, command)
         self.client = self._graph.add_client(self.node, name, srv_cls)
         self._emit([f"requester: making request: {request!r}", ""])
-        self._graph.call(name, request, self._on_response, OWNER)
+        self._graph.call(name, request, self._on_response, self.node.owner)
 
     def _on_response(self, response: Any) -> None:
         if self.done:
@@ -248,7 +280,7 @@ class GoalStream(Stream):
         # ros2action prints message_to_yaml(goal) after five spaces: only the
         # first line of a multi-field goal is indented.
         self._emit((f"Sending goal:\n     {message_yaml(goal)}").split("\n"))
-        self._graph.send_goal(name, goal, OWNER, self._on_accepted, self._on_feedback,
+        self._graph.send_goal(name, goal, self.node.owner, self._on_accepted, self._on_feedback,
                               self._on_result)
 
     def _on_accepted(self, handle: GoalHandle | None) -> None:

@@ -205,6 +205,9 @@ def _pub_arguments(parser: ArgumentParser) -> None:
     group.add_argument("-1", "--once", action="store_true", help="Publish one message and exit")
     group.add_argument("-t", "--times", type=nonnegative_int, default=0,
                        help="Publish this number of times and then exit")
+    parser.add_argument("-w", "--wait-matching-subscriptions", type=nonnegative_int, default=None,
+                        help="Wait until finding the specified number of matching subscriptions. "
+                             "Defaults to 1 when using \"-1\"/\"--once\"/\"--times\", otherwise defaults to 0.")
 
 
 def _pub(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
@@ -224,7 +227,10 @@ def _pub(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
         if near:
             notes.append(f"WARNING: nothing subscribes to '{name}' yet{near}")
     times = 1 if args.once else args.times
-    result = cli.start(PubStream(cli, line, name, msg, round(NS_PER_S / rate), times, args.print))
+    wait = args.wait_matching_subscriptions
+    if wait is None:
+        wait = 1 if times else 0
+    result = cli.start(PubStream(cli, line, name, msg, round(NS_PER_S / rate), times, args.print, wait))
     result.lines[:0] = notes
     return result
 
