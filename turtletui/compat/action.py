@@ -13,6 +13,7 @@ from turtletui.compat.qos import (
     qos_profile_services_default,
 )
 from turtletui.compat.task import Future
+from turtletui.interfaces import copier
 
 _NS = 1_000_000_000
 
@@ -201,7 +202,7 @@ class ActionClient(Destroyable):
 
         handle._record = host.graph.send_goal(
             self._action_name,
-            goal,
+            copier(type(goal))(goal),  # as sent: the caller may change its goal next
             host.owner,
             host.wrap_callback(on_answer),
             host.wrap_callback(on_feedback),

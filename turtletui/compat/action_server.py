@@ -29,11 +29,13 @@ from turtletui.compat.qos import (
     qos_profile_services_default,
 )
 from turtletui.graph import core
-from turtletui.interfaces import interface_name
+from turtletui.interfaces import copier, interface_name
 
 
 class RCLError(RuntimeError):
     """An error from rcl, as ``rclpy._rclpy_pybind11.RCLError`` (e.g. an invalid goal transition)."""
+
+    __module__ = "rclpy._rclpy_pybind11"  # as tracebacks name rclpy's
 
 
 class GoalResponse(Enum):
@@ -161,7 +163,8 @@ class ServerGoalHandle:
                 f"{interface_name(self._action_server.action_type)}.Feedback, got {feedback!r}"
             )
         if not self._destroyed:
-            self._record.publish_feedback(feedback)
+            # sent as it is now, as rclpy serialises it: the callback may change it next
+            self._record.publish_feedback(copier(type(feedback))(feedback))
 
     def succeed(self) -> None:
         self._update_state(GoalEvent.SUCCEED)
@@ -308,7 +311,7 @@ class ActionServer(Destroyable):
                 f"the execute callback of action {self._name} must return a "
                 f"{interface_name(self._action_type)}.Result, got {result!r}"
             )
-        goal_handle._record.finish(_GRAPH_STATUS.get(goal_handle._status, "aborted"), result)
+        goal_handle._record.finish(_GRAPH_STATUS.get(goal_handle._status, "aborted"), copier(type(result))(result))
 
     async def _execute_cancel_request(
         self, goal_handle: ServerGoalHandle, decided: Callable[..., None]
