@@ -5,7 +5,7 @@ publish_feedback with the wrong type."""
 import rclpy
 from rclpy.action import ActionClient, ActionServer, CancelResponse, GoalResponse
 from rclpy.node import Node
-from turtlesim_msgs.action import RotateAbsolute
+from turtlesim.action import RotateAbsolute
 
 
 class Rotator(Node):
