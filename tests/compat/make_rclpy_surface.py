@@ -51,6 +51,7 @@ FUNCTIONS = {
         "get_default_context",
     ],
     "rclpy.logging": ["get_logger", "set_logger_level", "get_logger_effective_level"],
+    "rclpy.wait_for_message": ["wait_for_message"],
 }
 
 NODE_METHODS = [
