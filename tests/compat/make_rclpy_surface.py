@@ -51,6 +51,7 @@ FUNCTIONS = {
         "get_default_context",
     ],
     "rclpy.logging": ["get_logger", "set_logger_level", "get_logger_effective_level"],
+    "rclpy.wait_for_message": ["wait_for_message"],
 }
 
 NODE_METHODS = [
@@ -150,6 +151,28 @@ SURFACE = {
         "cancel_goal_async",
         "cancel_goal",
     ],
+    "rclpy.action.ActionServer": [
+        "__init__",
+        "action_type",
+        "register_handle_accepted_callback",
+        "register_goal_callback",
+        "register_cancel_callback",
+        "register_execute_callback",
+        "destroy",
+    ],
+    "rclpy.action.server.ServerGoalHandle": [
+        "request",
+        "goal_id",
+        "is_active",
+        "is_cancel_requested",
+        "status",
+        "execute",
+        "publish_feedback",
+        "succeed",
+        "abort",
+        "canceled",
+        "destroy",
+    ],
     "rclpy.qos.QoSProfile": [
         "__init__",
         "history",
@@ -214,6 +237,8 @@ ENUMS = [
     "rclpy.parameter.Parameter.Type",
     "rclpy.logging.LoggingSeverity",
     "rclpy.clock.ClockType",
+    "rclpy.action.GoalResponse",
+    "rclpy.action.CancelResponse",
 ]
 
 ALIASES = {
@@ -222,6 +247,9 @@ ALIASES = {
     "rclpy.qos.QoSDurabilityPolicy": "rclpy.qos.DurabilityPolicy",
     "rclpy.qos.QoSLivelinessPolicy": "rclpy.qos.LivelinessPolicy",
     "rclpy.action.client.ActionClient": "rclpy.action.ActionClient",
+    "rclpy.action.server.ActionServer": "rclpy.action.ActionServer",
+    "rclpy.action.server.GoalResponse": "rclpy.action.GoalResponse",
+    "rclpy.action.server.CancelResponse": "rclpy.action.CancelResponse",
     "rclpy.node.Parameter": "rclpy.parameter.Parameter",
 }
 
@@ -312,7 +340,7 @@ def member(cls: type, name: str) -> dict:
 
 
 def enum_members(cls: type) -> dict[str, int]:
-    return {name: int(value) for name, value in cls.__members__.items()}
+    return {name: int(getattr(value, "value", value)) for name, value in cls.__members__.items()}
 
 
 def qos_fields(profile: object) -> dict:
@@ -347,7 +375,7 @@ def logging_keywords() -> dict:
 def main() -> None:
     import rclpy
 
-    if "turtletui" in (getattr(rclpy, "__file__", "") or ""):
+    if "/turtletui/compat/" in (getattr(rclpy, "__file__", "") or ""):
         sys.exit("this imported turtletui's rclpy shim: run it with the real rclpy's python")
     try:
         from importlib.metadata import version

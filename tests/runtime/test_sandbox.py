@@ -795,6 +795,8 @@ FORGED = {
     "pub-fields-not-a-dict": (frame({"pub": [["/turtle1/cmd_vel", [1, 2]]]}), "exception", REFUSED),
     "pub-bad-field": (frame({"pub": [["/turtle1/cmd_vel", {"linear": {"x": "fast"}}]]}), "exception", REFUSED),
     "call-bad-request": (frame({"call": [[1, "/spawn", {"x": "far"}]]}), "exception", REFUSED),
+    "asrv-unknown-type": (frame({"decl": [["asrv", 1, "/spin", "no_pkg/action/Nothing"]]}), "exception", REFUSED),
+    "served-not-triples": (frame({"served": [5]}), "exception", REFUSED),
     "wake-infinite": (frame(b'{"wake": Infinity}'), "exception", REFUSED),
     "wake-nan": (frame(b'{"wake": NaN}'), "exception", REFUSED),
     "wake-string": (frame({"wake": "soon"}), "exception", REFUSED),
@@ -804,6 +806,7 @@ FORGED = {
     # Harmless: an answer to nothing is ignored; a wake-up at the end of time means
     # "never" (the forger, still asleep when the run ends, does not answer "end").
     "resp-unknown": (frame({"resp": [[424242, {"a": 1}]]}), None, ""),
+    "served-unknown-goal": (frame({"served": [[424242, "result", ["succeeded", {"delta": 1.0}]]]}), None, ""),
     "wake-huge": (frame({"wake": 10**400}), None, ""),
 }
 

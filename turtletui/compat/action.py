@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import random
 from collections.abc import Callable
 from typing import Any
 
@@ -12,6 +13,7 @@ from turtletui.compat.qos import (
     qos_profile_services_default,
 )
 from turtletui.compat.task import Future
+from turtletui.interfaces import copier
 
 _NS = 1_000_000_000
 
@@ -28,47 +30,46 @@ class GoalStatus:
     STATUS_ABORTED = 6
 
 
-_STATUS = {"succeeded": 4, "canceled": 5, "aborted": 6}
+_STATUS = {
+    "accepted": GoalStatus.STATUS_ACCEPTED,
+    "executing": GoalStatus.STATUS_EXECUTING,
+    "canceling": GoalStatus.STATUS_CANCELING,
+    "succeeded": GoalStatus.STATUS_SUCCEEDED,
+    "canceled": GoalStatus.STATUS_CANCELED,
+    "aborted": GoalStatus.STATUS_ABORTED,
+}
+_ERROR_UNKNOWN_GOAL_ID = 2
+"""action_msgs/srv/CancelGoal's code for a goal the server does not know (a rejected one)."""
 
 
-class _FeedbackMessage:
-    """What a feedback callback receives: ``msg.feedback`` is the Feedback."""
+def goal_uuid(goal_id: int) -> Any:
+    """The unique_identifier_msgs/UUID of the graph's goal ``goal_id``: the same
+    on the client's and the server's side, and in every run."""
+    from turtletui.interfaces.unique_identifier_msgs import UUID
 
-    __slots__ = ("goal_id", "feedback")
-
-    def __init__(self, goal_id: int, feedback: Any) -> None:
-        self.goal_id = goal_id
-        self.feedback = feedback
-
-
-class _GetResultResponse:
-    """What ``get_result_async()`` completes with: ``.result`` and ``.status``."""
-
-    __slots__ = ("status", "result")
-
-    def __init__(self, status: int, result: Any) -> None:
-        self.status = status
-        self.result = result
-
-
-class _CancelResponse:
-    ERROR_NONE = 0
-    ERROR_REJECTED = 1
-
-    def __init__(self, accepted: bool) -> None:
-        self.return_code = 0 if accepted else 1
-        self.goals_canceling = []
+    return UUID(uuid=list(random.Random(goal_id).randbytes(16)))
 
 
 class ClientGoalHandle:
     """The client's view of one goal."""
 
-    def __init__(self, client: ActionClient, accepted: bool) -> None:
+    def __init__(self, client: ActionClient, record: Any) -> None:
         self._client = client
-        self._accepted = accepted
-        self._status = GoalStatus.STATUS_ACCEPTED if accepted else GoalStatus.STATUS_UNKNOWN
+        self._record = record
+        """The graph's handle of the goal (the child's stand-in when sandboxed)."""
+        self._accepted = False
+        self._status = GoalStatus.STATUS_UNKNOWN
         self._result_future = Future()
-        self._server_handle: Any = None
+
+    def __eq__(self, other: object) -> bool:
+        if isinstance(other, ClientGoalHandle):
+            return self.goal_id == other.goal_id
+        return NotImplemented
+
+    __hash__ = None  # type: ignore[assignment]  # as rclpy's: compared by goal id
+
+    def __repr__(self) -> str:
+        return f"ClientGoalHandle <id={self.goal_id.uuid}, accepted={self._accepted}, status={self._status}>"
 
     @property
     def accepted(self) -> bool:
@@ -76,36 +77,63 @@ class ClientGoalHandle:
 
     @property
     def status(self) -> int:
+        """The goal's GoalStatus number, as the server last reported it."""
         return self._status
 
     @property
     def goal_id(self) -> Any:
-        return self._server_handle.goal_id if self._server_handle else None
+        """The goal's unique_identifier_msgs/UUID."""
+        return goal_uuid(self._record.goal_id if self._record is not None else 0)
 
     def get_result_async(self) -> Future:
+        """A Future of the result response (``.status``, ``.result``)."""
+        if not self._accepted:
+            raise TypeError("Goal was not accepted")
         return self._result_future
 
     def get_result(self) -> Any:
-        self._client._host().spin_until(self._result_future.done, None)
-        return self._result_future.result()
+        """Wait for the result response. Never inside a callback: ROS deadlocks."""
+        future = self.get_result_async()
+        self._client._host().spin_until(future.done, None)
+        return future.result()
 
     def cancel_goal_async(self) -> Future:
+        """Ask the server to cancel the goal; a Future of its CancelGoal response."""
+        from turtletui.interfaces.action_msgs import CancelGoal, GoalInfo
+
         future = Future()
         host = self._client._host()
-        if self._server_handle is not None and self._result_future.done() is False:
-            self._status = GoalStatus.STATUS_CANCELING
-            host.graph.cancel_goal(self._server_handle)
-            future.set_result(_CancelResponse(True))
+        goal_id = self.goal_id
+
+        def answered(code: int, canceling: bool) -> None:
+            canceled = [GoalInfo(goal_id=goal_id)] if canceling else []
+            future.set_result(CancelGoal.Response(return_code=code, goals_canceling=canceled))
+
+        if self._accepted:
+            host.graph.cancel_goal(self._record, host.owner, host.wrap_callback(answered))
         else:
-            future.set_result(_CancelResponse(False))
+            future.set_result(CancelGoal.Response(return_code=_ERROR_UNKNOWN_GOAL_ID))
         return future
 
     def cancel_goal(self) -> Any:
-        return self.cancel_goal_async().result()
+        """Cancel and wait for the server's answer. Never inside a callback: ROS deadlocks."""
+        future = self.cancel_goal_async()
+        self._client._host().spin_until(future.done, None)
+        return future.result()
+
+    def _answered(self, record: Any) -> None:
+        if record is not None:
+            self._record = record
+            self._accepted = True
+            self._status = _STATUS.get(record.status, GoalStatus.STATUS_ACCEPTED)
+
+    def _status_changed(self, status: str) -> None:
+        self._status = _STATUS.get(status, self._status)
 
     def _finished(self, status: str, result: Any) -> None:
         self._status = _STATUS.get(status, GoalStatus.STATUS_UNKNOWN)
-        self._result_future.set_result(_GetResultResponse(self._status, result))
+        response = self._client._action_type.Impl.GetResultService.Response(status=self._status, result=result)
+        self._result_future.set_result(response)
 
 
 class ActionClient(Destroyable):
@@ -153,41 +181,44 @@ class ActionClient(Destroyable):
     def send_goal_async(
         self, goal: Any, feedback_callback: Callable[[Any], None] | None = None, goal_uuid: Any = None
     ) -> Future:
-        """Send ``goal``; the Future completes with a ClientGoalHandle."""
+        """Send ``goal``; the Future completes with a ClientGoalHandle (``accepted``
+        False if the server rejected it). ``goal_uuid`` is accepted and ignored:
+        the graph numbers goals, so that runs repeat."""
         self._require_alive()
         if type(goal) is not self._action_type.Goal:
             raise TypeError(f"send_goal_async() on {self._action_name} expects a Goal of {self._action_type}, got {goal!r}")
         future = Future()
         host = self._host()
-        handle = ClientGoalHandle(self, accepted=True)
+        handle = ClientGoalHandle(self, None)
+        feedback_type = self._action_type.Impl.FeedbackMessage
 
-        def on_accepted(server_handle: Any) -> None:
-            handle._server_handle = server_handle
-            if handle._status == GoalStatus.STATUS_ACCEPTED:
-                handle._status = GoalStatus.STATUS_EXECUTING
+        def on_answer(record: Any) -> None:
+            handle._answered(record)
             future.set_result(handle)
 
         def on_feedback(feedback: Any) -> None:
             if feedback_callback is not None:
-                feedback_callback(_FeedbackMessage(handle.goal_id, feedback))
+                feedback_callback(feedback_type(goal_id=handle.goal_id, feedback=feedback))
 
-        host.graph.send_goal(
+        handle._record = host.graph.send_goal(
             self._action_name,
-            goal,
+            copier(type(goal))(goal),  # as sent: the caller may change its goal next
             host.owner,
-            host.wrap_callback(on_accepted),
+            host.wrap_callback(on_answer),
             host.wrap_callback(on_feedback),
             host.wrap_callback(handle._finished),
+            host.wrap_callback(handle._status_changed),
         )
         return future
 
     def send_goal(self, goal: Any, **kwargs: Any) -> Any:
         """Send ``goal`` and wait for its result; ``kwargs`` are send_goal_async's
-        (``feedback_callback``, ``goal_uuid``). Never inside a callback: ROS deadlocks."""
+        (``feedback_callback``, ``goal_uuid``). None if the server rejected it.
+        Never inside a callback: ROS deadlocks."""
         future = self.send_goal_async(goal, **kwargs)
         self._host().spin_until(future.done, None)
         handle = future.result()
-        return handle.get_result() if handle else None
+        return handle.get_result() if handle is not None and handle.accepted else None
 
     def destroy(self) -> None:
         """Take the client off the graph; using it afterwards raises InvalidHandle."""

@@ -11,6 +11,7 @@ meanwhile, one at a time, under the same group rules.
 
 from __future__ import annotations
 
+import inspect
 import threading
 from collections.abc import Callable
 from typing import Any
@@ -37,6 +38,13 @@ class ShutdownException(Exception):
 
 class TimeoutException(Exception):
     pass
+
+
+async def await_or_execute(callback: Callable[..., Any], *args: Any) -> Any:
+    """Await ``callback(*args)`` if it is an ``async def`` function, else call it (as rclpy's)."""
+    if inspect.iscoroutinefunction(callback):
+        return await callback(*args)
+    return callback(*args)
 
 
 def _timeout_ns(timeout_sec: float | None) -> int | None:

@@ -180,9 +180,25 @@ class ServiceClient:
     owner: str
 
 
+CANCEL_ACCEPTED, CANCEL_REJECTED, CANCEL_TERMINATED = 0, 1, 3
+"""action_msgs/srv/CancelGoal return codes (ERROR_NONE, ERROR_REJECTED, ERROR_GOAL_TERMINATED)."""
+
+_ACTIVE_GOAL = frozenset({"accepted", "executing", "canceling"})
+
+
+def _ignore(*_: Any) -> None:
+    """A goal callback nobody asked for."""
+
+
 @dataclass(eq=False)
 class GoalHandle:
-    """The server side of one action goal."""
+    """The server side of one action goal.
+
+    A server that answers goals itself (``ActionServer.answers``) finds its
+    goals "pending" and calls ``accept()`` or ``reject()``, now or later; the
+    others' goals start "executing". Every change reaches the client through
+    the callbacks the graph gave the handle.
+    """
 
     action: ActionServer
     goal_id: int
@@ -190,18 +206,74 @@ class GoalHandle:
     on_feedback: Callable[[Any], None]
     on_result: Callable[[str, Any], None]
     status: str = "executing"
+    """pending, rejected, accepted, executing, canceling, succeeded, aborted or canceled."""
     cancel_requested: bool = False
     on_cancel: Callable[[], None] | None = None
+    """What a cancel request does on a server that always accepts them."""
+    decide_cancel: Callable[[Callable[..., None]], None] | None = None
+    """How a server that may refuse decides: ``decide_cancel(decided)`` calls
+    ``decided(accepted, refusal=CANCEL_REJECTED)``, now or later; ``refusal`` is
+    the code a refused request gets. With neither, cancel requests are refused."""
+    on_answer: Callable[[GoalHandle | None], None] = _ignore
+    on_status: Callable[[str], None] = _ignore
+
+    @property
+    def active(self) -> bool:
+        return self.status in _ACTIVE_GOAL
+
+    def accept(self, status: str = "executing") -> None:
+        """Accept a pending goal, as "accepted" or already "executing"."""
+        if self.status == "pending" and status in ("accepted", "executing"):
+            self.status = status
+            self.on_answer(self)
+
+    def reject(self) -> None:
+        if self.status == "pending":
+            self.status = "rejected"
+            self.on_answer(None)
+
+    def set_status(self, status: str) -> None:
+        """Move an active goal to "executing" (from accepted) or "canceling"."""
+        allowed = {"executing": ("accepted",), "canceling": ("accepted", "executing")}.get(status, ())
+        if self.status in allowed:
+            self.status = status
+            self.on_status(status)
 
     def publish_feedback(self, feedback: Any) -> None:
-        if self.status == "executing":
+        if self.active:
             self.on_feedback(feedback)
 
     def finish(self, status: str, result: Any) -> None:
         """End the goal as succeeded, aborted or canceled, sending its result."""
-        if self.status == "executing":
+        if self.active:
             self.status = status
             self.on_result(status, result)
+
+    def request_cancel(self, answer: Callable[[int, bool], None]) -> None:
+        """A client asks to cancel the goal: ``answer(code, canceling)`` (a
+        CancelGoal return code, and whether the goal is now canceling) runs
+        once the server has decided."""
+        if not self.active:
+            answer(CANCEL_TERMINATED, False)
+            return
+
+        def decided(accepted: bool, refusal: int = CANCEL_REJECTED) -> None:
+            if accepted and self.active:
+                self.cancel_requested = True
+                self.set_status("canceling")
+                answer(CANCEL_ACCEPTED, True)
+            else:
+                answer(refusal, False)
+
+        if self.decide_cancel is not None:
+            self.decide_cancel(decided)
+        elif self.on_cancel is not None:
+            first = not self.cancel_requested
+            decided(True)
+            if first:
+                self.on_cancel()
+        else:
+            answer(CANCEL_REJECTED, False)
 
 
 @dataclass(eq=False)
@@ -214,6 +286,9 @@ class ActionServer:
     type_name: str
     on_goal: Callable[[GoalHandle], None]
     owner: str
+    answers: bool = False
+    """Whether the server accepts or rejects each goal itself (GoalHandle.accept);
+    else every goal is accepted as soon as ``on_goal`` returns."""
 
 
 @dataclass(eq=False)
@@ -631,12 +706,20 @@ class Graph:
 
     # -- actions ------------------------------------------------------------
     def add_action_server(
-        self, node: NodeRecord, name: str, action_type: type, on_goal: Callable[[GoalHandle], None]
+        self,
+        node: NodeRecord,
+        name: str,
+        action_type: type,
+        on_goal: Callable[[GoalHandle], None],
+        *,
+        answers: bool = False,
     ) -> ActionServer:
+        """A server of action ``name``; with ``answers`` it accepts or rejects
+        each goal itself (see ActionServer.answers)."""
         self.version += 1
         if name in self.action_servers:
             raise GraphError(f"action {name} is already provided by {self.action_servers[name].node.fqn}")
-        server = ActionServer(node, name, action_type, self._type_name(action_type), on_goal, node.owner)
+        server = ActionServer(node, name, action_type, self._type_name(action_type), on_goal, node.owner, answers)
         self.action_servers[name] = server
         return server
 
@@ -680,35 +763,56 @@ class Graph:
         on_accepted: Callable[[GoalHandle | None], None],
         on_feedback: Callable[[Any], None],
         on_result: Callable[[str, Any], None],
-    ) -> None:
-        """Queue a goal for action ``name``; replies run for ``owner``."""
+        on_status: Callable[[str], None] | None = None,
+    ) -> GoalHandle | None:
+        """Queue a goal for action ``name``; replies run for ``owner``:
+        ``on_accepted(handle)`` (None if rejected), ``on_status`` when it moves
+        to executing or canceling, feedback, and the result. Returns the
+        goal's handle; None when no server has the action (as in ROS, the goal
+        is then never answered)."""
         server = self.action_servers.get(name)
         if server is None:
-            return
+            return None
         if self.taps:
             for tap in self.taps:
                 tap("goal", (name, goal))
         self._goal_ids += 1
         ready = self.ready
+
+        def reply(callback: Callable[..., None]) -> Callable[..., None]:
+            return lambda *args: ready.append((owner, lambda: callback(*args)))
+
         handle = GoalHandle(
             server,
             self._goal_ids,
             goal,
-            on_feedback=lambda fb: ready.append((owner, lambda: on_feedback(fb))),
-            on_result=lambda status, res: ready.append((owner, lambda: on_result(status, res))),
+            on_feedback=reply(on_feedback),
+            on_result=reply(on_result),
+            status="pending" if server.answers else "executing",
+            on_answer=reply(on_accepted),
+            on_status=_ignore if on_status is None else reply(on_status),
         )
 
         def accept() -> None:
             server.on_goal(handle)
-            ready.append((owner, lambda: on_accepted(handle)))
+            if not server.answers:
+                handle.on_answer(handle)
 
         ready.append((server.owner, accept))
+        return handle
 
-    def cancel_goal(self, handle: GoalHandle) -> None:
-        if handle.status == "executing" and not handle.cancel_requested:
-            handle.cancel_requested = True
-            if handle.on_cancel is not None:
-                self.ready.append((handle.action.owner, handle.on_cancel))
+    def cancel_goal(
+        self, handle: GoalHandle, owner: str | None = None, on_answer: Callable[[int, bool], None] | None = None
+    ) -> None:
+        """Ask the server to cancel a goal; ``on_answer(code, canceling)`` (see
+        GoalHandle.request_cancel) then runs for ``owner``."""
+        ready = self.ready
+
+        def answer(code: int, canceling: bool) -> None:
+            if on_answer is not None:
+                ready.append((owner or handle.action.owner, lambda: on_answer(code, canceling)))
+
+        ready.append((handle.action.owner, lambda: handle.request_cancel(answer)))
 
     # -- logs ---------------------------------------------------------------
     def log(self, node: str, level: int, msg: str) -> LogRecord:

@@ -26,6 +26,8 @@ from typing import Any
 
 from turtletui.graph.core import (
     ActionClientRecord,
+    ActionServer,
+    GoalHandle,
     Graph,
     NodeRecord,
     Publisher,
@@ -47,9 +49,11 @@ OWNER = "child"
 class _RemoteGoal:
     """Child-side stand-in for a goal accepted by a server in the parent."""
 
-    def __init__(self, goal_id: int) -> None:
-        self.goal_id = goal_id
-        self.status = "executing"
+    def __init__(self, wire_id: int) -> None:
+        self.wire_id = wire_id
+        self.goal_id = wire_id
+        """The parent's goal id once it accepted the goal (the wire id until then)."""
+        self.status = "pending"
 
 
 class ChildGraph(Graph):
@@ -58,13 +62,18 @@ class ChildGraph(Graph):
     def __init__(self) -> None:
         super().__init__(type_name=interface_name)
         self.out: dict[str, list] = {
-            "decl": [], "pub": [], "call": [], "goal": [], "cancel": [], "log": [], "resp": [], "removed": []
+            "decl": [], "pub": [], "call": [], "goal": [], "cancel": [], "log": [], "resp": [], "removed": [],
+            "served": [],
         }
         self._ids = itertools.count(1)
         self._own: dict[int, Any] = {}
         """The controller's nodes, publishers and subscriptions by wire id."""
         self._calls: dict[int, Callable[[Any], None]] = {}
         self._goals: dict[int, tuple] = {}
+        self._cancels: dict[int, list[Callable[[int, bool], None]]] = {}
+        """Who waits for the parent's answer to a cancel request, by goal wire id."""
+        self._served: dict[int, GoalHandle] = {}
+        """Goals of the controller's own action servers, by the parent's goal id."""
 
     def take_out(self) -> dict[str, Any]:
         out = {}
@@ -140,6 +149,14 @@ class ChildGraph(Graph):
         self.out["decl"].append(["aclient", node.wire_id, name, client.type_name])
         return client
 
+    def add_action_server(self, node, name, action_type, on_goal, **options):
+        server = super().add_action_server(node, name, action_type, on_goal, **options)
+        self.out["decl"].append(["asrv", node.wire_id, name, server.type_name])
+        return server
+
+    def remove_action_server(self, server: ActionServer) -> bool:
+        return self._removed("action_server", server, super().remove_action_server(server))
+
     def remove_service(self, service: Service) -> bool:
         return self._removed("service", service, super().remove_service(service))
 
@@ -170,21 +187,23 @@ class ChildGraph(Graph):
         self._calls[call_id] = on_response
         self.out["call"].append([call_id, name, to_values(request)])
 
-    def send_goal(self, name, goal, owner, on_accepted, on_feedback, on_result) -> None:
+    def send_goal(self, name, goal, owner, on_accepted, on_feedback, on_result, on_status=None) -> Any:
         server = self.action_servers.get(name)
         if server is None or server.owner != graph_mirror.MIRROR_OWNER:
-            super().send_goal(name, goal, owner, on_accepted, on_feedback, on_result)
-            return
+            return super().send_goal(name, goal, owner, on_accepted, on_feedback, on_result, on_status)
         goal_id = next(self._ids)
         handle = _RemoteGoal(goal_id)
-        self._goals[goal_id] = (handle, on_accepted, on_feedback, on_result, server.action_type)
+        self._goals[goal_id] = (handle, on_accepted, on_feedback, on_result, on_status, server.action_type)
         self.out["goal"].append([goal_id, name, to_values(goal)])
+        return handle
 
-    def cancel_goal(self, handle: Any) -> None:
-        if isinstance(handle, _RemoteGoal):
-            self.out["cancel"].append(handle.goal_id)
-        else:
-            super().cancel_goal(handle)
+    def cancel_goal(self, handle: Any, owner: str | None = None, on_answer: Any = None) -> None:
+        if not isinstance(handle, _RemoteGoal):
+            super().cancel_goal(handle, owner, on_answer)
+            return
+        wire_id = handle.wire_id
+        self._cancels.setdefault(wire_id, []).append(on_answer)
+        self.out["cancel"].append(wire_id)
 
     log_budget = 1 << 62
     """Log records still worth sending: the parent keeps only Limits.log_lines
@@ -220,12 +239,27 @@ class ChildGraph(Graph):
                 response = trusted_from_values(get_interface(type_name))(fields)
                 ready.append((OWNER, lambda cb=on_response, r=response: cb(r)))
         for goal_id, kind, payload in message.get("goals", ()):
+            if kind == "cancel":  # may come after the goal's result
+                waiting = self._cancels.get(goal_id)
+                on_answer = waiting.pop(0) if waiting else None
+                if on_answer is not None:
+                    ready.append((OWNER, lambda cb=on_answer, p=payload: cb(*p)))
+                continue
             entry = self._goals.get(goal_id)
             if entry is None:
                 continue
-            handle, on_accepted, on_feedback, on_result, action = entry
+            handle, on_accepted, on_feedback, on_result, on_status, action = entry
             if kind == "accepted":
+                handle.goal_id, handle.status = payload
                 ready.append((OWNER, lambda cb=on_accepted, h=handle: cb(h)))
+            elif kind == "rejected":
+                self._goals.pop(goal_id, None)
+                handle.status = "rejected"
+                ready.append((OWNER, lambda cb=on_accepted: cb(None)))
+            elif kind == "status":
+                handle.status = payload
+                if on_status is not None:
+                    ready.append((OWNER, lambda cb=on_status, s=payload: cb(s)))
             elif kind == "feedback":
                 feedback = trusted_from_values(action.Feedback)(payload)
                 ready.append((OWNER, lambda cb=on_feedback, f=feedback: cb(f)))
@@ -234,6 +268,8 @@ class ChildGraph(Graph):
                 handle.status = payload[0]
                 result = trusted_from_values(action.Result)(payload[1])
                 ready.append((OWNER, lambda cb=on_result, s=payload[0], r=result: cb(s, r)))
+        for goal_id, kind, payload in message.get("served", ()):
+            self._serve(goal_id, kind, payload)
         for req_id, name, fields in message.get("requests", ()):
             service = self.services.get(name)
             if service is None:
@@ -248,6 +284,39 @@ class ChildGraph(Graph):
             node = next((n for n in self.nodes if getattr(n, "wire_id", None) == node_id), None)
             if node is not None and node.parameter_setter is not None:
                 ready.append((OWNER, lambda n=node, k=name, v=value: self._set_parameter(n, k, v)))
+
+    def _serve(self, goal_id: int, kind: str, payload: Any) -> None:
+        """A goal for one of the controller's action servers, or a request to cancel one."""
+        def send(*event: Any) -> None:
+            self.out["served"].append(list(event))
+
+        if kind == "cancel":
+            handle = self._served.get(goal_id)
+            if handle is not None:
+                answer = lambda code, canceling: send(goal_id, "cancel", [code, canceling])  # noqa: E731
+                self.ready.append((OWNER, lambda: handle.request_cancel(answer)))
+            return
+        name, fields = payload
+        server = self.action_servers.get(name)
+        if server is None or server.owner == graph_mirror.MIRROR_OWNER:
+            return  # destroyed meanwhile: never answered, as in ROS
+
+        def finished(status: str, result: Any) -> None:
+            self._served.pop(goal_id, None)
+            send(goal_id, "result", [status, to_values(result)])
+
+        handle = GoalHandle(
+            server,
+            goal_id,
+            trusted_from_values(server.action_type.Goal)(fields),
+            on_feedback=lambda feedback: send(goal_id, "feedback", to_values(feedback)),
+            on_result=finished,
+            status="pending",
+            on_answer=lambda h: send(goal_id, "accept", h.status) if h else send(goal_id, "reject", None),
+            on_status=lambda status: send(goal_id, "status", status),
+        )
+        self._served[goal_id] = handle
+        self.ready.append((OWNER, lambda: server.on_goal(handle)))
 
     def _set_parameter(self, node: NodeRecord, name: str, value: Any) -> None:
         """``ros2 param set`` from the app; the parent checked the name and type,

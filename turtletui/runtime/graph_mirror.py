@@ -278,8 +278,8 @@ def _never(*_: Any) -> None:
 
 
 class Removed(NamedTuple):
-    """Child to parent: the child destroyed one of its services, clients or
-    action clients (nodes, publishers and subscriptions go by wire id)."""
+    """Child to parent: the child destroyed one of its services, clients,
+    action clients or action servers (nodes, publishers and subscriptions go by wire id)."""
 
     kind: str
     """One of :data:`REMOVABLE`."""
@@ -296,4 +296,4 @@ class Removed(NamedTuple):
         return cls(kind, node, name)
 
 
-REMOVABLE = ("service", "client", "action_client")
+REMOVABLE = ("service", "client", "action_client", "action_server")

@@ -23,7 +23,7 @@ from time import monotonic as _monotonic  # bound at import: an in-process run s
 from time import perf_counter as _perf_counter
 from typing import Any
 
-from turtletui.graph.core import GraphError, NodeRecord
+from turtletui.graph.core import GoalHandle, GraphError, NodeRecord
 from turtletui.graph.logs import ERROR, INFO, OUTPUT_SUFFIX, WARN
 from turtletui.interfaces import InterfaceError, from_values, get_interface, to_values
 from turtletui.runtime import forkserver, graph_mirror, wire
@@ -112,6 +112,8 @@ class SandboxHost:
         self._inbox: list = []
         self._responses: list = []
         self._goal_events: list = []
+        self._served_out: list = []
+        """Goals and cancel requests for the child's own action servers, to send."""
         self._requests: list = []
         self._params: list = []
         self._poll = False
@@ -120,6 +122,9 @@ class SandboxHost:
         self._nodes: dict[int, NodeRecord] = {}
         self._endpoints: dict[int, Any] = {}
         self._goals: dict[int, Any] = {}
+        self._served: dict[int, GoalHandle] = {}
+        """Goals of the child's action servers not finished yet, by goal id."""
+        self._cancel_decisions: dict[int, Any] = {}
         self._service_calls: dict[int, Any] = {}
         self._mirror: graph_mirror.GraphMirror | None = None
         """The graph as the child last heard of it."""
@@ -323,7 +328,7 @@ class SandboxHost:
             return False
         if self._awaiting is not None:
             return True  # real time: see whether the answer has come
-        if self._inbox or self._responses or self._goal_events or self._requests or self._params:
+        if self._inbox or self._responses or self._goal_events or self._served_out or self._requests or self._params:
             return True
         if self._poll or self.graph.version != self._mirrored_version:
             return True  # a change on the graph: a waiting node may be waiting for it
@@ -353,6 +358,9 @@ class SandboxHost:
             cause = CALLS
         if self._requests:
             message["requests"], self._requests = self._requests, []
+            cause = CALLS
+        if self._served_out:
+            message["served"], self._served_out = self._served_out, []
             cause = CALLS
         if self._params:
             message["params"], self._params = self._params, []
@@ -690,11 +698,18 @@ class SandboxHost:
                 lambda status, result, gid=goal_id: self._goal_events.append(
                     [gid, "result", [status, to_values(result)]]
                 ),
+                lambda status, gid=goal_id: self._goal_events.append([gid, "status", status]),
             )
         for goal_id in reply.get("cancel", ()):
             handle = self._goals.get(goal_id)
             if handle is not None:
-                graph.cancel_goal(handle)
+                graph.cancel_goal(
+                    handle,
+                    self.owner,
+                    lambda code, canceling, gid=goal_id: self._goal_events.append([gid, "cancel", [code, canceling]]),
+                )
+        for goal_id, kind, payload in reply.get("served", ()):
+            self._served_event(goal_id, kind, payload)
         for req_id, fields in reply.get("resp", ()):
             respond = self._service_calls.pop(req_id, None)
             if respond is not None:
@@ -745,6 +760,11 @@ class SandboxHost:
             if service is not None and service.node is node:
                 graph.remove_service(service)
             return
+        if removed.kind == "action_server":
+            server = graph.action_servers.get(removed.name)
+            if server is not None and server.node is node:
+                graph.remove_action_server(server)
+            return
         records = graph.clients if removed.kind == "client" else graph.action_clients
         record = next((r for r in records if r.node is node and r.name == removed.name), None)
         if record is None:
@@ -755,8 +775,50 @@ class SandboxHost:
             graph.remove_action_client(record)
 
     def _goal_accepted(self, goal_id: int, handle: Any) -> None:
+        if handle is None:
+            self._goal_events.append([goal_id, "rejected", None])
+            return
         self._goals[goal_id] = handle
-        self._goal_events.append([goal_id, "accepted", None])
+        self._goal_events.append([goal_id, "accepted", [handle.goal_id, handle.status]])
+
+    def _serve(self, handle: GoalHandle) -> None:
+        """A goal for one of the child's action servers: sent with the next exchange."""
+        goal_id = handle.goal_id
+        self._served[goal_id] = handle
+
+        def decide_cancel(decided: Any) -> None:
+            self._cancel_decisions[goal_id] = decided
+            self._served_out.append([goal_id, "cancel", None])
+
+        handle.decide_cancel = decide_cancel
+        self._served_out.append([goal_id, "goal", [handle.action.name, to_values(handle.goal)]])
+
+    def _served_event(self, goal_id: Any, kind: Any, payload: Any) -> None:
+        """What the child's action server did with one of its goals (checked: the child is untrusted)."""
+        handle = self._served.get(goal_id) if type(goal_id) is int else None
+        if handle is None:
+            return  # finished already, or never sent
+        action_type = handle.action.action_type
+        if kind == "accept" and payload in ("accepted", "executing"):
+            handle.accept(payload)
+        elif kind == "reject":
+            handle.reject()
+            del self._served[goal_id]
+        elif kind == "status" and payload in ("executing", "canceling"):
+            handle.set_status(payload)
+        elif kind == "feedback":
+            handle.publish_feedback(from_values(action_type.Feedback, payload))
+        elif kind == "result" and payload[0] in ("succeeded", "aborted", "canceled"):
+            handle.finish(payload[0], from_values(action_type.Result, payload[1]))
+            del self._served[goal_id]
+        elif kind == "cancel" and goal_id in self._cancel_decisions:
+            code, canceling = payload
+            if type(code) is not int or not 0 <= code <= 3:
+                raise ValueError(f"cancel answer with return code {str(code)[:20]}")
+            decided = self._cancel_decisions.pop(goal_id)
+            decided(True) if canceling is True else decided(False, code)
+        else:
+            raise ValueError(f"goal event {str(kind)[:20]} with {str(payload)[:100]}")
 
     def _declare(self, decl: list) -> None:
         graph = self.graph
@@ -798,6 +860,9 @@ class SandboxHost:
             graph.add_client(self._nodes[decl[1]], str(decl[2]), get_interface(decl[3]))
         elif kind == "aclient":
             graph.add_action_client(self._nodes[decl[1]], str(decl[2]), get_interface(decl[3]))
+        elif kind == "asrv":
+            _, node_id, name, type_name = decl
+            graph.add_action_server(self._nodes[node_id], str(name), get_interface(type_name), self._serve, answers=True)
         elif kind == "srv":
             _, node_id, name, type_name = decl
             srv_type = get_interface(type_name)

@@ -4,3 +4,4 @@ from turtletui.compat.action import (  # noqa: F401
     get_action_names_and_types,
     get_action_server_names_and_types_by_node,
 )
+from turtletui.compat.action_server import ActionServer, CancelResponse, GoalResponse  # noqa: F401
