@@ -117,6 +117,21 @@ def test_pen_colour_by_side_and_calls_per_side_change():
     assert not verdict.passed and "same colour" in verdict.measured
 
 
+def test_pen_colour_by_side_counts_only_where_the_turtle_drew():
+    # It waits at its start with turtlesim's pen (its node has not yet
+    # discovered turtlesim) for 10 of the 60 poses on the right: nothing drawn.
+    red, green, default = (255, 0, 0), (0, 255, 0), (179, 184, 255)
+    path = [(9.0, 5.0, 0.0, default)] * 10 + [(x, 5.0, 0.0, red if x > 5.5 else green) for x in np.linspace(9, 2, 100)]
+    verdict = judge("pen_colour_by_side", trace(path))
+    assert verdict.passed and "right (255, 0, 0) on 100% of poses" in verdict.measured
+    # but while it drives, the pen it draws with counts
+    late = [(x, 5.0, 0.0, default if x > 8.0 else red if x > 5.5 else green) for x in np.linspace(9, 2, 100)]
+    verdict = judge("pen_colour_by_side", trace(late))
+    assert not verdict.passed and "right (255, 0, 0) on 69% of poses" in verdict.measured
+    standing = judge("pen_colour_by_side", trace([(9.0, 5.0, 0.0, red)] * 10 + [(4.0, 5.0, 0.0, green)] * 2))
+    assert not standing.passed and "never drove on the right side" in standing.measured
+
+
 def log(msg, node="my_node", t=0.0):
     return LogRecord(0, t, INFO, node, msg)
 

@@ -62,7 +62,8 @@ def calls_per_side_change(trace: Trace, th: Mapping[str, Any]) -> Verdict:
 @check(
     "pen_colour_by_side",
     "The pen draws one colour right of x = `split_x` and another left of it (`right` and "
-    "`left` optionally name them); `min` is the fraction of poses that must agree (default 0.95).",
+    "`left` optionally name them); `min` is the fraction of the poses where the turtle moved "
+    "(drew) that must agree (default 0.95).",
     {**TURTLE, "split_x": "number", "margin": "number", "right": "colour", "left": "colour", "min": "number"},
 )
 def pen_colour_by_side(trace: Trace, th: Mapping[str, Any]) -> Verdict:
@@ -70,11 +71,16 @@ def pen_colour_by_side(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     split = th.get("split_x", 5.5)
     margin = th.get("margin", 0.3)  # a service answer takes a moment near the line
     need = th.get("min", 0.95)
-    colours = poses[:, 5:8].astype(int) if len(poses) else np.empty((0, 3), int)
+    # Only where it moved: a turtle standing still draws nothing, and one
+    # waits at its start until the node has discovered turtlesim and set a pen.
+    drew = np.zeros(len(poses), dtype=bool)
+    drew[1:] = (np.diff(poses[:, 1:3], axis=0) != 0).any(axis=1)
+    poses = poses[drew]
+    colours = poses[:, 5:8].astype(int)
     found: dict[str, tuple[int, int, int]] = {}
     shares: dict[str, float] = {}
     for side, mask in (("right", poses[:, 1] > split + margin), ("left", poses[:, 1] < split - margin)):
-        side_colours = [tuple(c) for c in colours[mask].tolist()] if len(poses) else []
+        side_colours = [tuple(c) for c in colours[mask].tolist()]
         if not side_colours:
             return Verdict(False, f"the turtle never drove on the {side} side of x = {split}")
         wanted = tuple(th[side]) if side in th else max(set(side_colours), key=side_colours.count)
