@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
 from support.lessons import SOLUTIONS, failed_checks, feedback_of
 
 LESSON = "part4-open-loop-circle"
@@ -22,12 +23,21 @@ def test_a_smaller_clockwise_circle_published_faster_passes_too(grade):
     assert result.score == result.max_score
 
 
-def test_publishing_once_fails_the_keep_moving_check(grade):
-    result = grade(LESSON, HERE / "publish_once.py")
+@pytest.mark.parametrize(
+    ("solution", "driving"),
+    [
+        # from __init__, before turtlesim discovered the publisher: lost
+        ("publish_once.py", 0),
+        # once turtlesim subscribes: 1 s of a 15 s run
+        ("publish_once_when_matched.py", 7),
+    ],
+)
+def test_publishing_once_fails_the_keep_moving_check(grade, solution, driving):
+    result = grade(LESSON, HERE / solution)
     assert {"time_moving", "circle"} <= failed_checks(result)
     text = feedback_of(result, "time_moving")[0]
     assert "1 s after the last velocity command" in text
-    assert "driving 6% of the run (needs >= 80%; turning in place does not count)" in text
+    assert f"driving {driving}% of the run (needs >= 80%; turning in place does not count)" in text
 
 
 def test_a_timer_slower_than_the_command_timeout_fails_only_the_keep_moving_check(grade):

@@ -1,5 +1,6 @@
-"""Wrong: publishes one Twist from __init__ and no more. turtlesim stops the
-turtle 1 s after the last command: it draws a short arc and stands still."""
+"""Wrong: publishes one Twist from __init__, right after create_publisher, and
+no more. turtlesim has not discovered the publisher yet, so the message is
+lost, as on a real robot: the turtle never moves."""
 import rclpy
 from geometry_msgs.msg import Twist
 from rclpy.node import Node
