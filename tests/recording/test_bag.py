@@ -11,7 +11,7 @@ import pytest
 from rosbags.highlevel import AnyReader
 from rosbags.typesys import Stores, get_typestore
 
-from turtletui.graph.core import NS_PER_S
+from turtletui.graph.core import DISCOVERY_NS, NS_PER_S
 from turtletui.interfaces.geometry_msgs import Twist
 from turtletui.recording.bag import BagError, BagPlayback, BagRecording, bag_info, default_bag_name
 from turtletui.runtime.simulation import Simulation
@@ -127,9 +127,10 @@ def test_rate_plays_faster_and_topics_choose_what_is_played(subset):
     bag, _ = subset
     sim = Simulation()
     commands = received(sim, "/turtle1/cmd_vel", Twist)
+    sim.run_until(DISCOVERY_NS)  # the listener is discovered: it hears the first message too
     playback = BagPlayback(sim, bag, rate=2.0, topics=["/turtle1/cmd_vel"])
     assert playback.messages == 30
-    sim.run_until(2 * NS_PER_S)
+    sim.run_until(DISCOVERY_NS + 2 * NS_PER_S)
     assert playback.done and len(commands) == 30
     # recorded every 100 ms: played every 50 ms
     assert {b - a for a, b in zip(commands, commands[1:], strict=False)} == {50_000_000}
