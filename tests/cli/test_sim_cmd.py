@@ -17,6 +17,7 @@ from support.web_driver import run_app_and_quit
 from textual.widgets import Input
 
 import turtletui
+from turtletui.graph.core import DISCOVERY_NS
 from turtletui.runtime.turtlesim_args import parse_turtlesim_args
 from turtletui.tui.app import TurtleApp
 
@@ -113,6 +114,9 @@ async def test_the_app_runs_turtlesim_alone_driven_by_keys_and_ros2_commands() -
         assert sim.world.background == (0, 86, 255)
         turtle = sim.world.turtles["turtle1"]
         start = turtle.x
+        # as for turtle_teleop_key on a robot, a key pressed before turtlesim
+        # has discovered teleop would be lost
+        await wait_for(pilot, lambda: sim.graph.now_ns >= DISCOVERY_NS)
         await pilot.press("up")  # turtle_teleop_key: one Twist of linear.x 2.0
         await wait_for(pilot, lambda: turtle.x > start + 0.5)
         # holonomic:=true: a sideways command moves the turtle sideways.

@@ -8,6 +8,7 @@ import textwrap
 import time
 from pathlib import Path
 
+from turtletui.graph.core import DISCOVERY_NS
 from turtletui.runtime.loader import ControllerSpec
 from turtletui.tui.session import LiveSession
 
@@ -41,6 +42,12 @@ def run_until(session: LiveSession, condition, timeout: float = 20.0) -> None:
         assert time.monotonic() < deadline, "timed out"
         session.advance(time.monotonic())
         time.sleep(0.01)
+
+
+def discovered(session: LiveSession) -> None:
+    """Run until turtlesim has discovered teleop: a key pressed before is lost,
+    as it is for turtle_teleop_key on a robot."""
+    run_until(session, lambda: session.sim.graph.now_ns >= DISCOVERY_NS)
 
 
 def test_controllers_in_the_app_have_no_cpu_cap_and_every_log_line_arrives(tmp_path: Path) -> None:
@@ -103,6 +110,7 @@ def test_a_new_world_starts_the_simulation_again_with_the_controllers_as_they_we
     args = parse_turtlesim_args(["-p", "background_r:=0", "-r", "__node:=my_sim"])
     session = LiveSession([ControllerSpec("one", path=path), ControllerSpec("two", path=path)], turtlesim=args)
     try:
+        discovered(session)
         session.teleop.drive(1.0)
         run_until(session, lambda: session.sim.world.turtles["turtle1"].distance > 0.5)
         first, second = session.slots
@@ -114,6 +122,7 @@ def test_a_new_world_starts_the_simulation_again_with_the_controllers_as_they_we
         assert session.t == 0.0 and sim.world.obstacles and sim.world.turtles["turtle1"].distance == 0.0
         assert sim.world.background[0] == 0 and any(n.fqn == "/my_sim" for n in sim.graph.nodes)  # its --ros-args
         assert first.host is None and second.host is not None and second.status == "running"
+        discovered(session)
         session.teleop.drive(1.0)  # teleop drives the new turtle
         run_until(session, lambda: sim.world.turtles["turtle1"].distance > 0.5)
         assert any("starts again in the world lidar-course" in r.msg for r in session.logs)
