@@ -6,6 +6,7 @@ import math
 import textwrap
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from turtletui.grading.engine import (
@@ -345,6 +346,30 @@ def test_a_twin_run_starts_elsewhere_with_the_same_seed(tmp_path):
     turning = "self.pub.publish(Twist(angular=__import__('geometry_msgs.msg').msg.Vector3(z=pose.x)))"
     ((_, test),) = grade_run(plan, 0, [driver(tmp_path, turning, name="turning.py")]).tests
     assert test.passed and "differed from t=0.064 s" in test.output
+
+
+EAGER = DRIVER.replace(
+    '        self.create_subscription(Pose, "/turtle1/pose", self.on_pose, 10)',
+    '        self.create_subscription(Pose, "/turtle1/pose", self.on_pose, 10)\n'
+    "        self.pub.publish(Twist())  # before turtlesim has discovered it: lost",
+)
+
+
+def test_the_trace_leaves_out_commands_lost_before_discovery_in_both_hosts(tmp_path):
+    from turtletui.grading.engine import run_scenario
+
+    path = tmp_path / "eager.py"
+    path.write_text(EAGER.replace("{body}", "pass"))
+    plan = prepare(load_lesson(lesson(tmp_path, SCENARIOS + CHECKS)))
+    commands = []
+    for trusted in (True, False):
+        trace, _ = run_scenario(plan, plan.runs[0], [ControllerSpec(name="eager", path=path, trusted=trusted)])
+        commands.append(trace.command_array())
+    in_process, sandboxed = commands
+    # the first command the trace (and turtlesim) has is the one sent on the
+    # first pose heard, at 64 ms; the one of t=0 reached no one
+    assert in_process[0].tolist() == [0.064, 2.0, 0.0, 0.0]
+    assert np.array_equal(in_process, sandboxed)
 
 
 def test_a_crash_is_still_reported_by_a_no_crash_that_requires_other_checks(tmp_path):

@@ -317,7 +317,9 @@ class Graph:
         self.taps: list[Callable[[str, Any], None]] = []
         """Observers of everything: ``tap(kind, payload)`` with kind "topic"
         (topic, msg), "service" (name, request, response), "goal" (action name,
-        goal) or "log" (record); a tap ignores kinds it does not know."""
+        goal) or "log" (record); a tap ignores kinds it does not know. Like
+        another process, a tap does not see what a publisher no one has
+        discovered yet sends (see ``discovery_ns``)."""
         self.record_everything = False
         """Whether a tap wants messages nobody subscribes to (turtlesim then
         publishes its colour sensor anyway): set while a run is recorded."""
@@ -592,7 +594,7 @@ class Graph:
                 if ready is None:
                     ready = self.ready
                 ready.append(sub.ready_item)
-        if self.taps:
+        if self.taps and not young:  # as a sandboxed host forwards nothing from it (child.py)
             for tap in self.taps:
                 tap("topic", (topic, msg))
 
