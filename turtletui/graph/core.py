@@ -577,12 +577,13 @@ class Graph:
         age decides), except those owned by ``source`` (a sandboxed host already
         delivered to its own subscribers)."""
         now = self.now_ns
-        topic.count += 1
-        topic.last = msg
-        topic._stamps.append(now)
         settled = now - self.discovery_ns  # endpoints made by then: discovered by all
         owner = source if publisher is None else publisher.owner
         young = publisher is not None and publisher.created_ns > settled
+        if not young:  # others count only what reaches them (a sandboxed host forwards nothing young)
+            topic.count += 1
+            topic.last = msg
+            topic._stamps.append(now)
         ready = None
         for sub in topic.subscriptions:
             if sub.owner == source or (sub.owner != owner and (young or sub.created_ns > settled)):
@@ -594,7 +595,7 @@ class Graph:
                 if ready is None:
                     ready = self.ready
                 ready.append(sub.ready_item)
-        if self.taps and not young:  # as a sandboxed host forwards nothing from it (child.py)
+        if self.taps and not young:
             for tap in self.taps:
                 tap("topic", (topic, msg))
 
