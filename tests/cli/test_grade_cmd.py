@@ -58,6 +58,20 @@ def test_exit_status_is_0_whatever_the_scores_and_1_below_fail_under(klass: Path
     assert grade_class(klass, lesson, "--format", "csv", "--fail-under", "1").exit_code == 0
 
 
+def test_distro_reaches_every_worker_and_results_of_another_distro_are_not_reused(klass: Path, lesson: Path):
+    # ann and ben import turtlesim.msg, which Kilted no longer has (turtlesim_msgs)
+    before = dict(os.environ)
+    jazzy = grade_class(klass, lesson, "--format", "csv", "--distro", "jazzy")
+    assert jazzy.exit_code == 0, jazzy.stderr
+    assert "ann,3,3," in jazzy.stdout
+    kilted = grade_class(klass, lesson, "--format", "csv", "--distro", "kilted")
+    assert kilted.exit_code == 0, kilted.stderr
+    assert "ann,0,3,0,0," in kilted.stdout  # crashed at import: no check passes
+    assert dict(os.environ) == before  # an option, not a change to the grader's environment
+    again = grade_class(klass, lesson, "--format", "csv", "--distro", "jazzy")
+    assert again.stdout == jazzy.stdout
+
+
 def test_an_internal_error_is_status_3_with_one_line_and_the_details_in_a_file(
     klass: Path, lesson: Path, monkeypatch: pytest.MonkeyPatch
 ):

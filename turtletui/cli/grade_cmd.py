@@ -125,11 +125,10 @@ def grade(
 
     check_report_options(fmt, roster, hidden_tests)
     if distro is not None:
-        from turtletui.compat.distro import ENV_VAR, check_distro
+        from turtletui.compat.distro import check_distro
 
         try:
-            # through the environment, so that every grading worker sees it
-            os.environ[ENV_VAR] = check_distro(distro)
+            distro = check_distro(distro)
         except ValueError as err:
             fail(f"--distro: {err}")
     from turtletui.grading.engine import RECORDING_FORMATS
@@ -164,6 +163,7 @@ def grade(
             shard,
             backend,
             address,
+            distro,
         )
         write_output(report, fmt, output, options)
     except KeyboardInterrupt:
@@ -214,6 +214,7 @@ def _grade(
     shard_text,
     backend_name,
     address,
+    distro,
 ):
     from contextlib import nullcontext
     from dataclasses import replace
@@ -238,7 +239,7 @@ def _grade(
     plugins = plugins_of(plugins)
     shard = parse_shard(shard_text) if shard_text else WHOLE_CLASS
     lesson = find_lesson(lesson_id, folders, plugins)
-    plan = prepare(lesson, plugins=plugins)
+    plan = prepare(lesson, plugins=plugins, distro=distro)
     single = fmt in SINGLE_SUBMISSION_FORMATS
     found = find_submissions(
         list(submissions),

@@ -123,7 +123,12 @@ def default_jobs() -> int:
 
 
 def _init_worker(
-    lesson_path: str, plugins: Sequence[str], limits: Limits | None, parent: int | None = None, next_cpu: Any = None
+    lesson_path: str,
+    plugins: Sequence[str],
+    limits: Limits | None,
+    distro: str | None,
+    parent: int | None = None,
+    next_cpu: Any = None,
 ) -> None:
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent handles Ctrl-C
     # A grader killed outright (SIGKILL) must not leave its workers waiting for
@@ -140,7 +145,7 @@ def _init_worker(
         os._exit(1)  # it died before the line above
     if next_cpu is not None:
         _pin_to_one_cpu(next_cpu)
-    set_up_worker(lesson_path, plugins, limits, shared_cpus=next_cpu is not None)
+    set_up_worker(lesson_path, plugins, limits, shared_cpus=next_cpu is not None, distro=distro)
 
 
 @contextmanager
@@ -156,22 +161,28 @@ def _as_worker(plan: GradingPlan, limits: Limits | None) -> Iterator[None]:
 
 
 def set_up_worker(
-    lesson_path: str, plugins: Sequence[str | Path], limits: Limits | None, *, shared_cpus: bool = False
+    lesson_path: str,
+    plugins: Sequence[str | Path],
+    limits: Limits | None,
+    *,
+    shared_cpus: bool = False,
+    distro: str | None = None,
 ) -> GradingPlan:
     """Make this process ready to :func:`run_task` the runs of a lesson (a
     worker of the local pool, or of a cluster): its plan (kept while the
-    lesson file is the same), the sandbox's limits, fork servers.
-    ``shared_cpus``: more runs than pairs of CPUs run side by side."""
+    lesson file and ``distro``, the grader's choice, are the same), the
+    sandbox's limits, fork servers. ``shared_cpus``: more runs than pairs of
+    CPUs run side by side."""
     global _worker
     limits = limits or Limits()
     if shared_cpus:
         # A reader polling for its child's answer would take the CPU that child needs.
         limits = replace(limits, spin_seconds=0.0)
     forkserver.enable()
-    if _worker is not None and str(_worker.plan.lesson.path) == lesson_path:
+    if _worker is not None and str(_worker.plan.lesson.path) == lesson_path and _worker.plan.distro == distro:
         plan = _worker.plan
     else:
-        plan = prepare(load_lesson(lesson_path), plugins=plugins)
+        plan = prepare(load_lesson(lesson_path), plugins=plugins, distro=distro)
     _worker = WorkerSetup(plan, limits)
     return plan
 
@@ -501,7 +512,7 @@ def _run_pool(
         mp_context=context,
         initializer=_init_worker,
         # a worker started afresh (no fork) builds its own plugin manager once, from these
-        initargs=(str(plan.lesson.path), extra_paths(plugins), limits, os.getpid(), next_cpu),
+        initargs=(str(plan.lesson.path), extra_paths(plugins), limits, plan.distro, os.getpid(), next_cpu),
     )
     lost: list[tuple[Any, ...]] = []
     try:

@@ -83,6 +83,9 @@ class GradingPlan:
     runs: tuple[ScenarioRun, ...]
     worlds: dict[str, Callable[[int], World | None]] = field(default_factory=dict)
     """Scenario world name -> builder of a fresh World for a seed (None: turtlesim's own)."""
+    distro: str | None = None
+    """The grader's choice (``grade --distro``); None: ``$TURTLETUI_DISTRO``, else
+    the lesson's, else what the files import."""
 
     @property
     def max_score(self) -> float:
@@ -205,10 +208,11 @@ def available_checks(plugins: Plugins = ()) -> dict[str, Check]:
 
 
 def prepare(
-    lesson: Lesson, *, plugins: Plugins = (), checks: dict[str, Check] | None = None
+    lesson: Lesson, *, plugins: Plugins = (), checks: dict[str, Check] | None = None, distro: str | None = None
 ) -> GradingPlan:
     """Check that every check a lesson names exists and takes its thresholds,
-    and lay out its scenario runs."""
+    and lay out its scenario runs; ``distro`` overrides the lesson's (a known
+    name: see turtletui.compat.distro.check_distro)."""
     shown = display_path(lesson.path)
     if not lesson.scenarios:
         raise GradingError(f"{shown}: lesson {lesson.id!r} has no [[scenarios]] to grade")
@@ -218,7 +222,14 @@ def prepare(
     resolved, specs = validate(lesson, plugins=plugins, checks=checks)
     worlds = {name: (lambda seed: None) if spec is None else spec.build for name, spec in specs.items()}
     runs = scenario_runs(lesson, lambda name: () if specs[name] is None else specs[name].obstacles)
-    return GradingPlan(lesson, resolved, tuple(runs), worlds)
+    return GradingPlan(lesson, resolved, tuple(runs), worlds, distro)
+
+
+def _distro(plan: GradingPlan) -> str | None:
+    """The distro of the plan's runs; None: the files' imports choose (turtletui.api.run)."""
+    if plan.distro is not None:
+        return plan.distro
+    return None if plan.lesson.distro is None else resolve_distro(None, plan.lesson.distro)
 
 
 def validate(
@@ -343,8 +354,7 @@ def run_scenario(
             keep_calls=False,
             world=plan.worlds[world_name](run.seed),
             on_log=start_logs.append if record is not None else None,
-            # a lesson without a distro: the files' imports choose (turtletui.api.run)
-            distro=None if plan.lesson.distro is None else resolve_distro(None, plan.lesson.distro),
+            distro=_distro(plan),
         )
         if result.interrupted:
             raise KeyboardInterrupt

@@ -76,6 +76,8 @@ class LessonBundle:
     key: str
     """The driver's :func:`~turtletui.grading.store.store_key` of the plan."""
     version: str
+    distro: str | None = None
+    """The grader's ``--distro`` (None: the lesson's, else the files' imports)."""
 
 
 @dataclass(frozen=True)
@@ -231,6 +233,7 @@ class RayBackend:
             plugins=tuple(plugins),
             key=store_key(plan, plugins=self.plugins),
             version=__version__,
+            distro=plan.distro,
         )
 
     @staticmethod
@@ -336,7 +339,11 @@ def _set_up(lesson: LessonBundle, limits: Limits) -> None:
     worlds = folder / "cwd"
     with _working_folder(worlds if worlds.is_dir() else None, None):
         plan = batch.set_up_worker(
-            str(folder / lesson.lesson), [str(folder / p) for p in lesson.plugins], limits, shared_cpus=True
+            str(folder / lesson.lesson),
+            [str(folder / p) for p in lesson.plugins],
+            limits,
+            shared_cpus=True,
+            distro=lesson.distro,
         )
     if name not in _lesson_keys:
         _lesson_keys[name] = store_key(plan, plugins=[folder / p for p in lesson.plugins])

@@ -171,7 +171,8 @@ class ClassManifest:
 
 def grading_conditions(plan: GradingPlan, limits: Any = None, time_limit: float | None = None) -> dict[str, Any]:
     """The parts of a results key a person can compare: turtletui's version,
-    the lesson file's digest, the sandbox's limits and the time limit."""
+    the lesson file's digest, the sandbox's limits, the time limit and the
+    distro the grader chose."""
     from turtletui import __version__
 
     return {
@@ -179,6 +180,7 @@ def grading_conditions(plan: GradingPlan, limits: Any = None, time_limit: float 
         "lesson file": hashlib.sha256(plan.lesson.path.read_bytes()).hexdigest()[:16],
         "limits": _plain(limits),
         "time limit": time_limit,
+        "distro": plan.distro,
     }
 
 

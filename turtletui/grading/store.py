@@ -142,7 +142,7 @@ def checkout_of(path: Path) -> Path:
 def store_key(plan: GradingPlan, *, plugins: Plugins = (), limits: Any = None) -> str:
     """What a stored result depends on besides the student's files: the lesson
     file, the code and thresholds of its checks, the plugins, the sandbox's
-    limits and turtletui's version."""
+    limits, the distro the grader chose and turtletui's version."""
     from turtletui import __version__
 
     digest = hashlib.sha256(__version__.encode())
@@ -153,6 +153,7 @@ def store_key(plan: GradingPlan, *, plugins: Plugins = (), limits: Any = None) -
     for plugin in extra_paths(plugins):
         digest.update(_files_of(Path(plugin)))
     digest.update(repr(limits).encode())
+    digest.update(repr(plan.distro).encode())
     return f"{plan.lesson.id}:{digest.hexdigest()[:32]}"
 
 
