@@ -141,3 +141,89 @@ def test_two_programs_discover_each_other_after_the_delay(tmp_path):
     # sent every 20 ms; those of 20 and 40 ms went before discovery (50 ms)
     assert node_logs(result, "listener") == ["3 4 5 from 1"]
     assert node_logs(result, "talker") == ["subscribers 1"]
+
+
+def test_a_call_before_the_service_is_discovered_is_never_answered_and_the_log_says_why(controller_host):
+    # Real rclpy (Kilted, Fast DDS): call_async right after create_client, to a
+    # server in another process, was not answered within 3 s, every time.
+    result = controller_host.run(
+        """
+import rclpy
+from rclpy.node import Node
+from turtlesim.srv import Spawn
+
+def main():
+    rclpy.init()
+    node = Node("eager_client")
+    client = node.create_client(Spawn, "/spawn")
+    node.get_logger().info(f"ready at once: {client.service_is_ready()}")
+    lost = client.call_async(Spawn.Request(x=2.0, y=2.0, name="lost"))
+    rclpy.spin_until_future_complete(node, lost, timeout_sec=1.0)
+    node.get_logger().info(f"first call answered: {lost.done()}")
+    client.wait_for_service()
+    found = client.call_async(Spawn.Request(x=3.0, y=3.0, name="found"))
+    rclpy.spin_until_future_complete(node, found, timeout_sec=1.0)
+    node.get_logger().info(f"second call answered: {found.result().name}")
+    rclpy.shutdown()
+""",
+        duration=2.0,
+    )
+    assert result.ok, result.crashes
+    assert node_logs(result, "eager_client") == [
+        "ready at once: False",
+        "first call answered: False",
+        "second call answered: found",
+    ]
+    assert set(result.turtles) == {"turtle1", "found"}
+    notes = [r.msg for r in result.logs if r.node == "turtletui" and "discovered the service" in r.msg]
+    assert len(notes) == 1 and "wait_for_service()" in notes[0]
+
+
+def test_wait_for_service_returns_once_discovered(controller_host):
+    result = controller_host.run(
+        """
+import rclpy
+from rclpy.node import Node
+from std_srvs.srv import Empty
+
+def main():
+    rclpy.init()
+    node = Node("patient_client")
+    client = node.create_client(Empty, "/clear")
+    while not client.wait_for_service(timeout_sec=0.01):
+        node.get_logger().info("waiting")
+    node.get_logger().info(f"ready at {node.get_clock().now().nanoseconds - 1_700_000_000 * 10**9} ns")
+    rclpy.shutdown()
+""",
+        duration=1.0,
+    )
+    assert result.ok, result.crashes
+    assert node_logs(result, "patient_client") == ["waiting"] * 4 + [f"ready at {DISCOVERY_NS} ns"]
+
+
+def test_a_service_of_the_same_program_is_ready_at_once(controller_host):
+    result = controller_host.run(
+        """
+import rclpy
+from rclpy.node import Node
+from std_srvs.srv import Trigger
+
+def main():
+    rclpy.init()
+    server = Node("server")
+    server.create_service(Trigger, "/ping", lambda request, response: Trigger.Response(success=True, message="pong"))
+    caller = Node("caller")
+    client = caller.create_client(Trigger, "/ping")
+    caller.get_logger().info(f"ready at once: {client.service_is_ready()}")
+    future = client.call_async(Trigger.Request())
+    executor = rclpy.executors.SingleThreadedExecutor()
+    executor.add_node(server)
+    executor.add_node(caller)
+    executor.spin_until_future_complete(future, timeout_sec=1.0)
+    caller.get_logger().info(future.result().message)
+    rclpy.shutdown()
+""",
+        duration=1.0,
+    )
+    assert result.ok, result.crashes
+    assert node_logs(result, "caller") == ["ready at once: True", "pong"]

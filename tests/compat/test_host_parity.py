@@ -376,14 +376,14 @@ def test_waiting_for_turtlesims_services_and_subscriptions(controller_host):
     assert result.ok, result.crashes
     logs = [(round(r.t, 3), r.msg) for r in result.logs if r.node == "waiter"]
     assert logs == [
-        (0.0, "spawn ready"),
-        (0.5, "t2 pen ready False"),
-        (0.5, "t2 subscribers 0 0"),
+        (0.05, "spawn ready"),  # discovery takes 50 ms (tests/compat/test_discovery.py)
+        (0.55, "t2 pen ready False"),
+        (0.55, "t2 subscribers 0 0"),
         # turtlesim's new subscription is discovered 50 ms after the spawn; the
         # loop's spin_once(timeout_sec=0.1) then returns at its timeout
-        (0.6, "t2 subscribed, spawned True t2"),
-        (0.6, "t2 pen ready True"),
-        (0.6, "t2 pose publishers 1"),
+        (0.65, "t2 subscribed, spawned True t2"),
+        (0.65, "t2 pen ready True"),
+        (0.65, "t2 pose publishers 1"),
     ]
     assert result.turtles["t2"].distance > 0.5
 

@@ -35,7 +35,9 @@ def test_calling_from_every_pose_fails_the_calls_check_only(grade):
 def test_forgetting_to_store_the_side_floods_the_service_and_keeps_one_colour(grade):
     result = grade(LESSON, HERE / "forgets_previous_x.py")
     assert failed_checks(result) == {"calls_per_side_change", "pen_colour_by_side"}
-    assert "the same colour on both sides" in feedback_of(result, "pen_colour_by_side")[0]
+    # (each flooded call makes a new client that waits for discovery, 50 ms:
+    # from the centre the slowed node never reaches the left side)
+    assert any("the same colour on both sides" in text for text in feedback_of(result, "pen_colour_by_side"))
 
 
 def test_the_same_colour_on_both_sides_fails_the_colour_check_only(grade):

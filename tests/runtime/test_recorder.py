@@ -154,6 +154,7 @@ def test_non_finite_floats_are_strings_and_the_file_stays_strict_json(tmp_path):
             rclpy.init()
             node = Node("weird")
             pub = node.create_publisher(Float64, "/weird", 10)
+            rclpy.spin_once(node, timeout_sec=0.1)  # discovered (by the recorder too) after 50 ms
             for value in (float("inf"), float("-inf"), float("nan"), 1.5):
                 pub.publish(Float64(data=value))
             node.get_logger().info("sent")

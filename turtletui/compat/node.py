@@ -157,6 +157,12 @@ _UNDISCOVERED = (
     "or wait until publisher.get_subscription_count() > 0 before the first message."
 )
 
+_UNDISCOVERED_SERVICE = (
+    "{node} called {service} before it had discovered the service's server, so the request was lost "
+    "and will never be answered: ROS 2 nodes take a moment to discover each other, here and on a real "
+    "robot. Wait with client.wait_for_service() before the first call."
+)
+
 _FIX_INSIDE = (
     "Use call_async() (await it in an async def callback, or add_done_callback()), or give the client "
     "(and the service) a callback group of its own (ReentrantCallbackGroup) and spin the node with a "
@@ -255,6 +261,7 @@ class Client(Destroyable):
         self.srv_type = record.srv_type
         self.srv_name = record.name
         self.callback_group = callback_group
+        self._told_undiscovered = False
 
     def call_async(self, request: Any) -> Future:
         """Send ``request``; the Future completes when the response arrives
@@ -267,8 +274,18 @@ class Client(Destroyable):
             )
         future = Future()
         host = self._node.context.host
-        host.graph.call(self.srv_name, request, dispatcher(host, self.callback_group, future.set_result), host.owner)
+        graph = host.graph
+        if self.srv_name in graph.services and not graph.service_matched(self._record):
+            self._tell_request_lost()  # and never answered, as in ROS 2
+            return future
+        graph.call(self.srv_name, request, dispatcher(host, self.callback_group, future.set_result), host.owner)
         return future
+
+    def _tell_request_lost(self) -> None:
+        if not self._told_undiscovered:
+            self._told_undiscovered = True
+            node = self._node.get_fully_qualified_name()
+            self._node._graph.log("turtletui", WARN, _UNDISCOVERED_SERVICE.format(node=node, service=self.srv_name))
 
     def call(self, request: Any, timeout_sec: float | None = None) -> Any:
         """Call and wait for the response; TimeoutError after ``timeout_sec``.
@@ -322,17 +339,31 @@ class Client(Destroyable):
         return ""
 
     def service_is_ready(self) -> bool:
+        """Whether the service's server exists and this client has discovered it."""
         self._require_alive()
-        return self._node._graph.has_service(self.srv_name)
+        return self._node._graph.service_matched(self._record)
 
     def wait_for_service(self, timeout_sec: float | None = None) -> bool:
-        """Wait (in simulated time) until the service exists; False on timeout."""
-        if self.service_is_ready():
-            return True
+        """Wait (in simulated time) until the server exists and this client has
+        discovered it, as a graph event wakes rclpy's wait; False on timeout."""
         host = self._node.context.host
-        return host.spin_until(
-            self.service_is_ready, None if timeout_sec is None else int(timeout_sec * _NS), callbacks=False
-        )
+        graph = self._node._graph
+        deadline = None if timeout_sec is None else graph.now_ns + int(timeout_sec * _NS)
+        while not self.service_is_ready():
+            if not host.running:
+                # the program is on its way out (as sleeps, this returns at once): a
+                # wait in a loop must not keep it waiting for a discovery that never comes
+                return self.srv_name in graph.services
+            left = None if deadline is None else deadline - graph.now_ns
+            if left is not None and left <= 0:
+                return False
+            service = graph.services.get(self.srv_name)
+            if service is None:
+                host.spin_until(lambda: self.srv_name in graph.services, left, callbacks=False)
+            else:  # found: discovered at a known instant, with or without other events before it
+                found = max(service.created_ns, self._record.created_ns) + graph.discovery_ns - graph.now_ns
+                host.spin_until(self.service_is_ready, found if left is None else min(found, left), callbacks=False)
+        return True
 
     def destroy(self) -> None:
         self._node.destroy_client(self)

@@ -169,6 +169,8 @@ class Service:
     type_name: str
     handler: Callable[[Any, Callable[[Any], None]], None]
     owner: str
+    created_ns: int = 0
+    """When it was made, in simulated ns (for discovery: Graph.discovery_ns)."""
 
 
 @dataclass(eq=False)
@@ -178,6 +180,8 @@ class ServiceClient:
     srv_type: type
     type_name: str
     owner: str
+    created_ns: int = 0
+    """When it was made, in simulated ns (for discovery: Graph.discovery_ns)."""
 
 
 CANCEL_ACCEPTED, CANCEL_REJECTED, CANCEL_TERMINATED = 0, 1, 3
@@ -646,7 +650,7 @@ class Graph:
         self.version += 1
         if name in self.services:
             raise GraphError(f"service {name} is already provided by {self.services[name].node.fqn}")
-        service = Service(node, name, srv_type, self._type_name(srv_type), handler, node.owner)
+        service = Service(node, name, srv_type, self._type_name(srv_type), handler, node.owner, self.now_ns)
         self.services[name] = service
         return service
 
@@ -667,6 +671,16 @@ class Graph:
         """Every service with a server, with its type, sorted by name."""
         return sorted((name, [s.type_name]) for name, s in self.services.items())
 
+    def service_matched(self, client: ServiceClient) -> bool:
+        """Whether ``client`` has discovered the server of its service (and the
+        server the client): requests sent before that are lost, as in ROS 2."""
+        service = self.services.get(client.name)
+        if service is None:
+            return False
+        return service.owner == client.owner or (
+            max(service.created_ns, client.created_ns) + self.discovery_ns <= self.now_ns
+        )
+
     def count_services(self, name: str) -> int:
         return 1 if name in self.services else 0
 
@@ -675,7 +689,7 @@ class Graph:
 
     def add_client(self, node: NodeRecord, name: str, srv_type: type) -> ServiceClient:
         self.version += 1
-        client = ServiceClient(node, name, srv_type, self._type_name(srv_type), node.owner)
+        client = ServiceClient(node, name, srv_type, self._type_name(srv_type), node.owner, self.now_ns)
         self.clients.append(client)
         return client
 

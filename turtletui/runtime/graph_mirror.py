@@ -99,6 +99,8 @@ class MirrorRecord(NamedTuple):
     """Index into GraphMirror.nodes."""
     name: str
     type_name: str
+    created_ns: int = 0
+    """When it was made (services: for discovery, Graph.discovery_ns)."""
 
 
 class GraphMirror(NamedTuple):
@@ -170,7 +172,7 @@ def snapshot(graph: Graph, owner: str, own_ids: Mapping[int, int]) -> GraphMirro
 
     def others(records: Iterable[Any]) -> tuple[MirrorRecord, ...]:
         return tuple(
-            MirrorRecord(index[id(r.node)], r.name, r.type_name)
+            MirrorRecord(index[id(r.node)], r.name, r.type_name, getattr(r, "created_ns", 0))
             for r in records
             if r.owner != owner and id(r.node) in index
         )
@@ -222,7 +224,9 @@ def apply(graph: Graph, mirror: GraphMirror, own: Mapping[int, Any]) -> None:
     for r in mirror.services:
         srv_type = _interface(r.type_name)
         if srv_type is not None and r.name not in graph.services:
-            graph.services[r.name] = Service(nodes[r.node], r.name, srv_type, r.type_name, _never, MIRROR_OWNER)
+            graph.services[r.name] = Service(
+                nodes[r.node], r.name, srv_type, r.type_name, _never, MIRROR_OWNER, r.created_ns
+            )
     for r in mirror.action_servers:
         action_type = _interface(r.type_name)
         if action_type is not None and r.name not in graph.action_servers:
