@@ -219,9 +219,8 @@ def apply_descriptor(
         return _refused("Static parameter cannot be undeclared")
     elif parameter.type_ is not NOT_SET and parameter.type_.value != descriptor.type:
         return _refused(
-            # rclpy's Type is an Enum: str() gives Type.DOUBLE (an IntEnum's gives 3)
-            f"Wrong parameter type, expected 'Type.{Parameter.Type(descriptor.type).name}' "
-            f"got 'Type.{parameter.type_.name}'"
+            # as rclpy's, an IntEnum's str(): '3' from Python 3.11 on
+            f"Wrong parameter type, expected '{Parameter.Type(descriptor.type)}' got '{parameter.type_}'"
         )
     if parameter.type_ is Parameter.Type.INTEGER and descriptor.integer_range:
         return _in_range(parameter, descriptor.integer_range[0], lambda a, b: a == b, ". Min")
