@@ -51,35 +51,17 @@ class ParameterService:
             raise ReferenceError("Expected valid node weak reference")
         return node
 
-    # An unknown name empties the whole answer, as in rclpy.
     def _describe_parameters_callback(self, request: Any, response: Any) -> Any:
-        node = self._get_node()
-        for name in request.names:
-            try:
-                response.descriptors.append(node.describe_parameter(name))
-            except ParameterNotDeclaredException:
-                response.descriptors = []
-                return response
+        response.descriptors = _each(request.names, self._get_node().describe_parameter)
         return response
 
     def _get_parameters_callback(self, request: Any, response: Any) -> Any:
         node = self._get_node()
-        for name in request.names:
-            try:
-                response.values.append(node.get_parameter(name).get_parameter_value())
-            except (ParameterNotDeclaredException, ParameterUninitializedException):
-                response.values = []
-                return response
+        response.values = _each(request.names, lambda name: node.get_parameter(name).get_parameter_value())
         return response
 
     def _get_parameter_types_callback(self, request: Any, response: Any) -> Any:
-        node = self._get_node()
-        for name in request.names:
-            try:
-                response.types.append(node.get_parameter_type(name))
-            except ParameterNotDeclaredException:
-                response.types = []
-                return response
+        response.types = _each(request.names, self._get_node().get_parameter_type)
         return response
 
     def _list_parameters_callback(self, request: Any, response: Any) -> Any:
@@ -105,3 +87,11 @@ class ParameterService:
             return node.set_parameters_atomically([Parameter.from_parameter_msg(m) for m in messages])
         except ParameterNotDeclaredException as err:
             return SetParametersResult(successful=False, reason=str(err))
+
+
+def _each(names: Any, look_up: Any) -> list[Any]:
+    """``look_up(name)`` for every name; nothing at all if one is not declared, as rclpy answers."""
+    try:
+        return [look_up(name) for name in names]
+    except (ParameterNotDeclaredException, ParameterUninitializedException):
+        return []

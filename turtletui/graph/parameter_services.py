@@ -9,6 +9,7 @@ from collections.abc import Callable, Mapping
 from typing import Any
 
 from turtletui.graph.core import Graph, NodeRecord, Service
+from turtletui.interfaces import copier
 from turtletui.interfaces.rcl_interfaces import (
     DescribeParameters,
     GetParameters,
@@ -135,7 +136,8 @@ def serve_parameters(graph: Graph, node: NodeRecord, descriptors: Mapping[str, P
 
     def describe(request: Any) -> Any:
         names = list(request.names)
-        return DescribeParameters.Response(descriptors=[descriptors[n] for n in names] if declared(names) else [])
+        copy = copier(ParameterDescriptor)  # the caller's own: changing it changes nothing here
+        return DescribeParameters.Response(descriptors=[copy(descriptors[n]) for n in names] if declared(names) else [])
 
     def list_parameters(request: Any) -> Any:
         return ListParameters.Response(
