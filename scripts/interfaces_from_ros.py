@@ -41,6 +41,8 @@ DOCS = {
     "std_srvs": "std_srvs: Empty, Trigger and SetBool.",
     "example_interfaces": "example_interfaces: AddTwoInts, Fibonacci and the tutorials' simple types.",
     "tf2_msgs": "tf2_msgs: TFMessage (what /tf carries), TF2Error and tf2's service and action.",
+    "rcl_interfaces": "rcl_interfaces: /rosout's Log, the parameter messages and the parameter services.",
+    "lifecycle_msgs": "lifecycle_msgs: a managed (lifecycle) node's states, transitions and services.",
 }
 
 

@@ -358,13 +358,28 @@ def test_service_list_type_find_info(cli):
         "/turtle1/teleport_absolute", "/turtle1/teleport_relative",
         *(f"/turtlesim/{service.split(':')[0]}" for service in PARAMETER_SERVICES)]
     assert ok(cli, "ros2 service type /turtlesim/get_parameters").lines == ["rcl_interfaces/srv/GetParameters"]
-    refused = cli.run("ros2 service call /turtlesim/list_parameters rcl_interfaces/srv/ListParameters")
-    assert refused.error and "use ros2 param list|get|set /turtlesim" in refused.lines[0]
+    refused = cli.run("ros2 service call /turtlesim/get_type_description "
+                      "type_description_interfaces/srv/GetTypeDescription")
+    assert refused.error and "turtletui does not serve /turtlesim/get_type_description" in refused.lines[0]
     assert ok(cli, "ros2 service list -t").lines[3] == "/spawn [turtlesim/srv/Spawn]"
     assert ok(cli, "ros2 service type /spawn").lines == ["turtlesim/srv/Spawn"]
     assert ok(cli, "ros2 service find std_srvs/srv/Empty").lines == ["/clear", "/reset"]
     assert ok(cli, "ros2 service info /spawn").lines == [
         "Type: turtlesim/srv/Spawn", "Clients count: 0", "Services count: 1"]
+
+
+def test_service_call_reaches_turtlesims_parameter_services(sim, cli):
+    listed = ok(cli, "ros2 service call /turtlesim/list_parameters rcl_interfaces/srv/ListParameters")
+    step(sim, 0.016)
+    assert listed.stream.poll()[1] == (
+        "rcl_interfaces.srv.ListParameters_Response(result=rcl_interfaces.msg.ListParametersResult("
+        "names=['background_b', 'background_g', 'background_r', 'holonomic'], prefixes=[]))"
+    )
+    refused = ok(cli, "ros2 service call /turtlesim/set_parameters rcl_interfaces/srv/SetParameters "
+                      "\"{parameters: [{name: background_r, value: {type: 2, integer_value: 256}}]}\"")
+    step(sim, 0.016)
+    assert "doesn't comply with integer range" in refused.stream.poll()[1]
+    assert sim.world.canvas.background == (69, 86, 255)
 
 
 def test_service_call_spawn_creates_turtle2(sim, cli):

@@ -1101,6 +1101,13 @@ def test_interface_names_and_types_per_turtle():
         "/turtle1/set_pen": "turtlesim/srv/SetPen",
         "/turtle1/teleport_absolute": "turtlesim/srv/TeleportAbsolute",
         "/turtle1/teleport_relative": "turtlesim/srv/TeleportRelative",
+        # the parameter services rclcpp gives the node
+        "/turtlesim/describe_parameters": "rcl_interfaces/srv/DescribeParameters",
+        "/turtlesim/get_parameters": "rcl_interfaces/srv/GetParameters",
+        "/turtlesim/get_parameter_types": "rcl_interfaces/srv/GetParameterTypes",
+        "/turtlesim/list_parameters": "rcl_interfaces/srv/ListParameters",
+        "/turtlesim/set_parameters": "rcl_interfaces/srv/SetParameters",
+        "/turtlesim/set_parameters_atomically": "rcl_interfaces/srv/SetParametersAtomically",
     }
     assert {n: a.type_name for n, a in graph.action_servers.items()} == {
         "/turtle1/rotate_absolute": "turtlesim/action/RotateAbsolute"

@@ -27,6 +27,7 @@ from typing import Any
 from turtletui.bridge.process import TwinProcess
 from turtletui.graph.core import GoalHandle, Graph, GraphError, NodeRecord, Publisher
 from turtletui.graph.logs import INFO, WARN, LogRecord
+from turtletui.graph.parameter_services import is_parameter_service
 from turtletui.interfaces import InterfaceError, from_dict, get_interface, to_dict
 
 OWNER = "ros"
@@ -193,7 +194,8 @@ class RosBridge:
                 if sub.owner != OWNER:
                     wanted[sub] = ("sub", {"topic": name, "type": topic.type_name, "depth": sub.depth})
         for name, service in graph.services.items():
-            if service.owner != OWNER:
+            # the twin's nodes serve their parameters themselves
+            if service.owner != OWNER and not is_parameter_service(service):
                 wanted[service] = ("srv", {"name": name, "type": service.type_name})
         for name, server in graph.action_servers.items():
             if server.owner != OWNER:

@@ -14,6 +14,7 @@ from turtletui.compat.dispatch import dispatcher
 from turtletui.compat.exceptions import (  # noqa: F401  (re-exported: rclpy.node users import them here)
     InvalidHandle,
     InvalidParameterTypeException,
+    InvalidParameterValueException,
     NotInitializedException,
     ParameterAlreadyDeclaredException,
     ParameterNotDeclaredException,
@@ -37,13 +38,17 @@ from turtletui.compat.graph_info import (
 from turtletui.compat.logging import RcutilsLogger, get_logger
 from turtletui.compat.matching import match_publisher, match_subscription, muted
 from turtletui.compat.parameter import (
+    ListParametersResult,
     Parameter,
     ParameterDescriptor,
     ParameterValue,
     SetParametersResult,
+    apply_descriptor,
+    list_parameter_names,
     parameter_value_to_python,
     type_matches,
 )
+from turtletui.compat.parameter_service import ParameterService
 from turtletui.compat.qos import (
     QoSProfile,
     depth_of,
@@ -505,6 +510,8 @@ class Node(Destroyable):
         self._logger = get_logger(f"{namespace.strip('/').replace('/', '.')}.{node_name}".lstrip("."))
         self._clock = clock_for(self._context, ClockType.ROS_TIME)
         self._context.track_node(self)
+        if start_parameter_services:
+            ParameterService(self)
         if automatically_declare_parameters_from_overrides:
             for name, value in overrides.items():
                 self.declare_parameter(name, value)
@@ -898,6 +905,8 @@ class Node(Destroyable):
             expected, value = value, None
         else:
             expected = Parameter.Type.from_parameter_value(value)
+        if value is None and descriptor is None and expected is Parameter.Type.NOT_SET:
+            descriptor = ParameterDescriptor(dynamic_typing=True)  # as rclpy: a name alone
         descriptor = descriptor or ParameterDescriptor()
         if not ignore_override and name in self._overrides:
             override = self._overrides[name]
@@ -908,7 +917,16 @@ class Node(Destroyable):
             ):
                 raise InvalidParameterTypeException(Parameter(name, value=override), expected)
             value = override
-        parameter = Parameter(name, value=value)
+        typed = not descriptor.dynamic_typing and expected is not Parameter.Type.NOT_SET
+        # typed: an empty list given for an array type keeps that type
+        parameter = Parameter(name, expected if typed and expected.check(value) else None, value)
+        if not descriptor.dynamic_typing:
+            descriptor.type = expected.value
+        result = apply_descriptor(
+            parameter, descriptor, declared=False, rel_tol=self.PARAM_REL_TOL, check_read_only=False
+        )
+        if not result.successful:
+            raise InvalidParameterValueException(name, value, result.reason)
         self._parameters[name] = parameter
         self._descriptors[name] = descriptor
         self._graph.set_parameter(self._record, name, value)
@@ -976,21 +994,23 @@ class Node(Destroyable):
         return self._set_parameters(parameter_list)
 
     def _set_parameters(self, parameters: list[Parameter]) -> SetParametersResult:
+        """rclpy 9's _set_parameters_atomically: all or none; a NOT_SET value
+        undeclares a dynamically typed parameter."""
         self._require_alive()
+        if not all(isinstance(parameter, Parameter) for parameter in parameters):
+            raise TypeError(f"parameter must be instance of type '{Parameter!r}'")
+        undeclared = [p.name for p in parameters if p.name not in self._parameters]
+        if undeclared and not self._allow_undeclared:
+            # rclpy 9 names all but the first: its check's any() consumed that one
+            raise ParameterNotDeclaredException(undeclared[1:])
         for parameter in parameters:
-            if parameter.name not in self._parameters and not self._allow_undeclared:
-                raise ParameterNotDeclaredException(parameter.name)
-            old = self._parameters.get(parameter.name)
-            descriptor = self._descriptors.get(parameter.name, ParameterDescriptor())
-            if descriptor.read_only:
-                return SetParametersResult(successful=False, reason=f"parameter '{parameter.name}' is read-only")
-            if (
-                old is not None
-                and old.type_ is not Parameter.Type.NOT_SET
-                and parameter.type_ is not old.type_
-                and not descriptor.dynamic_typing
-            ):
-                raise InvalidParameterTypeException(parameter, old.type_)
+            descriptor = self._descriptors.get(parameter.name)
+            if descriptor is not None:
+                result = apply_descriptor(
+                    parameter, descriptor, declared=parameter.name in self._parameters, rel_tol=self.PARAM_REL_TOL
+                )
+                if not result.successful:
+                    return result
         for callback in self._on_set:
             result = callback(parameters)
             if not getattr(result, "successful", False):
@@ -998,9 +1018,44 @@ class Node(Destroyable):
                     successful=False, reason="rejected by on-set-parameters callback"
                 )
         for parameter in parameters:
+            if parameter.type_ is Parameter.Type.NOT_SET:
+                self._parameters.pop(parameter.name, None)
+                self._descriptors.pop(parameter.name, None)
+                self._graph.set_parameter(self._record, parameter.name, None, remove=True)
+                continue
+            self._descriptors.setdefault(parameter.name, ParameterDescriptor(dynamic_typing=True))
             self._parameters[parameter.name] = parameter
             self._graph.set_parameter(self._record, parameter.name, parameter.value)
         return SetParametersResult(successful=True)
+
+    def describe_parameter(self, name: str) -> ParameterDescriptor:
+        """The parameter's descriptor (its type filled in)."""
+        if name in self._descriptors:
+            return self._descriptors[name]
+        if self._allow_undeclared:
+            return ParameterDescriptor()
+        raise ParameterNotDeclaredException(name)
+
+    def describe_parameters(self, names: list[str]) -> list[ParameterDescriptor]:
+        return [self.describe_parameter(name) for name in names]
+
+    def get_parameter_type(self, name: str) -> int:
+        """The parameter's type number (a ParameterType constant)."""
+        if name in self._parameters:
+            return self._parameters[name].type_.value
+        if self._allow_undeclared:
+            return Parameter.Type.NOT_SET
+        raise ParameterNotDeclaredException(name)
+
+    def get_parameter_types(self, names: list[str]) -> list[int]:
+        if not all(isinstance(name, str) for name in names):
+            raise TypeError("All names must be instances of type str")
+        return [self.get_parameter_type(name) for name in names]
+
+    def list_parameters(self, prefixes: list[str], depth: int) -> ListParametersResult:
+        """The names of the parameters under ``prefixes`` (all if empty), at most
+        ``depth`` levels deep (0: any), and their prefixes."""
+        return list_parameter_names(list(self._parameters), prefixes, depth)
 
 
 def _check_srv_type(srv_type: Any, what: str) -> None:

@@ -18,8 +18,10 @@ from turtletui.graph.core import (
     Subscription,
 )
 from turtletui.graph.logs import ERROR, INFO, WARN
+from turtletui.graph.parameter_services import serve_parameters
 from turtletui.interfaces.builtin_interfaces import Time
 from turtletui.interfaces.geometry_msgs import Twist
+from turtletui.interfaces.rcl_interfaces import IntegerRange, ParameterDescriptor, ParameterType
 from turtletui.interfaces.sensor_msgs import LaserScan
 from turtletui.interfaces.std_msgs import Header
 from turtletui.interfaces.std_srvs import Empty
@@ -59,6 +61,24 @@ PARAMETERS = ("background_r", "background_g", "background_b", "holonomic")
 """The parameters turtlesim declares (besides use_sim_time, which every node has)."""
 _ROTATION_ENDINGS = {"succeeded": "Rotation goal completed successfully", "canceled": "Rotation goal canceled"}
 """What turtle.cpp logs (INFO) when a rotate_absolute goal ends; an abort has its own warning."""
+
+
+def _descriptors() -> dict[str, ParameterDescriptor]:
+    """turtle_frame.cpp's parameter descriptors."""
+    colour = {"r": "Red", "g": "Green", "b": "Blue"}
+    descriptors = {
+        f"background_{c}": ParameterDescriptor(
+            name=f"background_{c}",
+            type=ParameterType.PARAMETER_INTEGER,
+            description=f"{word} channel of the background color",
+            integer_range=[IntegerRange(from_value=0, to_value=255, step=1)],
+        )
+        for c, word in colour.items()
+    }
+    descriptors["holonomic"] = ParameterDescriptor(
+        name="holonomic", type=ParameterType.PARAMETER_BOOL, description="If true, then turtles will be holonomic"
+    )
+    return descriptors
 
 
 def parameter_problem(name: str, value: Any, node: str = "/turtlesim") -> str | None:
@@ -137,6 +157,7 @@ class TurtlesimNode:
         bg = self.world.background
         for name, value in zip(PARAMETERS, (*bg, self.world.holonomic), strict=True):
             graph.set_parameter(self.node, name, value)
+        serve_parameters(graph, self.node, _descriptors())
         self._log(INFO, f"Starting turtlesim with node name {self.node.fqn}")
         node = self.node
         graph.add_service(node, "/clear", Empty, self._clear)

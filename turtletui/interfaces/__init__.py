@@ -34,6 +34,7 @@ from turtletui.interfaces import (  # noqa: F401  (registers every type)
     builtin_interfaces,
     example_interfaces,
     geometry_msgs,
+    lifecycle_msgs,
     nav_msgs,
     rcl_interfaces,
     sensor_msgs,

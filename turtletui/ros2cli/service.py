@@ -46,7 +46,8 @@ def _name_arguments(help_text: str):
 
 
 def _parameter_service(cli: Ros2Cli, name: str) -> Any:
-    """A node's parameter service as ros2 shows it (not in turtletui's graph), or None."""
+    """A service rcl gives every node as ros2 shows it (e.g. get_type_description)
+    that turtletui's graph does not have, or None."""
     name = absolute(name)
     if name in cli.graph.services:
         return None
@@ -94,8 +95,8 @@ def _call_arguments(parser: ArgumentParser) -> None:
 
 def _call(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
     if _parameter_service(cli, args.service_name) is not None:
-        node = absolute(args.service_name).rsplit("/", 1)[0]
-        raise CommandError(f"turtletui does not serve the parameter services: use ros2 param list|get|set {node}")
+        name = absolute(args.service_name)
+        raise CommandError(f"turtletui does not serve {name} (its nodes serve their parameter services only)")
     service = _service(cli, args.service_name)
     srv_type, values = args.service_type, args.values
     if _looks_like_values(srv_type) and values == "{}":

@@ -1,1 +1,4 @@
-from turtletui.interfaces.rcl_interfaces import *  # noqa: F401,F403
+from turtletui.interfaces import ros_module_members as _members
+
+globals().update(_members("rcl_interfaces", "msg"))
+del _members

@@ -1,0 +1,1 @@
+from turtletui.compat.parameter_client import AsyncParameterClient  # noqa: F401

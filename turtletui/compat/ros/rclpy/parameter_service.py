@@ -1,0 +1,1 @@
+from turtletui.compat.parameter_service import ParameterService  # noqa: F401
