@@ -23,11 +23,12 @@ from turtletui.graph.logs import INFO, LogRecord
 
 NS_PER_S = 1_000_000_000
 LOCKSTEP_EPOCH_NS = 1_700_000_000 * NS_PER_S
-DISCOVERY_NS = 50_000_000
-"""How long nodes of a run take to discover a new publisher or subscription
-(Graph.discovery_ns): Fast DDS on one machine took 22 ms to 1.8 s to match a
-new publisher (Kilted, rclpy 9.1, a quiet to a busy 2-core VM)."""
 """ROS time at simulated t = 0 in lockstep runs: fixed, so logs repeat bit for bit."""
+DISCOVERY_NS = 50_000_000
+"""How long the processes of a run take to discover each other's new
+publishers, subscriptions, services and clients (Graph.discovery_ns): Fast
+DDS on one machine took 22 ms to 1.8 s to match a new publisher (Kilted,
+rclpy 9.1, a quiet to a busy 2-core VM)."""
 
 _RATE_WINDOW = 64
 
