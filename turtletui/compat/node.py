@@ -117,7 +117,7 @@ class Publisher(Destroyable):
         if self.history is not None:
             self.history.append(msg)
         record = self._record
-        if record.created_ns + self._graph.discovery_ns > self._graph.now_ns:
+        if not self._graph.known_to_others(record):
             self._tell_if_lost()
         if not self._muted:
             self._publish(self._topic, msg, None, record)
@@ -366,7 +366,7 @@ class Client(Destroyable):
             if service is None:
                 host.spin_until(lambda: self.srv_name in graph.services, left, callbacks=False)
             else:  # found: discovered at a known instant, with or without other events before it
-                found = max(service.created_ns, self._record.created_ns) + graph.discovery_ns - graph.now_ns
+                found = graph.discovered_at(service, self._record) - graph.now_ns
                 host.spin_until(self.service_is_ready, found if left is None else min(found, left), callbacks=False)
         return True
 

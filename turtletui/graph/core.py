@@ -562,9 +562,18 @@ class Graph:
         topic = self.topics.get(name)
         return list(topic.subscriptions) if topic is not None else []
 
+    def discovered_at(self, one: Any, other: Any) -> int:
+        """When two records of different owners (processes) have discovered
+        each other: ``discovery_ns`` after the younger was made."""
+        return max(one.created_ns, other.created_ns) + self.discovery_ns
+
+    def known_to_others(self, record: Any) -> bool:
+        """Whether every other process has discovered ``record`` by now."""
+        return record.created_ns + self.discovery_ns <= self.now_ns
+
     def matched(self, pub: Publisher, sub: Subscription) -> bool:
         """Whether ``pub`` and ``sub`` have discovered each other (QoS aside)."""
-        return pub.owner == sub.owner or max(pub.created_ns, sub.created_ns) + self.discovery_ns <= self.now_ns
+        return pub.owner == sub.owner or self.discovered_at(pub, sub) <= self.now_ns
 
     def count_publishers(self, name: str) -> int:
         topic = self.topics.get(name)
@@ -678,9 +687,7 @@ class Graph:
         service = self.services.get(client.name)
         if service is None:
             return False
-        return service.owner == client.owner or (
-            max(service.created_ns, client.created_ns) + self.discovery_ns <= self.now_ns
-        )
+        return service.owner == client.owner or self.discovered_at(service, client) <= self.now_ns
 
     def count_services(self, name: str) -> int:
         return 1 if name in self.services else 0

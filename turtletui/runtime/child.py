@@ -175,7 +175,7 @@ class ChildGraph(Graph):
     # -- traffic ------------------------------------------------------------------
     def publish(self, topic: Topic, msg: Any, source: str | None = None, publisher: Publisher | None = None) -> None:
         super().publish(topic, msg, graph_mirror.MIRROR_OWNER, publisher)  # the parent delivers to those
-        if publisher is None or publisher.created_ns + self.discovery_ns <= self.now_ns:
+        if publisher is None or self.known_to_others(publisher):
             self.out["pub"].append([topic.name, to_values(msg)])  # else no other process knows it yet
 
     def call(self, name: str, request: Any, on_response: Callable[[Any], None], owner: str) -> None:

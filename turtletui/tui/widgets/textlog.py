@@ -154,9 +154,13 @@ class TextLog(ScrollView, can_focus=True):
         self._width = width
         self._wrapped.clear()
         line = self._first_line()
+        kept_from = len(self._entries) - WRAPPED_KEPT
         for index in range(self._head, len(self._entries)):
             self._starts[index] = line
-            line += len(self._wrap(self._entries[index]))
+            strips = self._wrap(self._entries[index])
+            if index >= kept_from:  # the latest: what a log that follows shows next
+                self._remember(self._dropped + index, strips)
+            line += len(strips)
         self._end = line
 
     def _header_lines(self) -> int:
