@@ -1,0 +1,585 @@
+"""The messages between the simulator and a sandboxed controller.
+
+Every exchange the parent sends a :class:`Tick` (the new simulated time and
+what arrived for the child's nodes), or :class:`End`; the child answers with
+a :class:`Report` of what its nodes did since the last one. Each message is
+a NamedTuple: on the wire, an array of its fields in order.
+
+- Parent to child: ``marshal`` (:func:`encode_tick`, :func:`decode_from_parent`);
+  the child trusts its parent.
+- Child to parent: JSON (:func:`encode_report`, :func:`decode_report`). The
+  child runs untrusted code that may forge anything, so the parent decodes
+  with the JSON scanner alone (no object hooks) and checks the count and type
+  of every field, raising :class:`ProtocolError` that names the message and
+  the field. What the fields mean (does the node exist, is this a Twist) is
+  checked where they are applied (turtletui.runtime.sandbox_proxy).
+
+Framing is turtletui.runtime.wire's. This module must not import numpy or
+Textual (the child loads it).
+"""
+
+from __future__ import annotations
+
+import json
+import marshal
+from collections.abc import Callable
+from typing import Any, NamedTuple
+
+from turtletui.runtime.graph_mirror import GraphMirror, QosPolicies
+from turtletui.runtime.wire import WireError
+
+Values = list
+"""A message as turtletui.interfaces.to_values gives it: its field values in order."""
+
+
+class ProtocolError(WireError):
+    """The child sent a reply that is not a :class:`Report` (the text says where)."""
+
+
+# -- child to parent: graph changes ----------------------------------------------------------
+# Nodes, publishers and subscriptions are named by the wire id the child gave them.
+
+
+class DeclareNode(NamedTuple):
+    wire_id: int
+    name: str
+    namespace: str
+
+
+class RemoveNode(NamedTuple):
+    wire_id: int
+
+
+class DeclarePublisher(NamedTuple):
+    wire_id: int
+    node: int
+    """The wire id of the node it belongs to (so in every record below)."""
+    topic: str
+    type_name: str
+    depth: int
+    qos: QosPolicies | None
+    """What others see of its QoS; None for a bare depth."""
+
+
+class DeclareSubscription(NamedTuple):
+    wire_id: int
+    node: int
+    topic: str
+    type_name: str
+    depth: int
+    label: str
+    """Its callback's name (only ever shown, in a report of a slow controller)."""
+    qos: QosPolicies | None
+
+
+class RemoveEndpoint(NamedTuple):
+    """A publisher or subscription destroyed."""
+
+    wire_id: int
+
+
+class DeclareTimer(NamedTuple):
+    """Told so that a report of a controller too slow for its timer can name it."""
+
+    node: int
+    period_ns: int
+    label: str
+
+
+class DeclareService(NamedTuple):
+    node: int
+    name: str
+    type_name: str
+
+
+class DeclareClient(NamedTuple):
+    node: int
+    name: str
+    type_name: str
+
+
+class DeclareActionClient(NamedTuple):
+    node: int
+    name: str
+    type_name: str
+
+
+REMOVABLE = ("service", "client", "action_client")
+"""What :class:`RemoveRecord` may remove."""
+
+
+class RemoveRecord(NamedTuple):
+    """A service, client or action client destroyed."""
+
+    kind: str
+    """One of :data:`REMOVABLE`."""
+    node: int
+    name: str
+
+
+class SetParameter(NamedTuple):
+    """A node's parameter declared, set or undeclared (``remove``)."""
+
+    node: int
+    name: str
+    value: Any
+    """None, a bool, int, float or str, or a list of those."""
+    remove: bool
+
+
+GraphChange = (
+    DeclareNode
+    | RemoveNode
+    | DeclarePublisher
+    | DeclareSubscription
+    | RemoveEndpoint
+    | DeclareTimer
+    | DeclareService
+    | DeclareClient
+    | DeclareActionClient
+    | RemoveRecord
+    | SetParameter
+)
+
+# -- child to parent: traffic -----------------------------------------------------------------
+
+
+class Log(NamedTuple):
+    level: int
+    node: str
+    text: str
+
+
+class Publish(NamedTuple):
+    topic: str
+    values: Values
+
+
+class CallService(NamedTuple):
+    call_id: int
+    """The child's id for the call: the parent's :class:`ServiceResult` names it."""
+    service: str
+    values: Values
+
+
+class SendGoal(NamedTuple):
+    goal_id: int
+    """The child's id for the goal: the parent's goal events name it."""
+    action: str
+    values: Values
+
+
+class CancelGoal(NamedTuple):
+    goal_id: int
+
+
+class ServiceResponse(NamedTuple):
+    """The child's service answered a :class:`ServiceRequest`."""
+
+    request_id: int
+    values: Values
+
+
+class Crash(NamedTuple):
+    """Why the child's controller stopped, as the child saw it."""
+
+    kind: str
+    message: str
+    frames: tuple[str, ...]
+    """Traceback lines from the controller's own file."""
+
+
+class Report(NamedTuple):
+    """Child to parent, every exchange: what its nodes did since the last one."""
+
+    changes: tuple[GraphChange, ...] = ()
+    """Graph changes, in the order they were made."""
+    logs: tuple[Log, ...] = ()
+    publishes: tuple[Publish, ...] = ()
+    calls: tuple[CallService, ...] = ()
+    goals: tuple[SendGoal, ...] = ()
+    cancels: tuple[CancelGoal, ...] = ()
+    responses: tuple[ServiceResponse, ...] = ()
+    logs_dropped: int = 0
+    """Log records the child did not send (over its budget) so far."""
+    wake_ns: int | None = None
+    """When the child next has something to do (simulated ns); None: when something arrives."""
+    done: bool = False
+    """The controller ended: this is the last report."""
+    crash: Crash | None = None
+    """With ``done``: why it ended, if not normally."""
+
+
+# -- parent to child --------------------------------------------------------------------------
+
+
+class Delivery(NamedTuple):
+    """A message for one of the child's subscriptions."""
+
+    subscription: int
+    values: Values
+
+
+class ServiceResult(NamedTuple):
+    """The answer to the child's :class:`CallService`."""
+
+    call_id: int
+    type_name: str
+    """The response's interface (``pkg/srv/Name_Response``)."""
+    values: Values
+
+
+class GoalAccepted(NamedTuple):
+    goal_id: int
+
+
+class GoalFeedback(NamedTuple):
+    goal_id: int
+    values: Values
+
+
+class GoalResult(NamedTuple):
+    goal_id: int
+    status: str
+    """"succeeded", "aborted" or "canceled"."""
+    values: Values
+
+
+GoalEvent = GoalAccepted | GoalFeedback | GoalResult
+
+
+class ServiceRequest(NamedTuple):
+    """A call of one of the child's services."""
+
+    request_id: int
+    service: str
+    values: Values
+
+
+class ParameterUpdate(NamedTuple):
+    """``ros2 param set`` on one of the child's nodes (the parent checked the type)."""
+
+    node: int
+    name: str
+    value: Any
+
+
+class Tick(NamedTuple):
+    """Parent to child, every exchange: the time now and what arrived."""
+
+    now_ns: int
+    deliveries: tuple[Delivery, ...] | list[Delivery] = ()
+    results: tuple[ServiceResult, ...] | list[ServiceResult] = ()
+    goal_events: tuple[GoalEvent, ...] | list[GoalEvent] = ()
+    requests: tuple[ServiceRequest, ...] | list[ServiceRequest] = ()
+    parameters: tuple[ParameterUpdate, ...] | list[ParameterUpdate] = ()
+    graph: GraphMirror | None = None
+    """The parent's graph, when it changed since the child last heard of it."""
+
+
+class End(NamedTuple):
+    """Parent to child: the run is over; send the last report."""
+
+
+# -- parent to child: encoding ------------------------------------------------------------------
+# marshal takes plain tuples only, not NamedTuples: each record goes as tuple(record).
+
+_GOAL_TAGS: dict[type, str] = {GoalAccepted: "accepted", GoalFeedback: "feedback", GoalResult: "result"}
+_GOAL_EVENTS: dict[str, Callable[[Any], GoalEvent]] = {tag: cls._make for cls, tag in _GOAL_TAGS.items()}
+
+
+def encode_tick(tick: Tick) -> bytes:
+    """The frame payload of ``tick``."""
+    message: dict[str, Any] = {"now": tick.now_ns}
+    if tick.deliveries:
+        message["msgs"] = [tuple(d) for d in tick.deliveries]
+    if tick.results:
+        message["results"] = [tuple(r) for r in tick.results]
+    if tick.goal_events:
+        message["goals"] = [(_GOAL_TAGS[type(e)], tuple(e)) for e in tick.goal_events]
+    if tick.requests:
+        message["requests"] = [tuple(r) for r in tick.requests]
+    if tick.parameters:
+        message["params"] = [tuple(p) for p in tick.parameters]
+    if tick.graph is not None:
+        message["graph"] = tick.graph.to_wire()
+    return marshal.dumps(message)
+
+
+def encode_end() -> bytes:
+    return marshal.dumps({"end": True})
+
+
+def decode_from_parent(payload: bytes) -> Tick | End:
+    """What :func:`encode_tick` or :func:`encode_end` made (the child trusts it)."""
+    message = marshal.loads(payload)
+    if message.get("end"):
+        return End()
+    graph = message.get("graph")
+    return Tick(
+        message["now"],
+        [Delivery._make(d) for d in message.get("msgs", ())],
+        [ServiceResult._make(r) for r in message.get("results", ())],
+        [_GOAL_EVENTS[tag](fields) for tag, fields in message.get("goals", ())],
+        [ServiceRequest._make(r) for r in message.get("requests", ())],
+        [ParameterUpdate._make(p) for p in message.get("params", ())],
+        None if graph is None else GraphMirror.from_wire(graph),
+    )
+
+
+# -- child to parent: encoding ------------------------------------------------------------------
+
+_CHANGE_TAGS: dict[type, str] = {
+    DeclareNode: "node",
+    RemoveNode: "rmnode",
+    DeclarePublisher: "pub",
+    DeclareSubscription: "sub",
+    RemoveEndpoint: "rm",
+    DeclareTimer: "timer",
+    DeclareService: "srv",
+    DeclareClient: "client",
+    DeclareActionClient: "aclient",
+    RemoveRecord: "rmrecord",
+    SetParameter: "param",
+}
+_ENCODE_JSON = json.JSONEncoder(separators=(",", ":"), allow_nan=True).encode
+"""``json.dumps(obj, separators=(",", ":"), allow_nan=True)`` without building an encoder each call."""
+
+
+def encode_report(report: Report) -> bytes:
+    """The frame payload of ``report``: a JSON object with only what is not empty."""
+    message: dict[str, Any] = {}
+    if report.changes:
+        message["decl"] = [[_CHANGE_TAGS[type(change)], *change] for change in report.changes]
+    if report.logs:
+        message["log"] = report.logs
+    if report.publishes:
+        message["pub"] = report.publishes
+    if report.calls:
+        message["call"] = report.calls
+    if report.goals:
+        message["goal"] = report.goals
+    if report.cancels:
+        message["cancel"] = report.cancels
+    if report.responses:
+        message["resp"] = report.responses
+    if report.logs_dropped:
+        message["logs_dropped"] = report.logs_dropped
+    if report.wake_ns is not None:
+        message["wake"] = report.wake_ns
+    if report.done:
+        message["done"] = True
+    if report.crash is not None:
+        message["crash"] = report.crash
+    return _ENCODE_JSON(message).encode()
+
+
+# -- child to parent: decoding (untrusted) ------------------------------------------------------
+
+
+class _Bad(Exception):
+    """One field is not what it should be: ``expected`` says what it should be."""
+
+    def __init__(self, expected: str) -> None:
+        self.expected = expected
+
+
+def _show(value: Any) -> str:
+    text = repr(value)
+    return f"{type(value).__name__} {text if len(text) <= 60 else text[:57] + '...'}"
+
+
+def _int(value: Any) -> int:
+    if type(value) is not int:
+        raise _Bad("an integer")
+    return value
+
+
+def _str(value: Any) -> str:
+    if type(value) is not str:
+        raise _Bad("a string")
+    return value
+
+
+def _bool(value: Any) -> bool:
+    if type(value) is not bool:
+        raise _Bad("true or false")
+    return value
+
+
+def _values(value: Any) -> Values:
+    if type(value) is not list:
+        raise _Bad("a list of field values")
+    return value
+
+
+def _removable(value: Any) -> str:
+    if value not in REMOVABLE:
+        raise _Bad(f"one of {', '.join(REMOVABLE)}")
+    return value
+
+
+def _qos(value: Any) -> QosPolicies | None:
+    if value is None:
+        return None
+    try:
+        return QosPolicies.parse(value)
+    except ValueError:
+        raise _Bad("null or QoS policies (reliability, durability, liveliness)") from None
+
+
+def _is_scalar(value: Any) -> bool:
+    return value is None or type(value) in (bool, int, float, str)
+
+
+def _parameter_value(value: Any) -> Any:
+    if _is_scalar(value) or (type(value) is list and all(map(_is_scalar, value))):
+        return value
+    raise _Bad("a value a ROS parameter can hold (a scalar or a list of them)")
+
+
+def _frames(value: Any) -> tuple[str, ...]:
+    if type(value) is not list or not all(type(line) is str for line in value):
+        raise _Bad("a list of strings")
+    return tuple(value)
+
+
+_FIELDS: dict[type, tuple[Callable[[Any], Any], ...]] = {
+    DeclareNode: (_int, _str, _str),
+    RemoveNode: (_int,),
+    DeclarePublisher: (_int, _int, _str, _str, _int, _qos),
+    DeclareSubscription: (_int, _int, _str, _str, _int, _str, _qos),
+    RemoveEndpoint: (_int,),
+    DeclareTimer: (_int, _int, _str),
+    DeclareService: (_int, _str, _str),
+    DeclareClient: (_int, _str, _str),
+    DeclareActionClient: (_int, _str, _str),
+    RemoveRecord: (_removable, _int, _str),
+    SetParameter: (_int, _str, _parameter_value, _bool),
+    Log: (_int, _str, _str),
+    Publish: (_str, _values),
+    CallService: (_int, _str, _values),
+    SendGoal: (_int, _str, _values),
+    CancelGoal: (_int,),
+    ServiceResponse: (_int, _values),
+    Crash: (_str, _str, _frames),
+}
+"""How each field of a record the child sends is checked (and converted), in field order."""
+
+
+def _record(cls: type, fields: Any, where: str) -> Any:
+    checks = _FIELDS[cls]
+    if type(fields) is not list:
+        raise ProtocolError(f"{where}: a {cls.__name__} must be an array of its fields, got {_show(fields)}")
+    if len(fields) != len(checks):
+        raise ProtocolError(
+            f"{where}: a {cls.__name__} has {len(checks)} fields ({', '.join(cls._fields)}), "
+            f"got {len(fields)}: {_show(fields)}"
+        )
+    try:
+        return cls._make([check(value) for check, value in zip(checks, fields, strict=True)])
+    except _Bad:
+        for name, check, value in zip(cls._fields, checks, fields, strict=True):
+            try:
+                check(value)
+            except _Bad as bad:
+                raise ProtocolError(
+                    f"{where}: {cls.__name__}.{name} must be {bad.expected}, got {_show(value)}"
+                ) from None
+        raise  # pragma: no cover - a check failed once, so it fails again
+
+
+_CHANGES: dict[str, type] = {tag: cls for cls, tag in _CHANGE_TAGS.items()}
+
+
+def _change(entry: Any, where: str) -> GraphChange:
+    if type(entry) is not list or not entry:
+        raise ProtocolError(f"{where}: a graph change must be an array [kind, fields...], got {_show(entry)}")
+    cls = _CHANGES.get(entry[0]) if type(entry[0]) is str else None
+    if cls is None:
+        raise ProtocolError(f"{where}: unknown graph change {_show(entry[0])} (known: {', '.join(_CHANGES)})")
+    return _record(cls, entry[1:], where)
+
+
+def _records(cls: type) -> Callable[[Any, str], tuple]:
+    def decode(entries: Any, key: str) -> tuple:
+        if type(entries) is not list:
+            raise ProtocolError(f"{key}: must be an array of {cls.__name__} records, got {_show(entries)}")
+        return tuple(_record(cls, entry, f"{key}[{i}]") for i, entry in enumerate(entries))
+
+    return decode
+
+
+def _changes(entries: Any, key: str) -> tuple:
+    if type(entries) is not list:
+        raise ProtocolError(f"{key}: must be an array of graph changes, got {_show(entries)}")
+    return tuple(_change(entry, f"{key}[{i}]") for i, entry in enumerate(entries))
+
+
+def _scalar(check: Callable[[Any], Any], nullable: bool = False) -> Callable[[Any, str], Any]:
+    def decode(value: Any, key: str) -> Any:
+        if nullable and value is None:
+            return None
+        try:
+            return check(value)
+        except _Bad as bad:
+            raise ProtocolError(f"{key}: must be {bad.expected}{' or null' if nullable else ''}, got {_show(value)}") from None
+
+    return decode
+
+
+def _logs_dropped(value: Any, key: str) -> int:
+    if type(value) is not int or value < 0:
+        raise ProtocolError(f"{key}: must be a count (an integer >= 0), got {_show(value)}")
+    return value
+
+
+def _crash(value: Any, key: str) -> Crash | None:
+    return None if value is None else _record(Crash, value, key)
+
+
+_REPORT_ENTRIES: dict[str, tuple[str, Callable[[Any, str], Any]]] = {
+    "decl": ("changes", _changes),
+    "log": ("logs", _records(Log)),
+    "pub": ("publishes", _records(Publish)),
+    "call": ("calls", _records(CallService)),
+    "goal": ("goals", _records(SendGoal)),
+    "cancel": ("cancels", _records(CancelGoal)),
+    "resp": ("responses", _records(ServiceResponse)),
+    "logs_dropped": ("logs_dropped", _logs_dropped),
+    "wake": ("wake_ns", _scalar(_int, nullable=True)),
+    "done": ("done", _scalar(_bool)),
+    "crash": ("crash", _crash),
+}
+"""The report's JSON keys: the Report field each fills and how it is decoded."""
+
+_SCAN = json.JSONDecoder().scan_once
+"""What json.loads does past its checks for encodings and white space: the
+child sends UTF-8 without white space, and anything else is malformed."""
+
+
+def decode_report(payload: bytes) -> Report:
+    """The child's :class:`Report`. Raises WireError for what is not JSON (the
+    text starts "sent a malformed reply") and ProtocolError for JSON that is not
+    a report (the text names the entry, the record and the field)."""
+    try:
+        text = payload.decode()
+        reply, end = _SCAN(text, 0)
+    except StopIteration as stop:
+        raise WireError(f"sent a malformed reply (no JSON value at char {stop.value})") from None
+    except ValueError as err:  # also UnicodeDecodeError
+        raise WireError(f"sent a malformed reply ({err})") from None
+    except RecursionError:
+        raise WireError("sent a malformed reply (nested too deeply)") from None
+    if end != len(text):
+        raise WireError(f"sent a malformed reply (more after the JSON value at char {end})")
+    if type(reply) is not dict:
+        raise WireError("sent a malformed reply (not an object)")
+    fields = {}
+    for key, value in reply.items():
+        entry = _REPORT_ENTRIES.get(key)
+        if entry is None:
+            raise ProtocolError(f"unknown report entry {key[:60]!r} (known: {', '.join(_REPORT_ENTRIES)})")
+        name, decode = entry
+        fields[name] = decode(value, key)
+    return Report(**fields)
