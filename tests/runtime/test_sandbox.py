@@ -22,6 +22,7 @@ from pathlib import Path
 
 import pytest
 from support.controllers import WALL_TIME
+from support.hosts import HOSTS, ControllerHost, node_logs
 
 from turtletui.api import RunResult, run
 from turtletui.runtime import forkserver
@@ -980,3 +981,38 @@ def test_the_graders_secrets_never_reach_student_code(tmp_path: Path, monkeypatc
     assert not any("secret" in value or "0123456789abcdef" in value for value in seen.values())
     assert seen["ROS_DOMAIN_ID"] == "17"
     assert seen["PATH"] == os.environ["PATH"]
+
+
+@pytest.mark.parametrize("host", HOSTS)
+def test_a_service_destroyed_and_created_again_in_one_callback(tmp_path: Path, host: str) -> None:
+    """Graph changes reach the parent in the order they were made: the removal
+    before the new declaration, so the parent does not refuse a second server."""
+    result = ControllerHost(host, tmp_path).run(
+        """
+import rclpy
+from rclpy.node import Node
+from std_srvs.srv import Empty
+
+class Server(Node):
+    def __init__(self):
+        super().__init__("server")
+        self.service = self.create_service(Empty, "/ping", self.ping)
+        self.client = self.create_client(Empty, "/ping")
+        self.create_timer(0.1, self.tick)
+        self.ticks = 0
+
+    def ping(self, request, response):
+        self.get_logger().info(f"ping answered after {self.ticks} ticks")
+        return response
+
+    def tick(self):
+        self.ticks += 1
+        if self.ticks == 2:
+            self.destroy_service(self.service)
+            self.service = self.create_service(Empty, "/ping", self.ping)
+            self.client.call_async(Empty.Request())
+""",
+        duration=0.5,
+    )
+    assert result.ok, result.crashes
+    assert node_logs(result, "server") == ["ping answered after 2 ticks"]
