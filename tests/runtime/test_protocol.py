@@ -100,15 +100,15 @@ def test_a_tick_with_everything_round_trips():
     )
     tick = protocol.Tick(
         16_000_000,
-        [protocol.Delivery(3, [5.5, 5.5, 0.0, 0.0, 0.0])],
-        [protocol.ServiceResult(7, "turtlesim/srv/Spawn_Response", ["turtle2"])],
-        [
+        (protocol.Delivery(3, [5.5, 5.5, 0.0, 0.0, 0.0]),),
+        (protocol.ServiceResult(7, "turtlesim/srv/Spawn_Response", ["turtle2"]),),
+        (
             protocol.GoalAccepted(8),
             protocol.GoalFeedback(8, [0.7]),
             protocol.GoalResult(8, "succeeded", [0.1]),
-        ],
-        [protocol.ServiceRequest(1, "/reset_count", [])],
-        [protocol.ParameterUpdate(1, "gain", 2.5)],
+        ),
+        (protocol.ServiceRequest(1, "/reset_count", []),),
+        (protocol.ParameterUpdate(1, "gain", 2.5),),
         mirror,
     )
     decoded = protocol.decode_from_parent(protocol.encode_tick(tick))
@@ -118,7 +118,7 @@ def test_a_tick_with_everything_round_trips():
 
 
 def test_a_bare_tick_and_the_end_round_trip():
-    assert protocol.decode_from_parent(protocol.encode_tick(protocol.Tick(5))) == protocol.Tick(5, [], [], [], [], [], None)
+    assert protocol.decode_from_parent(protocol.encode_tick(protocol.Tick(5))) == protocol.Tick(5)
     assert type(protocol.decode_from_parent(protocol.encode_end())) is protocol.End
 
 

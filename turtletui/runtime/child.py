@@ -4,9 +4,11 @@ The child has its own Graph holding the controller's nodes, and records
 standing for everyone else's, rebuilt from the mirror of the parent's graph
 the parent sends when it changed (turtletui.runtime.graph_mirror). Whenever the
 controller waits (spin, spin_once, sleeps, waiting for a future) and has
-nothing ready, the child sends the parent what its nodes did (declarations,
-messages, calls, logs) and blocks until the parent answers with the new time
-and what arrived for it. The parent's simulation never trusts anything else.
+nothing ready, the child sends the parent a Report of what its nodes did
+(declarations, messages, calls, logs: queued by the graph's outbox,
+turtletui.runtime.outbox) and blocks until the parent answers with a Tick,
+the new time and what arrived for it (turtletui.runtime.protocol). The
+parent's simulation never trusts anything else.
 This module must not import numpy or Textual: start-up time counts.
 """
 

@@ -95,21 +95,30 @@ class ParentOutbox:
 
     def report(self, wake_ns: int | None, *, done: bool = False, crash: Crash | None = None) -> Report:
         """Everything queued since the last report (then nothing is)."""
+        changes, logs, publishes = self.changes, self.logs, self.publishes
+        calls, goals, cancels, responses = self.calls, self.goals, self.cancels, self.responses
         report = Report(
-            tuple(self.changes),
-            tuple(self.logs),
-            tuple(self.publishes),
-            tuple(self.calls),
-            tuple(self.goals),
-            tuple(self.cancels),
-            tuple(self.responses),
+            changes,
+            logs,
+            publishes,
+            calls,
+            goals,
+            cancels,
+            responses,
             self.logs_dropped,
             None if wake_ns is None else int(wake_ns),
             done,
             crash,
         )
-        for queue in (self.changes, self.logs, self.publishes, self.calls, self.goals, self.cancels, self.responses):
-            queue.clear()
+        # New lists for what went out: the report keeps the old ones.
+        if changes:
+            self.changes = []
+        if logs:
+            self.logs = []
+        if publishes:
+            self.publishes = []
+        if calls or goals or cancels or responses:
+            self.calls, self.goals, self.cancels, self.responses = [], [], [], []
         return report
 
     # -- GraphOutbox: what the controller's nodes do ------------------------------------------

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import json
 import marshal
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from typing import Any, NamedTuple
 
 from turtletui.runtime.graph_mirror import GraphMirror, QosPolicies
@@ -192,14 +192,14 @@ class Crash(NamedTuple):
 class Report(NamedTuple):
     """Child to parent, every exchange: what its nodes did since the last one."""
 
-    changes: tuple[GraphChange, ...] = ()
+    changes: Sequence[GraphChange] = ()
     """Graph changes, in the order they were made."""
-    logs: tuple[Log, ...] = ()
-    publishes: tuple[Publish, ...] = ()
-    calls: tuple[CallService, ...] = ()
-    goals: tuple[SendGoal, ...] = ()
-    cancels: tuple[CancelGoal, ...] = ()
-    responses: tuple[ServiceResponse, ...] = ()
+    logs: Sequence[Log] = ()
+    publishes: Sequence[Publish] = ()
+    calls: Sequence[CallService] = ()
+    goals: Sequence[SendGoal] = ()
+    cancels: Sequence[CancelGoal] = ()
+    responses: Sequence[ServiceResponse] = ()
     logs_dropped: int = 0
     """Log records the child did not send (over its budget) so far."""
     wake_ns: int | None = None
@@ -268,11 +268,11 @@ class Tick(NamedTuple):
     """Parent to child, every exchange: the time now and what arrived."""
 
     now_ns: int
-    deliveries: tuple[Delivery, ...] | list[Delivery] = ()
-    results: tuple[ServiceResult, ...] | list[ServiceResult] = ()
-    goal_events: tuple[GoalEvent, ...] | list[GoalEvent] = ()
-    requests: tuple[ServiceRequest, ...] | list[ServiceRequest] = ()
-    parameters: tuple[ParameterUpdate, ...] | list[ParameterUpdate] = ()
+    deliveries: Sequence[Delivery] = ()
+    results: Sequence[ServiceResult] = ()
+    goal_events: Sequence[GoalEvent] = ()
+    requests: Sequence[ServiceRequest] = ()
+    parameters: Sequence[ParameterUpdate] = ()
     graph: GraphMirror | None = None
     """The parent's graph, when it changed since the child last heard of it."""
 
@@ -288,41 +288,41 @@ _GOAL_TAGS: dict[type, str] = {GoalAccepted: "accepted", GoalFeedback: "feedback
 _GOAL_EVENTS: dict[str, Callable[[Any], GoalEvent]] = {tag: cls._make for cls, tag in _GOAL_TAGS.items()}
 
 
+_dumps = marshal.dumps
+
+
 def encode_tick(tick: Tick) -> bytes:
-    """The frame payload of ``tick``."""
-    message: dict[str, Any] = {"now": tick.now_ns}
-    if tick.deliveries:
-        message["msgs"] = [tuple(d) for d in tick.deliveries]
-    if tick.results:
-        message["results"] = [tuple(r) for r in tick.results]
-    if tick.goal_events:
-        message["goals"] = [(_GOAL_TAGS[type(e)], tuple(e)) for e in tick.goal_events]
-    if tick.requests:
-        message["requests"] = [tuple(r) for r in tick.requests]
-    if tick.parameters:
-        message["params"] = [tuple(p) for p in tick.parameters]
-    if tick.graph is not None:
-        message["graph"] = tick.graph.to_wire()
-    return marshal.dumps(message)
+    """The frame payload of ``tick``: a tuple of its fields, the records as
+    plain tuples (empty ones as ``()``)."""
+    now_ns, deliveries, results, goal_events, requests, parameters, graph = tick
+    return _dumps((
+        now_ns,
+        tuple(map(tuple, deliveries)) if deliveries else (),
+        tuple(map(tuple, results)) if results else (),
+        tuple([(_GOAL_TAGS[type(event)], tuple(event)) for event in goal_events]) if goal_events else (),
+        tuple(map(tuple, requests)) if requests else (),
+        tuple(map(tuple, parameters)) if parameters else (),
+        None if graph is None else graph.to_wire(),
+    ))
 
 
 def encode_end() -> bytes:
-    return marshal.dumps({"end": True})
+    return marshal.dumps(None)
 
 
 def decode_from_parent(payload: bytes) -> Tick | End:
     """What :func:`encode_tick` or :func:`encode_end` made (the child trusts it)."""
     message = marshal.loads(payload)
-    if message.get("end"):
+    if message is None:
         return End()
-    graph = message.get("graph")
+    now_ns, deliveries, results, goal_events, requests, parameters, graph = message
     return Tick(
-        message["now"],
-        [Delivery._make(d) for d in message.get("msgs", ())],
-        [ServiceResult._make(r) for r in message.get("results", ())],
-        [_GOAL_EVENTS[tag](fields) for tag, fields in message.get("goals", ())],
-        [ServiceRequest._make(r) for r in message.get("requests", ())],
-        [ParameterUpdate._make(p) for p in message.get("params", ())],
+        now_ns,
+        tuple(map(Delivery._make, deliveries)) if deliveries else (),
+        tuple(map(ServiceResult._make, results)) if results else (),
+        tuple([_GOAL_EVENTS[tag](fields) for tag, fields in goal_events]) if goal_events else (),
+        tuple(map(ServiceRequest._make, requests)) if requests else (),
+        tuple(map(ParameterUpdate._make, parameters)) if parameters else (),
         None if graph is None else GraphMirror.from_wire(graph),
     )
 
@@ -348,29 +348,30 @@ _ENCODE_JSON = json.JSONEncoder(separators=(",", ":"), allow_nan=True).encode
 
 def encode_report(report: Report) -> bytes:
     """The frame payload of ``report``: a JSON object with only what is not empty."""
+    changes, logs, publishes, calls, goals, cancels, responses, logs_dropped, wake_ns, done, crash = report
     message: dict[str, Any] = {}
-    if report.changes:
-        message["decl"] = [[_CHANGE_TAGS[type(change)], *change] for change in report.changes]
-    if report.logs:
-        message["log"] = report.logs
-    if report.publishes:
-        message["pub"] = report.publishes
-    if report.calls:
-        message["call"] = report.calls
-    if report.goals:
-        message["goal"] = report.goals
-    if report.cancels:
-        message["cancel"] = report.cancels
-    if report.responses:
-        message["resp"] = report.responses
-    if report.logs_dropped:
-        message["logs_dropped"] = report.logs_dropped
-    if report.wake_ns is not None:
-        message["wake"] = report.wake_ns
-    if report.done:
+    if changes:
+        message["decl"] = [[_CHANGE_TAGS[type(change)], *change] for change in changes]
+    if logs:
+        message["log"] = logs
+    if publishes:
+        message["pub"] = publishes
+    if calls:
+        message["call"] = calls
+    if goals:
+        message["goal"] = goals
+    if cancels:
+        message["cancel"] = cancels
+    if responses:
+        message["resp"] = responses
+    if logs_dropped:
+        message["logs_dropped"] = logs_dropped
+    if wake_ns is not None:
+        message["wake"] = wake_ns
+    if done:
         message["done"] = True
-    if report.crash is not None:
-        message["crash"] = report.crash
+    if crash is not None:
+        message["crash"] = crash
     return _ENCODE_JSON(message).encode()
 
 
@@ -444,6 +445,9 @@ def _frames(value: Any) -> tuple[str, ...]:
     return tuple(value)
 
 
+_PLAIN_TYPES: dict[Callable[[Any], Any], type] = {_int: int, _str: str, _bool: bool, _values: list}
+"""The checks that only compare a field's type with one type."""
+
 _FIELDS: dict[type, tuple[Callable[[Any], Any], ...]] = {
     DeclareNode: (_int, _str, _str),
     RemoveNode: (_int,),
@@ -467,7 +471,20 @@ _FIELDS: dict[type, tuple[Callable[[Any], Any], ...]] = {
 """How each field of a record the child sends is checked (and converted), in field order."""
 
 
-def _record(cls: type, fields: Any, where: str) -> Any:
+_PLAIN: dict[type, list[type]] = {
+    cls: [_PLAIN_TYPES[check] for check in checks]
+    for cls, checks in _FIELDS.items()
+    if all(check in _PLAIN_TYPES for check in checks)
+}
+"""The records whose fields are all of one plain type each: checked at once by
+comparing the types of their fields (the hot path: Publish, Log)."""
+
+
+def _record(cls: type, fields: Any, key: str, index: int | None = None) -> Any:
+    """The record ``cls`` from its fields (``key[index]`` in the report)."""
+    if type(fields) is list and list(map(type, fields)) == _PLAIN.get(cls):
+        return tuple.__new__(cls, fields)
+    where = key if index is None else f"{key}[{index}]"
     checks = _FIELDS[cls]
     if type(fields) is not list:
         raise ProtocolError(f"{where}: a {cls.__name__} must be an array of its fields, got {_show(fields)}")
@@ -476,36 +493,41 @@ def _record(cls: type, fields: Any, where: str) -> Any:
             f"{where}: a {cls.__name__} has {len(checks)} fields ({', '.join(cls._fields)}), "
             f"got {len(fields)}: {_show(fields)}"
         )
-    try:
-        return cls._make([check(value) for check, value in zip(checks, fields, strict=True)])
-    except _Bad:
-        for name, check, value in zip(cls._fields, checks, fields, strict=True):
-            try:
-                check(value)
-            except _Bad as bad:
-                raise ProtocolError(
-                    f"{where}: {cls.__name__}.{name} must be {bad.expected}, got {_show(value)}"
-                ) from None
-        raise  # pragma: no cover - a check failed once, so it fails again
+    values = []
+    for name, check, value in zip(cls._fields, checks, fields, strict=True):
+        try:
+            values.append(check(value))
+        except _Bad as bad:
+            raise ProtocolError(f"{where}: {cls.__name__}.{name} must be {bad.expected}, got {_show(value)}") from None
+    return tuple.__new__(cls, values)
 
 
 _CHANGES: dict[str, type] = {tag: cls for cls, tag in _CHANGE_TAGS.items()}
 
 
-def _change(entry: Any, where: str) -> GraphChange:
+def _change(entry: Any, key: str, index: int) -> GraphChange:
     if type(entry) is not list or not entry:
-        raise ProtocolError(f"{where}: a graph change must be an array [kind, fields...], got {_show(entry)}")
+        raise ProtocolError(f"{key}[{index}]: a graph change must be an array [kind, fields...], got {_show(entry)}")
     cls = _CHANGES.get(entry[0]) if type(entry[0]) is str else None
     if cls is None:
-        raise ProtocolError(f"{where}: unknown graph change {_show(entry[0])} (known: {', '.join(_CHANGES)})")
-    return _record(cls, entry[1:], where)
+        raise ProtocolError(f"{key}[{index}]: unknown graph change {_show(entry[0])} (known: {', '.join(_CHANGES)})")
+    return _record(cls, entry[1:], key, index)
 
 
 def _records(cls: type) -> Callable[[Any, str], tuple]:
+    plain = _PLAIN.get(cls)
+    new = tuple.__new__
+
     def decode(entries: Any, key: str) -> tuple:
         if type(entries) is not list:
             raise ProtocolError(f"{key}: must be an array of {cls.__name__} records, got {_show(entries)}")
-        return tuple(_record(cls, entry, f"{key}[{i}]") for i, entry in enumerate(entries))
+        records = []
+        for index, fields in enumerate(entries):
+            if type(fields) is list and list(map(type, fields)) == plain:
+                records.append(new(cls, fields))  # the usual case, checked at once
+            else:
+                records.append(_record(cls, fields, key, index))
+        return tuple(records)
 
     return decode
 
@@ -513,7 +535,7 @@ def _records(cls: type) -> Callable[[Any, str], tuple]:
 def _changes(entries: Any, key: str) -> tuple:
     if type(entries) is not list:
         raise ProtocolError(f"{key}: must be an array of graph changes, got {_show(entries)}")
-    return tuple(_change(entry, f"{key}[{i}]") for i, entry in enumerate(entries))
+    return tuple([_change(entry, key, i) for i, entry in enumerate(entries)])
 
 
 def _scalar(check: Callable[[Any], Any], nullable: bool = False) -> Callable[[Any, str], Any]:
@@ -538,20 +560,24 @@ def _crash(value: Any, key: str) -> Crash | None:
     return None if value is None else _record(Crash, value, key)
 
 
-_REPORT_ENTRIES: dict[str, tuple[str, Callable[[Any, str], Any]]] = {
-    "decl": ("changes", _changes),
-    "log": ("logs", _records(Log)),
-    "pub": ("publishes", _records(Publish)),
-    "call": ("calls", _records(CallService)),
-    "goal": ("goals", _records(SendGoal)),
-    "cancel": ("cancels", _records(CancelGoal)),
-    "resp": ("responses", _records(ServiceResponse)),
-    "logs_dropped": ("logs_dropped", _logs_dropped),
-    "wake": ("wake_ns", _scalar(_int, nullable=True)),
-    "done": ("done", _scalar(_bool)),
-    "crash": ("crash", _crash),
+_REPORT_ENTRIES: dict[str, tuple[int, Callable[[Any, str], Any]]] = {
+    key: (Report._fields.index(field), decode)
+    for key, field, decode in (
+        ("decl", "changes", _changes),
+        ("log", "logs", _records(Log)),
+        ("pub", "publishes", _records(Publish)),
+        ("call", "calls", _records(CallService)),
+        ("goal", "goals", _records(SendGoal)),
+        ("cancel", "cancels", _records(CancelGoal)),
+        ("resp", "responses", _records(ServiceResponse)),
+        ("logs_dropped", "logs_dropped", _logs_dropped),
+        ("wake", "wake_ns", _scalar(_int, nullable=True)),
+        ("done", "done", _scalar(_bool)),
+        ("crash", "crash", _crash),
+    )
 }
-"""The report's JSON keys: the Report field each fills and how it is decoded."""
+"""The report's JSON keys: the place in a Report each fills and how it is decoded."""
+_EMPTY_REPORT = list(Report())
 
 _SCAN = json.JSONDecoder().scan_once
 """What json.loads does past its checks for encodings and white space: the
@@ -575,11 +601,12 @@ def decode_report(payload: bytes) -> Report:
         raise WireError(f"sent a malformed reply (more after the JSON value at char {end})")
     if type(reply) is not dict:
         raise WireError("sent a malformed reply (not an object)")
-    fields = {}
+    fields = _EMPTY_REPORT.copy()
+    entries = _REPORT_ENTRIES
     for key, value in reply.items():
-        entry = _REPORT_ENTRIES.get(key)
+        entry = entries.get(key)
         if entry is None:
-            raise ProtocolError(f"unknown report entry {key[:60]!r} (known: {', '.join(_REPORT_ENTRIES)})")
-        name, decode = entry
-        fields[name] = decode(value, key)
-    return Report(**fields)
+            raise ProtocolError(f"unknown report entry {key[:60]!r} (known: {', '.join(entries)})")
+        place, decode = entry
+        fields[place] = decode(value, key)
+    return tuple.__new__(Report, fields)
