@@ -35,7 +35,8 @@ CHANGES: dict[type, tuple] = {
     protocol.DeclareService: protocol.DeclareService(1, "/reset_count", "std_srvs/srv/Empty"),
     protocol.DeclareClient: protocol.DeclareClient(1, "/spawn", "turtlesim/srv/Spawn"),
     protocol.DeclareActionClient: protocol.DeclareActionClient(1, "/turtle1/rotate_absolute", "turtlesim/action/RotateAbsolute"),
-    protocol.RemoveRecord: protocol.RemoveRecord("action_client", 1, "/turtle1/rotate_absolute"),
+    protocol.DeclareActionServer: protocol.DeclareActionServer(1, "/spin", "turtlesim/action/RotateAbsolute"),
+    protocol.RemoveRecord: protocol.RemoveRecord("action_server", 1, "/spin"),
     protocol.SetParameter: protocol.SetParameter(1, "gains", [0.5, 1, None, "x", True], False),
 }
 """One of each graph change, with every kind of field value."""
@@ -54,6 +55,14 @@ def full_report() -> protocol.Report:
         goals=(protocol.SendGoal(8, "/turtle1/rotate_absolute", [1.57]),),
         cancels=(protocol.CancelGoal(8),),
         responses=(protocol.ServiceResponse(3, []),),
+        served=(
+            protocol.AcceptServedGoal(4, "executing"),
+            protocol.ServedGoalStatus(4, "canceling"),
+            protocol.ServedGoalFeedback(4, [0.5]),
+            protocol.AnswerServedCancel(4, 0, True),
+            protocol.FinishServedGoal(4, "canceled", [0.25]),
+            protocol.RejectServedGoal(5),
+        ),
         logs_dropped=12,
         wake_ns=1_016_000_000,
         done=True,
@@ -63,6 +72,10 @@ def full_report() -> protocol.Report:
 
 def test_every_graph_change_kind_has_an_example_here():
     assert set(CHANGES) == every_change_kind()
+
+
+def test_every_served_goal_event_kind_is_in_the_full_report():
+    assert {type(e) for e in full_report().served} == set(typing.get_args(protocol.ServedGoalEvent))
 
 
 def test_a_report_with_every_message_kind_round_trips():
@@ -103,17 +116,23 @@ def test_a_tick_with_everything_round_trips():
         (protocol.Delivery(3, [5.5, 5.5, 0.0, 0.0, 0.0]),),
         (protocol.ServiceResult(7, "turtlesim/srv/Spawn_Response", ["turtle2"]),),
         (
-            protocol.GoalAccepted(8),
+            protocol.GoalAccepted(8, 31, "accepted"),
+            protocol.GoalStatus(8, "executing"),
             protocol.GoalFeedback(8, [0.7]),
+            protocol.CancelAnswer(8, 1, False),
             protocol.GoalResult(8, "succeeded", [0.1]),
+            protocol.GoalRejected(9),
         ),
         (protocol.ServiceRequest(1, "/reset_count", []),),
         (protocol.ParameterUpdate(1, "gain", 2.5),),
+        (protocol.ServeGoal(12, "/spin", [1.0]), protocol.ServeCancel(12)),
         mirror,
     )
     decoded = protocol.decode_from_parent(protocol.encode_tick(tick))
     assert decoded == tick
-    assert [type(e) for e in decoded.goal_events] == [protocol.GoalAccepted, protocol.GoalFeedback, protocol.GoalResult]
+    assert [type(e) for e in decoded.goal_events] == [type(e) for e in tick.goal_events]
+    assert {type(e) for e in tick.goal_events} == set(typing.get_args(protocol.GoalEvent))
+    assert [type(e) for e in decoded.served] == [protocol.ServeGoal, protocol.ServeCancel]
     assert type(decoded.graph) is GraphMirror
 
 
@@ -168,7 +187,10 @@ REFUSED = [
     ({"decl": [["pub", 2, 1, "/t", "pkg/msg/T", "10", None]]}, "DeclarePublisher.depth must be an integer, got str '10'"),
     ({"decl": [["pub", 2, 1, "/t", "pkg/msg/T", 10, [1, 2]]]}, "DeclarePublisher.qos must be null or QoS policies"),
     ({"decl": [["sub", 2, 1, "/t", "pkg/msg/T", 10, 5, None]]}, "DeclareSubscription.label must be a string"),
-    ({"decl": [["rmrecord", "turtle", 1, "/t"]]}, "RemoveRecord.kind must be one of service, client, action_client"),
+    ({"decl": [["rmrecord", "turtle", 1, "/t"]]}, "RemoveRecord.kind must be one of service, client, action_client, action_server"),
+    ({"served": [["accept", 1, "won"]]}, r"served\[0\]: AcceptServedGoal.status must be one of accepted, executing, got str 'won'"),
+    ({"served": [["cancel", 1, 0, 1]]}, "AnswerServedCancel.canceling must be true or false"),
+    ({"served": [["teleport", 1]]}, "unknown served-goal event str 'teleport'"),
     ({"decl": [["param", 1, "p", {"a": 1}, False]]}, "SetParameter.value must be a value a ROS parameter can hold"),
     ({"decl": [["param", 1, "p", [[1]], False]]}, "SetParameter.value must be a value a ROS parameter can hold"),
     ({"decl": [["param", 1, "p", 1, 0]]}, "SetParameter.remove must be true or false, got int 0"),

@@ -804,6 +804,10 @@ FORGED = {
     "pub-short-fields": (frame({"pub": [["/turtle1/cmd_vel", [1, 2, 3]]]}), "exception", REFUSED),
     "pub-bad-field": (frame({"pub": [["/turtle1/cmd_vel", [["fast", 0, 0], [0, 0, 0]]]]}), "exception", REFUSED),
     "call-bad-request": (frame({"call": [[1, "/spawn", ["far", 1.0, 0.0, ""]]]}), "exception", REFUSED),
+    "asrv-unknown-type": (frame({"decl": [["asrv", 1, "/spin", "no_pkg/action/Nothing"]]}), "exception", REFUSED),
+    "served-not-arrays": (frame({"served": [5]}), "exception", "served[0]: a served-goal event must be an array"),
+    "served-bad-status": (frame({"served": [["result", 1, "won", []]]}), "exception", "FinishServedGoal.status must be one of succeeded"),
+    "served-bad-cancel-code": (frame({"served": [["cancel", 1, 9, True]]}), "exception", "AnswerServedCancel.code must be a CancelGoal return code"),
     "wake-infinite": (frame(b'{"wake": Infinity}'), "exception", "wake: must be an integer or null"),
     "wake-nan": (frame(b'{"wake": NaN}'), "exception", REFUSED),
     "wake-string": (frame({"wake": "soon"}), "exception", REFUSED),
@@ -814,6 +818,7 @@ FORGED = {
     # Harmless: an answer to nothing is ignored; a wake-up at the end of time means
     # "never" (the forger, still asleep when the run ends, does not answer "end").
     "resp-unknown": (frame({"resp": [[424242, [1]]]}), None, ""),
+    "served-unknown-goal": (frame({"served": [["result", 424242, "succeeded", [1.0]]]}), None, ""),
     "wake-huge": (frame({"wake": 10**400}), None, ""),
 }
 

@@ -225,6 +225,7 @@ def main(config: dict[str, Any] | None = None) -> None:
 
     compat.install(config.get("distro"))
     graph = Graph(epoch_ns=config["epoch_ns"], type_name=interface_name)
+    graph.discovery_ns = config.get("discovery_ns", 0)
     log_lines = config.get("limits", {}).get("log_lines")
     outbox = ParentOutbox(graph) if log_lines is None else ParentOutbox(graph, log_budget=int(log_lines) + 1)
     outbox.install()

@@ -31,26 +31,40 @@ from turtletui.graph.logs import WARN, LogRecord
 from turtletui.interfaces import get_interface, to_values, trusted_from_values
 from turtletui.runtime import graph_mirror
 from turtletui.runtime.protocol import (
+    AcceptServedGoal,
+    AnswerServedCancel,
     CallService,
+    CancelAnswer,
     CancelGoal,
     Crash,
     DeclareActionClient,
+    DeclareActionServer,
     DeclareClient,
     DeclareNode,
     DeclarePublisher,
     DeclareService,
     DeclareSubscription,
     DeclareTimer,
+    FinishServedGoal,
     GoalAccepted,
+    GoalEvent,
     GoalFeedback,
+    GoalRejected,
+    GoalStatus,
     GraphChange,
     Log,
     Publish,
+    RejectServedGoal,
     RemoveEndpoint,
     RemoveNode,
     RemoveRecord,
     Report,
     SendGoal,
+    ServeCancel,
+    ServedGoalEvent,
+    ServedGoalFeedback,
+    ServedGoalStatus,
+    ServerEvent,
     ServiceResponse,
     SetParameter,
     Tick,
@@ -59,7 +73,12 @@ from turtletui.runtime.protocol import (
 OWNER = "child"
 """Owner of the controller's ready callbacks in the child."""
 
-_REMOVED_KINDS = {Service: "service", ServiceClient: "client", ActionClientRecord: "action_client"}
+_REMOVED_KINDS = {
+    Service: "service",
+    ServiceClient: "client",
+    ActionClientRecord: "action_client",
+    ActionServer: "action_server",
+}
 
 
 class ParentOutbox:
@@ -82,6 +101,7 @@ class ParentOutbox:
         self.goals: list[SendGoal] = []
         self.cancels: list[CancelGoal] = []
         self.responses: list[ServiceResponse] = []
+        self.served: list[ServedGoalEvent] = []
         self._ids = itertools.count(1)
         self.wire_ids: dict[Any, int] = {}
         """The controller's nodes, publishers and subscriptions -> their wire ids."""
@@ -89,6 +109,12 @@ class ParentOutbox:
         """... and back."""
         self._calls: dict[int, Callable[[Any], None]] = {}
         self._goals: dict[int, tuple] = {}
+        """The controller's goals for the parent's action servers, by wire id."""
+        self._goal_wire_ids: dict[GoalHandle, int] = {}
+        self._cancels: dict[int, list[Callable[[int, bool], None] | None]] = {}
+        """Who waits for the parent's answer to a cancel request, by goal wire id."""
+        self._served: dict[int, GoalHandle] = {}
+        """Goals of the controller's own action servers, by the parent's goal id."""
 
     def install(self) -> None:
         self.graph.outbox = self
@@ -96,7 +122,7 @@ class ParentOutbox:
     def report(self, wake_ns: int | None, *, done: bool = False, crash: Crash | None = None) -> Report:
         """Everything queued since the last report (then nothing is)."""
         changes, logs, publishes = self.changes, self.logs, self.publishes
-        calls, goals, cancels, responses = self.calls, self.goals, self.cancels, self.responses
+        calls, goals, cancels, responses, served = self.calls, self.goals, self.cancels, self.responses, self.served
         report = Report(
             changes,
             logs,
@@ -105,6 +131,7 @@ class ParentOutbox:
             goals,
             cancels,
             responses,
+            served,
             self.logs_dropped,
             None if wake_ns is None else int(wake_ns),
             done,
@@ -117,8 +144,8 @@ class ParentOutbox:
             self.logs = []
         if publishes:
             self.publishes = []
-        if calls or goals or cancels or responses:
-            self.calls, self.goals, self.cancels, self.responses = [], [], [], []
+        if calls or goals or cancels or responses or served:
+            self.calls, self.goals, self.cancels, self.responses, self.served = [], [], [], [], []
         return report
 
     # -- GraphOutbox: what the controller's nodes do ------------------------------------------
@@ -154,8 +181,10 @@ class ParentOutbox:
             change = DeclareClient(self.wire_ids[record.node], record.name, record.type_name)
         elif isinstance(record, ActionClientRecord):
             change = DeclareActionClient(self.wire_ids[record.node], record.name, record.type_name)
+        elif isinstance(record, ActionServer):
+            change = DeclareActionServer(self.wire_ids[record.node], record.name, record.type_name)
         else:
-            return  # an action server: served in the child only
+            return
         self.changes.append(change)
 
     def removed(self, record: Any) -> None:
@@ -197,14 +226,20 @@ class ParentOutbox:
         on_accepted: Callable[[GoalHandle | None], None],
         on_feedback: Callable[[Any], None],
         on_result: Callable[[str, Any], None],
-    ) -> None:
-        goal_id = next(self._ids)
-        handle = GoalHandle(server, goal_id, goal, on_feedback, on_result)
-        self._goals[goal_id] = (handle, on_accepted, on_feedback, on_result, server.action_type)
-        self.goals.append(SendGoal(goal_id, server.name, to_values(goal)))
+        on_status: Callable[[str], None] | None,
+    ) -> GoalHandle:
+        wire_id = next(self._ids)
+        # goal_id becomes the parent's once it accepted the goal
+        handle = GoalHandle(server, wire_id, goal, on_feedback, on_result, status="pending")
+        self._goals[wire_id] = (handle, on_accepted, on_feedback, on_result, on_status, server.action_type)
+        self._goal_wire_ids[handle] = wire_id
+        self.goals.append(SendGoal(wire_id, server.name, to_values(goal)))
+        return handle
 
-    def cancel_goal(self, handle: GoalHandle) -> None:
-        self.cancels.append(CancelGoal(handle.goal_id))
+    def cancel_goal(self, handle: GoalHandle, on_answer: Callable[[int, bool], None] | None) -> None:
+        wire_id = self._goal_wire_ids[handle]
+        self._cancels.setdefault(wire_id, []).append(on_answer)
+        self.cancels.append(CancelGoal(wire_id))
 
     def logged(self, record: LogRecord) -> None:
         if self.log_budget > 0:
@@ -235,20 +270,9 @@ class ParentOutbox:
                 response = trusted_from_values(get_interface(type_name))(values)
                 ready.append((OWNER, lambda cb=on_response, r=response: cb(r)))
         for event in tick.goal_events:
-            entry = self._goals.get(event.goal_id)
-            if entry is None:
-                continue
-            handle, on_accepted, on_feedback, on_result, action = entry
-            if isinstance(event, GoalAccepted):
-                ready.append((OWNER, lambda cb=on_accepted, h=handle: cb(h)))
-            elif isinstance(event, GoalFeedback):
-                feedback = trusted_from_values(action.Feedback)(event.values)
-                ready.append((OWNER, lambda cb=on_feedback, f=feedback: cb(f)))
-            else:
-                self._goals.pop(event.goal_id, None)
-                handle.status = event.status
-                result = trusted_from_values(action.Result)(event.values)
-                ready.append((OWNER, lambda cb=on_result, s=event.status, r=result: cb(s, r)))
+            self._goal_event(event)
+        for event in tick.served:
+            self._serve(event)
         for req_id, name, values in tick.requests:
             service = graph.services.get(name)
             if service is None:
@@ -263,6 +287,75 @@ class ParentOutbox:
             node = own.get(node_id)
             if isinstance(node, NodeRecord) and node.parameter_setter is not None:
                 ready.append((OWNER, lambda n=node, k=name, v=value: self._set_parameter(n, k, v)))
+
+    def _goal_event(self, event: GoalEvent) -> None:
+        """What happened to one of the controller's goals for the parent's servers."""
+        ready = self.graph.ready
+        kind = type(event)
+        if kind is CancelAnswer:  # may come after the goal's result
+            waiting = self._cancels.get(event.goal_id)
+            on_answer = waiting.pop(0) if waiting else None
+            if on_answer is not None:
+                ready.append((OWNER, lambda cb=on_answer, e=event: cb(e.code, e.canceling)))
+            return
+        entry = self._goals.get(event.goal_id)
+        if entry is None:
+            return
+        handle, on_accepted, on_feedback, on_result, on_status, action = entry
+        if kind is GoalAccepted:
+            handle.goal_id, handle.status = event.server_goal_id, event.status
+            ready.append((OWNER, lambda cb=on_accepted, h=handle: cb(h)))
+        elif kind is GoalRejected:
+            self._goals.pop(event.goal_id, None)
+            handle.status = "rejected"
+            ready.append((OWNER, lambda cb=on_accepted: cb(None)))
+        elif kind is GoalStatus:
+            handle.status = event.status
+            if on_status is not None:
+                ready.append((OWNER, lambda cb=on_status, s=event.status: cb(s)))
+        elif kind is GoalFeedback:
+            feedback = trusted_from_values(action.Feedback)(event.values)
+            ready.append((OWNER, lambda cb=on_feedback, f=feedback: cb(f)))
+        else:
+            self._goals.pop(event.goal_id, None)
+            handle.status = event.status
+            result = trusted_from_values(action.Result)(event.values)
+            ready.append((OWNER, lambda cb=on_result, s=event.status, r=result: cb(s, r)))
+
+    def _serve(self, event: ServerEvent) -> None:
+        """A goal for one of the controller's action servers, or a request to cancel one."""
+        goal_id = event.goal_id
+        ready = self.graph.ready
+
+        def send(served: ServedGoalEvent) -> None:
+            self.served.append(served)  # the list of the next report (each report takes its own)
+
+        if type(event) is ServeCancel:
+            handle = self._served.get(goal_id)
+            if handle is not None:
+                answer = lambda code, canceling: send(AnswerServedCancel(goal_id, code, canceling))  # noqa: E731
+                ready.append((OWNER, lambda: handle.request_cancel(answer)))
+            return
+        server = self.graph.action_servers.get(event.action)
+        if server is None or server.owner == self.remote_owner:
+            return  # destroyed meanwhile: never answered, as in ROS
+
+        def finished(status: str, result: Any) -> None:
+            self._served.pop(goal_id, None)
+            send(FinishServedGoal(goal_id, status, to_values(result)))
+
+        handle = GoalHandle(
+            server,
+            goal_id,
+            trusted_from_values(server.action_type.Goal)(event.values),
+            on_feedback=lambda feedback: send(ServedGoalFeedback(goal_id, to_values(feedback))),
+            on_result=finished,
+            status="pending",
+            on_answer=lambda h: send(AcceptServedGoal(goal_id, h.status) if h is not None else RejectServedGoal(goal_id)),
+            on_status=lambda status: send(ServedGoalStatus(goal_id, status)),
+        )
+        self._served[goal_id] = handle
+        ready.append((OWNER, lambda: server.on_goal(handle)))
 
     def _set_parameter(self, node: NodeRecord, name: str, value: Any) -> None:
         """``ros2 param set`` from the app; the parent checked the name and type,

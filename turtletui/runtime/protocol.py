@@ -104,12 +104,21 @@ class DeclareActionClient(NamedTuple):
     type_name: str
 
 
-REMOVABLE = ("service", "client", "action_client")
+class DeclareActionServer(NamedTuple):
+    """The parent sends it goals (:class:`ServeGoal`); the child answers each
+    with :class:`ServedGoalEvent` records."""
+
+    node: int
+    name: str
+    type_name: str
+
+
+REMOVABLE = ("service", "client", "action_client", "action_server")
 """What :class:`RemoveRecord` may remove."""
 
 
 class RemoveRecord(NamedTuple):
-    """A service, client or action client destroyed."""
+    """A service, client, action client or action server destroyed."""
 
     kind: str
     """One of :data:`REMOVABLE`."""
@@ -137,6 +146,7 @@ GraphChange = (
     | DeclareService
     | DeclareClient
     | DeclareActionClient
+    | DeclareActionServer
     | RemoveRecord
     | SetParameter
 )
@@ -170,7 +180,60 @@ class SendGoal(NamedTuple):
 
 
 class CancelGoal(NamedTuple):
+    """The parent answers with a :class:`CancelAnswer`."""
+
     goal_id: int
+
+
+# What the child's action servers do with the goals the parent sent them
+# (:class:`ServeGoal`), named by the parent's goal id.
+
+
+class AcceptServedGoal(NamedTuple):
+    goal_id: int
+    status: str
+    """"accepted" or already "executing"."""
+
+
+class RejectServedGoal(NamedTuple):
+    goal_id: int
+
+
+class ServedGoalStatus(NamedTuple):
+    goal_id: int
+    status: str
+    """"executing" or "canceling"."""
+
+
+class ServedGoalFeedback(NamedTuple):
+    goal_id: int
+    values: Values
+
+
+class FinishServedGoal(NamedTuple):
+    goal_id: int
+    status: str
+    """"succeeded", "aborted" or "canceled"."""
+    values: Values
+
+
+class AnswerServedCancel(NamedTuple):
+    """The server decided on a :class:`ServeCancel`."""
+
+    goal_id: int
+    code: int
+    """An action_msgs/srv/CancelGoal return code (0 to 3)."""
+    canceling: bool
+
+
+ServedGoalEvent = (
+    AcceptServedGoal
+    | RejectServedGoal
+    | ServedGoalStatus
+    | ServedGoalFeedback
+    | FinishServedGoal
+    | AnswerServedCancel
+)
 
 
 class ServiceResponse(NamedTuple):
@@ -200,6 +263,8 @@ class Report(NamedTuple):
     goals: Sequence[SendGoal] = ()
     cancels: Sequence[CancelGoal] = ()
     responses: Sequence[ServiceResponse] = ()
+    served: Sequence[ServedGoalEvent] = ()
+    """What the child's action servers did with their goals, in order."""
     logs_dropped: int = 0
     """Log records the child did not send (over its budget) so far."""
     wake_ns: int | None = None
@@ -229,8 +294,25 @@ class ServiceResult(NamedTuple):
     values: Values
 
 
+# What happened to the goals the child sent (:class:`SendGoal`), by its goal id.
+
+
 class GoalAccepted(NamedTuple):
     goal_id: int
+    server_goal_id: int
+    """The goal's id on the server's side (what the client shows of it)."""
+    status: str
+    """"accepted" or "executing"."""
+
+
+class GoalRejected(NamedTuple):
+    goal_id: int
+
+
+class GoalStatus(NamedTuple):
+    goal_id: int
+    status: str
+    """"executing" or "canceling"."""
 
 
 class GoalFeedback(NamedTuple):
@@ -245,7 +327,34 @@ class GoalResult(NamedTuple):
     values: Values
 
 
-GoalEvent = GoalAccepted | GoalFeedback | GoalResult
+class CancelAnswer(NamedTuple):
+    """The server's answer to the child's :class:`CancelGoal` (may come after the result)."""
+
+    goal_id: int
+    code: int
+    canceling: bool
+
+
+GoalEvent = GoalAccepted | GoalRejected | GoalStatus | GoalFeedback | GoalResult | CancelAnswer
+
+
+# Goals for the child's own action servers (:class:`DeclareActionServer`),
+# by the parent's goal id.
+
+
+class ServeGoal(NamedTuple):
+    goal_id: int
+    action: str
+    values: Values
+
+
+class ServeCancel(NamedTuple):
+    """A client asks to cancel the goal: the child answers with :class:`AnswerServedCancel`."""
+
+    goal_id: int
+
+
+ServerEvent = ServeGoal | ServeCancel
 
 
 class ServiceRequest(NamedTuple):
@@ -273,6 +382,8 @@ class Tick(NamedTuple):
     goal_events: Sequence[GoalEvent] = ()
     requests: Sequence[ServiceRequest] = ()
     parameters: Sequence[ParameterUpdate] = ()
+    served: Sequence[ServerEvent] = ()
+    """Goals and cancel requests for the child's action servers, in order."""
     graph: GraphMirror | None = None
     """The parent's graph, when it changed since the child last heard of it."""
 
@@ -284,8 +395,20 @@ class End(NamedTuple):
 # -- parent to child: encoding ------------------------------------------------------------------
 # marshal takes plain tuples only, not NamedTuples: each record goes as tuple(record).
 
-_GOAL_TAGS: dict[type, str] = {GoalAccepted: "accepted", GoalFeedback: "feedback", GoalResult: "result"}
-_GOAL_EVENTS: dict[str, Callable[[Any], GoalEvent]] = {tag: cls._make for cls, tag in _GOAL_TAGS.items()}
+_EVENT_TAGS: dict[type, str] = {
+    GoalAccepted: "accepted",
+    GoalRejected: "rejected",
+    GoalStatus: "status",
+    GoalFeedback: "feedback",
+    GoalResult: "result",
+    CancelAnswer: "cancel",
+    ServeGoal: "goal",
+    ServeCancel: "cancel",
+}
+_GOAL_EVENTS: dict[str, Callable[[Any], GoalEvent]] = {
+    tag: cls._make for cls, tag in _EVENT_TAGS.items() if cls not in (ServeGoal, ServeCancel)
+}
+_SERVER_EVENTS: dict[str, Callable[[Any], ServerEvent]] = {"goal": ServeGoal._make, "cancel": ServeCancel._make}
 
 
 _dumps = marshal.dumps
@@ -294,16 +417,21 @@ _dumps = marshal.dumps
 def encode_tick(tick: Tick) -> bytes:
     """The frame payload of ``tick``: a tuple of its fields, the records as
     plain tuples (empty ones as ``()``)."""
-    now_ns, deliveries, results, goal_events, requests, parameters, graph = tick
+    now_ns, deliveries, results, goal_events, requests, parameters, served, graph = tick
     return _dumps((
         now_ns,
         tuple(map(tuple, deliveries)) if deliveries else (),
         tuple(map(tuple, results)) if results else (),
-        tuple([(_GOAL_TAGS[type(event)], tuple(event)) for event in goal_events]) if goal_events else (),
+        _tagged(goal_events) if goal_events else (),
         tuple(map(tuple, requests)) if requests else (),
         tuple(map(tuple, parameters)) if parameters else (),
+        _tagged(served) if served else (),
         None if graph is None else graph.to_wire(),
     ))
+
+
+def _tagged(events: Sequence[Any]) -> tuple:
+    return tuple([(_EVENT_TAGS[type(event)], tuple(event)) for event in events])
 
 
 def encode_end() -> bytes:
@@ -315,7 +443,7 @@ def decode_from_parent(payload: bytes) -> Tick | End:
     message = marshal.loads(payload)
     if message is None:
         return End()
-    now_ns, deliveries, results, goal_events, requests, parameters, graph = message
+    now_ns, deliveries, results, goal_events, requests, parameters, served, graph = message
     return Tick(
         now_ns,
         tuple(map(Delivery._make, deliveries)) if deliveries else (),
@@ -323,6 +451,7 @@ def decode_from_parent(payload: bytes) -> Tick | End:
         tuple([_GOAL_EVENTS[tag](fields) for tag, fields in goal_events]) if goal_events else (),
         tuple(map(ServiceRequest._make, requests)) if requests else (),
         tuple(map(ParameterUpdate._make, parameters)) if parameters else (),
+        tuple([_SERVER_EVENTS[tag](fields) for tag, fields in served]) if served else (),
         None if graph is None else GraphMirror.from_wire(graph),
     )
 
@@ -339,8 +468,17 @@ _CHANGE_TAGS: dict[type, str] = {
     DeclareService: "srv",
     DeclareClient: "client",
     DeclareActionClient: "aclient",
+    DeclareActionServer: "asrv",
     RemoveRecord: "rmrecord",
     SetParameter: "param",
+}
+_SERVED_TAGS: dict[type, str] = {
+    AcceptServedGoal: "accept",
+    RejectServedGoal: "reject",
+    ServedGoalStatus: "status",
+    ServedGoalFeedback: "feedback",
+    FinishServedGoal: "result",
+    AnswerServedCancel: "cancel",
 }
 _ENCODE_JSON = json.JSONEncoder(separators=(",", ":"), allow_nan=True).encode
 """``json.dumps(obj, separators=(",", ":"), allow_nan=True)`` without building an encoder each call."""
@@ -348,7 +486,7 @@ _ENCODE_JSON = json.JSONEncoder(separators=(",", ":"), allow_nan=True).encode
 
 def encode_report(report: Report) -> bytes:
     """The frame payload of ``report``: a JSON object with only what is not empty."""
-    changes, logs, publishes, calls, goals, cancels, responses, logs_dropped, wake_ns, done, crash = report
+    changes, logs, publishes, calls, goals, cancels, responses, served, logs_dropped, wake_ns, done, crash = report
     message: dict[str, Any] = {}
     if changes:
         message["decl"] = [[_CHANGE_TAGS[type(change)], *change] for change in changes]
@@ -364,6 +502,8 @@ def encode_report(report: Report) -> bytes:
         message["cancel"] = cancels
     if responses:
         message["resp"] = responses
+    if served:
+        message["served"] = [[_SERVED_TAGS[type(event)], *event] for event in served]
     if logs_dropped:
         message["logs_dropped"] = logs_dropped
     if wake_ns is not None:
@@ -420,6 +560,21 @@ def _removable(value: Any) -> str:
     return value
 
 
+def _one_of(*allowed: str) -> Callable[[Any], str]:
+    def check(value: Any) -> str:
+        if value not in allowed or type(value) is not str:
+            raise _Bad(f"one of {', '.join(allowed)}")
+        return value
+
+    return check
+
+
+def _cancel_code(value: Any) -> int:
+    if type(value) is not int or not 0 <= value <= 3:
+        raise _Bad("a CancelGoal return code (0 to 3)")
+    return value
+
+
 def _qos(value: Any) -> QosPolicies | None:
     if value is None:
         return None
@@ -458,6 +613,7 @@ _FIELDS: dict[type, tuple[Callable[[Any], Any], ...]] = {
     DeclareService: (_int, _str, _str),
     DeclareClient: (_int, _str, _str),
     DeclareActionClient: (_int, _str, _str),
+    DeclareActionServer: (_int, _str, _str),
     RemoveRecord: (_removable, _int, _str),
     SetParameter: (_int, _str, _parameter_value, _bool),
     Log: (_int, _str, _str),
@@ -466,6 +622,12 @@ _FIELDS: dict[type, tuple[Callable[[Any], Any], ...]] = {
     SendGoal: (_int, _str, _values),
     CancelGoal: (_int,),
     ServiceResponse: (_int, _values),
+    AcceptServedGoal: (_int, _one_of("accepted", "executing")),
+    RejectServedGoal: (_int,),
+    ServedGoalStatus: (_int, _one_of("executing", "canceling")),
+    ServedGoalFeedback: (_int, _values),
+    FinishServedGoal: (_int, _one_of("succeeded", "aborted", "canceled"), _values),
+    AnswerServedCancel: (_int, _cancel_code, _bool),
     Crash: (_str, _str, _frames),
 }
 """How each field of a record the child sends is checked (and converted), in field order."""
@@ -505,13 +667,26 @@ def _record(cls: type, fields: Any, key: str, index: int | None = None) -> Any:
 _CHANGES: dict[str, type] = {tag: cls for cls, tag in _CHANGE_TAGS.items()}
 
 
-def _change(entry: Any, key: str, index: int) -> GraphChange:
-    if type(entry) is not list or not entry:
-        raise ProtocolError(f"{key}[{index}]: a graph change must be an array [kind, fields...], got {_show(entry)}")
-    cls = _CHANGES.get(entry[0]) if type(entry[0]) is str else None
-    if cls is None:
-        raise ProtocolError(f"{key}[{index}]: unknown graph change {_show(entry[0])} (known: {', '.join(_CHANGES)})")
-    return _record(cls, entry[1:], key, index)
+_SERVED: dict[str, type] = {tag: cls for cls, tag in _SERVED_TAGS.items()}
+
+
+def _tagged_records(kinds: dict[str, type], what: str) -> Callable[[Any, str], tuple]:
+    """The decoder of an array of records of several kinds, each ``[tag, fields...]``."""
+
+    def one(entry: Any, key: str, index: int) -> Any:
+        if type(entry) is not list or not entry:
+            raise ProtocolError(f"{key}[{index}]: a {what} must be an array [kind, fields...], got {_show(entry)}")
+        cls = kinds.get(entry[0]) if type(entry[0]) is str else None
+        if cls is None:
+            raise ProtocolError(f"{key}[{index}]: unknown {what} {_show(entry[0])} (known: {', '.join(kinds)})")
+        return _record(cls, entry[1:], key, index)
+
+    def decode(entries: Any, key: str) -> tuple:
+        if type(entries) is not list:
+            raise ProtocolError(f"{key}: must be an array of {what}s, got {_show(entries)}")
+        return tuple([one(entry, key, i) for i, entry in enumerate(entries)])
+
+    return decode
 
 
 def _records(cls: type) -> Callable[[Any, str], tuple]:
@@ -530,12 +705,6 @@ def _records(cls: type) -> Callable[[Any, str], tuple]:
         return tuple(records)
 
     return decode
-
-
-def _changes(entries: Any, key: str) -> tuple:
-    if type(entries) is not list:
-        raise ProtocolError(f"{key}: must be an array of graph changes, got {_show(entries)}")
-    return tuple([_change(entry, key, i) for i, entry in enumerate(entries)])
 
 
 def _scalar(check: Callable[[Any], Any], nullable: bool = False) -> Callable[[Any, str], Any]:
@@ -563,13 +732,14 @@ def _crash(value: Any, key: str) -> Crash | None:
 _REPORT_ENTRIES: dict[str, tuple[int, Callable[[Any, str], Any]]] = {
     key: (Report._fields.index(field), decode)
     for key, field, decode in (
-        ("decl", "changes", _changes),
+        ("decl", "changes", _tagged_records(_CHANGES, "graph change")),
         ("log", "logs", _records(Log)),
         ("pub", "publishes", _records(Publish)),
         ("call", "calls", _records(CallService)),
         ("goal", "goals", _records(SendGoal)),
         ("cancel", "cancels", _records(CancelGoal)),
         ("resp", "responses", _records(ServiceResponse)),
+        ("served", "served", _tagged_records(_SERVED, "served-goal event")),
         ("logs_dropped", "logs_dropped", _logs_dropped),
         ("wake", "wake_ns", _scalar(_int, nullable=True)),
         ("done", "done", _scalar(_bool)),

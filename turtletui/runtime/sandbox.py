@@ -142,6 +142,7 @@ class SandboxHost:
             "seed": seed,
             "distro": self.sim.distro,
             "epoch_ns": self.graph.epoch_ns,
+            "discovery_ns": self.graph.discovery_ns,
             "realtime": self.sim.realtime,
             "limits": {
                 "cpu_seconds": self.limits.cpu_seconds,

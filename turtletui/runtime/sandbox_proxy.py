@@ -15,13 +15,17 @@ import itertools
 from collections.abc import Callable
 from typing import Any
 
-from turtletui.graph.core import Graph, GraphError, NodeRecord
+from turtletui.graph.core import GoalHandle, Graph, GraphError, NodeRecord
 from turtletui.graph.logs import ERROR
 from turtletui.interfaces import from_values, get_interface, to_values
 from turtletui.runtime import graph_mirror
 from turtletui.runtime.budget import CALLS, WAKE, Pace, size_text
 from turtletui.runtime.protocol import (
+    AcceptServedGoal,
+    AnswerServedCancel,
+    CancelAnswer,
     DeclareActionClient,
+    DeclareActionServer,
     DeclareClient,
     DeclareNode,
     DeclarePublisher,
@@ -29,17 +33,27 @@ from turtletui.runtime.protocol import (
     DeclareSubscription,
     DeclareTimer,
     Delivery,
+    FinishServedGoal,
     GoalAccepted,
     GoalEvent,
     GoalFeedback,
+    GoalRejected,
     GoalResult,
+    GoalStatus,
     GraphChange,
     ParameterUpdate,
     ProtocolError,
+    RejectServedGoal,
     RemoveEndpoint,
     RemoveNode,
     RemoveRecord,
     Report,
+    ServeCancel,
+    ServedGoalEvent,
+    ServedGoalFeedback,
+    ServedGoalStatus,
+    ServeGoal,
+    ServerEvent,
     ServiceRequest,
     ServiceResult,
     SetParameter,
@@ -77,6 +91,11 @@ class GraphProxy:
         self._goal_events: list[GoalEvent] = []
         self._requests: list[ServiceRequest] = []
         self._parameters: list[ParameterUpdate] = []
+        self._served_out: list[ServerEvent] = []
+        """Goals and cancel requests for the child's own action servers, to send."""
+        self._served: dict[int, GoalHandle] = {}
+        """Goals of the child's action servers not finished yet, by goal id."""
+        self._cancel_decisions: dict[int, Callable[..., None]] = {}
         self._mirror: graph_mirror.GraphMirror | None = None
         """The graph as the child last heard of it."""
         self._mirrored_version = -1
@@ -93,6 +112,7 @@ class GraphProxy:
         """Whether the next Tick brings the child something (or the graph changed)."""
         return bool(
             self._deliveries or self._results or self._goal_events or self._requests or self._parameters
+            or self._served_out
         ) or self.graph.version != self._mirrored_version
 
     def tick(self) -> tuple[Tick, Any]:
@@ -100,8 +120,10 @@ class GraphProxy:
         subscription whose messages it delivers, a tuple of them, WAKE or CALLS)."""
         cause: Any = WAKE
         results, goal_events, requests, parameters = self._results, self._goal_events, self._requests, self._parameters
-        if results or goal_events or requests or parameters:
+        served = self._served_out
+        if results or goal_events or requests or parameters or served:
             self._results, self._goal_events, self._requests, self._parameters = [], [], [], []
+            self._served_out = []
             cause = CALLS
         deliveries = self._deliveries
         if deliveries:
@@ -114,7 +136,7 @@ class GraphProxy:
             snapshot = graph_mirror.snapshot(graph, self.owner, self._own_ids())
             if snapshot != self._mirror:
                 self._mirror = mirror = snapshot
-        return Tick(graph.now_ns, deliveries, results, goal_events, requests, parameters, mirror), cause
+        return Tick(graph.now_ns, deliveries, results, goal_events, requests, parameters, served, mirror), cause
 
     def _own_ids(self) -> dict[int, int]:
         """``id(record)`` to wire id, for the child's nodes and topic endpoints here."""
@@ -171,11 +193,18 @@ class GraphProxy:
                 lambda status, result, gid=goal_id: self._goal_events.append(
                     GoalResult(gid, status, to_values(result))
                 ),
+                lambda status, gid=goal_id: self._goal_events.append(GoalStatus(gid, status)),
             )
         for (goal_id,) in report.cancels:
             handle = self._goals.get(goal_id)
             if handle is not None:
-                graph.cancel_goal(handle)
+                graph.cancel_goal(
+                    handle,
+                    owner,
+                    lambda code, canceling, gid=goal_id: self._goal_events.append(CancelAnswer(gid, code, canceling)),
+                )
+        for event in report.served:
+            self._served_event(event)
         for request_id, values in report.responses:
             respond = self._service_calls.pop(request_id, None)
             if respond is not None:
@@ -198,9 +227,48 @@ class GraphProxy:
                 f"{size_text(self.log_bytes)} per run: the rest is dropped",
             )
 
-    def _goal_accepted(self, goal_id: int, handle: Any) -> None:
+    def _goal_accepted(self, goal_id: int, handle: GoalHandle | None) -> None:
+        if handle is None:
+            self._goal_events.append(GoalRejected(goal_id))
+            return
         self._goals[goal_id] = handle
-        self._goal_events.append(GoalAccepted(goal_id))
+        self._goal_events.append(GoalAccepted(goal_id, handle.goal_id, handle.status))
+
+    def _serve(self, handle: GoalHandle) -> None:
+        """A goal for one of the child's action servers: sent with the next exchange."""
+        goal_id = handle.goal_id
+        self._served[goal_id] = handle
+
+        def decide_cancel(decided: Callable[..., None]) -> None:
+            self._cancel_decisions[goal_id] = decided
+            self._served_out.append(ServeCancel(goal_id))
+
+        handle.decide_cancel = decide_cancel
+        self._served_out.append(ServeGoal(goal_id, handle.action.name, to_values(handle.goal)))
+
+    def _served_event(self, event: ServedGoalEvent) -> None:
+        """What the child's action server did with one of its goals."""
+        goal_id = event.goal_id
+        handle = self._served.get(goal_id)
+        if handle is None:
+            return  # finished already, or never sent
+        kind = type(event)
+        if kind is AcceptServedGoal:
+            handle.accept(event.status)
+        elif kind is RejectServedGoal:
+            handle.reject()
+            del self._served[goal_id]
+        elif kind is ServedGoalStatus:
+            handle.set_status(event.status)
+        elif kind is ServedGoalFeedback:
+            handle.publish_feedback(from_values(handle.action.action_type.Feedback, event.values))
+        elif kind is FinishServedGoal:
+            handle.finish(event.status, from_values(handle.action.action_type.Result, event.values))
+            del self._served[goal_id]
+        elif kind is AnswerServedCancel:
+            decided = self._cancel_decisions.pop(goal_id, None)
+            if decided is not None:
+                decided(True) if event.canceling else decided(False, event.code)
 
     def _node(self, wire_id: int, change: GraphChange) -> NodeRecord:
         node = self._nodes.get(wire_id)
@@ -249,6 +317,10 @@ class GraphProxy:
             graph.add_client(self._node(change.node, change), change.name, get_interface(change.type_name))
         elif kind is DeclareActionClient:
             graph.add_action_client(self._node(change.node, change), change.name, get_interface(change.type_name))
+        elif kind is DeclareActionServer:
+            graph.add_action_server(
+                self._node(change.node, change), change.name, get_interface(change.type_name), self._serve, answers=True
+            )
         elif kind is DeclareService:
             self._declare_service(change)
         elif kind is RemoveRecord:
@@ -268,13 +340,18 @@ class GraphProxy:
         self.graph.add_service(self._node(change.node, change), name, srv_type, handler)
 
     def _remove(self, removed: RemoveRecord) -> None:
-        """The child destroyed a service, client or action client."""
+        """The child destroyed a service, client, action client or action server."""
         graph = self.graph
         node = self._nodes.get(removed.node)
         if removed.kind == "service":
             service = graph.services.get(removed.name)
             if service is not None and service.node is node:
                 graph.remove_service(service)
+            return
+        if removed.kind == "action_server":
+            server = graph.action_servers.get(removed.name)
+            if server is not None and server.node is node:
+                graph.remove_action_server(server)
             return
         records = graph.clients if removed.kind == "client" else graph.action_clients
         record = next((r for r in records if r.node is node and r.name == removed.name), None)
