@@ -530,28 +530,26 @@ def _show(value: Any) -> str:
     return f"{type(value).__name__} {text if len(text) <= 60 else text[:57] + '...'}"
 
 
-def _int(value: Any) -> int:
-    if type(value) is not int:
-        raise _Bad("an integer")
-    return value
+_PLAIN_TYPES: dict[Callable[[Any], Any], type] = {}
+"""The checks that only compare a field's type with one type, and that type."""
 
 
-def _str(value: Any) -> str:
-    if type(value) is not str:
-        raise _Bad("a string")
-    return value
+def _of_type(kind: type, expected: str) -> Callable[[Any], Any]:
+    """The check of a field that must be of type ``kind`` (a bool is no int)."""
+
+    def check(value: Any) -> Any:
+        if type(value) is not kind:
+            raise _Bad(expected)
+        return value
+
+    _PLAIN_TYPES[check] = kind
+    return check
 
 
-def _bool(value: Any) -> bool:
-    if type(value) is not bool:
-        raise _Bad("true or false")
-    return value
-
-
-def _values(value: Any) -> Values:
-    if type(value) is not list:
-        raise _Bad("a list of field values")
-    return value
+_int = _of_type(int, "an integer")
+_str = _of_type(str, "a string")
+_bool = _of_type(bool, "true or false")
+_values = _of_type(list, "a list of field values")
 
 
 def _removable(value: Any) -> str:
@@ -600,8 +598,6 @@ def _frames(value: Any) -> tuple[str, ...]:
     return tuple(value)
 
 
-_PLAIN_TYPES: dict[Callable[[Any], Any], type] = {_int: int, _str: str, _bool: bool, _values: list}
-"""The checks that only compare a field's type with one type."""
 
 _FIELDS: dict[type, tuple[Callable[[Any], Any], ...]] = {
     DeclareNode: (_int, _str, _str),
