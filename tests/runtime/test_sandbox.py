@@ -22,6 +22,7 @@ from pathlib import Path
 
 import pytest
 from support.controllers import WALL_TIME
+from support.hosts import HOSTS, ControllerHost, node_logs
 
 from turtletui.api import RunResult, run
 from turtletui.runtime import forkserver
@@ -705,13 +706,13 @@ def test_patching_the_arena_size_changes_nothing(tmp_path: Path) -> None:
 
 def test_patching_child_publish_is_validated_by_the_parent(tmp_path: Path) -> None:
     path = write(tmp_path, """
-        from turtletui.runtime import child
+        from turtletui.runtime import outbox, protocol
 
-        def forged_publish(self, topic, msg, source=None, publisher=None):
-            self.out["pub"].append([topic.name, {"linear": {"x": "fast"}}])
+        def forged_published(self, topic, msg):
+            self.publishes.append(protocol.Publish(topic.name, [["fast", 0.0, 0.0], [0.0, 0.0, 0.0]]))
 
         def misbehave(node):
-            child.ChildGraph.publish = forged_publish
+            outbox.ParentOutbox.published = forged_published
             node.pub = node.create_publisher(Twist, "/turtle1/cmd_vel", 10)
     """)
     result = go(path)
@@ -725,9 +726,10 @@ def test_patching_child_publish_is_validated_by_the_parent(tmp_path: Path) -> No
 def test_publishing_on_an_undeclared_topic_is_refused(tmp_path: Path) -> None:
     path = write(tmp_path, """
         from turtletui.compat import context
+        from turtletui.runtime import protocol
 
         def misbehave(node):
-            context.current_host().graph.out["pub"].append(["/turtle1/teleport_anywhere", {}])
+            context.current_host().outbox.publishes.append(protocol.Publish("/turtle1/teleport_anywhere", []))
     """)
     result = go(path)
     crash = only_crash(result, "exception", path)
@@ -784,29 +786,39 @@ FORGED = {
     "not-an-object": (frame([1, 2, 3]), "exception", MALFORMED),
     "deep-nesting": (frame(b"[" * 100_000 + b"]" * 100_000), "exception", MALFORMED),
     "too-big": (struct.pack(">I", 2**31) + b"{}", "flood", "bytes in one step"),
-    "log-not-triples": (frame({"log": [1, 2]}), "exception", REFUSED),
-    "log-bad-level": (frame({"log": [["loud", "n", "m"]]}), "exception", REFUSED),
-    "decl-empty": (frame({"decl": [[]]}), "exception", REFUSED),
-    "decl-unknown-node": (frame({"decl": [["pub", 99, 12345, "/x", "geometry_msgs/msg/Twist", 10]]}), "exception", REFUSED),
-    "decl-unknown-type": (frame({"decl": [["sub", 98, 1, "/turtle1/pose", "no_pkg/msg/Nothing", 10]]}), "exception", REFUSED),
-    "decl-wrong-type": (frame({"decl": [["pub", 97, 1, "/turtle1/cmd_vel", "turtlesim/msg/Pose", 10]]}), "exception", REFUSED),
-    "param-garbage": (frame({"decl": [["param", 1, "p", {"nested": [1]}, False]]}), "exception", REFUSED),
-    "pub-not-a-list": (frame({"pub": 5}), "exception", REFUSED),
-    "pub-fields-not-a-dict": (frame({"pub": [["/turtle1/cmd_vel", [1, 2]]]}), "exception", REFUSED),
-    "pub-bad-field": (frame({"pub": [["/turtle1/cmd_vel", {"linear": {"x": "fast"}}]]}), "exception", REFUSED),
-    "call-bad-request": (frame({"call": [[1, "/spawn", {"x": "far"}]]}), "exception", REFUSED),
+    "unknown-entry": (frame({"teleport": [[1, 2]]}), "exception", "unknown report entry 'teleport'"),
+    "log-not-triples": (frame({"log": [1, 2]}), "exception", "a Log must be an array of its fields"),
+    "log-bad-level": (frame({"log": [["loud", "n", "m"]]}), "exception", "log[0]: Log.level must be an integer"),
+    "decl-empty": (frame({"decl": [[]]}), "exception", "decl[0]: a graph change must be an array"),
+    "decl-unknown-kind": (frame({"decl": [["teleport", 1]]}), "exception", "unknown graph change str 'teleport'"),
+    "decl-short": (frame({"decl": [["pub", 99, 1, "/x"]]}), "exception", "a DeclarePublisher has 6 fields"),
+    "decl-unknown-node": (frame({"decl": [["pub", 99, 12345, "/x", "geometry_msgs/msg/Twist", 10, None]]}), "exception", "names no node of the controller: 12345"),
+    "decl-unknown-type": (frame({"decl": [["sub", 98, 1, "/turtle1/pose", "no_pkg/msg/Nothing", 10, "", None]]}), "exception", REFUSED),
+    "decl-wrong-type": (frame({"decl": [["pub", 97, 1, "/turtle1/cmd_vel", "turtlesim/msg/Pose", 10, None]]}), "exception", REFUSED),
+    "decl-unknown-qos": (frame({"decl": [["pub", 99, 1, "/x", "geometry_msgs/msg/Twist", 1, [7, 7, 7]]]}), "exception", "DeclarePublisher.qos must be null or QoS policies"),
+    "removal-short": (frame({"decl": [["rmrecord", "service", 1]]}), "exception", "a RemoveRecord has 3 fields"),
+    "removal-unknown": (frame({"decl": [["rmrecord", "turtle", 1, "/turtle1"]]}), "exception", "RemoveRecord.kind must be one of service"),
+    "param-garbage": (frame({"decl": [["param", 1, "p", {"nested": [1]}, False]]}), "exception", "SetParameter.value must be a value a ROS parameter can hold"),
+    "pub-not-a-list": (frame({"pub": 5}), "exception", "pub: must be an array of Publish records"),
+    "pub-fields-not-a-list": (frame({"pub": [["/turtle1/cmd_vel", {"linear": 1}]]}), "exception", "Publish.values must be a list of field values"),
+    "pub-short-fields": (frame({"pub": [["/turtle1/cmd_vel", [1, 2, 3]]]}), "exception", REFUSED),
+    "pub-bad-field": (frame({"pub": [["/turtle1/cmd_vel", [["fast", 0, 0], [0, 0, 0]]]]}), "exception", REFUSED),
+    "call-bad-request": (frame({"call": [[1, "/spawn", ["far", 1.0, 0.0, ""]]]}), "exception", REFUSED),
     "asrv-unknown-type": (frame({"decl": [["asrv", 1, "/spin", "no_pkg/action/Nothing"]]}), "exception", REFUSED),
-    "served-not-triples": (frame({"served": [5]}), "exception", REFUSED),
-    "wake-infinite": (frame(b'{"wake": Infinity}'), "exception", REFUSED),
+    "served-not-arrays": (frame({"served": [5]}), "exception", "served[0]: a served-goal event must be an array"),
+    "served-bad-status": (frame({"served": [["result", 1, "won", []]]}), "exception", "FinishServedGoal.status must be one of succeeded"),
+    "served-bad-cancel-code": (frame({"served": [["cancel", 1, 9, True]]}), "exception", "AnswerServedCancel.code must be a CancelGoal return code"),
+    "wake-infinite": (frame(b'{"wake": Infinity}'), "exception", "wake: must be an integer or null"),
     "wake-nan": (frame(b'{"wake": NaN}'), "exception", REFUSED),
     "wake-string": (frame({"wake": "soon"}), "exception", REFUSED),
-    "crash-not-a-dict": (frame({"done": True, "crash": "oops"}), "exception", REFUSED),
-    "crash-bad-frames": (frame({"done": True, "crash": {"kind": "x", "message": "m", "frames": 5}}), "exception", REFUSED),
-    "crash-made-up": (frame({"done": True, "crash": {"kind": "banana", "message": "a\nb"}}), "exception", "a b"),
+    "logs-dropped-negative": (frame({"logs_dropped": -5}), "exception", "logs_dropped: must be a count"),
+    "crash-not-an-array": (frame({"done": True, "crash": "oops"}), "exception", "a Crash must be an array"),
+    "crash-bad-frames": (frame({"done": True, "crash": ["x", "m", 5]}), "exception", "Crash.frames must be a list of strings"),
+    "crash-made-up": (frame({"done": True, "crash": ["banana", "a\nb", []]}), "exception", "a b"),
     # Harmless: an answer to nothing is ignored; a wake-up at the end of time means
     # "never" (the forger, still asleep when the run ends, does not answer "end").
-    "resp-unknown": (frame({"resp": [[424242, {"a": 1}]]}), None, ""),
-    "served-unknown-goal": (frame({"served": [[424242, "result", ["succeeded", {"delta": 1.0}]]]}), None, ""),
+    "resp-unknown": (frame({"resp": [[424242, [1]]]}), None, ""),
+    "served-unknown-goal": (frame({"served": [["result", 424242, "succeeded", [1.0]]]}), None, ""),
     "wake-huge": (frame({"wake": 10**400}), None, ""),
 }
 
@@ -976,23 +988,36 @@ def test_the_graders_secrets_never_reach_student_code(tmp_path: Path, monkeypatc
     assert seen["PATH"] == os.environ["PATH"]
 
 
-@pytest.mark.parametrize(
-    ("key", "forged", "says"),
-    [
-        ("removed", [["service", 1]], "not enough values to unpack"),
-        ("removed", [["turtle", 1, "/turtle1"]], "not a removal"),
-        ("decl", [["pub", 99, 1, "/x", "geometry_msgs/msg/Twist", 1, "", [7, 7, 7]]], "not QoS policies"),
-    ],
-    ids=["short removal", "unknown removal", "unknown qos"],
-)
-def test_forged_graph_changes_are_refused(tmp_path: Path, key: str, forged: list, says: str) -> None:
-    path = write(tmp_path, f"""
-        from turtletui.compat import context
+@pytest.mark.parametrize("host", HOSTS)
+def test_a_service_destroyed_and_created_again_in_one_callback(tmp_path: Path, host: str) -> None:
+    """Graph changes reach the parent in the order they were made: the removal
+    before the new declaration, so the parent does not refuse a second server."""
+    result = ControllerHost(host, tmp_path).run(
+        """
+import rclpy
+from rclpy.node import Node
+from std_srvs.srv import Empty
 
-        def misbehave(node):
-            context.current_host().graph.out[{key!r}].extend({forged!r})
-    """)
-    result = go(path)
-    crash = only_crash(result, "exception", path)
-    assert "sent something turtlesim cannot accept" in crash.message and says in crash.message
-    assert_gone(read_pid(tmp_path))
+class Server(Node):
+    def __init__(self):
+        super().__init__("server")
+        self.service = self.create_service(Empty, "/ping", self.ping)
+        self.client = self.create_client(Empty, "/ping")
+        self.create_timer(0.1, self.tick)
+        self.ticks = 0
+
+    def ping(self, request, response):
+        self.get_logger().info(f"ping answered after {self.ticks} ticks")
+        return response
+
+    def tick(self):
+        self.ticks += 1
+        if self.ticks == 2:
+            self.destroy_service(self.service)
+            self.service = self.create_service(Empty, "/ping", self.ping)
+            self.client.call_async(Empty.Request())
+""",
+        duration=0.5,
+    )
+    assert result.ok, result.crashes
+    assert node_logs(result, "server") == ["ping answered after 2 ticks"]

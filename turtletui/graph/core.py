@@ -16,7 +16,7 @@ import heapq
 from collections import deque
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Any, Literal
+from typing import Any, Literal, Protocol
 
 from turtletui.errors import TurtletuiError
 from turtletui.graph.logs import INFO, LogRecord
@@ -305,6 +305,51 @@ class ActionClientRecord:
     owner: str
 
 
+class GraphOutbox(Protocol):
+    """Told what a Graph's own nodes do when the graph is one part of a larger
+    one (a sandboxed controller's: turtletui.runtime.outbox sends it all to the
+    simulator). Records owned by ``remote_owner`` stand for the other part's:
+    the outbox, not this graph, delivers what is published, called or sent to
+    them."""
+
+    remote_owner: str
+
+    def declared(self, record: Any) -> None:
+        """A node, publisher, subscription, timer, service, client, action server
+        or action client was added."""
+
+    def removed(self, record: Any) -> None:
+        """A node was destroyed, or a publisher, subscription, service, client,
+        action server or action client taken off the graph."""
+
+    def parameter_set(self, node: NodeRecord, name: str, value: Any, remove: bool) -> None:
+        """A node's parameter was set (or undeclared: ``remove``)."""
+
+    def published(self, topic: Topic, msg: Any) -> None:
+        """``msg`` was published by a publisher the other part has discovered
+        (and delivered to this graph's subscriptions)."""
+
+    def call(self, service: Service, request: Any, on_response: Callable[[Any], None]) -> None:
+        """A remote ``service`` is called; ``on_response`` is for its answer."""
+
+    def send_goal(
+        self,
+        server: ActionServer,
+        goal: Any,
+        on_accepted: Callable[[GoalHandle | None], None],
+        on_feedback: Callable[[Any], None],
+        on_result: Callable[[str, Any], None],
+        on_status: Callable[[str], None] | None,
+    ) -> GoalHandle:
+        """A goal is sent to a remote action ``server``: its handle here."""
+
+    def cancel_goal(self, handle: GoalHandle, on_answer: Callable[[int, bool], None] | None) -> None:
+        """Cancelling a goal of a remote action server is asked for."""
+
+    def logged(self, record: LogRecord) -> None:
+        """A log record was made."""
+
+
 class Graph:
     """Nodes, topics, services, actions and timers sharing one simulated clock."""
 
@@ -345,6 +390,9 @@ class Graph:
         """Bumped by every change of who is on the graph (nodes, endpoints,
         services, clients, actions): a sandbox sends its child a new mirror
         of the graph when it moved."""
+        self.outbox: GraphOutbox | None = None
+        """Told what this graph's nodes do, when the graph is one part of a
+        larger one (see GraphOutbox); None for a whole graph."""
 
     # -- time ---------------------------------------------------------------
     @property
@@ -420,6 +468,8 @@ class Graph:
         self.version += 1
         node = NodeRecord(name, namespace or "", owner, parameter_setter=parameter_setter)
         self.nodes.append(node)
+        if self.outbox is not None:
+            self.outbox.declared(node)
         return node
 
     def remove_node(self, node: NodeRecord) -> None:
@@ -443,6 +493,8 @@ class Graph:
         for _, _, timer in self._timers:
             if timer.node is node:
                 timer.canceled = True
+        if self.outbox is not None:
+            self.outbox.removed(node)
 
     def set_parameter(self, node: NodeRecord, name: str, value: Any, *, remove: bool = False) -> None:
         """Record a node's parameter value (what ``ros2 param get`` shows)."""
@@ -450,6 +502,8 @@ class Graph:
             node.parameters.pop(name, None)
         else:
             node.parameters[name] = value
+        if self.outbox is not None:
+            self.outbox.parameter_set(node, name, value, remove)
 
     def remove_owner(self, owner: str) -> None:
         """Destroy every node of one controller host (it ended or crashed)."""
@@ -508,6 +562,8 @@ class Graph:
         pub = Publisher(node, topic, depth, node.owner, qos, self.now_ns)
         topic.publishers.append(pub)
         topic.publisher_owners.add(node.owner)
+        if self.outbox is not None:
+            self.outbox.declared(pub)
         return pub
 
     def add_subscription(
@@ -527,6 +583,8 @@ class Graph:
         topic = self.topic(name, msg_type)
         sub = Subscription(node, topic, depth, callback, node.owner, qos, copy, self.now_ns)
         topic.subscriptions.append(sub)
+        if self.outbox is not None:
+            self.outbox.declared(sub)
         return sub
 
     def remove_endpoint(self, endpoint: Publisher | Subscription) -> bool:
@@ -542,6 +600,8 @@ class Graph:
             removed = len(kept) != len(topic.subscriptions)
             topic.subscriptions = kept
             endpoint.queue.clear()
+        if removed and self.outbox is not None:
+            self.outbox.removed(endpoint)
         return removed
 
     def topic_names_and_types(self) -> list[tuple[str, list[str]]]:
@@ -590,6 +650,9 @@ class Graph:
         ``publisher`` (see ``discovery_ns``; without one, the subscription's own
         age decides), except those owned by ``source`` (a sandboxed host already
         delivered to its own subscribers)."""
+        outbox = self.outbox
+        if outbox is not None:
+            source = outbox.remote_owner  # the outbox delivers to those
         now = self.now_ns
         settled = now - self.discovery_ns  # endpoints made by then: discovered by all
         owner = source if publisher is None else publisher.owner
@@ -612,6 +675,8 @@ class Graph:
         if self.taps and not young:
             for tap in self.taps:
                 tap("topic", (topic, msg))
+        if outbox is not None and not young:  # else no other process knows the publisher yet
+            outbox.published(topic, msg)
 
     # -- timers -------------------------------------------------------------
     def add_timer(
@@ -627,6 +692,8 @@ class Graph:
             heapq.heappush(self._timers, (timer.next_due, timer.seq, timer))
         else:
             timer.canceled = True
+        if self.outbox is not None:
+            self.outbox.declared(timer)
         return timer
 
     def call_later(self, node: NodeRecord, delay_ns: int, callback: Callable[[], None]) -> Timer:
@@ -662,6 +729,8 @@ class Graph:
             raise GraphError(f"service {name} is already provided by {self.services[name].node.fqn}")
         service = Service(node, name, srv_type, self._type_name(srv_type), handler, node.owner, self.now_ns)
         self.services[name] = service
+        if self.outbox is not None:
+            self.outbox.declared(service)
         return service
 
     def remove_service(self, service: Service) -> bool:
@@ -671,6 +740,8 @@ class Graph:
         if self.services.get(service.name) is not service:
             return False
         del self.services[service.name]
+        if self.outbox is not None:
+            self.outbox.removed(service)
         return True
 
     def has_service(self, name: str) -> bool:
@@ -699,6 +770,8 @@ class Graph:
         self.version += 1
         client = ServiceClient(node, name, srv_type, self._type_name(srv_type), node.owner, self.now_ns)
         self.clients.append(client)
+        if self.outbox is not None:
+            self.outbox.declared(client)
         return client
 
     def remove_client(self, client: ServiceClient) -> bool:
@@ -707,6 +780,8 @@ class Graph:
         if client not in self.clients:
             return False
         self.clients.remove(client)
+        if self.outbox is not None:
+            self.outbox.removed(client)
         return True
 
     def call(self, name: str, request: Any, on_response: Callable[[Any], None], owner: str) -> None:
@@ -715,6 +790,9 @@ class Graph:
         as in ROS."""
         service = self.services.get(name)
         if service is None:
+            return
+        if self.outbox is not None and service.owner == self.outbox.remote_owner:
+            self.outbox.call(service, request, on_response)
             return
 
         def respond(response: Any) -> None:
@@ -746,6 +824,8 @@ class Graph:
             raise GraphError(f"action {name} is already provided by {self.action_servers[name].node.fqn}")
         server = ActionServer(node, name, action_type, self._type_name(action_type), on_goal, node.owner, answers)
         self.action_servers[name] = server
+        if self.outbox is not None:
+            self.outbox.declared(server)
         return server
 
     def remove_action_server(self, server: ActionServer) -> bool:
@@ -754,6 +834,8 @@ class Graph:
         if self.action_servers.get(server.name) is not server:
             return False
         del self.action_servers[server.name]
+        if self.outbox is not None:
+            self.outbox.removed(server)
         return True
 
     def has_action_server(self, name: str) -> bool:
@@ -770,6 +852,8 @@ class Graph:
         self.version += 1
         client = ActionClientRecord(node, name, action_type, self._type_name(action_type), node.owner)
         self.action_clients.append(client)
+        if self.outbox is not None:
+            self.outbox.declared(client)
         return client
 
     def remove_action_client(self, client: ActionClientRecord) -> bool:
@@ -778,6 +862,8 @@ class Graph:
         if client not in self.action_clients:
             return False
         self.action_clients.remove(client)
+        if self.outbox is not None:
+            self.outbox.removed(client)
         return True
 
     def send_goal(
@@ -798,6 +884,8 @@ class Graph:
         server = self.action_servers.get(name)
         if server is None:
             return None
+        if self.outbox is not None and server.owner == self.outbox.remote_owner:
+            return self.outbox.send_goal(server, goal, on_accepted, on_feedback, on_result, on_status)
         if self.taps:
             for tap in self.taps:
                 tap("goal", (name, goal))
@@ -831,6 +919,9 @@ class Graph:
     ) -> None:
         """Ask the server to cancel a goal; ``on_answer(code, canceling)`` (see
         GoalHandle.request_cancel) then runs for ``owner``."""
+        if self.outbox is not None and handle.action.owner == self.outbox.remote_owner:
+            self.outbox.cancel_goal(handle, on_answer)
+            return
         ready = self.ready
 
         def answer(code: int, canceling: bool) -> None:
@@ -849,6 +940,8 @@ class Graph:
                 tap("log", record)
         for sink in self.log_sinks:
             sink(record)
+        if self.outbox is not None:
+            self.outbox.logged(record)
         return record
 
     def info(self, node: str, msg: str) -> LogRecord:

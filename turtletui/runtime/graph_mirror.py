@@ -279,25 +279,3 @@ def _interface(type_name: str) -> Any:
 def _never(*_: Any) -> None:
     """What a record standing for the parent's would call: never called (the
     child sends calls and goals for such records to the parent)."""
-
-
-class Removed(NamedTuple):
-    """Child to parent: the child destroyed one of its services, clients,
-    action clients or action servers (nodes, publishers and subscriptions go by wire id)."""
-
-    kind: str
-    """One of :data:`REMOVABLE`."""
-    node: int
-    """The wire id of the node it belonged to."""
-    name: str
-
-    @classmethod
-    def parse(cls, fields: Any) -> Removed:
-        """Check what an untrusted child sent."""
-        kind, node, name = fields
-        if kind not in REMOVABLE or type(node) is not int or not isinstance(name, str):
-            raise ValueError(f"not a removal: {str(fields)[:100]}")
-        return cls(kind, node, name)
-
-
-REMOVABLE = ("service", "client", "action_client", "action_server")

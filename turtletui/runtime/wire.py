@@ -1,16 +1,16 @@
 """Framing between the simulator and a sandboxed controller.
 
-Each frame is a 4-byte big-endian length and a payload. The parent sends
-``marshal`` payloads (the child trusts it); the child answers in JSON, which
-the parent can parse safely whatever the child's code has done.
+Each frame is a 4-byte big-endian length and a payload; what the payloads
+hold is turtletui.runtime.protocol's business. Both sides read with one
+:class:`FrameReader`: the child with no deadline, the parent with deadlines,
+a size limit and a hook that watches the child while it waits.
 """
 
 from __future__ import annotations
 
-import json
-import marshal
 import os
 import struct
+from collections.abc import Callable
 from select import select as _select
 from time import monotonic as _monotonic
 from time import perf_counter as _perf_counter
@@ -19,6 +19,9 @@ from time import perf_counter as _perf_counter
 # with simulated ones for the controller, never for its own pipe to the parent.
 
 _HEADER = struct.Struct(">I")
+_pack = _HEADER.pack
+_unpack_from = _HEADER.unpack_from
+
 MAX_REPLY_BYTES = 8 * 1024 * 1024
 """Largest answer the parent accepts from a child in one exchange."""
 
@@ -75,19 +78,16 @@ class WireError(Exception):
     """The other side closed the pipe or sent something malformed."""
 
 
+class WireClosed(WireError):
+    """The other side closed its end of the pipe."""
+
+
 class WireTimeout(WireError):
-    """The other side did not take a frame in time (it is not reading)."""
+    """The other side did not take a frame, or send one, in time."""
 
 
-def _read_exact(fd: int, size: int) -> bytes:
-    chunks = []
-    while size:
-        chunk = os.read(fd, size)
-        if not chunk:
-            raise WireError("pipe closed")
-        chunks.append(chunk)
-        size -= len(chunk)
-    return b"".join(chunks)
+class FrameTooLarge(WireError):
+    """The other side announced a frame over the reader's limit."""
 
 
 def _write_all(fd: int, data: bytes | memoryview, deadline: float | None = None) -> None:
@@ -104,13 +104,10 @@ def _write_all(fd: int, data: bytes | memoryview, deadline: float | None = None)
         view = view[written:]
 
 
-_pack = _HEADER.pack
-_unpack_from = _HEADER.unpack_from
-_ENCODE = json.JSONEncoder(separators=(",", ":"), allow_nan=True).encode
-"""``json.dumps(obj, separators=(",", ":"), allow_nan=True)`` without building an encoder each call."""
-
-
-def _write_frame(fd: int, payload: bytes, deadline: float | None = None) -> None:
+def write_frame(fd: int, payload: bytes, deadline: float | None = None) -> None:
+    """Send one frame; on a non-blocking ``fd``, raise WireTimeout if the other
+    side has not taken it by ``deadline`` (time.monotonic), instead of waiting
+    for ever."""
     # Header and payload in one write: one system call (one wake-up) per frame.
     data = _pack(len(payload)) + payload
     try:
@@ -121,100 +118,121 @@ def _write_frame(fd: int, payload: bytes, deadline: float | None = None) -> None
         _write_all(fd, memoryview(data)[written:], deadline)
 
 
-def send_to_child(fd: int, obj: object, deadline: float | None = None) -> None:
-    """Send ``obj``; on a non-blocking ``fd``, raise WireTimeout if the child has
-    not taken it by ``deadline`` (time.monotonic), instead of waiting for ever."""
-    _write_frame(fd, marshal.dumps(obj), deadline)
+def _select_readable(fd: int, timeout: float | None) -> None:
+    _select([fd], [], [], timeout)
 
 
 class FrameReader:
     """Reads frames from a pipe with few system calls: a frame sent in one write
-    (header and payload) usually arrives in one read. With ``spin`` seconds
-    the descriptor is made non-blocking and waiting polls that long, then sleeps
-    in select; with 0, a plain blocking read waits (one system call)."""
+    (header and payload) usually arrives in one read.
 
-    __slots__ = ("fd", "buffer", "spin")
+    ``blocking``: a plain blocking read waits (one system call; no deadlines).
+    Otherwise the descriptor is made non-blocking, waiting polls ``spin``
+    seconds and then calls ``wait(fd, timeout)``, which returns when ``fd``
+    may be readable or ``timeout`` seconds passed (None: no limit); a parent's
+    ``wait`` also watches its child and may raise to give up. ``on_data()`` is
+    called after a chunk that came while polling or by :meth:`frame_ready`.
+    A frame larger than ``max_size`` raises FrameTooLarge; a closed pipe
+    WireClosed; a deadline passed WireTimeout (what came so far is kept).
+    """
 
-    def __init__(self, fd: int, spin: float) -> None:
+    __slots__ = ("fd", "buffer", "spin", "max_size", "wait", "on_data", "_blocking")
+
+    def __init__(
+        self,
+        fd: int,
+        *,
+        spin: float = 0.0,
+        blocking: bool = False,
+        max_size: int | None = None,
+        wait: Callable[[int, float | None], object] = _select_readable,
+        on_data: Callable[[], object] | None = None,
+    ) -> None:
         self.fd = fd
         self.buffer = b""
         self.spin = spin
-        os.set_blocking(fd, self.spin <= 0)
+        self.max_size = max_size
+        self.wait = wait
+        self.on_data = on_data
+        self._blocking = blocking
+        os.set_blocking(fd, blocking)
 
-    def _chunk(self, size: int) -> bytes:
-        fd = self.fd
-        if self.spin <= 0:
-            chunk = os.read(fd, size)
-        else:
-            chunk = spin_read(fd, size, self.spin)
-        while chunk is None:
-            _select([fd], [], [])
-            try:
-                chunk = os.read(fd, size)
-            except BlockingIOError:
-                chunk = None
-        if not chunk:
-            raise WireError("pipe closed")
-        return chunk
-
-    def read_frame(self) -> bytes:
+    def read_frame(self, deadline: float | None = None) -> bytes:
+        """The next frame's payload; waits until ``deadline`` (time.monotonic)."""
         buffer = self.buffer
-        while len(buffer) < 4:
-            buffer += self._chunk(1 << 16)
-        (size,) = _unpack_from(buffer)
-        end = 4 + size
+        if len(buffer) < 4:
+            buffer = self._fill(buffer, 4, deadline)
+        end = 4 + self._size(buffer)
         if len(buffer) < end:
-            chunks = [buffer]
-            have = len(buffer)
-            while have < end:
-                chunk = self._chunk(max(end - have, 1 << 16))
-                chunks.append(chunk)
-                have += len(chunk)
-            buffer = b"".join(chunks)
+            buffer = self._fill(buffer, end, deadline)
         self.buffer = buffer[end:]
         return buffer[4:end]
 
+    def frame_ready(self) -> bool:
+        """Read what has come without waiting: is a whole frame in?"""
+        buffer = self.buffer
+        limit = (self.max_size or 1 << 62) + 4
+        fd = self.fd
+        while True:
+            try:
+                chunk = os.read(fd, 1 << 16)
+            except BlockingIOError:
+                break
+            if not chunk:
+                self.buffer = buffer
+                raise WireClosed("pipe closed")
+            buffer += chunk
+            if len(buffer) > limit:
+                break
+        self.buffer = buffer
+        if self.on_data is not None:
+            self.on_data()
+        return len(buffer) >= 4 and len(buffer) >= 4 + self._size(buffer)
 
-_readers: dict[int, FrameReader] = {}
+    def _size(self, buffer: bytes) -> int:
+        (size,) = _unpack_from(buffer)
+        if self.max_size is not None and size > self.max_size:
+            raise FrameTooLarge(f"sent {size} bytes in one step (limit {self.max_size})")
+        return size
 
+    def _fill(self, buffer: bytes, total: int, deadline: float | None) -> bytes:
+        """``buffer`` extended with what comes until it holds ``total`` bytes: one
+        read per chunk the pipe has, not per field."""
+        chunks = [buffer]
+        have = len(buffer)
+        try:
+            while have < total:
+                chunk = self._chunk(max(min(total - have, 1 << 20), 1 << 16), deadline)
+                chunks.append(chunk)
+                have += len(chunk)
+        except BaseException:
+            self.buffer = b"".join(chunks)  # kept for whoever reads on
+            raise
+        return b"".join(chunks)
 
-def read_from_parent(fd: int, spin: float) -> object:
-    """The next message from the parent; ``spin`` as for :class:`FrameReader`
-    (the first read from ``fd`` sets it)."""
-    reader = _readers.get(fd)
-    if reader is None:
-        reader = _readers[fd] = FrameReader(fd, spin)
-    return marshal.loads(reader.read_frame())
-
-
-def send_to_parent(fd: int, obj: object) -> None:
-    _write_frame(fd, _ENCODE(obj).encode())
-
-
-def read_header(data: bytes) -> int:
-    (size,) = _HEADER.unpack(data)
-    if size > MAX_REPLY_BYTES:
-        raise WireError(f"sent {size} bytes in one step (limit {MAX_REPLY_BYTES})")
-    return size
-
-
-_SCAN = json.JSONDecoder().scan_once
-"""What json.loads does past its checks for encodings and white space: the
-child sends UTF-8 without white space, and anything else is malformed."""
-
-
-def parse_reply(payload: bytes) -> dict:
-    try:
-        text = payload.decode()
-        reply, end = _SCAN(text, 0)
-    except StopIteration as stop:
-        raise WireError(f"sent a malformed reply (no JSON value at char {stop.value})") from None
-    except ValueError as err:  # also UnicodeDecodeError
-        raise WireError(f"sent a malformed reply ({err})") from None
-    except RecursionError:
-        raise WireError("sent a malformed reply (nested too deeply)") from None
-    if end != len(text):
-        raise WireError(f"sent a malformed reply (more after the JSON value at char {end})")
-    if not isinstance(reply, dict):
-        raise WireError("sent a malformed reply (not an object)")
-    return reply
+    def _chunk(self, size: int, deadline: float | None) -> bytes:
+        fd = self.fd
+        if self._blocking:
+            chunk = os.read(fd, size)
+        else:
+            if deadline is not None and deadline <= _monotonic():
+                raise WireTimeout("no answer in time")
+            chunk = spin_read(fd, size, self.spin)
+            if chunk is None:
+                while chunk is None:
+                    if deadline is None:
+                        remaining = None
+                    else:
+                        remaining = deadline - _monotonic()
+                        if remaining <= 0:
+                            raise WireTimeout("no answer in time")
+                    self.wait(fd, remaining)
+                    try:
+                        chunk = os.read(fd, size)
+                    except BlockingIOError:
+                        chunk = None
+            elif self.on_data is not None:
+                self.on_data()
+        if not chunk:
+            raise WireClosed("pipe closed")
+        return chunk

@@ -1,0 +1,360 @@
+"""The process of a sandboxed controller: start, pipes, output, end.
+
+:class:`ChildProcess` starts turtletui.runtime.child in a fresh interpreter
+(or forks it from a fork server) with CPU, memory and file-size limits, in its
+own session so that every process it starts can be killed; sends and
+receives frames with deadlines; shows what the controller prints within its
+budget; and says why the process died. Every failure is a
+:class:`ChildFailed` with the crash kind and a one-line reason. What the
+frames mean is turtletui.runtime.sandbox's business.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import select
+import signal
+import subprocess
+import sys
+from collections.abc import Callable
+from pathlib import Path
+from time import monotonic as _monotonic  # bound at import: an in-process run simulates time's
+from typing import TYPE_CHECKING, Any
+
+from turtletui.graph.logs import INFO, OUTPUT_SUFFIX, WARN
+from turtletui.runtime import forkserver, wire
+from turtletui.runtime.budget import OutputBudget, size_text
+from turtletui.runtime.loader import ControllerSpec
+from turtletui.runtime.processes import (
+    TOKEN_VAR,
+    cpu_seconds,
+    has_exited,
+    kill_tree,
+    run_queue_seconds,
+)
+
+if TYPE_CHECKING:
+    from turtletui.runtime.sandbox import Limits
+
+_PACKAGE_ROOT = str(Path(__file__).resolve().parents[2])
+_BOOTSTRAP = (
+    "import sys; sys.path.insert(0, {root!r}); "
+    "from turtletui.runtime.child import main; main()"
+)
+_OUTPUT_READ_LIMIT = 1 << 20
+"""Bytes of print() output read in one go, so a flood cannot keep the parent reading."""
+_LIVENESS_SECONDS = 0.1
+"""How often a parent waiting for an answer checks that the child is still alive."""
+
+
+class ChildFailed(Exception):
+    """The child must be stopped: ``kind`` as in CrashReport, ``message`` one line."""
+
+    def __init__(self, kind: str, message: str) -> None:
+        super().__init__(message)
+        self.kind = kind
+        self.message = message
+
+
+Log = Callable[[str, int, str], object]
+"""Graph.log: (node, level, text)."""
+
+
+class ChildProcess:
+    """One sandboxed controller's process and its three pipes (its input, its
+    answers, its printed output)."""
+
+    def __init__(self, spec: ControllerSpec, limits: Limits, log: Log, *, spin: float) -> None:
+        self.spec = spec
+        self.limits = limits
+        self._log = log
+        self._spin = spin
+        self.started = False
+        """Whether it has loaded: it sent its first answer."""
+        self.proc: Any = None
+        """A subprocess.Popen, or a forkserver.ForkedChild; None once ended."""
+        self._token = ""
+        self._spare: int | None = None
+        """A process holding the token that is not this child's (its fork server)."""
+        self._to_child = -1
+        self._answers: wire.FrameReader | None = None
+        self._stdout = -1
+        self._stdout_open = True
+        self._stdout_poll = select.poll()
+        self._output = OutputBudget(
+            self._show_output,
+            max_bytes=limits.output_bytes,
+            max_lines=limits.output_lines,
+            line_chars=limits.output_line_chars,
+        )
+
+    @property
+    def pid(self) -> int | None:
+        return None if self.proc is None else self.proc.pid
+
+    # -- start ----------------------------------------------------------------------------------
+    def spawn(self, config: dict[str, Any]) -> None:
+        """Start the child with ``config`` (what turtletui.runtime.child.main
+        reads; the pipes' descriptors are added here)."""
+        to_child_r, to_child_w = os.pipe()
+        from_child_r, from_child_w = os.pipe()
+        config = {**config, "fd_in": to_child_r, "fd_out": from_child_w, "spin_seconds": self._spin}
+        cwd = str(self.spec.path.resolve().parent) if self.spec.path else None
+        fds = (to_child_r, from_child_w)
+        self.proc = self._fork(config, cwd, fds) or self._exec(config, cwd, fds)
+        os.close(to_child_r)
+        os.close(from_child_w)
+        self._to_child = to_child_w
+        # A child that stopped reading (it forged an answer, then hung) must not
+        # block the parent on a full pipe: writes wait up to the step timeout.
+        os.set_blocking(to_child_w, False)
+        self._answers = wire.FrameReader(
+            from_child_r,
+            spin=self._spin,  # polled briefly, then select (wire.spin_read)
+            max_size=wire.MAX_REPLY_BYTES,
+            wait=self._wait_for_answer,
+            # What the child printed before answering is logged before the answer.
+            on_data=self.drain_output,
+        )
+        self._stdout = self.proc.stdout.fileno()
+        os.set_blocking(self._stdout, False)
+        # asked every exchange whether there is output: cheaper than a read that fails
+        self._stdout_poll.register(self._stdout, select.POLLIN)
+
+    def _exec(self, config: dict[str, Any], cwd: str | None, fds: tuple[int, int]) -> subprocess.Popen:
+        """Start a fresh interpreter for the child."""
+        # Inherited by whatever the controller starts: found and killed at the end
+        # even if it left the child's session and lost its parent.
+        self._token = _new_token()
+        return subprocess.Popen(
+            [sys.executable, "-s", "-c", _BOOTSTRAP.format(root=_PACKAGE_ROOT), json.dumps(config)],
+            stdin=subprocess.DEVNULL,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.STDOUT,
+            pass_fds=fds,
+            start_new_session=True,
+            cwd=cwd,
+            env=_child_environment(self._token),
+            **self._credentials(),
+        )
+
+    def _fork(self, config: dict[str, Any], cwd: str | None, fds: tuple[int, int]) -> Any:
+        """Fork the child from this submission's fork server, if this process
+        uses them (grading workers); None to start it the usual way."""
+        servers = forkserver.servers()
+        if servers is None or self.spec.path is None:
+            return None
+
+        def start() -> forkserver.ForkServer:
+            token = _new_token()
+            return forkserver.ForkServer(_PACKAGE_ROOT, _child_environment(token), token, self._credentials())
+
+        key = (str(self.spec.path.resolve()), self.limits.run_as)
+        forked = servers.spawn(key, start, config, cwd, fds, self.limits.start_timeout)
+        if forked is None:
+            return None
+        child, server = forked
+        # the server's token marks what the child starts; the server lives on
+        self._token, self._spare = server.token, server.proc.pid
+        return child
+
+    def _credentials(self) -> dict[str, Any]:
+        if self.limits.run_as is None:
+            return {}
+        uid, gid = self.limits.run_as
+        return {"user": uid, "group": gid, "extra_groups": []}
+
+    # -- frames ---------------------------------------------------------------------------------
+    def send(self, payload: bytes, timeout: float) -> None:
+        """Send one frame; the child must take it within ``timeout`` seconds."""
+        try:
+            wire.write_frame(self._to_child, payload, _monotonic() + timeout)
+        except wire.WireTimeout:
+            raise ChildFailed(
+                "timeout",
+                f"did not take the next step within {self.limits.step_timeout:g} s of wall time "
+                "(it stopped reading what turtletui sends)",
+            ) from None
+        except OSError:
+            raise self._death() from None
+
+    def receive(self, timeout: float) -> bytes:
+        """The child's next frame, which must come within ``timeout`` seconds."""
+        assert self._answers is not None
+        try:
+            return self._answers.read_frame(_monotonic() + timeout)
+        except wire.WireTimeout:
+            raise self.no_answer() from None
+        except wire.FrameTooLarge as err:
+            raise ChildFailed("flood", str(err)) from None
+        except wire.WireClosed:
+            raise self._death() from None
+
+    def answer_ready(self) -> bool:
+        """Without waiting: has a whole frame come?"""
+        assert self._answers is not None
+        try:
+            return self._answers.frame_ready()
+        except wire.FrameTooLarge as err:
+            raise ChildFailed("flood", str(err)) from None
+        except wire.WireClosed:
+            raise self._death() from None
+
+    def wait_for_answer(self, timeout: float) -> None:
+        """Return when the child's answer may have come, or after ``timeout`` seconds."""
+        assert self._answers is not None
+        select.select([self._answers.fd], [], [], timeout)
+
+    def no_answer(self) -> ChildFailed:
+        return ChildFailed(
+            "timeout",
+            f"did not answer within {self.limits.step_timeout:g} s of wall time "
+            "(an endless loop, a sleep or a blocking call in a callback?)",
+        )
+
+    def _wait_for_answer(self, fd: int, remaining: float | None) -> None:
+        """How the reader waits: showing output as it comes, and waking up now and
+        then to notice a child that died while something it started still holds
+        the pipe open (no end of file then)."""
+        timeout = _LIVENESS_SECONDS if remaining is None else min(remaining, _LIVENESS_SECONDS)
+        stdout = self._stdout
+        readable, _, _ = select.select([fd, stdout] if self._stdout_open else [fd], [], [], timeout)
+        if stdout in readable:
+            self.drain_output()
+        if not readable and self.proc is not None and has_exited(self.proc.pid):
+            raise self._death()
+
+    def _death(self) -> ChildFailed:
+        """Why the child is gone (or, still running, closed its pipe)."""
+        proc = self.proc
+        # read before it is reaped: a child the CPU limit killed has used it all
+        cpu = cpu_seconds(proc.pid) if proc is not None and proc.returncode is None else None
+        try:
+            code = proc.wait(timeout=1) if proc is not None else None
+        except subprocess.TimeoutExpired:
+            return ChildFailed("exception", "closed its connection to turtletui and was stopped")
+        if code is not None and code < 0:
+            sig = -code
+            limit = self.limits.cpu_seconds
+            if sig == signal.SIGKILL and cpu is not None and limit is not None and cpu >= limit:
+                sig = signal.SIGXCPU  # it ignored SIGXCPU: the hard limit's SIGKILL came
+            kind, why = {
+                signal.SIGXCPU: ("cpu", f"used more than its CPU limit of {limit} s"),
+                signal.SIGKILL: ("killed", "was killed (SIGKILL): by someone, or the system ran out of memory"),
+                signal.SIGSEGV: ("killed", "crashed the interpreter (SIGSEGV)"),
+            }.get(sig, ("killed", f"was killed by signal {_signal_name(sig)}"))
+            return ChildFailed(kind, why)
+        if not self.started:
+            return ChildFailed(
+                "exit", f"exited with status {code} while starting, before loading the controller (see its output)"
+            )
+        return ChildFailed("exit", f"exited with status {code} without finishing its run")
+
+    # -- output ---------------------------------------------------------------------------------
+    def drain_output(self, final: bool = False) -> None:
+        """Show what the child printed (within its budget), without waiting."""
+        if self.proc is None or self.proc.stdout is None or not self._stdout_open:
+            return
+        if not final and not self._stdout_poll.poll(0):
+            return  # nothing printed (POLLHUP when closed counts as something)
+        chunks = []
+        read = 0
+        try:
+            while read < _OUTPUT_READ_LIMIT:
+                data = os.read(self._stdout, 65536)
+                if not data:
+                    self._stdout_open = False
+                    break
+                read += len(data)
+                chunks.append(data)
+        except (BlockingIOError, OSError, ValueError):
+            pass
+        # past the budget the output is still read (so the child never blocks), then dropped
+        if self._output.feed(b"".join(chunks), final=final or not self._stdout_open):
+            self._log(
+                "turtletui",
+                WARN,
+                f"{self.spec.label}: output over its budget of {size_text(self.limits.output_bytes)} or "
+                f"{self.limits.output_lines:,} lines per run: the rest is dropped",
+            )
+
+    def _show_output(self, line: str) -> None:
+        self._log(f"{self.spec.name}{OUTPUT_SUFFIX}", INFO, line)
+
+    def output_dropped(self) -> str:
+        """How much output was not shown ("" if none)."""
+        return self._output.dropped()
+
+    # -- end --------------------------------------------------------------------------------------
+    def queued_seconds(self) -> float:
+        """Seconds the child's threads and this process's have waited for a CPU."""
+        child = run_queue_seconds(self.proc.pid) if self.proc is not None else None
+        own = run_queue_seconds("self")
+        return (child or 0.0) + (own or 0.0)
+
+    def kill(self) -> None:
+        """Kill the child and everything it started, show its last output and
+        close the pipes."""
+        proc = self.proc
+        if proc is None:
+            return
+        kill_tree(proc.pid, self._token, reaped=proc.returncode is not None, spare=self._spare)
+        try:
+            proc.wait(timeout=5)
+        except subprocess.TimeoutExpired:
+            pass
+        self.drain_output(final=True)
+        for fd in (self._to_child, None if self._answers is None else self._answers.fd):
+            if fd is None or fd < 0:
+                continue
+            try:
+                os.close(fd)
+            except OSError:
+                pass
+        if proc.stdout:
+            proc.stdout.close()
+        self.proc = None
+
+
+def _new_token() -> str:
+    return f"{os.getpid()}.{os.urandom(8).hex()}"
+
+
+def _child_environment(token: str) -> dict[str, str]:
+    """The environment of a sandbox child (and of a fork server)."""
+    # Only what a program needs to run is passed on: the grader's own
+    # environment may hold secrets (the results key, CI tokens, cloud
+    # credentials) that student code must never read, let alone log.
+    # No -I/-E: they would also drop PYTHONHASHSEED, and a fixed hash seed
+    # keeps the iteration order of the student's sets and dicts of strings
+    # the same in every run. Python's own variables are set below instead.
+    env = {k: v for k, v in os.environ.items() if _passed_to_children(k)}
+    env.update(
+        OPENBLAS_NUM_THREADS="1",
+        OMP_NUM_THREADS="1",
+        PYTHONUNBUFFERED="1",
+        PYTHONHASHSEED="0",
+        PYTHONNOUSERSITE="1",
+        PYTHONDONTWRITEBYTECODE="1",  # no __pycache__ left in students' folders
+    )
+    env[TOKEN_VAR] = token
+    return env
+
+
+_PASSED_NAMES = frozenset(
+    {"PATH", "HOME", "USER", "LOGNAME", "LANG", "LANGUAGE", "TZ", "TERM", "TMPDIR", "LD_LIBRARY_PATH"}
+)
+_PASSED_PREFIXES = ("LC_", "ROS_", "RCUTILS_", "RMW_")
+"""Locale, and the variables ROS 2 itself reads (ROS_DOMAIN_ID, RCUTILS_CONSOLE_OUTPUT_FORMAT...)."""
+
+
+def _passed_to_children(name: str) -> bool:
+    return name in _PASSED_NAMES or name.startswith(_PASSED_PREFIXES)
+
+
+def _signal_name(sig: int) -> str:
+    try:
+        return signal.Signals(sig).name
+    except ValueError:
+        return f"{sig}"
