@@ -25,7 +25,7 @@ REPO = Path(turtletui.__file__).resolve().parents[1]
 LOG_LINE = re.compile(r"\[(INFO|WARN|ERROR)\] \[\d{10}\.\d{9}\] \[([a-z_]+)\]: (.*)\Z")
 
 
-def sim_process(*args: str, cwd: Path) -> subprocess.Popen[str]:
+def sim_process(*args: str, cwd: Path, **popen) -> subprocess.Popen[str]:
     """``python -m turtletui sim ARGS`` with no terminal."""
     return subprocess.Popen(
         [sys.executable, "-m", "turtletui", "sim", *args],
@@ -35,7 +35,12 @@ def sim_process(*args: str, cwd: Path) -> subprocess.Popen[str]:
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,
         text=True,
+        **popen,
     )
+
+
+def _ignore_sigint() -> None:
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
 
 
 def test_headless_keeps_running_without_a_duration(tmp_path: Path) -> None:
@@ -67,8 +72,12 @@ def test_headless_prints_turtlesims_log_with_its_parameters_and_name(tmp_path: P
     assert abs(stamp - time.time()) < 60
 
 
-def test_headless_runs_until_ctrl_c_and_ends_cleanly(tmp_path: Path) -> None:
-    proc = sim_process("--headless", cwd=tmp_path)
+@pytest.mark.parametrize("inherited", ["default", "ignored"])
+def test_headless_runs_until_ctrl_c_and_ends_cleanly(tmp_path: Path, inherited: str) -> None:
+    # started with SIGINT ignored (a script's background job): Ctrl-C still ends
+    # it, as turtlesim_node's own handler does
+    ignore = {"preexec_fn": _ignore_sigint} if inherited == "ignored" else {}
+    proc = sim_process("--headless", cwd=tmp_path, **ignore)
     first = proc.stderr.readline()  # turtlesim is up
     assert "Starting turtlesim with node name /turtlesim" in first
     proc.send_signal(signal.SIGINT)  # at once: Ctrl-C right as it starts ends it cleanly too

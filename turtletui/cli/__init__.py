@@ -6,6 +6,7 @@ command imports what it needs when it runs, and nothing here imports Textual.
 
 from __future__ import annotations
 
+import signal
 import sys
 from typing import Any
 
@@ -125,8 +126,17 @@ def split_ros_args(argv: list[str]) -> tuple[list[str], list[str]]:
     return argv, []
 
 
+def _interruptible() -> None:
+    """Ctrl-C (SIGINT) ends a command even when it was started with SIGINT
+    ignored, as a script's background job is: a ROS 2 node installs its own
+    handler the same way, so turtlesim and rclpy nodes end on it regardless."""
+    if signal.getsignal(signal.SIGINT) is signal.SIG_IGN:
+        signal.signal(signal.SIGINT, signal.default_int_handler)
+
+
 def main() -> None:
     """Console-script entry point."""
+    _interruptible()
     argv, ros_args = split_ros_args(sys.argv[1:])
     run_cmd.ROS_ARGS[:] = sim_cmd.ROS_ARGS[:] = ros_args
     app(args=run_cmd.with_foxglove_default(argv), prog_name="turtletui")
