@@ -25,9 +25,23 @@ REPO = Path(turtletui.__file__).resolve().parents[1]
 LOG_LINE = re.compile(r"\[(INFO|WARN|ERROR)\] \[\d{10}\.\d{9}\] \[([a-z_]+)\]: (.*)\Z")
 
 
+_STARTED: list[subprocess.Popen[str]] = []
+
+
+@pytest.fixture(autouse=True)
+def _no_process_outlives_its_test():
+    """A test that fails waiting for its process does not leave it running."""
+    yield
+    while _STARTED:
+        proc = _STARTED.pop()
+        if proc.poll() is None:
+            proc.kill()
+            proc.communicate()
+
+
 def sim_process(*args: str, cwd: Path, **popen) -> subprocess.Popen[str]:
     """``python -m turtletui sim ARGS`` with no terminal."""
-    return subprocess.Popen(
+    proc = subprocess.Popen(
         [sys.executable, "-m", "turtletui", "sim", *args],
         cwd=cwd,
         env=dict(os.environ, PYTHONPATH=str(REPO)),
@@ -37,6 +51,8 @@ def sim_process(*args: str, cwd: Path, **popen) -> subprocess.Popen[str]:
         text=True,
         **popen,
     )
+    _STARTED.append(proc)
+    return proc
 
 
 def _ignore_sigint() -> None:
