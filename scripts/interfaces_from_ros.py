@@ -43,6 +43,7 @@ DOCS = {
     "tf2_msgs": "tf2_msgs: TFMessage (what /tf carries), TF2Error and tf2's service and action.",
     "rcl_interfaces": "rcl_interfaces: /rosout's Log, the parameter messages and the parameter services.",
     "lifecycle_msgs": "lifecycle_msgs: a managed (lifecycle) node's states, transitions and services.",
+    "rosgraph_msgs": "rosgraph_msgs: Clock, what /clock carries when a node uses simulated time.",
 }
 
 

@@ -26,6 +26,7 @@ from turtletui.interfaces import (
     lifecycle_msgs,
     nav_msgs,
     rcl_interfaces,
+    rosgraph_msgs,
     sensor_msgs,
     std_msgs,
     std_srvs,
@@ -49,7 +50,8 @@ from turtletui.interfaces.turtlesim import Color, RotateAbsolute, SetPen, Spawn
 
 TURTLE_POSE = turtlesim.Pose
 
-MODULES = [action_msgs, builtin_interfaces, example_interfaces, geometry_msgs, lifecycle_msgs, nav_msgs, rcl_interfaces, sensor_msgs,
+MODULES = [action_msgs, builtin_interfaces, example_interfaces, geometry_msgs, lifecycle_msgs, nav_msgs, rcl_interfaces, rosgraph_msgs,
+           sensor_msgs,
            std_msgs, std_srvs, tf2_msgs, turtlesim, unique_identifier_msgs,
            visualization_msgs]
 

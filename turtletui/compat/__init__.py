@@ -24,6 +24,7 @@ ROS_PACKAGES = (
     "visualization_msgs",
     "builtin_interfaces",
     "rcl_interfaces",
+    "rosgraph_msgs",
     "lifecycle_msgs",
     "action_msgs",
     "turtlesim",

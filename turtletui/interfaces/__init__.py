@@ -37,6 +37,7 @@ from turtletui.interfaces import (  # noqa: F401  (registers every type)
     lifecycle_msgs,
     nav_msgs,
     rcl_interfaces,
+    rosgraph_msgs,
     sensor_msgs,
     std_msgs,
     std_srvs,
