@@ -308,7 +308,9 @@ def test_graph_queries_see_turtlesim_and_the_nodes_own_endpoints(controller_host
         "topics ['turtlesim/msg/Pose'] ['turtlesim/msg/Pose']",
         "services ['turtlesim/srv/Spawn'] ['turtlesim/srv/SetPen']",
         "pose publisher /turtlesim turtlesim/msg/Pose PUBLISHER",
-        "by node [('/turtle1/cmd_vel', ['geometry_msgs/msg/Twist'])]",
+        # rclcpp's own /parameter_events subscription, as every rclcpp node has
+        "by node [('/parameter_events', ['rcl_interfaces/msg/ParameterEvent']),"
+        " ('/turtle1/cmd_vel', ['geometry_msgs/msg/Twist'])]",
         "actions [('/turtle1/rotate_absolute', ['turtlesim/action/RotateAbsolute'])]",
     ]
 

@@ -78,7 +78,8 @@ def test_a_sandboxed_nodes_parameters_and_clients_are_visible(tmp_path: Path) ->
     """))
     graph = snapshot_at(0.5, [path], ros_args=["-p", "speed:=2.5"])
     node = graph.node("/tuned")
-    assert dict(node.parameters) == {"speed": 2.5}
+    # with what every rclpy node declares
+    assert dict(node.parameters) == {"speed": 2.5, "use_sim_time": False, "start_type_description_service": True}
     assert node.service_clients == (("/turtle1/set_pen", "turtlesim/srv/SetPen"),)
     assert {s.name: s.clients for s in graph.services}["/turtle1/set_pen"] == ("/tuned",)
 

@@ -26,6 +26,7 @@ from typing import Any
 
 from turtletui.bridge.process import TwinProcess
 from turtletui.graph.core import GoalHandle, Graph, GraphError, NodeRecord, Publisher
+from turtletui.graph.introspection import is_plumbing_topic
 from turtletui.graph.logs import INFO, WARN, LogRecord
 from turtletui.graph.parameter_services import is_parameter_service
 from turtletui.interfaces import InterfaceError, from_dict, get_interface, to_dict
@@ -187,6 +188,8 @@ class RosBridge:
                 self._sync_parameters(node)
         wanted: dict[Any, tuple[str, dict[str, Any]]] = {}
         for name, topic in graph.topics.items():
+            if is_plumbing_topic(name):
+                continue  # the twins are rclpy nodes: they have their own
             for pub in topic.publishers:
                 if pub.owner != OWNER:
                     wanted[pub] = ("pub", {"topic": name, "type": topic.type_name, "depth": pub.depth})

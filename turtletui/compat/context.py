@@ -80,6 +80,8 @@ class Context:
         self.qos_events: list[tuple[int, int, Any, str]] = []
         """QoS warnings waiting for an executor (turtletui.compat.matching)."""
         self.ros_args = RosArgs()
+        self.told_no_clock = False
+        """Whether a node was told why its use_sim_time clock stands still."""
 
     @property
     def host(self) -> Host:

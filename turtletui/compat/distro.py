@@ -160,3 +160,11 @@ def install_finder(distro: str) -> None:
     for name in list(sys.modules):
         if name.partition(".")[0] == finder.missing:
             del sys.modules[name]
+
+
+def current_distro() -> str:
+    """The distro this process's ROS packages are installed as (see install_finder)."""
+    for finder in sys.meta_path:
+        if isinstance(finder, MissingPackageFinder):
+            return finder.distro
+    return NEWEST_LTS

@@ -11,6 +11,7 @@ from turtletui.compat.callback_groups import CallbackGroup, MutuallyExclusiveCal
 from turtletui.compat.context import Context, get_default_context
 from turtletui.compat.destroyable import Destroyable
 from turtletui.compat.dispatch import dispatcher
+from turtletui.compat.distro import current_distro
 from turtletui.compat.exceptions import (  # noqa: F401  (re-exported: rclpy.node users import them here)
     InvalidHandle,
     InvalidParameterTypeException,
@@ -53,14 +54,17 @@ from turtletui.compat.qos import (
     QoSProfile,
     depth_of,
     is_transient_local,
+    qos_profile_parameter_events,
     qos_profile_rosout_default,
     qos_profile_services_default,
 )
 from turtletui.compat.task import Future
 from turtletui.compat.time import Clock, ClockType, Duration, clock_for
+from turtletui.compat.time_source import TimeSource
 from turtletui.graph import core
 from turtletui.graph.logs import WARN
 from turtletui.interfaces import copier, interface_name
+from turtletui.interfaces.rcl_interfaces import Log, ParameterEvent
 
 _NS = 1_000_000_000
 
@@ -510,11 +514,25 @@ class Node(Destroyable):
         self._logger = get_logger(f"{namespace.strip('/').replace('/', '.')}.{node_name}".lstrip("."))
         self._clock = clock_for(self._context, ClockType.ROS_TIME)
         self._context.track_node(self)
+        # What rcl and rclpy give every node: /rosout, /parameter_events, use_sim_time ...
+        if enable_rosout:
+            self._graph.add_publisher(
+                self._record, "/rosout", Log, depth_of(rosout_qos_profile), qos=rosout_qos_profile
+            )
+        self._parameter_event_publisher: Publisher | None = self.create_publisher(
+            ParameterEvent, "/parameter_events", qos_profile_parameter_events
+        )
+        self._parameter_event_publisher._told_undiscovered = True  # rclpy's own: no note blames the student
+        if automatically_declare_parameters_from_overrides:
+            for name, value in self._overrides.items():
+                self.declare_parameter(name, value, ignore_override=True)
+        self._time_source = TimeSource(node=self)
+        self._time_source.attach_clock(self._clock)
         if start_parameter_services:
             ParameterService(self)
-        if automatically_declare_parameters_from_overrides:
-            for name, value in overrides.items():
-                self.declare_parameter(name, value)
+        if current_distro() != "humble":  # rclpy's TypeDescriptionService, Iron on
+            read_only = ParameterDescriptor(type=Parameter.Type.BOOL.value, read_only=True)
+            self.declare_parameter("start_type_description_service", True, read_only)
 
     # -- identity ---------------------------------------------------------------
     @property
@@ -778,6 +796,7 @@ class Node(Destroyable):
         if self._destroyed:
             return
         self._destroyed = True
+        self._parameter_event_publisher = None
         self._graph.remove_node(self._record)
         for entity in self._entities:
             entity._destroyed = True
@@ -930,6 +949,7 @@ class Node(Destroyable):
         self._parameters[name] = parameter
         self._descriptors[name] = descriptor
         self._graph.set_parameter(self._record, name, value)
+        self._publish_parameter_event(new=[parameter])
         return parameter
 
     def declare_parameters(
@@ -1017,16 +1037,38 @@ class Node(Destroyable):
                 return result if isinstance(result, SetParametersResult) else SetParametersResult(
                     successful=False, reason="rejected by on-set-parameters callback"
                 )
+        new, changed, deleted = [], [], []
         for parameter in parameters:
             if parameter.type_ is Parameter.Type.NOT_SET:
+                deleted.append(parameter)
                 self._parameters.pop(parameter.name, None)
                 self._descriptors.pop(parameter.name, None)
                 self._graph.set_parameter(self._record, parameter.name, None, remove=True)
                 continue
             self._descriptors.setdefault(parameter.name, ParameterDescriptor(dynamic_typing=True))
+            known = self._parameters.get(parameter.name)
+            (new if known is None or known.type_ is Parameter.Type.NOT_SET else changed).append(parameter)
             self._parameters[parameter.name] = parameter
             self._graph.set_parameter(self._record, parameter.name, parameter.value)
+        self._publish_parameter_event(new=new, changed=changed, deleted=deleted)
         return SetParametersResult(successful=True)
+
+    def _publish_parameter_event(
+        self, *, new: Sequence[Parameter] = (), changed: Sequence[Parameter] = (), deleted: Sequence[Parameter] = ()
+    ) -> None:
+        """Tell /parameter_events what changed, as rclpy does after every
+        successful declare or set (not after undeclare_parameter)."""
+        publisher = self._parameter_event_publisher
+        if publisher is None:
+            return
+        event = ParameterEvent(
+            stamp=self._clock.now().to_msg(),
+            node=self._record.fqn,
+            new_parameters=[p.to_parameter_msg() for p in new],
+            changed_parameters=[p.to_parameter_msg() for p in changed],
+            deleted_parameters=[p.to_parameter_msg() for p in deleted],
+        )
+        publisher.publish(event)
 
     def describe_parameter(self, name: str) -> ParameterDescriptor:
         """The parameter's descriptor (its type filled in)."""

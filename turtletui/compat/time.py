@@ -256,7 +256,12 @@ class Clock:
 
         return context or self._context or get_default_context()
 
+    _ros_time_active = False
+    _ros_time_ns = 0
+
     def now(self) -> Time:
+        if self._ros_time_active:
+            return Time(nanoseconds=self._ros_time_ns, clock_type=self._clock_type)
         return Time(nanoseconds=self._ctx().host.graph.stamp_ns, clock_type=self._clock_type)
 
     def sleep_for(self, rel_time: Duration, context: Context | None = None) -> bool:
@@ -275,7 +280,18 @@ class ROSClock(Clock):
 
     @property
     def ros_time_is_active(self) -> bool:
-        return True  # turtletui's time is always the simulation's
+        """Whether the clock reads /clock (its node's use_sim_time) instead of
+        the run's own time (which is simulated either way)."""
+        return self._ros_time_active
+
+    def _set_ros_time_is_active(self, enabled: bool) -> None:
+        self._ros_time_active = bool(enabled)
+
+    def set_ros_time_override(self, time: Time) -> None:
+        """What the clock reads while ROS time is active (the last /clock message)."""
+        if not isinstance(time, Time):
+            raise TypeError("Time must be specified as rclpy.time.Time")
+        self._ros_time_ns = time.nanoseconds
 
 
 def clock_for(context: Context, clock_type: ClockType = ClockType.ROS_TIME) -> Clock:

@@ -173,7 +173,8 @@ def dangling_endpoints(graph: Graph, owner_prefix: str = "") -> list[str]:
             if sub.owner.startswith(owner_prefix) and sub.owner != "sim" and not topic.publishers:
                 warnings.append(_dangling(sub.node.fqn, "subscribes to", name, "publishes", live))
         for pub in topic.publishers:
-            if pub.owner.startswith(owner_prefix) and pub.owner != "sim" and not topic.subscriptions:
+            if pub.owner.startswith(owner_prefix) and pub.owner != "sim" and not topic.subscriptions \
+                    and not is_plumbing_topic(name):
                 # Publishing to no one is normal (a debug topic): say so only
                 # when a topic of a very similar name exists.
                 if _close(name, live):
@@ -196,6 +197,14 @@ PLUMBING_TOPICS = (
     ("/rosout", "rcl_interfaces/msg/Log"),
 )
 """What every ROS 2 node publishes besides its own topics."""
+_PLUMBING_NAMES = frozenset(name for name, _ in PLUMBING_TOPICS)
+
+
+def is_plumbing_topic(name: str) -> bool:
+    """Whether ``name`` is a topic every node has (/rosout, /parameter_events):
+    rqt_graph hides them, and no one needs to be told nothing listens there."""
+    return name in _PLUMBING_NAMES
+
 PARAMETER_SERVICES = (
     ("describe_parameters", "rcl_interfaces/srv/DescribeParameters"),
     ("get_parameter_types", "rcl_interfaces/srv/GetParameterTypes"),

@@ -18,10 +18,17 @@ from turtletui.graph.core import (
     Subscription,
 )
 from turtletui.graph.logs import ERROR, INFO, WARN
-from turtletui.graph.parameter_services import serve_parameters
+from turtletui.graph.parameter_services import serve_parameters, value_message
 from turtletui.interfaces.builtin_interfaces import Time
 from turtletui.interfaces.geometry_msgs import Twist
-from turtletui.interfaces.rcl_interfaces import IntegerRange, ParameterDescriptor, ParameterType
+from turtletui.interfaces.rcl_interfaces import (
+    IntegerRange,
+    Log,
+    Parameter,
+    ParameterDescriptor,
+    ParameterEvent,
+    ParameterType,
+)
 from turtletui.interfaces.sensor_msgs import LaserScan
 from turtletui.interfaces.std_msgs import Header
 from turtletui.interfaces.std_srvs import Empty
@@ -52,6 +59,12 @@ from turtletui.sim import (
 from turtletui.sim.obstacles import RayCaster
 
 QOS_DEPTH = 7
+_PLUMBING_DEPTH = 1000
+"""rclcpp's depth for /rosout and /parameter_events."""
+
+
+def _ignore_event(event: Any) -> None:
+    """rclcpp's own /parameter_events subscription (its TimeSource's): nothing here needs it."""
 """turtlesim's topics: keep last 7, reliable (qos.hpp)."""
 
 _F32 = struct.Struct("5f")
@@ -158,6 +171,10 @@ class TurtlesimNode:
         for name, value in zip(PARAMETERS, (*bg, self.world.holonomic), strict=True):
             graph.set_parameter(self.node, name, value)
         serve_parameters(graph, self.node, _descriptors())
+        # What rclcpp gives every node: /rosout, and /parameter_events both ways.
+        graph.add_publisher(self.node, "/rosout", Log, _PLUMBING_DEPTH)
+        self._parameter_events = graph.add_publisher(self.node, "/parameter_events", ParameterEvent, _PLUMBING_DEPTH)
+        graph.add_subscription(self.node, "/parameter_events", ParameterEvent, _PLUMBING_DEPTH, _ignore_event)
         self._log(INFO, f"Starting turtlesim with node name {self.node.fqn}")
         node = self.node
         graph.add_service(node, "/clear", Empty, self._clear)
@@ -269,6 +286,12 @@ class TurtlesimNode:
             params = {**self.node.parameters, name: value}
             self.world.set_background((params["background_r"], params["background_g"], params["background_b"]))
         self.graph.set_parameter(self.node, name, value)
+        event = ParameterEvent(
+            stamp=Time(sec=self.graph.stamp_ns // NS_PER_S, nanosec=self.graph.stamp_ns % NS_PER_S),
+            node=self.node.fqn,
+            changed_parameters=[Parameter(name=name, value=value_message(value))],
+        )
+        self.graph.publish(self._parameter_events.topic, event, publisher=self._parameter_events)
         return None
 
     # -- services ---------------------------------------------------------------

@@ -70,7 +70,7 @@ def _echo_arguments(parser: ArgumentParser) -> None:
 
 def _echo(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
     name = absolute(args.topic_name)
-    if name == "/rosout" and _plumbing(cli, name) is not None:
+    if name == "/rosout" and any(t.name == name for t in ros_view(cli).topics):  # logs are not messages here
         if args.message_type is not None:
             check_type(get_interface(args.message_type), "rcl_interfaces/msg/Log", f"topic '{name}'")
         path = _field_path(Log, args.field) if args.field is not None else []

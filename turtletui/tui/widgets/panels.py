@@ -12,7 +12,7 @@ from textual.containers import Horizontal, Vertical
 from textual.events import Resize
 from textual.widgets import DataTable, Input, Markdown, Select, Static
 
-from turtletui.graph.introspection import GraphSnapshot, TopicInfo
+from turtletui.graph.introspection import GraphSnapshot, TopicInfo, is_plumbing_topic
 from turtletui.graph.logs import LEVEL_NAMES, LogRecord
 from turtletui.ros2cli.terminal import Line
 from turtletui.tui.widgets.textlog import TextLog
@@ -192,8 +192,8 @@ def graph_text(graph: GraphSnapshot) -> str:
     lines = []
     connected = set()
     for topic in graph.topics:
-        if not topic.publishers and not topic.subscribers:
-            continue
+        if (not topic.publishers and not topic.subscribers) or is_plumbing_topic(topic.name):
+            continue  # rqt_graph too hides /rosout and /parameter_events
         pubs = ", ".join(topic.publishers) or "(no publisher)"
         subs = ", ".join(topic.subscribers) or "(no subscriber)"
         lines.append(f"{pubs} -> {topic.name} -> {subs}")
