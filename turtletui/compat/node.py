@@ -645,7 +645,7 @@ class Node(Destroyable):
         record = self._graph.add_publisher(
             self._record, self.resolve_topic_name(topic), msg_type, depth, qos=qos_profile
         )
-        publisher = Publisher(self, record, qos_profile)
+        publisher = publisher_class(self, record, qos_profile)
         publisher._topic_as_given = topic
         self._entities.append(publisher)
         match_publisher(self, publisher)

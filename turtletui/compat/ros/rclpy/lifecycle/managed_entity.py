@@ -1,0 +1,1 @@
+from turtletui.compat.lifecycle import ManagedEntity, SimpleManagedEntity, TransitionCallbackReturn  # noqa: F401

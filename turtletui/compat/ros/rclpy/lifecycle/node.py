@@ -1,0 +1,6 @@
+from turtletui.compat.lifecycle import (  # noqa: F401
+    LifecycleNode,
+    LifecycleNodeMixin,
+    LifecycleState,
+    TransitionCallbackReturn,
+)

@@ -1,0 +1,1 @@
+from turtletui.compat.lifecycle import LifecyclePublisher  # noqa: F401
