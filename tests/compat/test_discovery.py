@@ -227,3 +227,67 @@ def main():
     )
     assert result.ok, result.crashes
     assert node_logs(result, "caller") == ["ready at once: True", "pong"]
+
+
+def test_a_goal_before_the_action_server_is_discovered_is_never_answered_and_the_log_says_why(controller_host):
+    # As a service request: rclpy's goal is a request to the server's
+    # send_goal service, lost when the server has not discovered the client.
+    result = controller_host.run(
+        """
+import math
+import rclpy
+from rclpy.action import ActionClient
+from rclpy.node import Node
+from turtlesim.action import RotateAbsolute
+
+def main():
+    rclpy.init()
+    node = Node("eager_action_client")
+    client = ActionClient(node, RotateAbsolute, "/turtle1/rotate_absolute")
+    node.get_logger().info(f"ready at once: {client.server_is_ready()}")
+    lost = client.send_goal_async(RotateAbsolute.Goal(theta=math.pi / 2))
+    rclpy.spin_until_future_complete(node, lost, timeout_sec=1.0)
+    node.get_logger().info(f"first goal answered: {lost.done()}")
+    while not client.wait_for_server(timeout_sec=0.01):
+        node.get_logger().info("waiting")
+    node.get_logger().info(f"ready: {client.server_is_ready()}")
+    found = client.send_goal_async(RotateAbsolute.Goal(theta=-math.pi / 2))
+    rclpy.spin_until_future_complete(node, found, timeout_sec=1.0)
+    node.get_logger().info(f"second goal accepted: {found.result().accepted}")
+    rclpy.shutdown()
+""",
+        duration=2.0,
+    )
+    assert result.ok, result.crashes
+    # the first wait starts at t=1 s, after the discovery: no "waiting"
+    assert node_logs(result, "eager_action_client") == [
+        "ready at once: False",
+        "first goal answered: False",
+        "ready: True",
+        "second goal accepted: True",
+    ]
+    notes = [r.msg for r in result.logs if r.node == "turtletui" and "discovered the action" in r.msg]
+    assert len(notes) == 1 and "wait_for_server()" in notes[0]
+
+
+def test_wait_for_server_returns_once_discovered(controller_host):
+    result = controller_host.run(
+        """
+import rclpy
+from rclpy.action import ActionClient
+from rclpy.node import Node
+from turtlesim.action import RotateAbsolute
+
+def main():
+    rclpy.init()
+    node = Node("patient_action_client")
+    client = ActionClient(node, RotateAbsolute, "/turtle1/rotate_absolute")
+    while not client.wait_for_server(timeout_sec=0.01):
+        node.get_logger().info("waiting")
+    node.get_logger().info(f"ready at {node.get_clock().now().nanoseconds - 1_700_000_000 * 10**9} ns")
+    rclpy.shutdown()
+""",
+        duration=1.0,
+    )
+    assert result.ok, result.crashes
+    assert node_logs(result, "patient_action_client") == ["waiting"] * 4 + [f"ready at {DISCOVERY_NS} ns"]

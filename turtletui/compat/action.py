@@ -7,12 +7,14 @@ from collections.abc import Callable
 from typing import Any
 
 from turtletui.compat.destroyable import Destroyable
+from turtletui.compat.node import wait_for_server
 from turtletui.compat.qos import (
     QoSProfile,
     qos_profile_action_status_default,
     qos_profile_services_default,
 )
 from turtletui.compat.task import Future
+from turtletui.graph.logs import WARN
 from turtletui.interfaces import copier
 
 _NS = 1_000_000_000
@@ -38,6 +40,11 @@ _STATUS = {
     "canceled": GoalStatus.STATUS_CANCELED,
     "aborted": GoalStatus.STATUS_ABORTED,
 }
+_UNDISCOVERED_ACTION = (
+    "{node} sent a goal to {action} before it had discovered the action's server, so the goal was lost "
+    "and will never be answered: ROS 2 nodes take a moment to discover each other, here and on a real "
+    "robot. Wait with action_client.wait_for_server() before the first goal."
+)
 _ERROR_UNKNOWN_GOAL_ID = 2
 """action_msgs/srv/CancelGoal's code for a goal the server does not know (a rejected one)."""
 
@@ -163,20 +170,25 @@ class ActionClient(Destroyable):
         self._action_type = action_type
         self._action_name = node.resolve_topic_name(action_name)
         self._record = node._graph.add_action_client(node._record, self._action_name, action_type)
+        self._told_undiscovered = False
         node._entities.append(self)  # destroyed with the node
 
     def _host(self) -> Any:
         return self._node.context.host
 
     def server_is_ready(self) -> bool:
+        """Whether the action's server exists and this client has discovered it."""
         self._require_alive()
-        return self._node._graph.has_action_server(self._action_name)
+        return self._node._graph.action_matched(self._record)
 
     def wait_for_server(self, timeout_sec: float | None = None) -> bool:
-        if self.server_is_ready():
-            return True
-        timeout = None if timeout_sec is None else int(timeout_sec * _NS)
-        return self._host().spin_until(self.server_is_ready, timeout, callbacks=False)
+        """Wait (in simulated time) until the server exists and this client has
+        discovered it; False on timeout."""
+        graph = self._node._graph
+        return wait_for_server(
+            self._host(), self._record, lambda: graph.action_servers.get(self._action_name),
+            self.server_is_ready, timeout_sec,
+        )
 
     def send_goal_async(
         self, goal: Any, feedback_callback: Callable[[Any], None] | None = None, goal_uuid: Any = None
@@ -189,6 +201,10 @@ class ActionClient(Destroyable):
             raise TypeError(f"send_goal_async() on {self._action_name} expects a Goal of {self._action_type}, got {goal!r}")
         future = Future()
         host = self._host()
+        graph = host.graph
+        if self._action_name in graph.action_servers and not graph.action_matched(self._record):
+            self._tell_goal_lost()  # and never answered, as in ROS 2
+            return future
         handle = ClientGoalHandle(self, None)
         feedback_type = self._action_type.Impl.FeedbackMessage
 
@@ -210,6 +226,12 @@ class ActionClient(Destroyable):
             host.wrap_callback(handle._status_changed),
         )
         return future
+
+    def _tell_goal_lost(self) -> None:
+        if not self._told_undiscovered:
+            self._told_undiscovered = True
+            node = self._node.get_fully_qualified_name()
+            self._node._graph.log("turtletui", WARN, _UNDISCOVERED_ACTION.format(node=node, action=self._action_name))
 
     def send_goal(self, goal: Any, **kwargs: Any) -> Any:
         """Send ``goal`` and wait for its result; ``kwargs`` are send_goal_async's

@@ -355,27 +355,39 @@ class Client(Destroyable):
     def wait_for_service(self, timeout_sec: float | None = None) -> bool:
         """Wait (in simulated time) until the server exists and this client has
         discovered it, as a graph event wakes rclpy's wait; False on timeout."""
-        host = self._node.context.host
         graph = self._node._graph
-        deadline = None if timeout_sec is None else graph.now_ns + int(timeout_sec * _NS)
-        while not self.service_is_ready():
-            if not host.running:
-                # the program is on its way out (as sleeps, this returns at once): a
-                # wait in a loop must not keep it waiting for a discovery that never comes
-                return self.srv_name in graph.services
-            left = None if deadline is None else deadline - graph.now_ns
-            if left is not None and left <= 0:
-                return False
-            service = graph.services.get(self.srv_name)
-            if service is None:
-                host.spin_until(lambda: self.srv_name in graph.services, left, callbacks=False)
-            else:  # found: discovered at a known instant, with or without other events before it
-                found = graph.discovered_at(service, self._record) - graph.now_ns
-                host.spin_until(self.service_is_ready, found if left is None else min(found, left), callbacks=False)
-        return True
+        return wait_for_server(
+            self._node.context.host, self._record, lambda: graph.services.get(self.srv_name),
+            self.service_is_ready, timeout_sec,
+        )
 
     def destroy(self) -> None:
         self._node.destroy_client(self)
+
+
+def wait_for_server(
+    host: Any, client: Any, server: Callable[[], Any], ready: Callable[[], bool], timeout_sec: float | None
+) -> bool:
+    """Wait (in simulated time) until ``server()`` (a service's or an action's
+    server record) exists and ``client`` has discovered it (``ready()``), as a
+    graph event wakes rclpy's wait; False on timeout."""
+    graph = host.graph
+    deadline = None if timeout_sec is None else graph.now_ns + int(timeout_sec * _NS)
+    while not ready():
+        if not host.running:
+            # the program is on its way out (as sleeps, this returns at once): a
+            # wait in a loop must not keep it waiting for a discovery that never comes
+            return server() is not None
+        left = None if deadline is None else deadline - graph.now_ns
+        if left is not None and left <= 0:
+            return False
+        found = server()
+        if found is None:
+            host.spin_until(lambda: server() is not None, left, callbacks=False)
+        else:  # found: discovered at a known instant, with or without other events before it
+            at = graph.discovered_at(found, client) - graph.now_ns
+            host.spin_until(ready, at if left is None else min(at, left), callbacks=False)
+    return True
 
 
 class Service(Destroyable):

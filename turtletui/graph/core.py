@@ -294,6 +294,8 @@ class ActionServer:
     answers: bool = False
     """Whether the server accepts or rejects each goal itself (GoalHandle.accept);
     else every goal is accepted as soon as ``on_goal`` returns."""
+    created_ns: int = 0
+    """When it was made, in simulated ns (for discovery: Graph.discovery_ns)."""
 
 
 @dataclass(eq=False)
@@ -303,6 +305,8 @@ class ActionClientRecord:
     action_type: type
     type_name: str
     owner: str
+    created_ns: int = 0
+    """When it was made, in simulated ns (for discovery: Graph.discovery_ns)."""
 
 
 class GraphOutbox(Protocol):
@@ -822,7 +826,9 @@ class Graph:
         self.version += 1
         if name in self.action_servers:
             raise GraphError(f"action {name} is already provided by {self.action_servers[name].node.fqn}")
-        server = ActionServer(node, name, action_type, self._type_name(action_type), on_goal, node.owner, answers)
+        server = ActionServer(
+            node, name, action_type, self._type_name(action_type), on_goal, node.owner, answers, self.now_ns
+        )
         self.action_servers[name] = server
         if self.outbox is not None:
             self.outbox.declared(server)
@@ -842,6 +848,14 @@ class Graph:
         """Whether a server provides action ``name`` (``server_is_ready``)."""
         return name in self.action_servers
 
+    def action_matched(self, client: ActionClientRecord) -> bool:
+        """Whether ``client`` has discovered the server of its action (and the
+        server the client): goals sent before that are lost, as in ROS 2."""
+        server = self.action_servers.get(client.name)
+        if server is None:
+            return False
+        return server.owner == client.owner or self.discovered_at(server, client) <= self.now_ns
+
     def action_names_and_types(self) -> list[tuple[str, list[str]]]:
         """Every action with a server or a client, with its type, sorted by name."""
         found = {(name, a.type_name) for name, a in self.action_servers.items()}
@@ -850,7 +864,7 @@ class Graph:
 
     def add_action_client(self, node: NodeRecord, name: str, action_type: type) -> ActionClientRecord:
         self.version += 1
-        client = ActionClientRecord(node, name, action_type, self._type_name(action_type), node.owner)
+        client = ActionClientRecord(node, name, action_type, self._type_name(action_type), node.owner, self.now_ns)
         self.action_clients.append(client)
         if self.outbox is not None:
             self.outbox.declared(client)

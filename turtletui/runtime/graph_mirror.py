@@ -100,7 +100,7 @@ class MirrorRecord(NamedTuple):
     name: str
     type_name: str
     created_ns: int = 0
-    """When it was made (services: for discovery, Graph.discovery_ns)."""
+    """When it was made (services and action servers: for discovery, Graph.discovery_ns)."""
 
 
 class GraphMirror(NamedTuple):
@@ -231,7 +231,7 @@ def apply(graph: Graph, mirror: GraphMirror, own: Mapping[int, Any]) -> None:
         action_type = _interface(r.type_name)
         if action_type is not None and r.name not in graph.action_servers:
             graph.action_servers[r.name] = ActionServer(
-                nodes[r.node], r.name, action_type, r.type_name, _never, MIRROR_OWNER
+                nodes[r.node], r.name, action_type, r.type_name, _never, MIRROR_OWNER, created_ns=r.created_ns
             )
     for r in mirror.clients:
         srv_type = _interface(r.type_name)
