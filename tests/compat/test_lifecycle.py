@@ -7,10 +7,7 @@ real rclpy (Kilted).
 
 from __future__ import annotations
 
-import textwrap
-from pathlib import Path
-
-from support.hosts import node_logs
+from support.hosts import node_logs, write_controller
 
 from turtletui.api import run
 
@@ -73,15 +70,9 @@ class Manager(Node):
 """
 
 
-def _write(folder: Path, source: str, name: str) -> Path:
-    path = folder / name
-    path.write_text(textwrap.dedent(source).lstrip(), encoding="utf-8")
-    return path
-
-
 def test_a_lifecycle_node_driven_from_another_file_drives_only_once_active(tmp_path):
     # two files run sandboxed only (in-process runs one file)
-    result = run([_write(tmp_path, MANAGED, "driver.py"), _write(tmp_path, MANAGER, "manager.py")], duration=2.0)
+    result = run([write_controller(tmp_path, MANAGED, "driver.py"), write_controller(tmp_path, MANAGER, "manager.py")], duration=2.0)
     assert result.ok, result.crashes
     assert node_logs(result, "driver") == ["configured from unconfigured", "activated"]
     assert node_logs(result, "manager") == [

@@ -9,10 +9,7 @@ both hosts.
 
 from __future__ import annotations
 
-import textwrap
-from pathlib import Path
-
-from support.hosts import node_logs
+from support.hosts import node_logs, write_controller
 
 from turtletui.api import run
 from turtletui.graph.logs import WARN
@@ -57,17 +54,11 @@ class Tuner(Node):
 """
 
 
-def _write(folder: Path, source: str, name: str) -> Path:
-    path = folder / name
-    path.write_text(textwrap.dedent(source).lstrip(), encoding="utf-8")
-    return path
-
-
 def test_a_nodes_parameter_events_reach_a_node_in_another_file(tmp_path):
     # two files run sandboxed only (in-process runs one): parameter_events.py
     # in tests/fidelity has two nodes of one program under both hosts
-    watcher = _write(tmp_path, WATCHER, "watcher.py")
-    tuner = _write(tmp_path, TUNER, "tuner.py")
+    watcher = write_controller(tmp_path, WATCHER, "watcher.py")
+    tuner = write_controller(tmp_path, TUNER, "tuner.py")
     result = run([watcher, tuner], duration=1.0)
     assert result.ok, result.crashes
     # The tuner's own declarations at start (use_sim_time ...) were published
@@ -140,8 +131,8 @@ def test_use_sim_time_without_clock_stands_still_and_says_why_once(controller_ho
 
 
 def test_use_sim_time_follows_a_clock_published_by_another_file(tmp_path):
-    timed = _write(tmp_path, SIM_TIME, "timed.py")
-    clock = _write(tmp_path, CLOCK, "clock.py")
+    timed = write_controller(tmp_path, SIM_TIME, "timed.py")
+    clock = write_controller(tmp_path, CLOCK, "clock.py")
     result = run([timed, clock], duration=1.1, ros_args=["-p", "use_sim_time:=true"])
     assert result.ok, result.crashes
     # ticks at 0.25 s, 0.5 s ...; /clock says 101 s at 0.2 s, 102 s at 0.4 s ...

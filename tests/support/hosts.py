@@ -32,14 +32,19 @@ class ControllerHost:
         return self.name == "sandboxed"
 
     def write(self, source: str, filename: str = "controller.py") -> Path:
-        path = self.folder / filename
-        path.write_text(textwrap.dedent(source).lstrip(), encoding="utf-8")
-        return path
+        return write_controller(self.folder, source, filename)
 
     def run(self, source: str, *, duration: float = 1.0, **options: Any) -> RunResult:
         """Run ``source`` (an rclpy file's text) for ``duration`` simulated
         seconds; ``options`` are turtletui.api.run's."""
         return run([self.write(source)], duration=duration, sandbox=self.sandboxed, **options)
+
+
+def write_controller(folder: Path, source: str, filename: str) -> Path:
+    """``source`` (an rclpy file's text, dedented) as ``folder/filename``."""
+    path = folder / filename
+    path.write_text(textwrap.dedent(source).lstrip(), encoding="utf-8")
+    return path
 
 
 def node_logs(result: RunResult, node: str) -> list[str]:

@@ -759,10 +759,7 @@ class Graph:
     def service_matched(self, client: ServiceClient) -> bool:
         """Whether ``client`` has discovered the server of its service (and the
         server the client): requests sent before that are lost, as in ROS 2."""
-        service = self.services.get(client.name)
-        if service is None:
-            return False
-        return service.owner == client.owner or self.discovered_at(service, client) <= self.now_ns
+        return self._server_matched(self.services.get(client.name), client)
 
     def count_services(self, name: str) -> int:
         return 1 if name in self.services else 0
@@ -851,7 +848,9 @@ class Graph:
     def action_matched(self, client: ActionClientRecord) -> bool:
         """Whether ``client`` has discovered the server of its action (and the
         server the client): goals sent before that are lost, as in ROS 2."""
-        server = self.action_servers.get(client.name)
+        return self._server_matched(self.action_servers.get(client.name), client)
+
+    def _server_matched(self, server: Service | ActionServer | None, client: Any) -> bool:
         if server is None:
             return False
         return server.owner == client.owner or self.discovered_at(server, client) <= self.now_ns
