@@ -247,6 +247,27 @@ SURFACE = {
     ],
     "rclpy.parameter.Parameter.Type": ["from_parameter_value", "check"],
     "rclpy.logging.RcutilsLogger": LOGGER_METHODS,
+    "rclpy.lifecycle.LifecycleNode": [
+        "__init__",
+        "trigger_configure",
+        "trigger_cleanup",
+        "trigger_activate",
+        "trigger_deactivate",
+        "trigger_shutdown",
+        "on_configure",
+        "on_cleanup",
+        "on_activate",
+        "on_deactivate",
+        "on_shutdown",
+        "on_error",
+        "create_lifecycle_publisher",
+        "destroy_lifecycle_publisher",
+        "add_managed_entity",
+    ],
+    "rclpy.lifecycle.LifecyclePublisher": ["publish", "is_activated"],
+    "rclpy.lifecycle.SimpleManagedEntity": ["__init__", "on_activate", "on_deactivate", "is_activated"],
+    "rclpy.lifecycle.LifecycleState": ["__init__"],
+    "rclpy.time_source.TimeSource": ["__init__", "attach_node", "detach_node", "attach_clock", "clock_callback"],
 }
 
 ENUMS = [
@@ -259,6 +280,7 @@ ENUMS = [
     "rclpy.clock.ClockType",
     "rclpy.action.GoalResponse",
     "rclpy.action.CancelResponse",
+    "rclpy.lifecycle.TransitionCallbackReturn",
 ]
 
 ALIASES = {
@@ -271,6 +293,10 @@ ALIASES = {
     "rclpy.action.server.GoalResponse": "rclpy.action.GoalResponse",
     "rclpy.action.server.CancelResponse": "rclpy.action.CancelResponse",
     "rclpy.node.Parameter": "rclpy.parameter.Parameter",
+    "rclpy.lifecycle.Node": "rclpy.lifecycle.LifecycleNode",
+    "rclpy.lifecycle.State": "rclpy.lifecycle.LifecycleState",
+    "rclpy.lifecycle.Publisher": "rclpy.lifecycle.LifecyclePublisher",
+    "rclpy.lifecycle.node.LifecycleNode": "rclpy.lifecycle.LifecycleNode",
 }
 
 # Other names course code imports, recorded as existing (kind "class" or "exception").
@@ -286,6 +312,8 @@ NAMES = [
     "rclpy.subscription.Subscription",
     "rclpy.service.Service",
     "rclpy.timer.Rate",
+    "rclpy.lifecycle.LifecycleNodeMixin",
+    "rclpy.lifecycle.ManagedEntity",
 ]
 
 QOS_PRESETS = [

@@ -134,8 +134,9 @@ def test_alias_is_the_same_object(alias):
 def test_enum_members_match(path):
     cls = resolve(path)
     assert enum_members(cls) == SURFACE["enums"][path]
-    # rclpy's action responses are plain Enums (an int compares unequal), the rest IntEnums
-    plain = path in ("rclpy.action.GoalResponse", "rclpy.action.CancelResponse")
+    # rclpy's action responses and lifecycle results are plain Enums (an int
+    # compares unequal), the rest IntEnums
+    plain = path in ("rclpy.action.GoalResponse", "rclpy.action.CancelResponse", "rclpy.lifecycle.TransitionCallbackReturn")
     assert all(isinstance(value, int) is not plain for value in cls.__members__.values())
 
 

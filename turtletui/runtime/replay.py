@@ -19,6 +19,7 @@ from pathlib import Path
 from typing import Any
 
 from turtletui.graph.core import NS_PER_S
+from turtletui.graph.introspection import is_plumbing_topic
 from turtletui.graph.logs import INFO
 from turtletui.interfaces import from_dict, get_interface
 from turtletui.runtime.recorder import RecordingError
@@ -53,7 +54,7 @@ class Recording:
 
 def _controller_input(event: dict[str, Any]) -> bool:
     if "topic" in event:
-        return not event["topic"].endswith(_SIMULATOR_TOPIC_SUFFIXES) and event["topic"] != "/rosout"
+        return not event["topic"].endswith(_SIMULATOR_TOPIC_SUFFIXES) and not is_plumbing_topic(event["topic"])
     return "service" in event or "action" in event
 
 
