@@ -43,6 +43,17 @@ def test_the_part6_graph_as_rqt_graph_draws_it(sandbox: bool) -> None:
     assert graph.topic("/turtle1/color_sensor").subscribers == ()
 
 
+@pytest.mark.parametrize("sandbox", [True, False], ids=["sandboxed", "in-process"])
+def test_every_node_has_rosout_and_parameter_events_as_in_ros(sandbox: bool) -> None:
+    graph = snapshot_at(1.0, [PART6], sandbox=sandbox)
+    assert graph.topic("/rosout").publishers == ("/turtle_controller", "/turtlesim")
+    events = graph.topic("/parameter_events")
+    assert events.type == "rcl_interfaces/msg/ParameterEvent"
+    assert events.publishers == ("/turtle_controller", "/turtlesim")
+    assert events.subscribers == ("/turtlesim",)  # rclcpp's own; rclpy nodes have none
+    assert ("/turtle_controller", "/rosout") in graph.edges()
+
+
 def test_services_actions_and_parameters_of_turtlesim() -> None:
     graph = snapshot_at(0.5, [PART6], sandbox=False)
     services = {s.name: s for s in graph.services}

@@ -1092,6 +1092,9 @@ def test_interface_names_and_types_per_turtle():
         "/turtle1/cmd_vel": "geometry_msgs/msg/Twist",
         "/turtle1/pose": "turtlesim/msg/Pose",
         "/turtle1/color_sensor": "turtlesim/msg/Color",
+        # what rclcpp gives every node
+        "/rosout": "rcl_interfaces/msg/Log",
+        "/parameter_events": "rcl_interfaces/msg/ParameterEvent",
     }
     assert {n: s.type_name for n, s in graph.services.items()} == {
         "/clear": "std_srvs/srv/Empty",

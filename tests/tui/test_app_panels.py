@@ -18,7 +18,7 @@ from turtletui.runtime.resolve import resolve_controllers
 from turtletui.tui.app import TurtleApp
 from turtletui.tui.screens.help import HelpScreen
 from turtletui.tui.widgets.keybar import KeyBar
-from turtletui.tui.widgets.panels import ConsolePanel
+from turtletui.tui.widgets.panels import ConsolePanel, graph_text
 from turtletui.tui.widgets.textlog import TextLog
 
 SMALL = (80, 24)
@@ -306,3 +306,19 @@ async def test_the_console_wraps_and_keeps_everything_after_a_resize() -> None:
         long = next(line for line in wide if line.startswith("string name"))
         assert len(long) > max(map(len, narrow))  # wrapped again at the new width
         assert "created and returned if this is empty" in " ".join(wide)
+
+
+def test_the_graph_panel_leaves_out_what_every_node_has() -> None:
+    # as rqt_graph hides /rosout and /parameter_events: every node is on them
+    from turtletui.graph.introspection import GraphSnapshot, NodeInfo, TopicInfo
+
+    def node(name: str) -> NodeInfo:
+        return NodeInfo(name, (), (), (), (), (), (), ())
+
+    graph = GraphSnapshot(1.0, (node("/alone"), node("/talker"), node("/turtlesim")), (
+        TopicInfo("/chatter", "std_msgs/msg/String", ("/talker",), (), 10.0, 10),
+        TopicInfo("/parameter_events", "rcl_interfaces/msg/ParameterEvent",
+                  ("/alone", "/talker", "/turtlesim"), ("/turtlesim",), 0.0, 0),
+        TopicInfo("/rosout", "rcl_interfaces/msg/Log", ("/alone", "/talker", "/turtlesim"), (), 0.0, 0),
+    ), (), ())
+    assert graph_text(graph) == "/talker -> /chatter -> (no subscriber)\n\nnot connected: /alone, /turtlesim"

@@ -99,6 +99,7 @@ class LogPanel(Vertical):
 
 class TopicsPanel(Vertical):
     """Topics with types, publisher/subscriber counts and rates; Enter echoes one.
+    /rosout and /parameter_events, which every node has, are left out.
 
     The columns fit the panel: topic names keep their width, the type is
     shortened (``Pose``) or left out when the panel is narrow."""
@@ -113,7 +114,8 @@ class TopicsPanel(Vertical):
         self._shown: tuple = ()
 
     def update_topics(self, graph: GraphSnapshot) -> None:
-        self._topics = graph.topics
+        # as rqt_graph, not /rosout and /parameter_events (every node's): ros2 topic list shows them
+        self._topics = tuple(topic for topic in graph.topics if not is_plumbing_topic(topic.name))
         self._show()
 
     def on_resize(self, event: Resize) -> None:
