@@ -216,8 +216,8 @@ class Twin:
             name, namespace=namespace or None, automatically_declare_parameters_from_overrides=False
         )
         for pname, value in parameters.items():
-            if pname == "use_sim_time":
-                continue  # every node declares it already
+            if node.has_parameter(pname):
+                continue  # what every node declares (use_sim_time, start_type_description_service)
             try:
                 node.declare_parameter(pname, value, _descriptor(pname, value, descriptors.get(pname)))
             except Exception as err:  # a value ROS cannot hold: the node goes on without it
