@@ -236,6 +236,9 @@ class Clock:
     ROSClock, as in rclpy."""
 
     _context: Context | None = None
+    _ros_time_active = False
+    """Whether now() reads ``_ros_time_ns`` (a ROSClock of a node with use_sim_time)."""
+    _ros_time_ns = 0
 
     def __new__(cls, *, clock_type: ClockType = ClockType.SYSTEM_TIME) -> Clock:
         if not isinstance(clock_type, ClockType):
@@ -255,9 +258,6 @@ class Clock:
         from turtletui.compat.context import get_default_context
 
         return context or self._context or get_default_context()
-
-    _ros_time_active = False
-    _ros_time_ns = 0
 
     def now(self) -> Time:
         if self._ros_time_active:

@@ -205,6 +205,7 @@ def is_plumbing_topic(name: str) -> bool:
     rqt_graph hides them, and no one needs to be told nothing listens there."""
     return name in _PLUMBING_NAMES
 
+
 PARAMETER_SERVICES = (
     ("describe_parameters", "rcl_interfaces/srv/DescribeParameters"),
     ("get_parameter_types", "rcl_interfaces/srv/GetParameterTypes"),

@@ -59,13 +59,13 @@ from turtletui.sim import (
 from turtletui.sim.obstacles import RayCaster
 
 QOS_DEPTH = 7
+"""turtlesim's topics: keep last 7, reliable (qos.hpp)."""
 _PLUMBING_DEPTH = 1000
 """rclcpp's depth for /rosout and /parameter_events."""
 
 
 def _ignore_event(event: Any) -> None:
     """rclcpp's own /parameter_events subscription (its TimeSource's): nothing here needs it."""
-"""turtlesim's topics: keep last 7, reliable (qos.hpp)."""
 
 _F32 = struct.Struct("5f")
 _F32_pack = _F32.pack

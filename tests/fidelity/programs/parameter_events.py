@@ -1,12 +1,11 @@
 """/parameter_events: declaring and setting parameters on one node publishes
-ParameterEvent messages (new, changed, deleted) that a node of another program
-part receives; undeclaring publishes nothing."""
+ParameterEvent messages (new, changed, deleted) that another node receives;
+a refused set and undeclare_parameter publish nothing."""
 import rclpy
-from rcl_interfaces.msg import ParameterEvent
+from rcl_interfaces.msg import ParameterDescriptor, ParameterEvent
 from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 from rclpy.parameter import Parameter
-from rcl_interfaces.msg import ParameterDescriptor
 
 
 def spin_for(executor, seconds):
