@@ -476,6 +476,17 @@ def _build(cls: type) -> None:
             value = f'{value}[:]' if spec.typecode is not None and spec.array != _FIXED \
                 else f'list({value})'
         copy_lines.append(f'    _o.{spec.slot} = {value}')
+    setter_lines = []
+    for i, spec in enumerate(specs):
+        ns[f'_s{i}'] = spec.check
+        setter_lines.append(f'def _set{i}(self, value):')
+        test = _setter_test(spec, i)
+        if test is None:
+            setter_lines.append(f'    self.{spec.slot} = _s{i}(value)')
+            continue
+        setter_lines.append(f'    if {test}:')
+        setter_lines.append(f'        value = _s{i}(value)')
+        setter_lines.append(f'    self.{spec.slot} = value')
     src = [
         'def _copy(_s):',
         '    _o = _new(_cls)',
@@ -492,7 +503,7 @@ def _build(cls: type) -> None:
         'def _make_default():',
         '    _o = _new(_cls)',
         *default_body,
-        '    return _o',
+        '    return _o',        *setter_lines,
     ]
     exec(compile('\n'.join(src) + '\n', f'<turtletui {cls._TYPE_NAME}>', 'exec'), ns)
     for func in (ns['__init__'], ns['_trusted'], ns['_make_default'], ns['_copy']):
@@ -505,6 +516,15 @@ def _build(cls: type) -> None:
     cls._trusted = staticmethod(ns['_trusted'])
     cls._make_default = staticmethod(ns['_make_default'])
     cls._copy = staticmethod(ns['_copy'])
+    for i, spec in enumerate(specs):
+        # The same checks as _make_property's, with the slot stored by name
+        # (a specialised attribute store) instead of through its descriptor.
+        setter = ns[f'_set{i}']
+        qualname = f'{cls.__name__}.{spec.name}'
+        setter.__code__ = setter.__code__.replace(co_name=spec.name, co_qualname=qualname)
+        setter.__name__, setter.__qualname__ = spec.name, qualname
+        setter.__module__ = cls.__module__
+        setattr(cls, spec.name, property(spec.get, setter, None, cls.__dict__[spec.name].__doc__))
     cls._BUILT = True
 
 
@@ -546,6 +566,16 @@ def _lazy_methods(cls: type) -> None:
     cls._trusted = staticmethod(_trusted)
     cls._make_default = staticmethod(_make_default)
     cls._copy = staticmethod(_copy)
+
+
+def _setter_test(spec: FieldSpec, i: int) -> str | None:
+    """When the generated setter of field ``i`` must run the field's check:
+    None for always (see _make_property, which it mirrors)."""
+    if spec.array != _SCALAR or spec.kind == 'byte' or spec.strlen is not None:
+        return None
+    if spec.kind == 'int' or spec.f32:
+        return f'value.__class__ is not _T{i} or not _lo{i} <= value <= _hi{i}'
+    return f'value.__class__ is not _T{i}'
 
 
 def _make_property(spec: FieldSpec) -> property:

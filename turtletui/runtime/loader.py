@@ -290,6 +290,7 @@ def user_frames(tb: Any, path: Path | None) -> list[str]:
         own = [f for f in frames if f.filename == target]
     else:
         package = str(Path(__file__).resolve().parents[1]) + "/"
-        own = [f for f in frames if not f.filename.startswith(package)]
+        # "<turtletui pkg/msg/Name>": a message class's generated methods (turtletui.interfaces)
+        own = [f for f in frames if not f.filename.startswith((package, "<turtletui "))]
     frames = own or frames[-1:]
     return [f"  File \"{f.filename}\", line {f.lineno}, in {f.name}\n    {(f.line or '').strip()}" for f in frames]
