@@ -21,6 +21,9 @@ class Host(Protocol):
     graph: Graph
     owner: str
     callback_depth: int
+    callback_counter: Any
+    """Counts callbacks as they run: ``callback_counter.n`` is how deep the
+    calling thread is (callback_depth); turtletui.compat.dispatch bumps it."""
 
     def spin(self, stop: Any) -> None:
         """Run this host's callbacks as they become ready until ``stop()``

@@ -11,9 +11,9 @@ time the Future it awaits is done.
 
 from __future__ import annotations
 
-import inspect
 import threading
 from collections.abc import Callable
+from types import CoroutineType
 from typing import Any
 
 from turtletui.compat.callback_groups import CallbackGroup
@@ -32,10 +32,10 @@ def running_groups() -> list[CallbackGroup]:
 
 
 def dispatcher(host: Any, group: CallbackGroup, callback: Callable) -> Callable:
-    """``callback`` as the graph should call it: counted as a callback
-    (host.wrap_callback), run under ``group``'s rules, a coroutine it returns
-    run as a Task."""
-    counted = host.wrap_callback(callback)
+    """``callback`` as the graph should call it: counted as a callback (as
+    host.wrap_callback counts, inline: this runs for every delivery), run
+    under ``group``'s rules, a coroutine it returns run as a Task."""
+    depth = host.callback_counter
     ready = host.graph.ready
     owner = host.owner
 
@@ -46,11 +46,18 @@ def dispatcher(host: Any, group: CallbackGroup, callback: Callable) -> Callable:
                 group._deferred.append((owner, (lambda: run(*args)) if args else run))
             return None
         held = False
-        stack = running_groups()
+        try:
+            stack = _running.groups
+        except AttributeError:
+            stack = running_groups()
         stack.append(group)
         try:
-            result = counted(*args)
-            if inspect.iscoroutine(result):
+            depth.n += 1
+            try:
+                result = callback(*args)
+            finally:
+                depth.n -= 1
+            if result is not None and isinstance(result, CoroutineType):
                 # As rclpy: the task holds its group until the coroutine ends.
                 held = True
                 start_task(host, group, result, now=True, release=lambda _task: release(run))
@@ -59,17 +66,30 @@ def dispatcher(host: Any, group: CallbackGroup, callback: Callable) -> Callable:
         finally:
             stack.pop()
             if not held:
-                release(run)
+                group.ending_execution(run)
+                if group._deferred:
+                    release_deferred(run)
 
     def release(entity: Any) -> None:
         group.ending_execution(entity)
-        if group._deferred and group.can_execute(entity):
+        if group._deferred:
+            release_deferred(entity)
+
+    def release_deferred(entity: Any) -> None:
+        if group.can_execute(entity):
             waiting, group._deferred = group._deferred, []
             ready.extendleft(reversed(waiting))
 
-    run.label = counted.label  # type: ignore[attr-defined]
+    run.label = callback_label(callback)  # type: ignore[attr-defined]
     run.group = group  # type: ignore[attr-defined]
     return run
+
+
+def callback_label(callback: Callable) -> str:
+    """A short name for a callback: the function's or method's name, or ""
+    for a lambda or another callable object."""
+    name = getattr(callback, "__name__", "")
+    return name if isinstance(name, str) and name.isidentifier() else ""
 
 
 def start_task(

@@ -6,6 +6,8 @@ import threading
 from collections.abc import Callable
 from typing import Any
 
+from turtletui.compat.dispatch import callback_label
+
 
 class _ThreadDepth(threading.local):
     n = 0
@@ -25,6 +27,12 @@ class CallbackTracking:
     def callback_depth(self) -> int:
         return self._depth.n
 
+    @property
+    def callback_counter(self) -> Any:
+        """What counts the depth: ``callback_counter.n`` is the calling thread's.
+        turtletui.compat.dispatch bumps it inline, as ``wrap_callback`` does."""
+        return self._depth
+
     def wrap_callback(self, callback: Callable) -> Callable:
         """``callback`` as the graph should call it: counted while it runs.
         Its ``label`` names it in reports (``pose_callback``)."""
@@ -39,10 +47,3 @@ class CallbackTracking:
 
         run.label = callback_label(callback)  # type: ignore[attr-defined]
         return run
-
-
-def callback_label(callback: Callable) -> str:
-    """A short name for a callback: the function's or method's name, or ""
-    for a lambda or another callable object."""
-    name = getattr(callback, "__name__", "")
-    return name if isinstance(name, str) and name.isidentifier() else ""
