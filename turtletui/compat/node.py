@@ -121,7 +121,8 @@ class Publisher(Destroyable):
         if self.history is not None:
             self.history.append(msg)
         record = self._record
-        if not self._graph.known_to_others(record):
+        graph = self._graph
+        if record.created_ns + graph.discovery_ns > graph.now_ns:  # not graph.known_to_others(record)
             self._tell_if_lost()
         if not self._muted:
             self._publish(self._topic, msg, None, record)

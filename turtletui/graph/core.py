@@ -32,6 +32,10 @@ rclpy 9.1, a quiet to a busy 2-core VM)."""
 
 _RATE_WINDOW = 64
 
+_new_tuple = tuple.__new__
+"""Makes a NamedTuple from a tuple without the Python-level ``__new__`` it adds
+(a log record is made for every line a controller logs)."""
+
 EndpointKind = Literal["publishers", "subscriptions", "services", "clients", "action_servers", "action_clients"]
 """What ``Graph.names_and_types_by_node`` lists."""
 
@@ -945,7 +949,8 @@ class Graph:
 
     # -- logs ---------------------------------------------------------------
     def log(self, node: str, level: int, msg: str) -> LogRecord:
-        record = LogRecord(self.epoch_ns + self.now_ns, self.now_ns / NS_PER_S, level, node, msg)
+        now = self.now_ns
+        record = _new_tuple(LogRecord, (self.epoch_ns + now, now / NS_PER_S, level, node, msg))
         # Taps (the recorder) first: a line a Ctrl-C cuts short after it was
         # shown (sinks print it) is in the record too.
         if self.taps:
