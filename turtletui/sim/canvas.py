@@ -1,7 +1,7 @@
 """The pen image: a 500 x 500 raster, as turtlesim's ``path_image``.
 
 Segments are queued as data and rasterised in vectorised batches when the
-image is read, so a turtle drawing every 16 ms costs a list append per step;
+image is read, so a turtle drawing every 16 ms costs 48 bytes appended per step;
 a run nobody watches (headless, grading) draws only to bound the queue.
 A colour sensor read (every step while a run is recorded) tests the few
 queued segments near its pixel instead of rasterising the queue.
@@ -20,7 +20,7 @@ the trails over the background), so renderers stay a plain read.
 from __future__ import annotations
 
 import math
-from array import array
+import struct
 from collections import deque
 
 import numpy as np
@@ -28,6 +28,11 @@ import numpy as np
 from turtletui.sim.constants import BACKGROUND, METER_PX, PIXELS
 
 _FLUSH_AT = 65536
+_SEGMENT = struct.Struct("6d")
+"""A queued segment as bytes: x0, y0, x1, y1 (m), packed colour, width, as
+float64 (packing six numbers costs half what array("d").extend does)."""
+_pack_segment = _SEGMENT.pack
+_unpack_segment = _SEGMENT.unpack_from
 """Queued segments (3 MB) that are rasterised even if nobody reads the image."""
 _RASTER_CHUNK = 512
 """Segments rasterised at once."""
@@ -67,8 +72,11 @@ class PenCanvas:
         self._rgb = self._packed.view(np.uint8).reshape(PIXELS, PIXELS, 4)[:, :, :3]
         self._rgb.flags.writeable = False
         self._painted = np.zeros((PIXELS, PIXELS), dtype=bool)
-        self._pending = array("d")
-        """Queued segments, six numbers each: x0, y0, x1, y1 (m), packed colour, width."""
+        self._pending = bytearray()
+        """Queued segments (_SEGMENT each): x0, y0, x1, y1 (m), packed colour, width."""
+        self._pen: tuple[int, int, int] | None = None
+        self._pen_packed = 0
+        """The last pen colour drawn with, and it packed (a turtle keeps its colour)."""
         self.background = background
         self.version = 0
         """Increases whenever the image changes; renderers cache on it."""
@@ -151,9 +159,14 @@ class PenCanvas:
         width: int,
     ) -> None:
         """Queue a pen line from (x0, y0) to (x1, y1) metres, ``width`` pixels wide."""
+        if color is self._pen:
+            packed = self._pen_packed
+        else:
+            packed = self._pen_packed = color[0] | color[1] << 8 | color[2] << 16
+            self._pen = color
         pending = self._pending
-        pending.extend((x0, y0, x1, y1, color[0] | color[1] << 8 | color[2] << 16, width))
-        if len(pending) >= _FLUSH_AT * 6:
+        pending += _pack_segment(x0, y0, x1, y1, packed, width)
+        if len(pending) >= _FLUSH_AT * _SEGMENT.size:
             self._flush()
 
     def color_at(self, x: float, y: float) -> tuple[int, int, int]:
@@ -174,7 +187,7 @@ class PenCanvas:
         operations, where rasterising each tick's one segment costs a batch."""
         pending = self._pending
         end = len(pending)
-        if end > _LAZY_READS_AT * 6:
+        if end > _LAZY_READS_AT * _SEGMENT.size:
             self._flush()
             return None
         # The pixel's centre in metres, and whether it is on an edge, where
@@ -183,8 +196,9 @@ class PenCanvas:
         y = (_LAST_PX - row) / METER_PX
         x_edge = col == 0 or col == _LAST_PX
         y_edge = row == 0 or row == _LAST_PX
-        for i in range(end - 6, -1, -6):
-            x0, y0, x1, y1, packed, width = pending[i : i + 6]
+        size = _SEGMENT.size
+        for i in range(end - size, -1, -size):
+            x0, y0, x1, y1, packed, width = _unpack_segment(pending, i)
             # A quick no: a pen reaches less than its width (cap, half-width
             # over the cosine) plus a pixel of rounding past the segment's ends.
             reach = ((width if width > 1.0 else 1.0) + 2.0) / METER_PX
