@@ -37,7 +37,8 @@ class InProcessHost(CallbackTracking):
         self.graph = sim.graph
         self.owner = owner
         self.end_ns = end_ns
-        self._ended = False
+        self.running = True
+        """False once the run has ended (a plain attribute: every spin reads it)."""
         self._instant = -1
         self._rounds = 0
         self._reads_instant = -1
@@ -70,14 +71,10 @@ class InProcessHost(CallbackTracking):
         if self._reads >= CLOCK_READS_PER_STEP:
             self.sleep_until(now + CLOCK_STEP_NS)
 
-    @property
-    def running(self) -> bool:
-        return not self._ended
-
     def spin(self, stop: Callable[[], bool]) -> None:
         """Run every callback as it becomes ready until ``stop()`` or the end."""
         self._one_thread()
-        if not self._ended:
+        if self.running:
             self.sim.pump(None, self.end_ns, until=stop)
             self._check_end()
 
@@ -88,16 +85,16 @@ class InProcessHost(CallbackTracking):
 
     def _check_end(self) -> None:
         if self.graph.now_ns >= self.end_ns:
-            self._ended = True
+            self.running = False
 
     def spin_once(self, timeout_ns: int | None) -> bool:
         self._one_thread()
-        if self._ended:
+        if not self.running:
             return False
         outcome = self.sim.pump(self.owner, self.end_ns if timeout_ns is None else self._limit(timeout_ns))
         if self.graph.now_ns >= self.end_ns:
-            self._ended = True
-        return outcome == "own" or not self._ended
+            self.running = False
+        return outcome == "own" or self.running
 
     def spin_until(self, done: Callable[[], bool], timeout_ns: int | None, *, callbacks: bool = True) -> bool:
         self._one_thread()
@@ -112,7 +109,7 @@ class InProcessHost(CallbackTracking):
             self.sleep_until(self.end_ns if due is None else due)
         limit = self._limit(timeout_ns)
         while not done():
-            if self._ended or self.graph.now_ns >= limit:
+            if not self.running or self.graph.now_ns >= limit:
                 self._check_end()
                 return False
             self.sim.pump(self.owner, limit, run_own=callbacks, until=done)
@@ -121,10 +118,10 @@ class InProcessHost(CallbackTracking):
 
     def sleep_until(self, t_ns: int) -> bool:
         self._one_thread()
-        if not self._ended:
+        if self.running:
             self.sim.pump(self.owner, min(t_ns, self.end_ns), run_own=False)
             self._check_end()
-        return not self._ended
+        return self.running
 
 
 def run_in_process(
@@ -160,7 +157,7 @@ def run_in_process(
         crash = crash_from_exception(spec, sim.t, exc)
     finally:
         sys.argv = saved_argv
-        host._ended = True
+        host.running = False
         if crash is not None:
             stop_turtles(sim, owner)
         sim.graph.remove_owner(owner)

@@ -207,8 +207,8 @@ class World:
 
     def command_velocity(self, name: str, vx: float, vy: float, wz: float) -> None:
         """A Twist on /<name>/cmd_vel: set the velocities and the command time."""
-        turtle = self.turtle(name)
-        if not (_isfinite(vx) and _isfinite(vy) and _isfinite(wz)):
+        turtle = self.turtles.get(name) or self.turtle(name)
+        if vx - vx + vy - vy + wz - wz != 0.0:  # one is inf or nan (x - x is 0 for any finite x)
             self.events.append(
                 Warning_(
                     name,
