@@ -737,3 +737,81 @@ def test_from_values_refuses_a_service_class_like_from_dict() -> None:
         with pytest.raises(I.InterfaceError, match="turtlesim/srv/SetPen is not a message type"):
             build("turtlesim/srv/SetPen", data)
 
+
+
+_ODD_VALUES = [
+    0, 1, -1, 2**31, 2**64, True, False, 0.5, -0.0, 1e39, -1e39, math.inf, -math.inf, math.nan,
+    "", "x", "x" * 300, None, [], [0.0], {"x": 1.0}, b"\x01",
+]
+"""Values put in every place of a message's values: right, convertible or wrong."""
+
+
+def _outcome(build, cls, values):
+    try:
+        msg = build(cls, values)
+    except I.InterfaceError as err:
+        return ("error", str(err))
+    return ("ok", type(msg), I.to_dict(msg), [type(v) for v in _leaves(I.to_values(msg))])
+
+
+def _leaves(values):
+    for value in values:
+        if isinstance(value, list):
+            yield from _leaves(value)
+        else:
+            yield value
+
+
+def _places(values, path=()):
+    for i, value in enumerate(values):
+        if isinstance(value, list):
+            yield from _places(value, (*path, i))
+        yield (*path, i)
+
+
+def _replaced(values, place, new):
+    values = copy.deepcopy(values)
+    target = values
+    for i in place[:-1]:
+        target = target[i]
+    target[place[-1]] = new
+    return values
+
+
+def test_compiled_values_functions_agree_with_the_generic_ones() -> None:
+    """Messages of plain fields get compiled to_values/from_values
+    (turtletui.interfaces._values): same messages, same conversions (an int
+    where a float is due) and the same errors as the generic path, whatever
+    is put wherever."""
+    from turtletui.interfaces import _from_values, _to_values_generic, from_values
+    from turtletui.interfaces._values import plain_fields
+
+    def generic(cls, values):
+        try:
+            return _from_values(cls, values)
+        except I._Bad as bad:
+            raise I._interface_error(cls._TYPE_NAME, bad) from None
+
+    compiled = 0
+    for name in I.all_interfaces():
+        cls = I.get_interface(name)
+        if not issubclass(cls, I.Message) or not plain_fields(cls):
+            continue
+        compiled += 1
+        good = I.to_values(cls())
+        assert good == _to_values_generic(cls()), name
+        tries = [good, [*good, 0.0], good[:-1]] if good else [good, [0.0]]
+        tries += [_replaced(good, place, odd) for place in _places(good) for odd in _ODD_VALUES]
+        for values in tries:
+            assert _outcome(from_values, cls, values) == _outcome(generic, cls, values), (name, values)
+    assert compiled > 50  # Twist, Pose, Color, Vector3, Time ... (not sequences)
+
+
+def test_to_values_makes_plain_python_of_float_subclasses() -> None:
+    class Float(float):
+        pass
+
+    twist = Twist(linear=Vector3(x=Float(2.5)))
+    values = I.to_values(twist)
+    assert values == [[2.5, 0.0, 0.0], [0.0, 0.0, 0.0]]
+    assert type(values[0][0]) is float

@@ -60,6 +60,7 @@ from turtletui.interfaces._message import (
     Service,
     _build,
 )
+from turtletui.interfaces._values import compile_values
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:
@@ -471,8 +472,12 @@ def _to_values_plan(cls: type) -> tuple:
     return plan
 
 
-def _to_values(msg: Message) -> list[Any]:
+def _to_values_generic(msg: Message) -> list[Any]:
     return [conv(get(msg)) for get, conv in _to_values_plan(type(msg))]
+
+
+def _to_values(msg: Message) -> list[Any]:
+    return _values_functions(type(msg))[0](msg)
 
 
 def to_values(msg: Message) -> list[Any]:
@@ -480,7 +485,24 @@ def to_values(msg: Message) -> list[Any]:
     ``Twist`` gives ``[[5.0, 0.0, 0.0], [0.0, 0.0, 1.5]]``. Compact for a wire."""
     if not isinstance(msg, Message):
         raise InterfaceError(f'to_values() needs a message instance, got {_describe(msg)}')
-    return _to_values(msg)
+    return _values_functions(type(msg))[0](msg)
+
+
+def _values_functions(cls: type) -> tuple[Callable, Callable, Callable]:
+    """``(to_values, from_values, trusted_from_values)`` of ``cls`` (its from_values
+    raises _Bad): compiled for a class of plain fields (turtletui.interfaces
+    ._values), else the generic ones. Made once per class."""
+    functions = cls.__dict__.get('_VALUES_FUNCTIONS')
+    if functions is None:
+        def checked(values: list) -> Message:
+            return _from_values(cls, values)
+
+        def trusted(values: list) -> Message:
+            return from_values(cls, values)
+
+        functions = compile_values(cls, checked) or (_to_values_generic, checked, trusted)
+        cls._VALUES_FUNCTIONS = functions
+    return functions
 
 
 def _values_converter(spec: FieldSpec) -> Callable[[Any], Any]:
@@ -545,36 +567,16 @@ def from_values(cls: type | str, values: Any) -> Message:
         raise InterfaceError(f'{root}: message values must be a list, got {_describe(values)}',
                              type_name=root)
     try:
-        return _from_values(target, values)
+        return _values_functions(target)[1](values)
     except _Bad as bad:
         raise _interface_error(root, bad) from None
 
 
 def trusted_from_values(cls: type) -> Callable[[list], Message]:
     """A fast builder of ``cls`` messages from to_values output that the caller
-    trusts (no checks for flat fields), e.g. what the simulator sends its own
-    sandbox child. Falls back to the checked path for arrays and bytes."""
-    builder = cls.__dict__.get('_TRUSTED_FROM_VALUES')
-    if builder is not None:
-        return builder
-    fields = cls._FIELDS
-    simple = all(f.array == _SCALAR and f.kind not in ('msg', 'byte') for f in fields)
-    nested = all(f.array == _SCALAR and f.kind != 'byte' for f in fields)
-    _build(cls)  # the compiled constructor, not the stub that compiles it on first use
-    trusted = cls._trusted
-    if simple:
-        def builder(values: list) -> Message:
-            return trusted(*values)
-    elif nested:
-        parts = [trusted_from_values(f.msg_cls) if f.kind == 'msg' else None for f in fields]
-
-        def builder(values: list) -> Message:
-            return trusted(*[v if p is None else p(v) for p, v in zip(parts, values, strict=True)])
-    else:
-        def builder(values: list) -> Message:
-            return from_values(cls, values)
-    cls._TRUSTED_FROM_VALUES = builder
-    return builder
+    trusts (no checks for plain fields), e.g. what the simulator sends its own
+    sandbox child. Falls back to the checked path for sequences and bytes."""
+    return _values_functions(cls)[2]
 
 
 def copier(cls: type) -> Callable[[Message], Message]:
