@@ -117,7 +117,7 @@ class Simulation:
             while True:
                 while ready:
                     item = popleft()
-                    if item[0] == own and own is not None:
+                    if own is not None and item[0] == own:
                         if not run_own:
                             if held is None:
                                 held = []
