@@ -16,7 +16,7 @@ from collections.abc import Callable
 from types import CoroutineType
 from typing import Any
 
-from turtletui.compat.callback_groups import CallbackGroup
+from turtletui.compat.callback_groups import CallbackGroup, MutuallyExclusiveCallbackGroup
 from turtletui.compat.task import Task
 
 _running = threading.local()
@@ -38,9 +38,13 @@ def dispatcher(host: Any, group: CallbackGroup, callback: Callable) -> Callable:
     depth = host.callback_counter
     ready = host.graph.ready
     owner = host.owner
+    # Every node's default group: its begin/end rules inline, a call less each.
+    exclusive = type(group) is MutuallyExclusiveCallbackGroup
 
     def run(*args: Any) -> Any:
-        if not group.beginning_execution(run):
+        if exclusive and group._active_entity is None:
+            group._active_entity = run
+        elif exclusive or not group.beginning_execution(run):
             # A timer that fires again while it waits still runs once, as in rclpy.
             if args or all(item[1] is not run for item in group._deferred):
                 group._deferred.append((owner, (lambda: run(*args)) if args else run))
@@ -66,7 +70,10 @@ def dispatcher(host: Any, group: CallbackGroup, callback: Callable) -> Callable:
         finally:
             stack.pop()
             if not held:
-                group.ending_execution(run)
+                if exclusive:
+                    group._active_entity = None
+                else:
+                    group.ending_execution(run)
                 if group._deferred:
                     release_deferred(run)
 
