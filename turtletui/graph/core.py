@@ -671,7 +671,9 @@ class Graph:
             topic._stamps.append(now)
         ready = None
         for sub in topic.subscriptions:
-            if sub.owner == source or (sub.owner != owner and (young or sub.created_ns > settled)):
+            if (source is not None and sub.owner == source) or (
+                sub.owner != owner and (young or sub.created_ns > settled)
+            ):
                 continue
             copy = sub.copy
             sub.queue.append(msg if copy is None else copy(msg))
