@@ -485,7 +485,7 @@ def to_values(msg: Message) -> list[Any]:
     ``Twist`` gives ``[[5.0, 0.0, 0.0], [0.0, 0.0, 1.5]]``. Compact for a wire."""
     if not isinstance(msg, Message):
         raise InterfaceError(f'to_values() needs a message instance, got {_describe(msg)}')
-    return _values_functions(type(msg))[0](msg)
+    return _to_values(msg)
 
 
 def _values_functions(cls: type) -> tuple[Callable, Callable, Callable]:

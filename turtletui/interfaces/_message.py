@@ -9,9 +9,9 @@ value, unhashable, ROS-style repr, ``get_fields_and_field_types()``.
 ROS Iron+ only checks fields with ROS_PYTHON_CHECK_FIELDS=1 (Humble always
 does); we always check, this being a teaching tool.
 
-Speed: ``__init__``, ``_trusted`` and ``_make_default`` are generated source
-(like dataclasses), compiled the first time a class is used, so importing
-the package stays cheap. Standard library only.
+Speed: ``__init__``, ``_trusted``, ``_make_default``, ``_copy`` and the field
+setters are generated source (like dataclasses), compiled the first time a
+class is used, so importing the package stays cheap. Standard library only.
 """
 
 from __future__ import annotations
@@ -479,14 +479,7 @@ def _build(cls: type) -> None:
     setter_lines = []
     for i, spec in enumerate(specs):
         ns[f'_s{i}'] = spec.check
-        setter_lines.append(f'def _set{i}(self, value):')
-        test = _setter_test(spec, i)
-        if test is None:
-            setter_lines.append(f'    self.{spec.slot} = _s{i}(value)')
-            continue
-        setter_lines.append(f'    if {test}:')
-        setter_lines.append(f'        value = _s{i}(value)')
-        setter_lines.append(f'    self.{spec.slot} = value')
+        setter_lines.extend(_setter_source(spec, i))
     src = [
         'def _copy(_s):',
         '    _o = _new(_cls)',
@@ -503,7 +496,8 @@ def _build(cls: type) -> None:
         'def _make_default():',
         '    _o = _new(_cls)',
         *default_body,
-        '    return _o',        *setter_lines,
+        '    return _o',
+        *setter_lines,
     ]
     exec(compile('\n'.join(src) + '\n', f'<turtletui {cls._TYPE_NAME}>', 'exec'), ns)
     for func in (ns['__init__'], ns['_trusted'], ns['_make_default'], ns['_copy']):
@@ -517,8 +511,6 @@ def _build(cls: type) -> None:
     cls._make_default = staticmethod(ns['_make_default'])
     cls._copy = staticmethod(ns['_copy'])
     for i, spec in enumerate(specs):
-        # The same checks as _make_property's, with the slot stored by name
-        # (a specialised attribute store) instead of through its descriptor.
         setter = ns[f'_set{i}']
         qualname = f'{cls.__name__}.{spec.name}'
         setter.__code__ = setter.__code__.replace(co_name=spec.name, co_qualname=qualname)
@@ -568,34 +560,29 @@ def _lazy_methods(cls: type) -> None:
     cls._copy = staticmethod(_copy)
 
 
-def _setter_test(spec: FieldSpec, i: int) -> str | None:
-    """When the generated setter of field ``i`` must run the field's check:
-    None for always (see _make_property, which it mirrors)."""
+def _setter_source(spec: FieldSpec, i: int) -> list[str]:
+    """The checked setter of field ``i`` (``_s{i}`` is its check): a value of
+    the field's own type (and range) is stored as it is, anything else is
+    checked first. It stores the slot by name, a specialised store."""
+    lines = [f'def _set{i}(self, value):']
     if spec.array != _SCALAR or spec.kind == 'byte' or spec.strlen is not None:
-        return None
+        return [*lines, f'    self.{spec.slot} = _s{i}(value)']
+    test = f'value.__class__ is not _T{i}'
     if spec.kind == 'int' or spec.f32:
-        return f'value.__class__ is not _T{i} or not _lo{i} <= value <= _hi{i}'
-    return f'value.__class__ is not _T{i}'
+        test += f' or not _lo{i} <= value <= _hi{i}'
+    return [*lines, f'    if {test}:', f'        value = _s{i}(value)', f'    self.{spec.slot} = value']
 
 
-def _make_property(spec: FieldSpec) -> property:
-    sset, check, fast = spec.set, spec.check, spec.pytype
-    if spec.array != _SCALAR or spec.kind == 'byte' or spec.strlen is not None:
-        def setter(self: Message, value: Any) -> None:
-            sset(self, check(value))
-    elif spec.kind == 'int' or spec.f32:
-        lo, hi = spec.lo, spec.hi
+def _lazy_property(cls: type, spec: FieldSpec) -> property:
+    """The field's property until the class is built (_build compiles its
+    setter): reads the slot, and a first assignment builds the class."""
+    name = spec.name
 
-        def setter(self: Message, value: Any) -> None:
-            if value.__class__ is not fast or not lo <= value <= hi:
-                value = check(value)
-            sset(self, value)
-    else:
-        def setter(self: Message, value: Any) -> None:
-            if value.__class__ is not fast:
-                value = check(value)
-            sset(self, value)
-    return property(spec.get, setter, None, f"Message field '{spec.name}'.")
+    def setter(self: Message, value: Any) -> None:
+        _build(cls)
+        setattr(self, name, value)
+
+    return property(spec.get, setter, None, f"Message field '{name}'.")
 
 
 # --------------------------------------------------------------------------
@@ -639,7 +626,7 @@ def _create_message(full_name: str, text: str, module: str) -> type:
     cls = type(name, (Message,), ns)
     for spec in fields:
         spec.set = cls.__dict__[spec.slot].__set__
-        setattr(cls, spec.name, _make_property(spec))
+        setattr(cls, spec.name, _lazy_property(cls, spec))
     _lazy_methods(cls)
     _REGISTRY[full_name] = cls
     return cls

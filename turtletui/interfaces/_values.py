@@ -86,7 +86,7 @@ def _bad_test(src: _Source, spec: FieldSpec, v: str) -> str:
     return f'{v}.__class__ is not _S'
 
 
-def _checks(src: _Source, cls: type, values: str, depth: int, checked: bool) -> list[tuple[FieldSpec, Any]]:
+def _checks(src: _Source, cls: type, values: str, checked: bool) -> list[tuple[FieldSpec, Any]]:
     """Lines that take ``values`` apart into names (checking them when
     ``checked``); returns each field's spec with its name, or its parts."""
     pad = '    '
@@ -99,7 +99,7 @@ def _checks(src: _Source, cls: type, values: str, depth: int, checked: bool) -> 
     parts = []
     for spec, name in zip(cls._FIELDS, names, strict=True):
         if spec.kind == 'msg':
-            parts.append((spec, _checks(src, spec.msg_cls, name, depth + 1, checked)))
+            parts.append((spec, _checks(src, spec.msg_cls, name, checked)))
             continue
         if checked:
             src.lines.append(f'{pad}if {_bad_test(src, spec, name)}:')
@@ -129,10 +129,10 @@ def compile_values(cls: type, slow: Callable[[list], Any]) -> tuple[Callable, Ca
     src.lines.append('def to_values(_s):')
     src.lines.append(f'    return {_to_expr(src, cls, "_s")}')
     src.lines.append('def from_values(_values):')
-    parts = _checks(src, cls, '_values', 0, checked=True)
+    parts = _checks(src, cls, '_values', checked=True)
     src.lines.append(f'    return {_builds(src, cls, parts)}')
     src.lines.append('def trusted_from_values(_values):')
-    parts = _checks(src, cls, '_values', 0, checked=False)
+    parts = _checks(src, cls, '_values', checked=False)
     src.lines.append(f'    return {_builds(src, cls, parts)}')
     exec(compile('\n'.join(src.lines) + '\n', f'<turtletui {cls._TYPE_NAME} values>', 'exec'), src.ns)
     return src.ns['to_values'], src.ns['from_values'], src.ns['trusted_from_values']
