@@ -815,3 +815,25 @@ def test_to_values_makes_plain_python_of_float_subclasses() -> None:
     values = I.to_values(twist)
     assert values == [[2.5, 0.0, 0.0], [0.0, 0.0, 0.0]]
     assert type(values[0][0]) is float
+
+
+def test_a_message_unpickled_before_its_class_was_used_still_checks_assignments() -> None:
+    """A class's setters are compiled on first use; a message that arrives by
+    pickle in a fresh process (no constructor ran) checks the same way."""
+    code = (
+        "import pickle, sys\n"
+        "from turtletui.interfaces.geometry_msgs import Vector3\n"
+        "msg = pickle.loads(sys.stdin.buffer.read())\n"
+        "msg.x = 2.0\n"
+        "try:\n"
+        "    msg.y = 1\n"
+        "except AssertionError as err:\n"
+        "    print(err)\n"
+        "print(msg)\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], input=pickle.dumps(Vector3(x=1.0)),
+                         capture_output=True, check=True).stdout.decode().splitlines()
+    assert out == [
+        "The 'y' field must be of type 'float' (got int 1; ROS 2 wants a float here: write 1.0)",
+        "geometry_msgs.msg.Vector3(x=2.0, y=0.0, z=0.0)",
+    ]
