@@ -82,6 +82,12 @@ class ChildProcess:
         self._stdout = -1
         self._stdout_open = True
         self._stdout_poll = select.poll()
+        self._held: bytearray | None = None
+        """Fast path: output read but not yet shown (:meth:`hold_output`)."""
+        self._fed = 0
+        """Fast path: bytes of output shown or dropped so far."""
+        self.max_frame = wire.MAX_REPLY_BYTES
+        """The largest frame the child may send."""
         self._output = OutputBudget(
             self._show_output,
             max_bytes=limits.output_bytes,
@@ -112,7 +118,7 @@ class ChildProcess:
         self._answers = wire.FrameReader(
             from_child_r,
             spin=self._spin,  # polled briefly, then select (wire.spin_read)
-            max_size=wire.MAX_REPLY_BYTES,
+            max_size=self.max_frame,
             wait=self._wait_for_answer,
             # What the child printed before answering is logged before the answer.
             on_data=self.drain_output,
@@ -270,8 +276,39 @@ class ChildProcess:
                 chunks.append(data)
         except (BlockingIOError, OSError, ValueError):
             pass
+        data = b"".join(chunks)
+        held = self._held
+        if held is not None:
+            held += data
+            if not final and self._stdout_open and not self._output.over and len(held) <= self.limits.output_bytes:
+                return  # shown when the step it was printed in is replayed
+            # the end, or over its budget anyway: when it is shown no longer matters
+            data = bytes(held)
+            self._fed += len(held)
+            held.clear()
+        self._feed(data, final or not self._stdout_open)
+
+    def hold_output(self) -> None:
+        """Fast path: keep what the child prints until :meth:`show_output_until`
+        says in which step it printed it."""
+        self._held = bytearray()
+
+    def show_output_until(self, total: int) -> None:
+        """Show what the child had printed, counted from its start, by the
+        step that counted ``total`` bytes; the rest waits for its own step."""
+        held = self._held
+        assert held is not None
+        self.drain_output()
+        take = min(total - self._fed, len(held))
+        if take > 0:
+            chunk = bytes(held[:take])
+            del held[:take]
+            self._fed += take
+            self._feed(chunk, False)
+
+    def _feed(self, data: bytes, final: bool) -> None:
         # past the budget the output is still read (so the child never blocks), then dropped
-        if self._output.feed(b"".join(chunks), final=final or not self._stdout_open):
+        if self._output.feed(data, final=final):
             self._log(
                 "turtletui",
                 WARN,

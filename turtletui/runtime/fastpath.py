@@ -1,0 +1,331 @@
+"""Sandboxed runs without a round trip per exchange.
+
+In lockstep (turtletui.runtime.sandbox) the parent sends a Tick and waits for
+the child's Report at every exchange. On the fast path the child answers its
+own Ticks: :class:`Loopback` runs the parent's side of the exchange (the
+same SandboxHost code, GraphProxy and Simulation) against the child's own
+copy of the simulation (turtletui.runtime.replica), and streams every Report
+the controller sent, stamped with the simulated instant it answered, in
+batches. :class:`FastHost`, in the parent, replays them through the trusted
+simulation at the same instants, through the same code that applies a
+lockstep Report, and judges only its replay. Every few exchanges the child
+also sends its copy's state; a copy that differs from the parent's, or a
+Report stamped with another instant than the replay's, means the
+controller tampered with its copy: the run ends as ``tampered``.
+
+A batch is a frame (turtletui.runtime.wire) of records, each:
+``<q now_ns><d seconds><q output bytes><I digest length><I report length>``,
+then the digest (empty most of the time) and the Report's JSON
+(turtletui.runtime.protocol). ``seconds`` is the wall time the controller
+took to answer (the parent's budget.Pace charges it); ``output bytes``
+counts what the child had printed by then, so that the parent shows each
+printed line at the instant it was printed, as in lockstep.
+"""
+
+from __future__ import annotations
+
+import _thread
+import io
+import os
+import struct
+from collections import deque
+from pathlib import Path
+from time import perf_counter as _perf_counter
+from time import sleep as _real_sleep  # bound at import: the child simulates time.sleep
+from typing import Any
+
+from turtletui.runtime import protocol, replica, wire
+from turtletui.runtime.loader import ControllerSpec
+from turtletui.runtime.sandbox import _REFUSED, Limits, SandboxHost, _Stop
+from turtletui.runtime.sandbox_process import ChildFailed
+from turtletui.runtime.simulation import Simulation
+
+_RECORD = struct.Struct("<qdqII")
+DIGEST_EVERY = 16
+"""Every this many exchanges (counted from the first), the record carries the copy's digest."""
+_BATCH_RECORDS = 512
+"""Records the child sends in one frame at most."""
+_FLUSH_SECONDS = 0.02
+"""Wall seconds a record may wait in the child before it is sent anyway."""
+_FRAME_SLACK = 1 << 20
+"""A batch frame may exceed the largest Report by this much (other records, headers)."""
+TAMPERED = "tampered"
+
+
+# -- the child's side --------------------------------------------------------------------------------
+class _CountedOutput(io.RawIOBase):
+    """The child's stdout and stderr: counts the bytes written through it."""
+
+    def __init__(self, fd: int) -> None:
+        super().__init__()
+        self.fd = fd
+        self.count = 0
+
+    def writable(self) -> bool:
+        return True
+
+    def fileno(self) -> int:
+        return self.fd
+
+    def write(self, data: Any) -> int:
+        view = memoryview(data).cast("B")
+        done = 0
+        while done < len(view):
+            done += os.write(self.fd, view[done:])
+        self.count += done
+        return done
+
+
+def count_output() -> _CountedOutput:
+    """Route sys.stdout and sys.stderr through one counter (the child's fd 1
+    and 2 are the same pipe)."""
+    import sys
+
+    counted = _CountedOutput(1)
+    for name in ("stdout", "stderr"):
+        stream = getattr(sys, name)
+        text = io.TextIOWrapper(
+            counted, encoding=stream.encoding, errors=stream.errors, write_through=True, line_buffering=False
+        )
+        setattr(sys, name, text)
+    return counted
+
+
+class Loopback(SandboxHost):
+    """The parent's side of every exchange, run in the child against its own
+    copy of the simulation; records what the controller answered for the parent."""
+
+    def __init__(self, sim: Simulation, spec: ControllerSpec, limits: Limits, end_ns: int, fd_out: int) -> None:
+        super().__init__(sim, spec, limits)
+        sim.remotes.append(self)
+        self.end_ns = end_ns
+        self.fd_out = fd_out
+        self.output = count_output()
+        self._index = 0
+        self._digest = b""
+        self._tick_ns = 0
+        self._asked = 0.0
+        self._batch: list[bytes] = []
+        self._batch_bytes = 0
+        self._lock = _thread.allocate_lock()
+        self._last_flush = _perf_counter()
+        self._stopped = False
+        self._begun = False
+        _thread.start_new_thread(self._flush_now_and_then, ())
+
+    def ask(self, report: protocol.Report) -> protocol.Tick | protocol.End:
+        """What ChildHost.ask does in lockstep: the answer to ``report``."""
+        if not self._begun:
+            # The first report goes to the parent as in lockstep (it says the
+            # child started; nobody reads it). Then the copy's first Tick.
+            self._begun = True
+            wire.write_frame(self.fd_out, protocol.encode_report(report))
+            return self._roundtrip(self._next_tick())
+        return self._roundtrip(self.answer(report))
+
+    @staticmethod
+    def _roundtrip(tick: protocol.Tick | protocol.End) -> protocol.Tick | protocol.End:
+        """The Tick as the controller would have read it from the pipe."""
+        return protocol.decode_from_parent(protocol.encode_tick(tick)) if type(tick) is protocol.Tick else tick
+
+    def answer(self, report: protocol.Report) -> protocol.Tick | protocol.End:
+        """Record the controller's answer, apply it to the copy, run the copy to
+        the next exchange: its Tick (End once the run is over)."""
+        payload = protocol.encode_report(report)
+        self._record(payload)
+        try:
+            self._apply(protocol.decode_report(payload))
+        except (_Stop, protocol.ProtocolError, wire.WireError):
+            self._hold()  # the parent ends the run at this record
+        sim = self.sim
+        if sim.pump(None, self.end_ns, until=self._wants) == "limit":
+            self._tick_ns = sim.graph.now_ns
+            self._asked = _perf_counter()
+            self._digest = replica.digest(sim)  # the parent's close() checks the end
+            return protocol.End()
+        return self._next_tick()
+
+    def finish(self, report: protocol.Report) -> None:
+        """The controller's last report: sent with everything still held."""
+        self._record(protocol.encode_report(report))
+        self.flush()
+        self._stopped = True
+
+    def _wants(self) -> bool:
+        return self.wants_exchange(self.sim.graph.now_ns)
+
+    def _next_tick(self) -> protocol.Tick:
+        self._rounds += 1
+        if self._index % DIGEST_EVERY == 0:
+            self._digest = replica.digest(self.sim)
+        tick, _ = self.proxy.tick()
+        self._tick_ns = tick.now_ns
+        self._asked = _perf_counter()
+        return tick
+
+    def _record(self, payload: bytes) -> None:
+        seconds = _perf_counter() - self._asked
+        digest, self._digest = self._digest, b""
+        if len(payload) > wire.MAX_REPLY_BYTES:
+            # the parent says what lockstep says of a step this large
+            payload = b"\0" + str(len(payload)).encode()
+        record = _RECORD.pack(self._tick_ns, seconds, self.output.count, len(digest), len(payload)) + digest + payload
+        self._index += 1
+        with self._lock:
+            if self._batch_bytes + len(record) > wire.MAX_REPLY_BYTES:
+                self._send()
+            self._batch.append(record)
+            self._batch_bytes += len(record)
+            full = len(self._batch) >= _BATCH_RECORDS or _perf_counter() - self._last_flush > _FLUSH_SECONDS
+        if full:
+            self.flush()
+
+    def flush(self) -> None:
+        with self._lock:
+            self._send()
+
+    def _send(self) -> None:
+        self._last_flush = _perf_counter()
+        if not self._batch:
+            return
+        batch, self._batch, self._batch_bytes = self._batch, [], 0
+        try:
+            wire.write_frame(self.fd_out, b"".join(batch))
+        except (OSError, wire.WireError):
+            self._stopped = True
+
+    def _flush_now_and_then(self) -> None:
+        """A thread of its own: what a controller stuck in a callback answered
+        before it got stuck reaches the parent (which then sees it stuck at the
+        same instant as in lockstep)."""
+        while not self._stopped:
+            _real_sleep(_FLUSH_SECONDS)
+            if self._batch and _perf_counter() - self._last_flush > _FLUSH_SECONDS:
+                self.flush()
+
+    def _hold(self) -> None:
+        """The copy ended the run (the parent will, replaying the same record):
+        send everything and wait to be ended."""
+        self.flush()
+        self._stopped = True
+        while True:
+            _real_sleep(3600)
+
+
+# -- the parent's side ---------------------------------------------------------------------------------
+class FastHost(SandboxHost):
+    """Parent-side host of a fast-path child: replays the Reports it streams."""
+
+    def __init__(self, sim: Simulation, spec: ControllerSpec, limits: Limits, recipe: replica.Recipe) -> None:
+        super().__init__(sim, spec, limits)
+        self.recipe = recipe
+        self.process.max_frame = wire.MAX_REPLY_BYTES + _FRAME_SLACK
+        self.process.hold_output()
+        self._records: deque[tuple[int, float, int, bytes, bytes]] = deque()
+        self._index = 0
+
+    def _config(self, ros_args: list[str], seed: int) -> dict[str, Any]:
+        return {**super()._config(ros_args, seed), "fast": self.recipe.to_config()}
+
+    def exchange(self, timeout: float | None = None, *, wait: bool = False) -> bool:
+        if self.finished:
+            return False
+        self._rounds += 1
+        due = self._index % DIGEST_EVERY == 0
+        ours = replica.digest(self.sim) if due else b""
+        _, cause = self.proxy.tick()  # what the child's copy sent it
+        try:
+            seconds = self._replay(timeout or self.limits.step_timeout, ours, due)
+        except _Stop:
+            return True
+        if self._metering:
+            self._meter(cause, seconds, _perf_counter())
+        return True
+
+    def close(self) -> Any:
+        if not self.finished and self.graph.now_ns >= self.recipe.end_ns:
+            # the copy ended the run at the same instant: its answer to End is next
+            try:
+                self._replay(1.0, replica.digest(self.sim), True)
+            except _Stop:
+                pass
+        self._terminate()
+        return self.crash
+
+    def _replay(self, timeout: float, ours: bytes, due: bool) -> float:
+        """Check and apply the child's next record; the wall seconds it took to
+        answer. Raises _Stop when the run ended here."""
+        now_ns, seconds, printed, digest, payload = self._next_record(timeout)
+        self._index += 1
+        if now_ns != self.graph.now_ns:
+            self._tampered(
+                f"its copy of the simulator answered at t={now_ns / 1e9:.3f} s where turtletui was at "
+                f"t={self.sim.t:.3f} s"
+            )
+        if due and digest != ours:
+            self._tampered(replica.describe_difference(digest, ours) if digest else "it did not say where its turtles were")
+        self.process.show_output_until(printed)
+        if payload[:1] == b"\0":
+            self._fail("flood", f"sent {payload[1:20].decode(errors='replace')} bytes in one step (limit {wire.MAX_REPLY_BYTES})")
+            raise _Stop
+        try:
+            report = protocol.decode_report(payload)
+        except protocol.ProtocolError as err:
+            self._fail("exception", f"{_REFUSED}: {err}")
+            raise _Stop from None
+        except wire.WireError as err:
+            self._fail("exception", str(err))
+            raise _Stop from None
+        self._apply(report)
+        return seconds
+
+    def _tampered(self, why: str) -> None:
+        self._fail(TAMPERED, f"tampered with the simulator: {why}; the run is not graded")
+        raise _Stop
+
+    def _next_record(self, timeout: float) -> tuple[int, float, int, bytes, bytes]:
+        records = self._records
+        if not records:
+            try:
+                payload = self.process.receive(timeout)
+            except ChildFailed as failed:
+                self._fail(failed.kind, failed.message)
+                raise _Stop from None
+            try:
+                records.extend(_records(payload))
+            except ValueError:
+                self._tampered("it sent a batch of answers turtletui cannot read")
+        return records.popleft()
+
+
+def _records(payload: bytes) -> list[tuple[int, float, int, bytes, bytes]]:
+    """The records of one batch; ValueError if it is malformed."""
+    out = []
+    view = memoryview(payload)
+    at, end, size = 0, len(payload), _RECORD.size
+    unpack = _RECORD.unpack_from
+    while at < end:
+        if at + size > end:
+            raise ValueError("short record")
+        now_ns, seconds, printed, digest_len, report_len = unpack(view, at)
+        at += size
+        stop = at + digest_len + report_len
+        if stop > end:
+            raise ValueError("short record")
+        out.append((now_ns, seconds, printed, bytes(view[at : at + digest_len]), bytes(view[at + digest_len : stop])))
+        at = stop
+    if not out:
+        raise ValueError("empty batch")
+    return out
+
+
+def start_loopback(host: Any, config: dict[str, Any]) -> Loopback:
+    """Build the child's copy from the config's recipe and let it answer the
+    child's host (turtletui.runtime.child.ChildHost) instead of the parent."""
+    recipe = replica.Recipe.from_config(config["fast"])
+    sim = replica.build_copy(recipe)
+    path = config.get("path")
+    spec = ControllerSpec(name=config["name"], path=None if path is None else Path(path), module=config.get("module"))
+    loopback = Loopback(sim, spec, Limits(), recipe.end_ns, config["fd_out"])
+    host.ask = loopback.ask
+    return loopback
