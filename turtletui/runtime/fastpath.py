@@ -24,8 +24,8 @@ printed line at the instant it was printed, as in lockstep.
 
 from __future__ import annotations
 
-import _thread
 import io
+import mmap
 import os
 import struct
 from collections import deque
@@ -40,6 +40,8 @@ from turtletui.runtime.sandbox import _REFUSED, Limits, SandboxHost, _Stop
 from turtletui.runtime.sandbox_process import ChildFailed
 from turtletui.runtime.simulation import Simulation
 
+_HEADER = struct.Struct("<qq")
+"""A batch's (and the journal's) head: the batch's number, the bytes of records after it."""
 _RECORD = struct.Struct("<qdqII")
 DIGEST_EVERY = 16
 """Every this many exchanges (counted from the first), the record carries the copy's digest."""
@@ -47,8 +49,8 @@ _BATCH_RECORDS = 512
 """Records the child sends in one frame at most."""
 _FLUSH_SECONDS = 0.02
 """Wall seconds a record may wait in the child before it is sent anyway."""
-_FRAME_SLACK = 1 << 20
-"""A batch frame may exceed the largest Report by this much (other records, headers)."""
+JOURNAL_BYTES = wire.MAX_REPLY_BYTES + (1 << 20)
+"""The journal holds one batch: the largest Report and then some."""
 TAMPERED = "tampered"
 
 
@@ -95,7 +97,9 @@ class Loopback(SandboxHost):
     """The parent's side of every exchange, run in the child against its own
     copy of the simulation; records what the controller answered for the parent."""
 
-    def __init__(self, sim: Simulation, spec: ControllerSpec, limits: Limits, end_ns: int, fd_out: int) -> None:
+    def __init__(
+        self, sim: Simulation, spec: ControllerSpec, limits: Limits, end_ns: int, fd_out: int, fd_journal: int
+    ) -> None:
         super().__init__(sim, spec, limits)
         sim.remotes.append(self)
         self.end_ns = end_ns
@@ -105,13 +109,13 @@ class Loopback(SandboxHost):
         self._digest = b""
         self._tick_ns = 0
         self._asked = 0.0
-        self._batch: list[bytes] = []
-        self._batch_bytes = 0
-        self._lock = _thread.allocate_lock()
+        self.journal = mmap.mmap(fd_journal, JOURNAL_BYTES)
+        os.close(fd_journal)
+        self._seq = 0
+        self._length = 0
+        self._records = 0
         self._last_flush = _perf_counter()
-        self._stopped = False
         self._begun = False
-        _thread.start_new_thread(self._flush_now_and_then, ())
 
     def ask(self, report: protocol.Report) -> protocol.Tick | protocol.End:
         """What ChildHost.ask does in lockstep: the answer to ``report``."""
@@ -149,7 +153,6 @@ class Loopback(SandboxHost):
         """The controller's last report: sent with everything still held."""
         self._record(protocol.encode_report(report))
         self.flush()
-        self._stopped = True
 
     def _wants(self) -> bool:
         return self.wants_exchange(self.sim.graph.now_ns)
@@ -169,45 +172,39 @@ class Loopback(SandboxHost):
         if len(payload) > wire.MAX_REPLY_BYTES:
             # the parent says what lockstep says of a step this large
             payload = b"\0" + str(len(payload)).encode()
-        record = _RECORD.pack(self._tick_ns, seconds, self.output.count, len(digest), len(payload)) + digest + payload
-        self._index += 1
-        with self._lock:
-            if self._batch_bytes + len(record) > wire.MAX_REPLY_BYTES:
-                self._send()
-            self._batch.append(record)
-            self._batch_bytes += len(record)
-            full = len(self._batch) >= _BATCH_RECORDS or _perf_counter() - self._last_flush > _FLUSH_SECONDS
-        if full:
+        journal = self.journal
+        size = _RECORD.size + len(digest) + len(payload)
+        if self._length + size > len(journal) - _HEADER.size:
+            self.flush()
+        at = _HEADER.size + self._length
+        _RECORD.pack_into(journal, at, self._tick_ns, seconds, self.output.count, len(digest), len(payload))
+        at += _RECORD.size
+        journal[at : at + len(digest)] = digest
+        journal[at + len(digest) : at + size - _RECORD.size] = payload
+        self._length += size
+        _HEADER.pack_into(journal, 0, self._seq, self._length)  # after the record: the parent may read it now
+        self._records += 1
+        if self._records >= _BATCH_RECORDS or _perf_counter() - self._last_flush > _FLUSH_SECONDS:
             self.flush()
 
     def flush(self) -> None:
-        with self._lock:
-            self._send()
-
-    def _send(self) -> None:
+        """Send the journal's records to the parent as one batch, and start the next."""
         self._last_flush = _perf_counter()
-        if not self._batch:
+        if not self._length:
             return
-        batch, self._batch, self._batch_bytes = self._batch, [], 0
+        journal = self.journal
         try:
-            wire.write_frame(self.fd_out, b"".join(batch))
+            wire.write_frame(self.fd_out, journal[: _HEADER.size + self._length])
         except (OSError, wire.WireError):
-            self._stopped = True
-
-    def _flush_now_and_then(self) -> None:
-        """A thread of its own: what a controller stuck in a callback answered
-        before it got stuck reaches the parent (which then sees it stuck at the
-        same instant as in lockstep)."""
-        while not self._stopped:
-            _real_sleep(_FLUSH_SECONDS)
-            if self._batch and _perf_counter() - self._last_flush > _FLUSH_SECONDS:
-                self.flush()
+            pass  # the parent went away: it ends this process
+        self._seq += 1
+        self._length = self._records = 0
+        _HEADER.pack_into(journal, 0, self._seq, 0)
 
     def _hold(self) -> None:
         """The copy ended the run (the parent will, replaying the same record):
         send everything and wait to be ended."""
         self.flush()
-        self._stopped = True
         while True:
             _real_sleep(3600)
 
@@ -219,10 +216,26 @@ class FastHost(SandboxHost):
     def __init__(self, sim: Simulation, spec: ControllerSpec, limits: Limits, recipe: replica.Recipe) -> None:
         super().__init__(sim, spec, limits)
         self.recipe = recipe
-        self.process.max_frame = wire.MAX_REPLY_BYTES + _FRAME_SLACK
+        self.process.max_frame = JOURNAL_BYTES
         self.process.hold_output()
+        fd = os.memfd_create("turtletui-journal")
+        os.ftruncate(fd, JOURNAL_BYTES)
+        self.journal = mmap.mmap(fd, JOURNAL_BYTES)
+        self.process.journal_fd = fd
         self._records: deque[tuple[int, float, int, bytes, bytes]] = deque()
         self._index = 0
+        self._seq = 0
+        """The number of the next batch."""
+        self._read_ahead = 0
+        """Bytes of the batch numbered ``_seq`` already taken from the journal."""
+        self._failure: ChildFailed | None = None
+        """Why the child is gone, said once what it wrote before is replayed."""
+
+    def _terminate(self) -> None:
+        super()._terminate()
+        fd, self.process.journal_fd = self.process.journal_fd, None
+        if fd is not None:
+            os.close(fd)
 
     def _config(self, ros_args: list[str], seed: int) -> dict[str, Any]:
         return {**super()._config(ros_args, seed), "fast": self.recipe.to_config()}
@@ -284,25 +297,64 @@ class FastHost(SandboxHost):
         raise _Stop
 
     def _next_record(self, timeout: float) -> tuple[int, float, int, bytes, bytes]:
+        """The child's next record, within ``timeout`` seconds of wall time;
+        raises _Stop when the child is gone (or stuck) and every record it
+        wrote is replayed."""
         records = self._records
-        if not records:
-            try:
-                payload = self.process.receive(timeout)
-            except ChildFailed as failed:
-                self._fail(failed.kind, failed.message)
-                raise _Stop from None
-            try:
-                records.extend(_records(payload))
-            except ValueError:
-                self._tampered("it sent a batch of answers turtletui cannot read")
+        while not records:
+            failure = self._failure
+            if failure is None:
+                try:
+                    self._take(self.process.receive(timeout))
+                    continue
+                except ChildFailed as failed:
+                    failure = failed
+            # The child died or is stuck: what it answered before is in the journal.
+            if self._from_journal():
+                if failure.kind != "timeout":
+                    self._failure = failure  # said when the replay gets there
+                continue  # a timeout with new records: it is slow, not stuck
+            self._fail(failure.kind, failure.message)
+            raise _Stop
         return records.popleft()
 
+    def _take(self, payload: bytes) -> None:
+        """One batch from the pipe."""
+        try:
+            seq, length = _HEADER.unpack_from(payload)
+        except struct.error:
+            seq = length = -1
+        if seq != self._seq or length != len(payload) - _HEADER.size:
+            self._tampered("it sent a batch of answers out of order")
+        try:
+            self._records.extend(_records(payload, _HEADER.size + self._read_ahead))
+        except ValueError:
+            self._tampered("it sent a batch of answers turtletui cannot read")
+        self._seq += 1
+        self._read_ahead = 0
 
-def _records(payload: bytes) -> list[tuple[int, float, int, bytes, bytes]]:
-    """The records of one batch; ValueError if it is malformed."""
+    def _from_journal(self) -> bool:
+        """Take the records of the batch the child had not sent yet; whether there were any."""
+        try:
+            seq, length = _HEADER.unpack_from(self.journal)
+        except (struct.error, ValueError):
+            return False
+        if seq != self._seq or not self._read_ahead < length <= JOURNAL_BYTES - _HEADER.size:
+            return False
+        try:
+            records = _records(self.journal[: _HEADER.size + length], _HEADER.size + self._read_ahead)
+        except ValueError:
+            return False
+        self._records.extend(records)
+        self._read_ahead = length
+        return True
+
+
+def _records(payload: bytes, at: int) -> list[tuple[int, float, int, bytes, bytes]]:
+    """The records of one batch from byte ``at``; ValueError if they are malformed."""
     out = []
     view = memoryview(payload)
-    at, end, size = 0, len(payload), _RECORD.size
+    end, size = len(payload), _RECORD.size
     unpack = _RECORD.unpack_from
     while at < end:
         if at + size > end:
@@ -314,8 +366,6 @@ def _records(payload: bytes) -> list[tuple[int, float, int, bytes, bytes]]:
             raise ValueError("short record")
         out.append((now_ns, seconds, printed, bytes(view[at : at + digest_len]), bytes(view[at + digest_len : stop])))
         at = stop
-    if not out:
-        raise ValueError("empty batch")
     return out
 
 
@@ -326,6 +376,6 @@ def start_loopback(host: Any, config: dict[str, Any]) -> Loopback:
     sim = replica.build_copy(recipe)
     path = config.get("path")
     spec = ControllerSpec(name=config["name"], path=None if path is None else Path(path), module=config.get("module"))
-    loopback = Loopback(sim, spec, Limits(), recipe.end_ns, config["fd_out"])
+    loopback = Loopback(sim, spec, Limits(), recipe.end_ns, config["fd_out"], config["fd_journal"])
     host.ask = loopback.ask
     return loopback

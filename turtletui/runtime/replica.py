@@ -43,8 +43,8 @@ class Step:
     function: str
     args: tuple = ()
 
-    def __call__(self, sim: Simulation) -> None:
-        _resolve(self.function)(sim, *self.args)
+    def __call__(self, sim: Simulation) -> Any:
+        return _resolve(self.function)(sim, *self.args)
 
 
 @dataclass
@@ -58,10 +58,11 @@ class ReplicableSetup:
     observe: Callable[[Simulation], None] | None = None
     graph_version: int | None = field(default=None, init=False)
     """The graph's version once the steps were done (None: not run yet)."""
+    results: list[Any] = field(default_factory=list, init=False)
+    """What each step returned, for ``observe``."""
 
     def __call__(self, sim: Simulation) -> None:
-        for step in self.steps:
-            step(sim)
+        self.results = [step(sim) for step in self.steps]
         self.graph_version = sim.graph.version
         if self.observe is not None:
             self.observe(sim)

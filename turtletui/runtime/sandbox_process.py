@@ -88,6 +88,9 @@ class ChildProcess:
         """Fast path: bytes of output shown or dropped so far."""
         self.max_frame = wire.MAX_REPLY_BYTES
         """The largest frame the child may send."""
+        self.journal_fd: int | None = None
+        """Fast path: the shared memory the child also writes its answers to
+        (turtletui.runtime.fastpath), given to the child at its start."""
         self._output = OutputBudget(
             self._show_output,
             max_bytes=limits.output_bytes,
@@ -107,7 +110,10 @@ class ChildProcess:
         from_child_r, from_child_w = os.pipe()
         config = {**config, "fd_in": to_child_r, "fd_out": from_child_w, "spin_seconds": self._spin}
         cwd = str(self.spec.path.resolve().parent) if self.spec.path else None
-        fds = (to_child_r, from_child_w)
+        fds: tuple[int, ...] = (to_child_r, from_child_w)
+        if self.journal_fd is not None:
+            fds += (self.journal_fd,)
+            config["fd_journal"] = self.journal_fd
         self.proc = self._fork(config, cwd, fds) or self._exec(config, cwd, fds)
         os.close(to_child_r)
         os.close(from_child_w)
@@ -128,7 +134,7 @@ class ChildProcess:
         # asked every exchange whether there is output: cheaper than a read that fails
         self._stdout_poll.register(self._stdout, select.POLLIN)
 
-    def _exec(self, config: dict[str, Any], cwd: str | None, fds: tuple[int, int]) -> subprocess.Popen:
+    def _exec(self, config: dict[str, Any], cwd: str | None, fds: tuple[int, ...]) -> subprocess.Popen:
         """Start a fresh interpreter for the child."""
         # Inherited by whatever the controller starts: found and killed at the end
         # even if it left the child's session and lost its parent.
@@ -145,7 +151,7 @@ class ChildProcess:
             **self._credentials(),
         )
 
-    def _fork(self, config: dict[str, Any], cwd: str | None, fds: tuple[int, int]) -> Any:
+    def _fork(self, config: dict[str, Any], cwd: str | None, fds: tuple[int, ...]) -> Any:
         """Fork the child from this submission's fork server, if this process
         uses them (grading workers); None to start it the usual way."""
         servers = forkserver.servers()
