@@ -266,10 +266,27 @@ class ChildProcess:
     # -- output ---------------------------------------------------------------------------------
     def drain_output(self, final: bool = False) -> None:
         """Show what the child printed (within its budget), without waiting."""
+        data = self._read_output(final)
+        held = self._held
+        if held is not None:
+            held += data or b""
+            if not final and not self._output.over and len(held) <= self.limits.output_bytes:
+                return  # shown when the step it was printed in is replayed
+            # the end, or over its budget anyway: when it is shown no longer matters
+            data = bytes(held)
+            self._fed += len(held)
+            held.clear()
+            self._feed(data, final or not self._stdout_open)
+        elif data is not None:
+            self._feed(data, final or not self._stdout_open)
+
+    def _read_output(self, final: bool) -> bytes | None:
+        """What the child printed since the last read; None if the pipe was closed
+        before or had nothing."""
         if self.proc is None or self.proc.stdout is None or not self._stdout_open:
-            return
+            return None
         if not final and not self._stdout_poll.poll(0):
-            return  # nothing printed (POLLHUP when closed counts as something)
+            return None  # nothing printed (POLLHUP when closed counts as something)
         chunks = []
         read = 0
         try:
@@ -282,17 +299,7 @@ class ChildProcess:
                 chunks.append(data)
         except (BlockingIOError, OSError, ValueError):
             pass
-        data = b"".join(chunks)
-        held = self._held
-        if held is not None:
-            held += data
-            if not final and self._stdout_open and not self._output.over and len(held) <= self.limits.output_bytes:
-                return  # shown when the step it was printed in is replayed
-            # the end, or over its budget anyway: when it is shown no longer matters
-            data = bytes(held)
-            self._fed += len(held)
-            held.clear()
-        self._feed(data, final or not self._stdout_open)
+        return b"".join(chunks)
 
     def hold_output(self) -> None:
         """Fast path: keep what the child prints until :meth:`show_output_until`
