@@ -129,18 +129,25 @@ class Loopback(SandboxHost):
 
     @staticmethod
     def _roundtrip(tick: protocol.Tick | protocol.End) -> protocol.Tick | protocol.End:
-        """The Tick as the controller would have read it from the pipe."""
-        return protocol.decode_from_parent(protocol.encode_tick(tick)) if type(tick) is protocol.Tick else tick
+        """The Tick as the controller would have read it from the pipe. The pipe's
+        encoding (marshal) gives back the same values; only the graph's
+        mirror, which the copy's GraphProxy keeps to compare with the next
+        one, goes through it, so that the child has its own."""
+        if type(tick) is protocol.Tick and tick.graph is not None:
+            return protocol.decode_from_parent(protocol.encode_tick(tick))
+        return tick
 
     def answer(self, report: protocol.Report) -> protocol.Tick | protocol.End:
         """Record the controller's answer, apply it to the copy, run the copy to
         the next exchange: its Tick (End once the run is over)."""
-        payload = protocol.encode_report(report)
-        self._record(payload)
+        self._record(protocol.encode_report(report))
         try:
-            self._apply(protocol.decode_report(payload))
-        except (_Stop, protocol.ProtocolError, wire.WireError):
-            self._hold()  # the parent ends the run at this record
+            # As the parent will apply it, once decoded: the same values (lists
+            # where the report had tuples). A report the parent refuses ends
+            # the run at this record: the copy's state after it never counts.
+            self._apply(report)
+        except _Stop:
+            self._hold()
         sim = self.sim
         if sim.pump(None, self.end_ns, until=self._wants) == "limit":
             self._tick_ns = sim.graph.now_ns
