@@ -191,6 +191,7 @@ class Loopback(SandboxHost):
         self._length += size
         _HEADER.pack_into(journal, 0, self._seq, self._length)  # after the record: the parent may read it now
         self._records += 1
+        self._index += 1
         if self._records >= _BATCH_RECORDS or _perf_counter() - self._last_flush > _FLUSH_SECONDS:
             self.flush()
 
