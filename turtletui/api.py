@@ -115,7 +115,12 @@ def run(
     raises a TurtletuiError with a one-line message (ControllerError,
     RosArgsError, RecordingError for ``record``, UsageError for ``duration``).
     ``limits`` (turtletui.runtime.sandbox.Limits) bounds what sandboxed
-    controllers may use; the defaults when None. ``world`` is a fresh World
+    controllers may use; the defaults when None. One sandboxed controller
+    out of real time takes the fast path (turtletui.runtime.fastpath) unless
+    ``limits.lockstep``; ``setup`` (called with the simulation before the
+    controllers start) keeps it there only as a
+    turtletui.runtime.replica.ReplicableSetup, whose steps the sandboxed
+    child can redo on its own copy. ``world`` is a fresh World
     to run in (turtlesim's empty arena when None). ``record`` names a
     recording (``run.jsonl``, ``run.mcap`` or a rosbag2 folder ``run/``);
     ``foxglove`` (``HOST:PORT``) serves the run live to Foxglove, in real time.

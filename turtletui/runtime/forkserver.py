@@ -71,7 +71,7 @@ def serve(sock_fd: int, parent: int) -> None:
     import turtletui.runtime.loader  # noqa: F401
     import turtletui.runtime.scheduler  # noqa: F401
     import turtletui.runtime.virtual_time  # noqa: F401
-    from turtletui.runtime import child
+    from turtletui.runtime import child, fastpath  # noqa: F401  (its copy of the simulation: numpy)
 
     _prctl(_PR_SET_DUMPABLE, 0)  # the runs (same user) cannot trace or read it
     sock = socket.socket(fileno=sock_fd)
