@@ -117,6 +117,8 @@ class ChildProcess:
         self.proc = self._fork(config, cwd, fds) or self._exec(config, cwd, fds)
         os.close(to_child_r)
         os.close(from_child_w)
+        if self.journal_fd is not None:
+            _widen(from_child_r)  # the fast path streams: the child need not wait for each read
         self._to_child = to_child_w
         # A child that stopped reading (it forged an answer, then hung) must not
         # block the parent on a full pipe: writes wait up to the step timeout.
@@ -311,7 +313,10 @@ class ChildProcess:
         step that counted ``total`` bytes; the rest waits for its own step."""
         held = self._held
         assert held is not None
-        self.drain_output()
+        if total <= self._fed:
+            return  # nothing printed since: not even a look at the pipe
+        if len(held) < total - self._fed:
+            self.drain_output()
         take = min(total - self._fed, len(held))
         if take > 0:
             chunk = bytes(held[:take])
@@ -365,6 +370,16 @@ class ChildProcess:
         if proc.stdout:
             proc.stdout.close()
         self.proc = None
+
+
+def _widen(fd: int, size: int = 1 << 20) -> None:
+    """Let the pipe ``fd`` hold ``size`` bytes (Linux; as much as allowed)."""
+    try:
+        import fcntl
+
+        fcntl.fcntl(fd, getattr(fcntl, "F_SETPIPE_SZ", 1031), size)
+    except (OSError, ImportError):
+        pass
 
 
 def _new_token() -> str:
