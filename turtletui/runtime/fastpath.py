@@ -37,7 +37,7 @@ from typing import Any
 from turtletui.interfaces import trusted_from_values
 from turtletui.runtime import protocol, replica, wire
 from turtletui.runtime.loader import ControllerSpec
-from turtletui.runtime.sandbox import _REFUSED, Limits, SandboxHost, _Stop
+from turtletui.runtime.sandbox import Limits, SandboxHost, _Stop
 from turtletui.runtime.sandbox_process import ChildFailed
 from turtletui.runtime.simulation import Simulation
 
@@ -52,6 +52,8 @@ _FLUSH_SECONDS = 0.02
 """Wall seconds a record may wait in the child before it is sent anyway."""
 JOURNAL_BYTES = wire.MAX_REPLY_BYTES + (1 << 20)
 """The journal holds one batch: the largest Report and then some."""
+_HOLD_SECONDS = 10.0
+"""How long a child whose copy ended the run waits for the parent to end it."""
 TAMPERED = "tampered"
 
 
@@ -146,9 +148,9 @@ class Loopback(SandboxHost):
         the next exchange: its Tick (End once the run is over)."""
         self._record(protocol.encode_report(report))
         try:
-            # As the parent will apply it, once decoded: the same values (lists
-            # where the report had tuples). A report the parent refuses ends
-            # the run at this record: the copy's state after it never counts.
+            # As the parent will apply it once decoded (the same values). A
+            # report the parent refuses ends the run at this record: the
+            # copy's state after it never counts.
             self._apply(report)
         except _Stop:
             self._hold()
@@ -215,10 +217,10 @@ class Loopback(SandboxHost):
 
     def _hold(self) -> None:
         """The copy ended the run (the parent will, replaying the same record):
-        send everything and wait to be ended."""
+        send everything and wait to be ended (or for the parent to be gone)."""
         self.flush()
-        while True:
-            _real_sleep(3600)
+        _real_sleep(_HOLD_SECONDS)
+        os._exit(0)
 
 
 def _trusted_build(cls: Any, values: list) -> Any:
@@ -257,6 +259,7 @@ class FastHost(SandboxHost):
         fd, self.process.journal_fd = self.process.journal_fd, None
         if fd is not None:
             os.close(fd)
+            self.journal.close()
 
     def _config(self, ros_args: list[str], seed: int) -> dict[str, Any]:
         return {**super()._config(ros_args, seed), "fast": self.recipe.to_config()}
@@ -302,15 +305,7 @@ class FastHost(SandboxHost):
         if payload[:1] == b"\0":
             self._fail("flood", f"sent {payload[1:20].decode(errors='replace')} bytes in one step (limit {wire.MAX_REPLY_BYTES})")
             raise _Stop
-        try:
-            report = protocol.decode_report(payload)
-        except protocol.ProtocolError as err:
-            self._fail("exception", f"{_REFUSED}: {err}")
-            raise _Stop from None
-        except wire.WireError as err:
-            self._fail("exception", str(err))
-            raise _Stop from None
-        self._apply(report)
+        self._apply(self._decode(payload))
         return seconds
 
     def _tampered(self, why: str) -> None:

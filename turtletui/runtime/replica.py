@@ -52,7 +52,8 @@ class ReplicableSetup:
     """A run's set-up (api.run's ``setup``) in two parts: ``steps`` change the
     simulation in ways the child's copy redoes from data (a turtle's start, a
     scripted drive); ``observe`` adds what stays with the trusted process
-    (taps, recorders, collectors) and must not change the graph."""
+    (taps, recorders, collectors) and must change neither the graph nor the
+    world (a graph it changed keeps the run in lockstep)."""
 
     steps: Sequence[Step] = ()
     observe: Callable[[Simulation], None] | None = None
@@ -129,12 +130,14 @@ def recipe_for(
     simulation was built; ``graph_version`` the graph's version right after
     it was built (before ``setup``).
 
-    Fast: exactly one controller, sandboxed; lockstep time; a set-up the
+    Fast: exactly one controller, sandboxed; lockstep time (on Linux); a set-up the
     child can redo (none, or a ReplicableSetup whose observers left the graph
     as its steps made it); nothing else on the graph (a bag's player or
     recorder, teleop, the app). Anything else keeps the lockstep path.
     """
     if lockstep or forced_lockstep() or sim.realtime or len(specs) != 1 or specs[0].trusted:
+        return None
+    if not hasattr(os, "memfd_create"):  # the shared journal (Linux)
         return None
     if world == "":
         return None

@@ -318,16 +318,20 @@ class SandboxHost:
         except ChildFailed as failed:
             self._fail(failed.kind, failed.message)
             raise _Stop from None
+        report = self._decode(payload)
+        if not first:
+            self._apply(report)
+
+    def _decode(self, payload: bytes) -> protocol.Report:
+        """The Report in ``payload``; raises _Stop (having said why) if it is none."""
         try:
-            report = protocol.decode_report(payload)
+            return protocol.decode_report(payload)
         except protocol.ProtocolError as err:
             self._fail("exception", f"{_REFUSED}: {err}")
             raise _Stop from None
         except wire.WireError as err:
             self._fail("exception", str(err))
             raise _Stop from None
-        if not first:
-            self._apply(report)
 
     def _apply(self, report: protocol.Report) -> None:
         """Apply one Report of the child; raises _Stop as :meth:`_receive`."""
