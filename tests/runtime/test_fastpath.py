@@ -314,3 +314,72 @@ def test_tampering_with_the_childs_copy_is_reported_and_changes_nothing_measured
     poses = result.poses["turtle1"]
     assert all(abs(y - poses[0][2]) < 1e-9 for _, _, y, _ in poses)
     assert not any(x == 1.0 for _, x, _, _ in poses)
+
+
+GRADED = """+++
+id = "fast-drive"
+title = "Drive a metre while a scripted drive turns the turtle"
+
+[[scenarios]]
+name = "centre"
+start = {x = 3.0, y = 5.5, theta = 0.0}
+duration = 3.0
+drive = {linear = 0.0, angular = 0.2}
+
+[[checks]]
+name = "distance"
+weight = 1.0
+thresholds = {min = 1.0}
+
+[[checks]]
+name = "no_crash"
+weight = 1.0
++++
+# Drive
+"""
+
+
+def test_a_submission_that_tampers_with_its_copy_scores_nothing_and_an_honest_one_is_unchanged(tmp_path, fast_runs):
+    from support.grading import make_class
+
+    from turtletui.grading.batch import grade_submissions
+    from turtletui.grading.engine import prepare
+    from turtletui.grading.submissions import find_submissions
+    from turtletui.lessons.loader import load_lesson
+
+    lesson = tmp_path / "drive.md"
+    lesson.write_text(GRADED)
+    plan = prepare(load_lesson(lesson))
+    honest = TAMPER.replace("            TAMPER\n", "            pass\n")
+    cheat = TAMPER.replace("TAMPER", TAMPERINGS["world"])
+    klass = make_class(tmp_path / "class", {"honest": honest, "cheat": cheat})
+    fast = {s.student: s for s in grade_submissions(plan, find_submissions([klass]), jobs=1).submissions}
+    assert fast_runs
+    taken = len(fast_runs)
+    lockstep = grade_submissions(plan, find_submissions([klass / "honest"]), jobs=1, limits=Limits(lockstep=True))
+    assert len(fast_runs) == taken
+    assert fast["honest"].score == lockstep.submissions[0].score == 2.0
+    assert [(t.name, t.status, t.output) for t in fast["honest"].tests] == [
+        (t.name, t.status, t.output) for t in lockstep.submissions[0].tests
+    ]
+    assert fast["cheat"].score == 0.0
+    assert "tampered" in "\n".join(t.output for t in fast["cheat"].tests)
+
+
+def test_a_set_up_the_child_cannot_redo_keeps_the_lockstep_path(tmp_path, fast_runs):
+    from turtletui.runtime.replica import ReplicableSetup
+
+    path = write(tmp_path, TAMPER.replace("            TAMPER\n", "            pass\n"))
+
+    def spawn_a_turtle(sim):  # noqa: ANN001, ANN202 - a plain set-up: opaque to the child
+        sim.world.place("turtle1", 2.0, 2.0, 0.0)
+
+    def add_a_node(sim):  # noqa: ANN001, ANN202 - an observer that changes the graph
+        sim.graph.add_node("watcher", owner="test")
+
+    for setup in (spawn_a_turtle, ReplicableSetup((), add_a_node)):
+        result = run([path], duration=1.0, keep_poses=True, setup=setup)
+        assert result.ok, result.crashes
+    assert fast_runs == []
+    run([path], duration=1.0, setup=ReplicableSetup((), lambda sim: None))
+    assert len(fast_runs) == 1
