@@ -306,7 +306,8 @@ class FastHost(SandboxHost):
             self._fail("flood", f"sent {payload[1:20].decode(errors='replace')} bytes in one step (limit {wire.MAX_REPLY_BYTES})")
             raise _Stop
         self._apply(self._decode(payload))
-        return seconds
+        # measured by the child's clock: a time no answer takes (negative, NaN) counts as none
+        return seconds if seconds >= 0.0 else 0.0
 
     def _tampered(self, why: str) -> None:
         self._fail(TAMPERED, f"tampered with the simulator: {why}; the run is not graded")
