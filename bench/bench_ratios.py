@@ -6,12 +6,16 @@ Run from the repository root:  python bench/bench_ratios.py [--repeats N]
    (bench_core.baseline_wall): the baseline every tick is compared with.
 2. The marginal in-process tick of the Part 6 controller: a 600 s run less a
    1 s run, over the ticks between them (start-up and loading cancel out).
-3. The marginal sandboxed tick, measured the same way.
+3. The marginal sandboxed tick, measured the same way: on the fast path
+   (the child runs the controller against its own copy of the simulation,
+   the parent replays; turtletui.runtime.fastpath), and in lockstep (a
+   round trip per exchange, as the app's real-time runs still go).
    Beside them, the in-process tick while turtlesim publishes its colour
    sensor every tick, as it does while a run is recorded (no target: a
    recorded run should cost about what a plain one does).
 4. One Part 6 submission graded by the whole ``turtletui grade`` command
-   (--jobs 2, process start included): simulated seconds per wall second.
+   (--jobs 2, process start included): simulated seconds per wall second,
+   on the fast path and (TURTLETUI_LOCKSTEP=1) in lockstep.
 
 Each figure is the median of ``--repeats`` runs.
 """
@@ -36,6 +40,8 @@ from bench_core import baseline_wall, cpu_model, median_of, ticks_for  # noqa: E
 
 from turtletui.api import run  # noqa: E402
 from turtletui.runtime.loader import ControllerSpec  # noqa: E402
+from turtletui.runtime.replica import LOCKSTEP_VAR  # noqa: E402
+from turtletui.runtime.sandbox import Limits  # noqa: E402
 from turtletui.runtime.simulation import Simulation  # noqa: E402
 
 PART6 = ROOT / "plugins" / "reference" / "turtle_controller.py"
@@ -52,27 +58,28 @@ def sense_colour(sim: Simulation) -> None:
     sim.graph.record_everything = True  # what a recording sets
 
 
-def run_wall(duration: float, *, trusted: bool, sensed: bool = False) -> float:
+def run_wall(duration: float, *, trusted: bool, sensed: bool = False, lockstep: bool = False) -> float:
     """Wall seconds of one ``api.run`` of Part 6, start-up included; a run
     whose controller failed would measure nothing, so it stops the bench."""
     controller = ControllerSpec("tc", PART6, trusted=trusted) if trusted else str(PART6)
     setup = sense_colour if sensed else None
+    limits = Limits(lockstep=lockstep)
     started = time.perf_counter()
-    result = run([controller], duration=duration, keep_calls=False, distro=DISTRO, setup=setup)
+    result = run([controller], duration=duration, keep_calls=False, distro=DISTRO, setup=setup, limits=limits)
     wall = time.perf_counter() - started
     if not result.ok:
         sys.exit(f"bench_ratios: the Part 6 controller failed: {result.crashes[0].message}")
     return wall
 
 
-def marginal_tick_us(repeats: int, *, trusted: bool, sensed: bool = False) -> float:
+def marginal_tick_us(repeats: int, *, trusted: bool, sensed: bool = False, lockstep: bool = False) -> float:
     """Microseconds per tick between a SHORT and a LONG run."""
-    long = median_of(lambda: run_wall(LONG, trusted=trusted, sensed=sensed), repeats)
-    short = median_of(lambda: run_wall(SHORT, trusted=trusted, sensed=sensed), repeats)
+    long = median_of(lambda: run_wall(LONG, trusted=trusted, sensed=sensed, lockstep=lockstep), repeats)
+    short = median_of(lambda: run_wall(SHORT, trusted=trusted, sensed=sensed, lockstep=lockstep), repeats)
     return (long - short) / (ticks_for(LONG) - ticks_for(SHORT)) * 1e6
 
 
-def grade_wall(submission: Path, results: Path) -> float:
+def grade_wall(submission: Path, results: Path, *, lockstep: bool = False) -> float:
     """Wall seconds of ``turtletui grade`` on one submission, as an instructor runs it."""
     same_user = ["--same-user"] if os.geteuid() == 0 else []
     command = [
@@ -80,6 +87,9 @@ def grade_wall(submission: Path, results: Path) -> float:
         "-q", "--jobs", "2", "--force", "--results", str(results), *same_user,
     ]
     env = dict(os.environ, PYTHONPATH=str(ROOT))
+    env.pop(LOCKSTEP_VAR, None)
+    if lockstep:
+        env[LOCKSTEP_VAR] = "1"
     started = time.perf_counter()
     subprocess.run(command, check=True, env=env, stdout=subprocess.DEVNULL)
     return time.perf_counter() - started
@@ -104,11 +114,13 @@ def main() -> None:
     inproc_us = marginal_tick_us(repeats, trusted=True)
     sensed_us = marginal_tick_us(repeats, trusted=True, sensed=True)
     sandbox_us = marginal_tick_us(repeats, trusted=False)
+    lockstep_us = marginal_tick_us(repeats, trusted=False, lockstep=True)
     with tempfile.TemporaryDirectory() as tmp:
         submission = Path(tmp) / "student" / "turtle_controller.py"
         submission.parent.mkdir()
         shutil.copy(PART6, submission)
         grade_s = median_of(lambda: grade_wall(submission, Path(tmp) / "results"), repeats)
+        grade_lockstep_s = median_of(lambda: grade_wall(submission, Path(tmp) / "results", lockstep=True), repeats)
     grading_x = LESSON_SECONDS / grade_s
 
     rows = [
@@ -117,10 +129,13 @@ def main() -> None:
          f"<= {IN_PROCESS_MAX:g}x", verdict(inproc_us / bare_us <= IN_PROCESS_MAX)),
         ("  the same, colour sensed (recorded)", f"{sensed_us:.2f} us/tick", f"{sensed_us / inproc_us:.2f}x in-process",
          "", ""),
-        ("sandboxed tick (marginal)", f"{sandbox_us:.2f} us/tick", f"{sandbox_us / inproc_us:.1f}x in-process",
+        ("sandboxed tick (marginal, fast path)", f"{sandbox_us:.2f} us/tick", f"{sandbox_us / inproc_us:.1f}x in-process",
          f"<= {SANDBOXED_MAX:g}x", verdict(sandbox_us / inproc_us <= SANDBOXED_MAX)),
+        ("  the same, lockstep", f"{lockstep_us:.2f} us/tick", f"{lockstep_us / inproc_us:.1f}x in-process", "", ""),
         (f"grade, one Part 6 ({LESSON_SECONDS:g} sim s)", f"{grade_s:.2f} s wall", f"{grading_x:,.0f}x real time",
          f">= {GRADING_MIN:g}x", verdict(grading_x >= GRADING_MIN)),
+        ("  the same, lockstep", f"{grade_lockstep_s:.2f} s wall", f"{LESSON_SECONDS / grade_lockstep_s:,.0f}x real time",
+         "", ""),
     ]
     print(f"  {'figure':<36} {'value':>16}  {'ratio':>22}  {'target':>8}")
     for name, value, ratio, target, mark in rows:

@@ -145,6 +145,10 @@ def test_sandboxed_controller_process_has_no_numpy_or_front_ends(tmp_path):
             rclpy.shutdown()
     """), encoding="utf-8")
     from turtletui.api import run
+    from turtletui.runtime.sandbox import Limits
 
-    result = run([node], duration=0.5)
+    result = run([node], duration=0.5, limits=Limits(lockstep=True))
     assert [r.msg for r in result.logs if r.node == "modules"] == ["heavy=[]"]
+    # the fast path's child holds a copy of the simulator, which draws with numpy
+    fast = run([node], duration=0.5)
+    assert [r.msg for r in fast.logs if r.node == "modules"] == ["heavy=['numpy']"]

@@ -19,6 +19,7 @@ from turtletui.compat.ros_args import RosArgsError, parse_ros_args
 from turtletui.errors import TurtletuiError, UsageError
 from turtletui.graph.core import NS_PER_S
 from turtletui.graph.logs import INFO, LogRecord
+from turtletui.runtime import replica
 from turtletui.runtime.loader import ControllerError, ControllerSpec, check_source
 from turtletui.runtime.outputs import run_outputs
 from turtletui.runtime.report import CrashReport
@@ -114,7 +115,12 @@ def run(
     raises a TurtletuiError with a one-line message (ControllerError,
     RosArgsError, RecordingError for ``record``, UsageError for ``duration``).
     ``limits`` (turtletui.runtime.sandbox.Limits) bounds what sandboxed
-    controllers may use; the defaults when None. ``world`` is a fresh World
+    controllers may use; the defaults when None. One sandboxed controller
+    out of real time takes the fast path (turtletui.runtime.fastpath) unless
+    ``limits.lockstep``; ``setup`` (called with the simulation before the
+    controllers start) keeps it there only as a
+    turtletui.runtime.replica.ReplicableSetup, whose steps the sandboxed
+    child can redo on its own copy. ``world`` is a fresh World
     to run in (turtlesim's empty arena when None). ``record`` names a
     recording (``run.jsonl``, ``run.mcap`` or a rosbag2 folder ``run/``);
     ``foxglove`` (``HOST:PORT``) serves the run live to Foxglove, in real time.
@@ -143,7 +149,10 @@ def run(
     distro, distro_note = choose_distro(distro, None, (spec.path for spec in specs if spec.path is not None))
     logs: list[LogRecord] = []
     sinks = [logs.append] if on_log is None else [logs.append, on_log]
+    may_replicate = len(specs) == 1 and not specs[0].trusted and not realtime
+    world_before = replica.snapshot_world(world) if may_replicate else ""
     sim = Simulation(world=world, realtime=realtime, log_sinks=sinks, distro=distro)
+    built_version = sim.graph.version
     if distro_note is not None:
         sim.graph.log("turtletui", INFO, distro_note)
     if setup is not None:
@@ -164,15 +173,18 @@ def run(
         sim.graph.taps.append(tap)
     # turtlesim's start lines were logged before the recorder existed
     with run_outputs(sim, record, foxglove, earlier_logs=list(logs)):
-        started = time.perf_counter()
-        outcome = run_controllers(
+        end_ns = int(round(duration * NS_PER_S))
+        recipe = replica.recipe_for(
             sim,
             specs,
-            int(round(duration * NS_PER_S)),
-            ros_args=args,
-            seed=seed,
-            limits=limits,
+            world=world_before,
+            setup=setup,
+            graph_version=built_version,
+            end_ns=end_ns,
+            lockstep=limits is not None and limits.lockstep,
         )
+        started = time.perf_counter()
+        outcome = run_controllers(sim, specs, end_ns, ros_args=args, seed=seed, limits=limits, recipe=recipe)
     wall = time.perf_counter() - started
     turtles = {
         name: TurtleSummary(t.x, t.y, t.theta, t.distance, t.wall_hits) for name, t in sim.world.turtles.items()

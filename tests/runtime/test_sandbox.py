@@ -825,9 +825,10 @@ FORGED = {
 
 @pytest.mark.parametrize("case", sorted(FORGED))
 def test_forged_reply_on_the_pipe(tmp_path: Path, case: str) -> None:
+    # lockstep's pipe: the fast path's forgeries are tests/runtime/test_fastpath.py's
     forged, kind, says = FORGED[case]
     path = write(tmp_path, FORGE.replace("FRAME", repr(forged)))
-    result = go(path)
+    result = go(path, lockstep=True)
     assert not any("Traceback" in r.msg for r in result.logs)
     assert_gone(read_pid(tmp_path))
     if kind is None:
@@ -857,7 +858,7 @@ def test_forged_reply_then_not_reading(tmp_path: Path) -> None:
             node.create_timer(0.1, forge_and_hang)
     """)
     started = time.monotonic()
-    result = go(path, step_timeout=1.0)
+    result = go(path, step_timeout=1.0, lockstep=True)  # the fast path sends the child nothing
     assert time.monotonic() - started < 300, "the parent waited for the child to read"
     crash = only_crash(result, "timeout", path)
     assert CRASH_T + 0.1 <= crash.t < CRASH_T + 0.2

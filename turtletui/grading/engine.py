@@ -26,13 +26,14 @@ from turtletui.grading.checks import Check, Verdict
 from turtletui.grading.pictures import picture_of_trace
 from turtletui.grading.results import FAILED, PASSED, Picture, SubmissionResult, TestResult
 from turtletui.grading.trace import Trace, TraceCollector
-from turtletui.graph.logs import INFO, LogRecord
+from turtletui.graph.logs import LogRecord
 from turtletui.lessons.loader import display_path
 from turtletui.lessons.model import CheckSpec, Lesson, Scenario
 from turtletui.messages import did_you_mean
 from turtletui.plugins.manager import Plugins, collect_checks, plugin_manager
 from turtletui.runtime.loader import ControllerSpec
 from turtletui.runtime.recorder import open_recorder
+from turtletui.runtime.replica import ReplicableSetup, Step
 from turtletui.runtime.report import CrashReport
 
 if TYPE_CHECKING:
@@ -270,35 +271,6 @@ def _world_spec(name: str, plugins: Plugins, shown: str) -> WorldSpec | None:
         raise GradingError(f"{shown}: {err}") from None
 
 
-class ScenarioDriver:
-    """Drives turtle1 for a scenario with a ``drive`` (linear, angular): the
-    same Twist every 16 ms, as a person holding a teleop key would, so that a
-    node that only watches sees the turtle move."""
-
-    PERIOD_NS = 16_000_000
-
-    def __init__(self, sim: Simulation, drive: tuple[float, float]) -> None:
-        from turtletui.interfaces.geometry_msgs import Twist, Vector3
-
-        graph = sim.graph
-        node = graph.add_node("scenario_teleop", owner="scenario")
-        self.msg = Twist(linear=Vector3(x=drive[0]), angular=Vector3(z=drive[1]))
-        """The one message it publishes (the trace tells it from the controller's)."""
-        publisher = graph.add_publisher(node, "/turtle1/cmd_vel", Twist, 10)
-        graph.add_timer(node, self.PERIOD_NS, lambda: graph.publish(publisher.topic, self.msg))
-
-
-def place_turtle(sim: Simulation, start: tuple[float, float, float], label: str) -> None:
-    """Put turtle1 at a scenario's start before anything has run (nothing drawn)."""
-    sim.world.place("turtle1", *start)
-    turtle = sim.world.turtles["turtle1"]
-    sim.graph.log(
-        "turtletui",
-        INFO,
-        f"scenario {label}: turtle1 starts at x=[{turtle.x:f}], y=[{turtle.y:f}], theta=[{turtle.theta:f}]",
-    )
-
-
 def run_scenario(
     plan: GradingPlan,
     run: ScenarioRun,
@@ -323,7 +295,12 @@ def run_scenario(
     recorder: list[Any] = []
     start_logs: list[LogRecord] = []
 
-    def setup(sim: Simulation) -> None:
+    steps = [Step("turtletui.grading.scenario_steps:place_turtle", (tuple(start), run.label))]
+    if scenario.drive is not None:
+        steps.append(Step("turtletui.grading.scenario_steps:ScenarioDriver", (tuple(scenario.drive),)))
+
+    def observe(sim: Simulation) -> None:
+        # the sandboxed child's copy redoes the steps; what observes stays here
         if record is not None:
             header = {
                 "lesson": plan.lesson.id,
@@ -335,14 +312,14 @@ def run_scenario(
                 "ros_args": list(scenario.ros_args),
             }
             recorder.append(open_recorder(sim, record, start_logs, header, buffered=True))
-        place_turtle(sim, start, run.label)
-        driver = ScenarioDriver(sim, scenario.drive) if scenario.drive is not None else None
+        driver = setup.results[1] if scenario.drive is not None else None
         collector.append(
             TraceCollector(
                 sim, scenario=run.label, seed=run.seed, duration=duration, scripted=driver and driver.msg
             )
         )
 
+    setup = ReplicableSetup(steps, observe)
     try:
         result = run_controllers(
             controllers,

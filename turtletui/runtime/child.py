@@ -8,8 +8,11 @@ nothing ready, the child sends the parent a Report of what its nodes did
 (declarations, messages, calls, logs: queued by the graph's outbox,
 turtletui.runtime.outbox) and blocks until the parent answers with a Tick,
 the new time and what arrived for it (turtletui.runtime.protocol). The
-parent's simulation never trusts anything else.
-This module must not import numpy or Textual: start-up time counts.
+parent's simulation never trusts anything else. On the fast path
+(turtletui.runtime.fastpath) the child's own copy of the simulation answers
+instead, and the parent replays what the controller did.
+This module must not import numpy or Textual: start-up time counts (the fast
+path's copy of the simulation imports numpy when it is taken).
 """
 
 from __future__ import annotations
@@ -77,8 +80,7 @@ class ChildHost(CallbackTracking):
 
     def exchange(self, wake_ns: int | None) -> None:
         """Report to the parent and wait for the next instant it gives us."""
-        wire.write_frame(self.fd_out, protocol.encode_report(self.outbox.report(wake_ns)))
-        tick = protocol.decode_from_parent(self.reader.read_frame())
+        tick = self.ask(self.outbox.report(wake_ns))
         if type(tick) is protocol.End:
             self.running = False
             return
@@ -90,6 +92,12 @@ class ChildHost(CallbackTracking):
             pass
         graph.now_ns = now
         self.outbox.apply(tick)
+
+    def ask(self, report: protocol.Report) -> protocol.Tick | protocol.End:
+        """Send ``report`` and wait for the parent's answer (on the fast path,
+        turtletui.runtime.fastpath.Loopback answers instead)."""
+        wire.write_frame(self.fd_out, protocol.encode_report(report))
+        return protocol.decode_from_parent(self.reader.read_frame())
 
     def spin_once(self, timeout_ns: int | None) -> bool:
         ready = self.graph.ready
@@ -230,6 +238,11 @@ def main(config: dict[str, Any] | None = None) -> None:
     outbox = ParentOutbox(graph) if log_lines is None else ParentOutbox(graph, log_budget=int(log_lines) + 1)
     outbox.install()
     host = ChildHost(graph, outbox, fd_in, fd_out, spin_seconds=config.get("spin_seconds", 0.0))
+    loopback = None
+    if config.get("fast") is not None:
+        from turtletui.runtime.fastpath import start_loopback
+
+        loopback = start_loopback(host, config)
     compat_context.reset_default_context()
     compat_context.bind_host(host)
     scheduler.install(host.scheduler)
@@ -282,7 +295,11 @@ def main(config: dict[str, Any] | None = None) -> None:
     try:
         sys.stdout.flush()
         sys.stderr.flush()
-        wire.write_frame(fd_out, protocol.encode_report(outbox.report(None, done=True, crash=crash)))
+        last = outbox.report(None, done=True, crash=crash)
+        if loopback is not None:
+            loopback.finish(last)
+        else:
+            wire.write_frame(fd_out, protocol.encode_report(last))
     except (OSError, wire.WireError):
         pass
     except Exception:  # noqa: BLE001 - the report itself failed; say so on stderr

@@ -71,20 +71,20 @@ def serve(sock_fd: int, parent: int) -> None:
     import turtletui.runtime.loader  # noqa: F401
     import turtletui.runtime.scheduler  # noqa: F401
     import turtletui.runtime.virtual_time  # noqa: F401
-    from turtletui.runtime import child
+    from turtletui.runtime import child, fastpath  # noqa: F401  (its copy of the simulation: numpy)
 
     _prctl(_PR_SET_DUMPABLE, 0)  # the runs (same user) cannot trace or read it
     sock = socket.socket(fileno=sock_fd)
     while True:
         try:
-            data, fds, _, _ = socket.recv_fds(sock, 1 << 20, 3)
+            data, fds, _, _ = socket.recv_fds(sock, 1 << 20, 4)
         except OSError:
             return
         if not data:
             return  # the caller went away
         try:
             request = json.loads(data)
-            pid = _fork(request, fds, sock, child.main) if len(fds) == 3 else 0
+            pid = _fork(request, fds, sock, child.main) if len(fds) in (3, 4) else 0
         except (OSError, ValueError):
             pid = 0
         finally:
@@ -125,7 +125,7 @@ def _run(request: dict[str, Any], fds: list[int], sock: socket.socket, main: Any
         sock.close()
         os.setsid()
         _prctl(_PR_SET_DUMPABLE, 1)  # an ordinary process again, as if freshly started
-        fd_in, fd_out, output = fds
+        fd_in, fd_out, output, *journal = fds
         devnull = os.open(os.devnull, os.O_RDONLY)
         os.dup2(devnull, 0)
         os.dup2(output, 1)
@@ -136,6 +136,8 @@ def _run(request: dict[str, Any], fds: list[int], sock: socket.socket, main: Any
         if request.get("cwd"):
             os.chdir(request["cwd"])
         config = dict(request["config"], fd_in=fd_in, fd_out=fd_out)
+        if journal:
+            config["fd_journal"] = journal[0]  # the fast path's (turtletui.runtime.fastpath)
         sys.argv = ["-c", json.dumps(config)]
         main(config)
         code = 0
@@ -203,15 +205,16 @@ class ForkServer:
             theirs.close()
         self.sock = mine
 
-    def spawn(self, config: dict[str, Any], cwd: str | None, fds: tuple[int, int], timeout: float) -> ForkedChild | None:
-        """Fork a run child reading ``fds[0]`` and answering on ``fds[1]``; its
-        output comes from the returned child's ``stdout``. None if the server
+    def spawn(self, config: dict[str, Any], cwd: str | None, fds: tuple[int, ...], timeout: float) -> ForkedChild | None:
+        """Fork a run child reading ``fds[0]`` and answering on ``fds[1]`` (and
+        keeping its journal in ``fds[2]``, on the fast path); its output comes
+        from the returned child's ``stdout``. None if the server
         did not answer with a child of this process within ``timeout``."""
         output_r, output_w = os.pipe()
         try:
             payload = json.dumps({"config": config, "cwd": cwd}).encode()
             self.sock.settimeout(timeout)
-            socket.send_fds(self.sock, [payload], [*fds, output_w])
+            socket.send_fds(self.sock, [payload], [*fds[:2], output_w, *fds[2:]])
             answer = self.sock.recv(64)
             pid = int(answer) if answer else 0
         except (OSError, ValueError):
@@ -257,7 +260,7 @@ class ForkServers:
 
     def spawn(
         self, key: tuple[Any, ...], start: Callable[[], ForkServer], config: dict[str, Any], cwd: str | None,
-        fds: tuple[int, int], timeout: float,
+        fds: tuple[int, ...], timeout: float,
     ) -> tuple[ForkedChild, ForkServer] | None:
         """A run child forked by ``key``'s server (started with ``start()`` if
         needed), and that server; None if the run must start the usual way: a

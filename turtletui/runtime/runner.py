@@ -55,10 +55,13 @@ def run_controllers(
     ros_args: list[str],
     seed: int,
     limits: Any = None,
+    recipe: Any = None,
 ) -> Outcome:
     """Start the sandboxed controllers, let the in-process one (if any) drive
     through its own main(), then run the simulation to ``end_ns``. Every child
-    process is closed, whatever happens."""
+    process is closed, whatever happens. With ``recipe``
+    (turtletui.runtime.replica.recipe_for) the one sandboxed controller takes
+    the fast path."""
     inprocess = [s for s in specs if s.trusted]
     if len(inprocess) > 1:
         raise ControllerError("only one controller can run in-process at a time; run the others sandboxed")
@@ -70,8 +73,14 @@ def run_controllers(
             if sandboxed:
                 from turtletui.runtime.sandbox import SandboxHost
 
-                for spec in sandboxed:
-                    hosts.append(SandboxHost.start(sim, spec, ros_args=ros_args, seed=seed, limits=limits))
+                if recipe is not None:
+                    from turtletui.runtime.fastpath import FastHost
+
+                    (spec,) = sandboxed
+                    hosts.append(FastHost.start(sim, spec, ros_args=ros_args, seed=seed, limits=limits, recipe=recipe))
+                else:
+                    for spec in sandboxed:
+                        hosts.append(SandboxHost.start(sim, spec, ros_args=ros_args, seed=seed, limits=limits))
             for spec in inprocess:
                 from turtletui.runtime.inprocess import run_in_process
 

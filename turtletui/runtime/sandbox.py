@@ -65,6 +65,9 @@ class Limits:
     """Wall seconds the simulator and the controller poll for each other's
     answer before sleeping in the kernel; None: the machine's default
     (turtletui.runtime.wire.default_spin_seconds). 0 when runs share the CPUs."""
+    lockstep: bool = False
+    """Keep the lockstep path even for a run that could take the fast one
+    (turtletui.runtime.fastpath): for tests and benchmarks that compare them."""
     run_as: tuple[int, int] | None = None
     """(uid, gid) the child runs as, with no supplementary groups: a grader
     running as root drops the student's code to an unprivileged user."""
@@ -107,12 +110,20 @@ class SandboxHost:
     # -- life cycle -----------------------------------------------------------
     @classmethod
     def start(
-        cls, sim: Simulation, spec: ControllerSpec, *, ros_args: list[str], seed: int, limits: Limits | None = None
+        cls,
+        sim: Simulation,
+        spec: ControllerSpec,
+        *,
+        ros_args: list[str],
+        seed: int,
+        limits: Limits | None = None,
+        **extra: Any,
     ) -> SandboxHost:
-        """Check the file, start the child and let it load the controller."""
+        """Check the file, start the child and let it load the controller.
+        ``extra`` goes to the constructor (a subclass's own arguments)."""
         if spec.path is not None:
             check_source(spec.path)
-        host = cls(sim, spec, limits or Limits())
+        host = cls(sim, spec, limits or Limits(), **extra)
         host.process.spawn(host._config(ros_args, seed))
         sim.remotes.append(host)
         try:
@@ -307,16 +318,23 @@ class SandboxHost:
         except ChildFailed as failed:
             self._fail(failed.kind, failed.message)
             raise _Stop from None
+        report = self._decode(payload)
+        if not first:
+            self._apply(report)
+
+    def _decode(self, payload: bytes) -> protocol.Report:
+        """The Report in ``payload``; raises _Stop (having said why) if it is none."""
         try:
-            report = protocol.decode_report(payload)
+            return protocol.decode_report(payload)
         except protocol.ProtocolError as err:
             self._fail("exception", f"{_REFUSED}: {err}")
             raise _Stop from None
         except wire.WireError as err:
             self._fail("exception", str(err))
             raise _Stop from None
-        if first:
-            return
+
+    def _apply(self, report: protocol.Report) -> None:
+        """Apply one Report of the child; raises _Stop as :meth:`_receive`."""
         try:
             self.proxy.apply(report)
         except (InterfaceError, GraphError, protocol.ProtocolError) as err:

@@ -82,6 +82,15 @@ class ChildProcess:
         self._stdout = -1
         self._stdout_open = True
         self._stdout_poll = select.poll()
+        self._held: bytearray | None = None
+        """Fast path: output read but not yet shown (:meth:`hold_output`)."""
+        self._fed = 0
+        """Fast path: bytes of output shown or dropped so far."""
+        self.max_frame = wire.MAX_REPLY_BYTES
+        """The largest frame the child may send."""
+        self.journal_fd: int | None = None
+        """Fast path: the shared memory the child also writes its answers to
+        (turtletui.runtime.fastpath), given to the child at its start."""
         self._output = OutputBudget(
             self._show_output,
             max_bytes=limits.output_bytes,
@@ -101,10 +110,15 @@ class ChildProcess:
         from_child_r, from_child_w = os.pipe()
         config = {**config, "fd_in": to_child_r, "fd_out": from_child_w, "spin_seconds": self._spin}
         cwd = str(self.spec.path.resolve().parent) if self.spec.path else None
-        fds = (to_child_r, from_child_w)
+        fds: tuple[int, ...] = (to_child_r, from_child_w)
+        if self.journal_fd is not None:
+            fds += (self.journal_fd,)
+            config["fd_journal"] = self.journal_fd
         self.proc = self._fork(config, cwd, fds) or self._exec(config, cwd, fds)
         os.close(to_child_r)
         os.close(from_child_w)
+        if self.journal_fd is not None:
+            _widen(from_child_r)  # the fast path streams: the child need not wait for each read
         self._to_child = to_child_w
         # A child that stopped reading (it forged an answer, then hung) must not
         # block the parent on a full pipe: writes wait up to the step timeout.
@@ -112,7 +126,7 @@ class ChildProcess:
         self._answers = wire.FrameReader(
             from_child_r,
             spin=self._spin,  # polled briefly, then select (wire.spin_read)
-            max_size=wire.MAX_REPLY_BYTES,
+            max_size=self.max_frame,
             wait=self._wait_for_answer,
             # What the child printed before answering is logged before the answer.
             on_data=self.drain_output,
@@ -122,7 +136,7 @@ class ChildProcess:
         # asked every exchange whether there is output: cheaper than a read that fails
         self._stdout_poll.register(self._stdout, select.POLLIN)
 
-    def _exec(self, config: dict[str, Any], cwd: str | None, fds: tuple[int, int]) -> subprocess.Popen:
+    def _exec(self, config: dict[str, Any], cwd: str | None, fds: tuple[int, ...]) -> subprocess.Popen:
         """Start a fresh interpreter for the child."""
         # Inherited by whatever the controller starts: found and killed at the end
         # even if it left the child's session and lost its parent.
@@ -139,7 +153,7 @@ class ChildProcess:
             **self._credentials(),
         )
 
-    def _fork(self, config: dict[str, Any], cwd: str | None, fds: tuple[int, int]) -> Any:
+    def _fork(self, config: dict[str, Any], cwd: str | None, fds: tuple[int, ...]) -> Any:
         """Fork the child from this submission's fork server, if this process
         uses them (grading workers); None to start it the usual way."""
         servers = forkserver.servers()
@@ -254,10 +268,27 @@ class ChildProcess:
     # -- output ---------------------------------------------------------------------------------
     def drain_output(self, final: bool = False) -> None:
         """Show what the child printed (within its budget), without waiting."""
+        data = self._read_output(final)
+        held = self._held
+        if held is not None:
+            held += data or b""
+            if not final and not self._output.over and len(held) <= self.limits.output_bytes:
+                return  # shown when the step it was printed in is replayed
+            # the end, or over its budget anyway: when it is shown no longer matters
+            data = bytes(held)
+            self._fed += len(held)
+            held.clear()
+            self._feed(data, final or not self._stdout_open)
+        elif data is not None:
+            self._feed(data, final or not self._stdout_open)
+
+    def _read_output(self, final: bool) -> bytes | None:
+        """What the child printed since the last read; None if the pipe was closed
+        before or had nothing."""
         if self.proc is None or self.proc.stdout is None or not self._stdout_open:
-            return
+            return None
         if not final and not self._stdout_poll.poll(0):
-            return  # nothing printed (POLLHUP when closed counts as something)
+            return None  # nothing printed (POLLHUP when closed counts as something)
         chunks = []
         read = 0
         try:
@@ -270,8 +301,32 @@ class ChildProcess:
                 chunks.append(data)
         except (BlockingIOError, OSError, ValueError):
             pass
+        return b"".join(chunks)
+
+    def hold_output(self) -> None:
+        """Fast path: keep what the child prints until :meth:`show_output_until`
+        says in which step it printed it."""
+        self._held = bytearray()
+
+    def show_output_until(self, total: int) -> None:
+        """Show what the child had printed, counted from its start, by the
+        step that counted ``total`` bytes; the rest waits for its own step."""
+        held = self._held
+        assert held is not None
+        if total <= self._fed:
+            return  # nothing printed since: not even a look at the pipe
+        if len(held) < total - self._fed:
+            self.drain_output()
+        take = min(total - self._fed, len(held))
+        if take > 0:
+            chunk = bytes(held[:take])
+            del held[:take]
+            self._fed += take
+            self._feed(chunk, False)
+
+    def _feed(self, data: bytes, final: bool) -> None:
         # past the budget the output is still read (so the child never blocks), then dropped
-        if self._output.feed(b"".join(chunks), final=final or not self._stdout_open):
+        if self._output.feed(data, final=final):
             self._log(
                 "turtletui",
                 WARN,
@@ -315,6 +370,16 @@ class ChildProcess:
         if proc.stdout:
             proc.stdout.close()
         self.proc = None
+
+
+def _widen(fd: int, size: int = 1 << 20) -> None:
+    """Let the pipe ``fd`` hold ``size`` bytes (Linux; as much as allowed)."""
+    try:
+        import fcntl
+
+        fcntl.fcntl(fd, getattr(fcntl, "F_SETPIPE_SZ", 1031), size)
+    except (OSError, ImportError):
+        pass
 
 
 def _new_token() -> str:

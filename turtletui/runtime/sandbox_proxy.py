@@ -77,6 +77,12 @@ class GraphProxy:
         self.log_bytes = log_bytes
         self.running = True
         """False once the child is gone: ``ros2 param set`` on its nodes is refused."""
+        self.values: Callable[[Any], Any] = to_values
+        """A delivered message's values for the child (a replay, whose Ticks
+        nobody reads, may skip them)."""
+        self.build: Callable[[Any, list], Any] = from_values
+        """Builds a published message from the child's values, checking every one
+        (a copy of the simulation in the child itself may trust its own)."""
         self._logs_kept = 0
         self._log_bytes_kept = 0
         self._logs_dropped_here = 0
@@ -165,7 +171,7 @@ class GraphProxy:
             topic = topics.get(name)
             if topic is None:
                 raise GraphError(f"published on undeclared topic {name}")
-            graph.publish(topic, from_values(topic.msg_type, values), source=owner)
+            graph.publish(topic, self.build(topic.msg_type, values), source=owner)
         for call_id, name, values in report.calls:
             service = graph.services.get(name)
             if service is None:
@@ -301,7 +307,7 @@ class GraphProxy:
             self.pace.subscriptions[wire_id] = (_label(change.label), change.topic[:200])
 
             def forward(msg: Any, wire_id: int = wire_id) -> None:
-                self._deliveries.append(Delivery(wire_id, to_values(msg)))
+                self._deliveries.append(Delivery(wire_id, self.values(msg)))
 
             self._endpoints[wire_id] = graph.add_subscription(
                 node, change.topic, get_interface(change.type_name), change.depth, forward, qos=change.qos

@@ -83,6 +83,18 @@ class PenCanvas:
         self._changes: deque[tuple[int, tuple[int, int, int, int]]] = deque(maxlen=_CHANGES_KEPT)
         self.clear(background)
 
+    def __getstate__(self) -> dict:
+        # the views share the packed array's memory: rebuilt, not copied
+        state = self.__dict__.copy()
+        del state["_flat"], state["_rgb"]
+        return state
+
+    def __setstate__(self, state: dict) -> None:
+        self.__dict__.update(state)
+        self._flat = memoryview(self._packed).cast("B").cast("I")
+        self._rgb = self._packed.view(np.uint8).reshape(PIXELS, PIXELS, 4)[:, :, :3]
+        self._rgb.flags.writeable = False
+
     @property
     def packed(self) -> np.ndarray:
         """The image as (500, 500) little-endian uint32 (r | g << 8 | b << 16). Read only."""

@@ -1,0 +1,385 @@
+"""The fast path of a sandboxed run (turtletui.runtime.fastpath): the child
+runs the controller against its own copy of the simulation and the parent
+replays what it did. It must give exactly what lockstep gives (and what the
+in-process host gives), and a controller that tampers with its copy must
+gain nothing: its run is reported as tampered.
+"""
+
+from __future__ import annotations
+
+import textwrap
+from dataclasses import replace
+from pathlib import Path
+
+import pytest
+
+from turtletui.api import RunResult, run
+from turtletui.graph.logs import OUTPUT_SUFFIX
+from turtletui.runtime import fastpath
+from turtletui.runtime.sandbox import Limits
+
+REFERENCE = Path(__file__).resolve().parents[2] / "plugins" / "reference"
+
+
+@pytest.fixture
+def fast_runs(monkeypatch: pytest.MonkeyPatch) -> list[str]:
+    """The labels of the controllers that took the fast path in this test."""
+    taken: list[str] = []
+    start = fastpath.FastHost.start.__func__  # type: ignore[attr-defined]
+
+    def counted(cls, sim, spec, **kwargs):  # noqa: ANN001, ANN202
+        taken.append(spec.label)
+        return start(cls, sim, spec, **kwargs)
+
+    monkeypatch.setattr(fastpath.FastHost, "start", classmethod(counted))
+    return taken
+
+
+def write(tmp_path: Path, source: str, name: str = "controller.py") -> Path:
+    path = tmp_path / name
+    path.write_text(textwrap.dedent(source).lstrip(), encoding="utf-8")
+    return path
+
+
+def both_paths(path: Path, fast_runs: list[str], **options) -> tuple[RunResult, RunResult]:
+    """The run on the fast path and in lockstep (asserting which is which)."""
+    fast = run([path], keep_poses=True, **options)
+    assert fast_runs, "the run did not take the fast path"
+    taken = len(fast_runs)
+    limits = replace(options.pop("limits", None) or Limits(), lockstep=True)
+    lockstep = run([path], keep_poses=True, limits=limits, **options)
+    assert len(fast_runs) == taken, "Limits(lockstep=True) took the fast path"
+    return fast, lockstep
+
+
+def logs(result: RunResult, *, printed: bool = True) -> list[tuple]:
+    return [(r.t, r.node, r.level, r.msg) for r in result.logs if printed or not r.node.endswith(OUTPUT_SUFFIX)]
+
+
+def assert_same(fast: RunResult, other: RunResult, *, printed: bool = True) -> None:
+    assert fast.poses == other.poses
+    assert fast.service_calls == other.service_calls
+    assert [c.details() for c in fast.crashes] == [c.details() for c in other.crashes]
+    assert logs(fast, printed=printed) == logs(other, printed=printed)
+    assert fast.sim_time == other.sim_time
+
+
+# -- the same run, whichever path ------------------------------------------------------------------
+@pytest.mark.parametrize("reference", sorted(p.name for p in REFERENCE.glob("*.py") if p.name != "__init__.py"))
+def test_reference_controllers_run_the_same_on_both_paths_and_in_process(reference, fast_runs):
+    path = REFERENCE / reference
+    fast, lockstep = both_paths(path, fast_runs, duration=12.0)
+    assert_same(fast, lockstep)
+    in_process = run([path], duration=12.0, keep_poses=True, sandbox=False)
+    assert fast.poses == in_process.poses
+    assert fast.service_calls == in_process.service_calls
+
+
+EVERYTHING = """
+import math
+import rclpy
+from rclpy.action import ActionClient
+from rclpy.node import Node
+from geometry_msgs.msg import Twist
+from turtlesim.msg import Pose
+from turtlesim.srv import Spawn, SetPen, TeleportAbsolute
+from turtlesim.action import RotateAbsolute
+
+
+class Everything(Node):
+    def __init__(self):
+        super().__init__("everything")
+        self.declare_parameter("speed", 1.0)
+        self.speed = self.get_parameter("speed").value
+        self.cmd = self.create_publisher(Twist, "/turtle1/cmd_vel", 10)
+        # published before anyone has discovered it: lost, as in ROS
+        first = Twist()
+        first.linear.x = 9.0
+        self.cmd.publish(first)
+        self.create_subscription(Pose, "/turtle1/pose", self.on_pose, 10)
+        self.spawn = self.create_client(Spawn, "/spawn")
+        self.pen = self.create_client(SetPen, "/turtle1/set_pen")
+        self.teleport = self.create_client(TeleportAbsolute, "/turtle1/teleport_absolute")
+        self.rotate = ActionClient(self, RotateAbsolute, "/turtle1/rotate_absolute")
+        self.ticks = 0
+        self.create_timer(0.05, self.tick)
+
+    def on_pose(self, pose):
+        self.pose = pose
+
+    def tick(self):
+        self.ticks += 1
+        if self.ticks == 5:
+            self.spawn.call_async(Spawn.Request(x=2.0, y=3.0, theta=0.5, name="second"))
+            self.pen.call_async(SetPen.Request(r=255, g=0, b=0, width=4, off=0))
+        if self.ticks == 20:
+            future = self.teleport.call_async(TeleportAbsolute.Request(x=3.0, y=8.0, theta=1.0))
+            future.add_done_callback(lambda f: self.get_logger().info("teleported"))
+        if self.ticks == 30:
+            self.rotate.wait_for_server(timeout_sec=1.0)
+            goal = self.rotate.send_goal_async(RotateAbsolute.Goal(theta=-math.pi / 2), feedback_callback=self.feedback)
+            goal.add_done_callback(self.accepted)
+        if 30 <= self.ticks < 60:
+            return
+        cmd = Twist()
+        cmd.linear.x = self.speed
+        cmd.angular.z = 0.4
+        self.cmd.publish(cmd)
+        if self.ticks % 10 == 0:
+            print(f"tick {self.ticks} x={getattr(self, 'pose', Pose()).x:.4f}", flush=True)
+
+    def feedback(self, msg):
+        self.remaining = msg.feedback.remaining
+
+    def accepted(self, future):
+        self.get_logger().info(f"goal accepted: {future.result().accepted}")
+        future.result().get_result_async().add_done_callback(
+            lambda f: self.get_logger().info(f"rotated, delta {f.result().result.delta:.5f}")
+        )
+
+
+def main():
+    rclpy.init()
+    rclpy.spin(Everything())
+"""
+
+
+def test_timers_services_actions_parameters_and_discovery_are_the_same(tmp_path, fast_runs):
+    path = write(tmp_path, EVERYTHING)
+    options = {"duration": 6.0, "ros_args": ["-p", "speed:=1.5"]}
+    fast, lockstep = both_paths(path, fast_runs, **options)
+    assert fast.ok, fast.crashes
+    assert {"/spawn", "/turtle1/set_pen", "/turtle1/teleport_absolute"} <= {c[1] for c in fast.service_calls}
+    assert any("rotated, delta" in r.msg for r in fast.logs)
+    assert sum("tick" in r.msg for r in fast.logs) >= 5
+    assert_same(fast, lockstep)
+    in_process = run([path], keep_poses=True, sandbox=False, **options)
+    assert_same(fast, in_process, printed=False)
+
+
+def test_the_same_seed_gives_the_same_run_twice(tmp_path, fast_runs):
+    path = write(tmp_path, EVERYTHING.replace("self.speed = self.get_parameter", "import random\n        self.speed = random.random() + 0 * self.get_parameter"))
+    first = run([path], duration=4.0, keep_poses=True, seed=3)
+    again = run([path], duration=4.0, keep_poses=True, seed=3)
+    other = run([path], duration=4.0, keep_poses=True, seed=4)
+    assert len(fast_runs) == 3
+    assert_same(first, again)
+    assert first.poses != other.poses
+
+
+MULTI_THREADED = """
+import threading
+import rclpy
+from rclpy.callback_groups import ReentrantCallbackGroup
+from rclpy.executors import MultiThreadedExecutor
+from rclpy.node import Node
+from geometry_msgs.msg import Twist
+from turtlesim.srv import Spawn
+
+
+class Threads(Node):
+    def __init__(self):
+        super().__init__("threads")
+        group = ReentrantCallbackGroup()
+        self.cmd = self.create_publisher(Twist, "/turtle1/cmd_vel", 10)
+        self.spawn = self.create_client(Spawn, "/spawn", callback_group=group)
+        self.create_timer(0.1, self.drive, callback_group=group)
+        self.create_timer(0.5, self.call, callback_group=group)
+        self.n = 0
+
+    def drive(self):
+        cmd = Twist()
+        cmd.linear.x = 1.0
+        cmd.angular.z = 0.5 if self.n % 2 else -0.5
+        self.cmd.publish(cmd)
+
+    def call(self):
+        self.n += 1
+        response = self.spawn.call(Spawn.Request(x=1.0 + self.n, y=2.0, theta=0.0, name=""))
+        self.get_logger().info(f"spawned {response.name} on {threading.current_thread().name != ''}")
+
+
+def main():
+    rclpy.init()
+    executor = MultiThreadedExecutor(num_threads=3)
+    executor.add_node(Threads())
+    executor.spin()
+"""
+
+
+def test_a_multi_threaded_executor_is_the_same_on_both_paths(tmp_path, fast_runs):
+    fast, lockstep = both_paths(write(tmp_path, MULTI_THREADED), fast_runs, duration=3.0)
+    assert fast.ok, fast.crashes
+    assert sum("spawned" in r.msg for r in fast.logs) >= 4
+    assert_same(fast, lockstep)
+
+
+@pytest.mark.parametrize(
+    "misbehaviour, kind",
+    [
+        ("raise ValueError('boom')", "exception"),
+        ("os._exit(3)", "exit"),
+        ("sys.exit(2)", "exit"),
+        ("while True: pass", "timeout"),
+        ("print('x' * 200, flush=True)", None),
+    ],
+)
+def test_a_failing_controller_fails_at_the_same_instant_on_both_paths(tmp_path, fast_runs, misbehaviour, kind):
+    path = write(
+        tmp_path,
+        """
+        import os, sys
+        import rclpy
+        from rclpy.node import Node
+        from geometry_msgs.msg import Twist
+
+
+        class Failing(Node):
+            def __init__(self):
+                super().__init__("failing")
+                self.cmd = self.create_publisher(Twist, "/turtle1/cmd_vel", 10)
+                self.create_timer(0.016, self.tick)
+                self.n = 0
+
+            def tick(self):
+                self.n += 1
+                cmd = Twist()
+                cmd.linear.x = 1.0
+                self.cmd.publish(cmd)
+                if self.n % 7 == 0:
+                    print("tick", self.n)
+                if self.n == 40:
+                    MISBEHAVE
+
+
+        def main():
+            rclpy.init()
+            rclpy.spin(Failing())
+        """.replace("MISBEHAVE", misbehaviour),
+    )
+    fast, lockstep = both_paths(path, fast_runs, duration=1.5, limits=Limits(step_timeout=0.5))
+    assert [c.kind for c in fast.crashes] == ([kind] if kind else [])
+    assert_same(fast, lockstep)
+
+
+# -- tampering --------------------------------------------------------------------------------------
+TAMPER = """
+import gc
+import rclpy
+from rclpy.node import Node
+from geometry_msgs.msg import Twist
+
+
+class Tamper(Node):
+    def __init__(self):
+        super().__init__("tamper")
+        self.cmd = self.create_publisher(Twist, "/turtle1/cmd_vel", 10)
+        self.create_timer(0.05, self.tick)
+        self.n = 0
+
+    def tick(self):
+        self.n += 1
+        cmd = Twist()
+        cmd.linear.x = 2.0
+        self.cmd.publish(cmd)
+        if self.n == 10:
+            TAMPER
+
+
+def main():
+    rclpy.init()
+    rclpy.spin(Tamper())
+"""
+
+TAMPERINGS = {
+    # its copy's turtle teleported through the world object
+    "world": """[w for w in gc.get_objects() if type(w).__name__ == "World"][0].place("turtle1", 1.0, 1.0, 0.0)""",
+    # turtlesim's physics patched in the child: its copy's turtle stops
+    "physics": """__import__("turtletui.sim.world").sim.world.World.step = lambda self, *a, **k: False""",
+    # a made-up batch on the pipe
+    "pipe": """__import__("os").write(__import__("turtletui.compat.context").compat.context.current_host().fd_out, b"\\0\\0\\0\\x04junk")""",
+}
+
+
+@pytest.mark.parametrize("how", sorted(TAMPERINGS))
+def test_tampering_with_the_childs_copy_is_reported_and_changes_nothing_measured(tmp_path, fast_runs, how):
+    path = write(tmp_path, TAMPER.replace("TAMPER\n", TAMPERINGS[how] + "\n").replace("            TAMPER", "            " + TAMPERINGS[how]))
+    result = run([path], duration=3.0, keep_poses=True)
+    assert fast_runs
+    assert [c.kind for c in result.crashes] == ["tampered"], result.crashes
+    crash = result.crashes[0]
+    assert "tampered with the simulator" in crash.message
+    assert crash.t <= 2.0  # a made-up batch may come before the answers it overtook
+    # the trusted simulation never saw the teleport: the turtle only drove east
+    poses = result.poses["turtle1"]
+    assert all(abs(y - poses[0][2]) < 1e-9 for _, _, y, _ in poses)
+    assert not any(x == 1.0 for _, x, _, _ in poses)
+
+
+GRADED = """+++
+id = "fast-drive"
+title = "Drive a metre while a scripted drive turns the turtle"
+
+[[scenarios]]
+name = "centre"
+start = {x = 3.0, y = 5.5, theta = 0.0}
+duration = 3.0
+drive = {linear = 0.0, angular = 0.2}
+
+[[checks]]
+name = "distance"
+weight = 1.0
+thresholds = {min = 1.0}
+
+[[checks]]
+name = "no_crash"
+weight = 1.0
++++
+# Drive
+"""
+
+
+def test_a_submission_that_tampers_with_its_copy_scores_nothing_and_an_honest_one_is_unchanged(tmp_path, fast_runs):
+    from support.grading import make_class
+
+    from turtletui.grading.batch import grade_submissions
+    from turtletui.grading.engine import prepare
+    from turtletui.grading.submissions import find_submissions
+    from turtletui.lessons.loader import load_lesson
+
+    lesson = tmp_path / "drive.md"
+    lesson.write_text(GRADED)
+    plan = prepare(load_lesson(lesson))
+    honest = TAMPER.replace("            TAMPER\n", "            pass\n")
+    cheat = TAMPER.replace("TAMPER", TAMPERINGS["world"])
+    klass = make_class(tmp_path / "class", {"honest": honest, "cheat": cheat})
+    fast = {s.student: s for s in grade_submissions(plan, find_submissions([klass]), jobs=1).submissions}
+    assert fast_runs
+    taken = len(fast_runs)
+    lockstep = grade_submissions(plan, find_submissions([klass / "honest"]), jobs=1, limits=Limits(lockstep=True))
+    assert len(fast_runs) == taken
+    assert fast["honest"].score == lockstep.submissions[0].score == 2.0
+    assert [(t.name, t.status, t.output) for t in fast["honest"].tests] == [
+        (t.name, t.status, t.output) for t in lockstep.submissions[0].tests
+    ]
+    assert fast["cheat"].score == 0.0
+    assert "tampered" in "\n".join(t.output for t in fast["cheat"].tests)
+
+
+def test_a_set_up_the_child_cannot_redo_keeps_the_lockstep_path(tmp_path, fast_runs):
+    from turtletui.runtime.replica import ReplicableSetup
+
+    path = write(tmp_path, TAMPER.replace("            TAMPER\n", "            pass\n"))
+
+    def spawn_a_turtle(sim):  # noqa: ANN001, ANN202 - a plain set-up: opaque to the child
+        sim.world.place("turtle1", 2.0, 2.0, 0.0)
+
+    def add_a_node(sim):  # noqa: ANN001, ANN202 - an observer that changes the graph
+        sim.graph.add_node("watcher", owner="test")
+
+    for setup in (spawn_a_turtle, ReplicableSetup((), add_a_node)):
+        result = run([path], duration=1.0, keep_poses=True, setup=setup)
+        assert result.ok, result.crashes
+    assert fast_runs == []
+    run([path], duration=1.0, setup=ReplicableSetup((), lambda sim: None))
+    assert len(fast_runs) == 1

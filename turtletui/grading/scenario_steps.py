@@ -1,0 +1,40 @@
+"""The steps that set a scenario's run up (a turtle's start, a scripted drive).
+
+They run in the grader and again in a sandboxed child's own copy of the
+simulation (turtletui.runtime.replica), so this module stays light: the
+child imports it.
+"""
+
+from __future__ import annotations
+
+from turtletui.graph.logs import INFO
+from turtletui.runtime.simulation import Simulation
+
+
+class ScenarioDriver:
+    """Drives turtle1 for a scenario with a ``drive`` (linear, angular): the
+    same Twist every 16 ms, as a person holding a teleop key would, so that a
+    node that only watches sees the turtle move."""
+
+    PERIOD_NS = 16_000_000
+
+    def __init__(self, sim: Simulation, drive: tuple[float, float]) -> None:
+        from turtletui.interfaces.geometry_msgs import Twist, Vector3
+
+        graph = sim.graph
+        node = graph.add_node("scenario_teleop", owner="scenario")
+        self.msg = Twist(linear=Vector3(x=drive[0]), angular=Vector3(z=drive[1]))
+        """The one message it publishes (the trace tells it from the controller's)."""
+        publisher = graph.add_publisher(node, "/turtle1/cmd_vel", Twist, 10)
+        graph.add_timer(node, self.PERIOD_NS, lambda: graph.publish(publisher.topic, self.msg))
+
+
+def place_turtle(sim: Simulation, start: tuple[float, float, float], label: str) -> None:
+    """Put turtle1 at a scenario's start before anything has run (nothing drawn)."""
+    sim.world.place("turtle1", *start)
+    turtle = sim.world.turtles["turtle1"]
+    sim.graph.log(
+        "turtletui",
+        INFO,
+        f"scenario {label}: turtle1 starts at x=[{turtle.x:f}], y=[{turtle.y:f}], theta=[{turtle.theta:f}]",
+    )
