@@ -21,6 +21,8 @@ ROS_PACKAGES = (
     "nav_msgs",
     "example_interfaces",
     "tf2_msgs",
+    "tf2_py",
+    "tf2_ros",
     "visualization_msgs",
     "builtin_interfaces",
     "rcl_interfaces",

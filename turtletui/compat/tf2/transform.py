@@ -55,14 +55,14 @@ def negate(v: Vec) -> Vec:
 
 
 def lerp(a: Vec, b: Vec, ratio: float) -> Vec:
-    return tuple(p + (q - p) * ratio for p, q in zip(a, b))  # type: ignore[return-value]
+    return tuple(p + (q - p) * ratio for p, q in zip(a, b, strict=True))  # type: ignore[return-value]
 
 
 def slerp(a: Quat, b: Quat, ratio: float) -> Quat:
     """Spherical interpolation from ``a`` to ``b`` along the shorter arc
     (tf2's Quaternion::slerp: nearly equal quaternions give ``a``)."""
     magnitude = math.sqrt(sum(p * p for p in a) * sum(q * q for q in b))
-    product = sum(p * q for p, q in zip(a, b)) / magnitude
+    product = sum(p * q for p, q in zip(a, b, strict=True)) / magnitude
     if abs(product) >= 1.0 - sys.float_info.epsilon:  # TF2SIMD_EPSILON for doubles
         return a
     theta = math.acos(abs(product))
@@ -70,7 +70,7 @@ def slerp(a: Quat, b: Quat, ratio: float) -> Quat:
     sign = -1.0 if product < 0 else 1.0
     s0 = math.sin((1.0 - ratio) * theta) / d
     s1 = math.sin(sign * ratio * theta) / d
-    return tuple(p * s0 + q * s1 for p, q in zip(a, b))  # type: ignore[return-value]
+    return tuple(p * s0 + q * s1 for p, q in zip(a, b, strict=True))  # type: ignore[return-value]
 
 
 def compose(outer_t: Vec, outer_q: Quat, inner_t: Vec, inner_q: Quat) -> tuple[Vec, Quat]:

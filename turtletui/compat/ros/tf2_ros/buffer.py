@@ -1,0 +1,1 @@
+from turtletui.compat.tf2.buffer import Buffer  # noqa: F401

@@ -1,0 +1,1 @@
+from turtletui.compat.tf2.broadcasters import StaticTransformBroadcaster  # noqa: F401

@@ -1,0 +1,1 @@
+from turtletui.compat.tf2.broadcasters import TransformBroadcaster  # noqa: F401
