@@ -23,13 +23,17 @@ class FrameListener(Node):
         self.publisher = self.create_publisher(Twist, 'turtle2/cmd_vel', 1)
         self.timer = self.create_timer(1.0, self.on_timer)
 
+    def lookup(self, to_frame_rel, from_frame_rel):
+        # "Using time" and "Traveling in time" change this call (see turtle_tf2_listener_*.py)
+        return self.tf_buffer.lookup_transform(to_frame_rel, from_frame_rel, rclpy.time.Time())
+
     def on_timer(self):
         from_frame_rel = self.target_frame
         to_frame_rel = 'turtle2'
         if self.turtle_spawning_service_ready:
             if self.turtle_spawned:
                 try:
-                    t = self.tf_buffer.lookup_transform(to_frame_rel, from_frame_rel, rclpy.time.Time())
+                    t = self.lookup(to_frame_rel, from_frame_rel)
                 except TransformException as ex:
                     self.get_logger().info(f'Could not transform {to_frame_rel} to {from_frame_rel}: {ex}')
                     return

@@ -1,1 +1,1 @@
-from turtletui.compat.time import Time  # noqa: F401
+from turtletui.compat.time import ClockType, Duration, Time  # noqa: F401  (rclpy.time imports both too)
