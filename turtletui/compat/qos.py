@@ -310,8 +310,9 @@ def depth_of(qos_profile: QoSProfile | int) -> int:
 def _effective(qos_profile: Any) -> tuple[ReliabilityPolicy, DurabilityPolicy]:
     """The reliability and durability an endpoint made with ``qos_profile``
     has (an int depth, None and SYSTEM_DEFAULT mean rmw's default: reliable,
-    volatile)."""
-    if not isinstance(qos_profile, QoSProfile):
+    volatile). Another process's endpoint comes as its policies alone
+    (turtletui.runtime.graph_mirror.QosPolicies)."""
+    if not hasattr(qos_profile, "durability"):
         return ReliabilityPolicy.RELIABLE, DurabilityPolicy.VOLATILE
     reliability, durability = qos_profile.reliability, qos_profile.durability
     if reliability == ReliabilityPolicy.SYSTEM_DEFAULT:
