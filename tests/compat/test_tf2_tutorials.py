@@ -32,6 +32,8 @@ def test_writing_a_listener_turtle2_follows_turtle1():
     assert node_logs(result, "turtle_tf2_frame_listener") == ["Successfully spawned turtle2"]
     assert gap(result, "turtle1", "turtle2") < 0.05
     assert result.turtles["turtle2"].distance > 3.0
+    # every TransformListener subscribes to /tf_static: nothing publishing there is no typo to warn of
+    assert [r.msg for r in result.logs if "/tf" in r.msg] == []
 
 
 def test_adding_a_fixed_frame_turtle2_goes_to_the_carrot():

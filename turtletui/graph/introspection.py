@@ -170,7 +170,8 @@ def dangling_endpoints(graph: Graph, owner_prefix: str = "") -> list[str]:
     live = {name for name, t in graph.topics.items() if t.publishers or t.subscriptions}
     for name, topic in sorted(graph.topics.items()):
         for sub in topic.subscriptions:
-            if sub.owner.startswith(owner_prefix) and sub.owner != "sim" and not topic.publishers:
+            if sub.owner.startswith(owner_prefix) and sub.owner != "sim" and not topic.publishers \
+                    and name not in OPTIONAL_INPUTS:
                 warnings.append(_dangling(sub.node.fqn, "subscribes to", name, "publishes", live))
         for pub in topic.publishers:
             if pub.owner.startswith(owner_prefix) and pub.owner != "sim" and not topic.subscriptions \
@@ -190,6 +191,11 @@ def _dangling(node: str, verb: str, topic: str, other: str, live: set[str]) -> s
     close = _close(topic, live)
     hint = f" (did you mean {' or '.join(close)}?)" if close else ""
     return f"{node} {verb} {topic}, but nothing {other} it{hint}"
+
+
+OPTIONAL_INPUTS = frozenset({"/tf_static"})
+"""Topics a library subscribes to whether or not anything will publish there
+(every tf2_ros TransformListener listens to /tf_static): no sign of a typo."""
 
 
 PLUMBING_TOPICS = (
