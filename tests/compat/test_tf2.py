@@ -221,3 +221,30 @@ def main():
     )
     assert result.ok, result.crashes
     assert node_logs(result, "asker") == ["done at once: False", "future: turtle1 x=5.544", "coroutine: y=-5.544"]
+
+
+def test_a_listener_s_spin_thread_fills_the_buffer_while_the_main_thread_blocks(controller_host):
+    result = controller_host.run(
+        BROADCASTS_BOTH_TURTLES
+        + """
+
+def main():
+    rclpy.init()
+    node = Broadcaster()
+    buffer = Buffer()
+    TransformListener(buffer, node, spin_thread=True)
+    start = node.get_clock().now()
+    t = buffer.lookup_transform('world', 'turtle1', rclpy.time.Time(), timeout=rclpy.duration.Duration(seconds=2.0))
+    waited = (node.get_clock().now() - start).nanoseconds / 1e9
+    node.get_logger().info(f'x={t.transform.translation.x:.3f} after {waited:.3f} s')
+""",
+        duration=3.0,
+        distro="jazzy",
+    )
+    if not controller_host.sandboxed:  # one thread only: said at once, not a lookup that fails later
+        [crash] = result.crashes
+        assert crash.message.startswith("RuntimeError: TransformListener(spin_thread=True) spins its node on a")
+        return
+    assert result.ok, result.crashes
+    [line] = node_logs(result, "broadcaster")
+    assert line.startswith("x=5.544 after 0.0"), line

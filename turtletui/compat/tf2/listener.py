@@ -46,6 +46,11 @@ class TransformListener:
             TFMessage, tf_static_topic, self.static_callback, static_qos, callback_group=self.group
         )
         if spin_thread:
+            if getattr(node.context.host, "scheduler", None) is None:  # the in-process host: one thread
+                raise RuntimeError(
+                    "TransformListener(spin_thread=True) spins its node on a thread of its own, and a controller"
+                    " run in-process can spin on its main thread only; run it sandboxed (without --in-process)"
+                )
             from turtletui.compat.executors import SingleThreadedExecutor
 
             self.executor = SingleThreadedExecutor()
