@@ -94,7 +94,8 @@ def test_static_frames_reach_a_late_listener_and_hold_at_any_time(controller_hos
     result = controller_host.run(
         """
 import rclpy
-from geometry_msgs.msg import TransformStamped
+import tf2_geometry_msgs  # noqa: F401  (registers PointStamped for buffer.transform)
+from geometry_msgs.msg import PointStamped, TransformStamped
 from rclpy.node import Node
 from rclpy.time import Time
 from tf2_ros import Buffer, StaticTransformBroadcaster, TransformListener
@@ -122,6 +123,11 @@ def main():
         t = buffer.lookup_transform('world', 'mystaticturtle', when)
         log(f'z={t.transform.translation.z} stamp={t.header.stamp.sec}')
     log(buffer.all_frames_as_string().strip().replace(chr(10), ' | '))
+    point = PointStamped()
+    point.header.frame_id = 'mystaticturtle'
+    point.point.x = 2.0
+    moved = buffer.transform(point, 'world')
+    log(f'point in {moved.header.frame_id}: {moved.point.x} {moved.point.y} {moved.point.z}')
     listener.unregister()
 """,
         duration=3.0,
@@ -132,6 +138,7 @@ def main():
         "z=1.0 stamp=3",
         "z=1.0 stamp=2000000000",
         "Frame mystaticturtle exists with parent world. | Frame other exists with parent world.",
+        "point in world: 2.0 0.0 1.0",
     ]
 
 

@@ -218,3 +218,30 @@ def test_a_loop_in_the_tree_is_an_error_not_a_hang():
     core.set_transform(stamped("c", "d", 1), "x")
     with pytest.raises(LookupException, match="The tf tree is invalid because it contains a loop."):
         core.lookup_transform_core("d", "a", Time())
+
+
+def test_buffer_transform_moves_stamped_geometry_msgs_into_a_frame(turtles):
+    from turtletui.compat.tf2 import geometry_msgs as tf2_geometry_msgs
+    from turtletui.compat.tf2.buffer import Buffer
+    from turtletui.compat.tf2.buffer_interface import TypeException
+    from turtletui.interfaces.geometry_msgs import Point, PointStamped, PoseStamped, Vector3Stamped
+    from turtletui.interfaces.std_msgs import Header
+
+    buffer = Buffer()
+    buffer.set_transform(stamped("world", "turtle2", 11, x=5, y=5, yaw=math.pi / 2), "a")
+    header = Header(frame_id="world")
+    header.stamp.sec = 11
+    point = buffer.transform(PointStamped(header=header, point=Point(x=2.0, y=2.0)), "turtle2")
+    assert (point.header.frame_id, round(point.point.x, 9), round(point.point.y, 9)) == ("turtle2", -3.0, 3.0)
+    vector = Vector3Stamped(header=header)
+    vector.vector.x = 1.0
+    moved = buffer.transform(vector, "turtle2")  # a direction: rotated, not translated
+    assert (round(moved.vector.x, 9), round(moved.vector.y, 9)) == (0.0, -1.0)
+    pose = PoseStamped(header=header)
+    pose.pose.orientation.w = 1.0
+    turned = buffer.transform(pose, "turtle2").pose
+    assert (round(turned.position.x, 9), round(turned.position.y, 9)) == (-5.0, 5.0)
+    assert 2 * math.atan2(turned.orientation.z, turned.orientation.w) == pytest.approx(-math.pi / 2)
+    assert tf2_geometry_msgs.do_transform_pose(pose.pose, buffer.lookup_transform("turtle2", "world", at(11))) == turned
+    with pytest.raises(TypeException, match="is not loaded or supported"):
+        buffer.transform(header, "turtle2")

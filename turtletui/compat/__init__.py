@@ -22,6 +22,7 @@ ROS_PACKAGES = (
     "example_interfaces",
     "tf2_msgs",
     "tf2_py",
+    "tf2_geometry_msgs",
     "tf2_ros",
     "visualization_msgs",
     "builtin_interfaces",

@@ -27,7 +27,8 @@ class Buffer(BufferCore, BufferInterface):
     also the ``tf2_frames`` service that answers with all_frames_as_yaml()."""
 
     def __init__(self, cache_time: Duration | None = None, node: Any = None) -> None:
-        super().__init__(cache_time)
+        BufferCore.__init__(self, cache_time)
+        BufferInterface.__init__(self)
         self._new_data_callbacks: list[Callable[[], None]] = []
         self._callbacks_to_remove: list[Callable[[], None]] = []
         self._callbacks_lock = threading.RLock()
