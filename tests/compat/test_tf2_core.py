@@ -245,3 +245,13 @@ def test_buffer_transform_moves_stamped_geometry_msgs_into_a_frame(turtles):
     assert tf2_geometry_msgs.do_transform_pose(pose.pose, buffer.lookup_transform("turtle2", "world", at(11))) == turned
     with pytest.raises(TypeException, match="is not loaded or supported"):
         buffer.transform(header, "turtle2")
+
+
+def test_a_timeout_that_is_not_a_duration_and_a_time_that_is_not_a_time_are_named():
+    from turtletui.compat.tf2.buffer import Buffer
+
+    buffer = Buffer()
+    with pytest.raises(TypeError, match=r"timeout must be an rclpy.duration.Duration, got 1.0 \(e.g. timeout="):
+        buffer.lookup_transform("a", "b", Time(), timeout=1.0)
+    with pytest.raises(TypeError, match="time must have sec and nanosec, or nanoseconds."):
+        buffer.lookup_transform("a", "b", 0)

@@ -15,7 +15,7 @@ from typing import Any
 
 from turtletui.compat.executors import threads_that_can_help, wait_inside_callback
 from turtletui.compat.task import Future
-from turtletui.compat.tf2.buffer_core import BufferCore, time_ns
+from turtletui.compat.tf2.buffer_core import BufferCore
 from turtletui.compat.tf2.buffer_interface import BufferInterface
 from turtletui.compat.time import Duration
 from turtletui.interfaces.geometry_msgs import TransformStamped
@@ -111,8 +111,13 @@ class Buffer(BufferCore, BufferInterface):
         return result if return_debug_tuple else result[0]
 
     def _wait(self, ready: Callable[[], bool], timeout: Duration) -> None:
-        timeout_ns = time_ns(timeout)
-        if timeout_ns == 0 or ready():
+        if not hasattr(timeout, "nanoseconds"):
+            raise TypeError(
+                f"timeout must be an rclpy.duration.Duration, got {timeout!r} "
+                "(e.g. timeout=rclpy.duration.Duration(seconds=1.0))"
+            )
+        timeout_ns = timeout.nanoseconds
+        if timeout_ns <= 0 or ready():
             return
         node = self._node
         if node is not None and threads_that_can_help(node):
