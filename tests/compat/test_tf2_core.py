@@ -92,6 +92,8 @@ def test_time_zero_is_the_latest_time_both_chains_have_and_chains_meet_at_the_co
     assert yaw(msg) == pytest.approx(math.pi / 4 - math.pi / 2)
     back = turtles.lookup_transform_core("turtle1", "turtle2", Time())
     assert yaw(back) == pytest.approx(math.pi / 4)
+    down = turtles.lookup_transform_core("turtle1", "world", Time())  # the source is the target's parent
+    assert down.header.stamp.sec == 12 and xyz(down) == (-2.0, 3.0, 0.0)
 
 
 def test_extrapolation_errors_have_tf2s_texts(turtles):

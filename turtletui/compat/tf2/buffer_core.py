@@ -10,6 +10,7 @@ carry that file's texts."""
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from typing import Any
 
 from turtletui.compat.logging import get_logger
@@ -261,48 +262,37 @@ class BufferCore:
         if source == target:
             cache = self._frames.get(source)
             return cache.latest()[0] if cache is not None else 0
-        never = math.inf
-        source_chain: list[tuple[int, str]] = []
-        common: float = never
-        frame = source
+        up = self._chain(source, lambda parent: parent == target)
+        if up is None:
+            return self._loop_error()
+        if up and up[-1][1] == target:
+            return _oldest_latest(up)
+        parents = {parent for _, parent in up}
+        down = self._chain(target, lambda parent: parent in parents or parent == source)
+        if down is None:
+            return self._loop_error()
+        meeting = down[-1][1] if down else None
+        if meeting in parents:
+            to_meeting = next(i for i, (_, parent) in enumerate(up) if parent == meeting)
+            return _oldest_latest(down + up[: to_meeting + 1])
+        if meeting == source:
+            return _oldest_latest(down)
+        return ConnectivityException, _not_connected(target, source)
+
+    def _chain(self, frame: str, last: Callable[[str], bool]) -> list[tuple[int, str]] | None:
+        """(latest stamp, parent) of each link from ``frame`` towards the root, up
+        to the first whose parent is ``last``; None when the links loop."""
+        links = []
         for _ in range(MAX_GRAPH_DEPTH + 1):
             cache = self._frames.get(frame)
             stamp, parent = cache.latest() if cache is not None else (0, None)
             if parent is None:
-                break
-            if stamp:
-                common = min(common, stamp)
-            source_chain.append((stamp, parent))
+                return links
+            links.append((stamp, parent))
+            if last(parent):
+                return links
             frame = parent
-            if frame == target:
-                return 0 if common == never else int(common)
-        else:
-            return self._loop_error()
-        common, meeting = never, None
-        frame = target
-        for _ in range(MAX_GRAPH_DEPTH + 1):
-            cache = self._frames.get(frame)
-            stamp, parent = cache.latest() if cache is not None else (0, None)
-            if parent is None:
-                break
-            if stamp:
-                common = min(common, stamp)
-            if any(p == parent for _, p in source_chain):
-                meeting = parent
-                break
-            frame = parent
-            if frame == source:
-                return 0 if common == never else int(common)
-        else:
-            return self._loop_error()
-        if meeting is None:
-            return ConnectivityException, _not_connected(target, source)
-        for stamp, parent in source_chain:
-            if stamp:
-                common = min(common, stamp)
-            if parent == meeting:
-                break
-        return 0 if common == never else int(common)
+        return None
 
     def _loop_error(self) -> _Failure:
         return LookupException, f"The tf tree is invalid because it contains a loop.\n{self.all_frames_as_string()}\n"
@@ -338,6 +328,11 @@ class BufferCore:
 
     def _get_frame_strings(self) -> list[str]:
         return [name for name, cache in self._frames.items() if cache is not None]
+
+
+def _oldest_latest(links: list[tuple[int, str]]) -> int:
+    """The oldest of the links' latest stamps (static links, stamp 0, have none); 0 if none has one."""
+    return min((stamp for stamp, _ in links if stamp), default=0)
 
 
 def _strip_slash(frame: str) -> str:
