@@ -102,3 +102,25 @@ def main():
     )
     result = run_tutorial("static_turtle_tf2_broadcaster.py", str(listener), duration=2.0)
     assert node_logs(result, "static_listener") == ["z=1.0"]
+
+
+def test_another_file_s_transient_local_publisher_matches_a_transient_local_listener(tmp_path):
+    listener = write_controller(
+        tmp_path,
+        """
+import rclpy
+from rclpy.node import Node
+from tf2_ros import Buffer, TransformListener
+
+
+def main():
+    rclpy.init()
+    node = Node('static_listener')
+    TransformListener(Buffer(), node)
+    rclpy.spin(node)
+""",
+        "static_listener.py",
+    )
+    result = run_tutorial("static_turtle_tf2_broadcaster.py", str(listener), duration=2.0)
+    # another process's endpoint carries its QoS: /tf_static's publisher is transient local, as asked
+    assert [r.msg for r in result.logs if "incompatible QoS" in r.msg] == []

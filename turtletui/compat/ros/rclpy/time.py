@@ -1,1 +1,1 @@
-from turtletui.compat.time import ClockType, Duration, Time  # noqa: F401  (rclpy.time imports both too)
+from turtletui.compat.time import ClockType, Duration, Time  # noqa: F401  (rclpy.time imports them too)
