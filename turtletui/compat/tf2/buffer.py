@@ -17,7 +17,7 @@ from turtletui.compat.executors import threads_that_can_help, wait_inside_callba
 from turtletui.compat.task import Future
 from turtletui.compat.tf2.buffer_core import BufferCore
 from turtletui.compat.tf2.buffer_interface import BufferInterface
-from turtletui.compat.time import Duration
+from turtletui.compat.time import Clock, Duration
 from turtletui.interfaces.geometry_msgs import TransformStamped
 from turtletui.interfaces.tf2_msgs import FrameGraph
 
@@ -37,8 +37,6 @@ class Buffer(BufferCore, BufferInterface):
             self.srv = node.create_service(FrameGraph, "tf2_frames", self._get_frames)
             self.clock = node.get_clock()
         else:
-            from turtletui.compat.time import Clock
-
             self.clock = Clock()
 
     def _get_frames(self, request: Any, response: Any) -> Any:
