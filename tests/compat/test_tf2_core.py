@@ -257,3 +257,5 @@ def test_a_timeout_that_is_not_a_duration_and_a_time_that_is_not_a_time_are_name
         buffer.lookup_transform("a", "b", Time(), timeout=1.0)
     with pytest.raises(TypeError, match="time must have sec and nanosec, or nanoseconds."):
         buffer.lookup_transform("a", "b", 0)
+    with pytest.raises(TypeError, match="duration must have sec and nanosec, or nanoseconds."):
+        Buffer(cache_time=5)

@@ -32,20 +32,21 @@ _Result = tuple[Vec, Quat, int]
 _Failure = tuple[type, str]
 
 
-def time_ns(time: Any) -> int:
-    """A time (rclpy Time, builtin_interfaces Time, anything with ``nanoseconds``) in ns."""
+def time_ns(time: Any, what: str = "time") -> int:
+    """A time or duration (rclpy's, builtin_interfaces', anything with
+    ``nanoseconds``) in ns; tf2_py's TypeError for anything else."""
     if hasattr(time, "sec") and hasattr(time, "nanosec"):
         return int(time.sec) * 1_000_000_000 + int(time.nanosec)
     if hasattr(time, "nanoseconds"):
         return int(time.nanoseconds)
-    raise TypeError("time must have sec and nanosec, or nanoseconds.")
+    raise TypeError(f"{what} must have sec and nanosec, or nanoseconds.")
 
 
 class BufferCore:
     """Frames and their transforms over the last ``cache_time`` (a Duration; 10 s by default)."""
 
     def __init__(self, cache_time: Any = None) -> None:
-        self._cache_time_ns = DEFAULT_CACHE_TIME_NS if cache_time is None else time_ns(cache_time)
+        self._cache_time_ns = DEFAULT_CACHE_TIME_NS if cache_time is None else time_ns(cache_time, "duration")
         self._frames: dict[str, TimeCache | StaticCache | None] = {}
         """Every frame named so far (parents too, which may have no cache), in order of naming."""
         self._authority: dict[str, str] = {}
