@@ -10,7 +10,7 @@ machine, so parallel runs and other people's ROS 2 never meet it.
 
 from __future__ import annotations
 
-import random
+from collections.abc import Iterator
 
 import pytest
 from support import real_ros
@@ -21,15 +21,12 @@ def ros_python() -> str:
     return real_ros.ros_python()
 
 
-_DOMAINS = iter(range(random.SystemRandom().randrange(99), 10**6))
-
-
 @pytest.fixture
-def ros_domain(monkeypatch: pytest.MonkeyPatch) -> str:
-    """A ROS domain of this test's own (the next one: no two tests of a run
-    share one), discovery on this machine only."""
-    domain = str(next(_DOMAINS) % 99 + 1)
-    monkeypatch.setenv("ROS_DOMAIN_ID", domain)
-    monkeypatch.setenv("ROS_AUTOMATIC_DISCOVERY_RANGE", "LOCALHOST")
-    return domain
+def ros_domain(monkeypatch: pytest.MonkeyPatch) -> Iterator[str]:
+    """A ROS domain of this test's own (no test running meanwhile, in this
+    process or another, has it), discovery on this machine only."""
+    with real_ros.own_domain() as domain:
+        monkeypatch.setenv("ROS_DOMAIN_ID", str(domain))
+        monkeypatch.setenv("ROS_AUTOMATIC_DISCOVERY_RANGE", "LOCALHOST")
+        yield str(domain)
 

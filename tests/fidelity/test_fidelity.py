@@ -9,23 +9,22 @@ Needs the real ROS 2 (marker realros; built on first use, see tests/support/real
 
 from __future__ import annotations
 
-import itertools
-import os
 from pathlib import Path
 
 import pytest
 from harness import Output, hosts_for, programs, run_real, run_turtletui
+from support.real_ros import own_domain
 
 pytestmark = pytest.mark.realros
 
 PROGRAMS = programs()
-_domains = itertools.count(os.getpid() % 50 + 40)
 _real: dict[str, Output] = {}
 
 
 def real_output(program: Path, tmp_path: Path) -> Output:
     if program.name not in _real:
-        _real[program.name] = run_real(program, tmp_path, next(_domains) % 100 + 1)
+        with own_domain() as domain:
+            _real[program.name] = run_real(program, tmp_path, domain)
     return _real[program.name]
 
 

@@ -10,10 +10,15 @@ is never skipped into a green run. Without it: ``pytest -m 'not realros'``.
 
 from __future__ import annotations
 
+import fcntl
 import functools
 import os
+import random
 import subprocess
 import sys
+import tempfile
+from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
 
 import pytest
@@ -45,6 +50,39 @@ def ros_python() -> str:
             pytrace=False,
         )
     return found
+
+
+DOMAINS = range(1, 102)
+"""ROS domain ids the tests take (0 is everyone's default; ROS 2 advises 0-101)."""
+_LOCKS = Path(tempfile.gettempdir()) / f"turtletui-test-ros-domains-{os.getuid()}"
+_used: set[int] = set()
+
+
+@contextmanager
+def own_domain() -> Iterator[int]:
+    """A ROS domain id no other test process on this machine holds meanwhile
+    (pytest-xdist's workers, another run of the suite): held by a file lock
+    for the ``with`` block, released when it ends or the process dies. One
+    this process used before is taken again only when all are, so that no test
+    meets the participants an earlier one left behind."""
+    _LOCKS.mkdir(exist_ok=True)
+    ids = list(DOMAINS)
+    random.SystemRandom().shuffle(ids)
+    ids.sort(key=lambda n: n in _used)  # unused first, in random order
+    for domain in ids:
+        fd = os.open(_LOCKS / f"{domain}.lock", os.O_CREAT | os.O_RDWR, 0o600)
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            os.close(fd)
+            continue
+        _used.add(domain)
+        try:
+            yield domain
+        finally:
+            os.close(fd)  # releases the lock
+        return
+    raise RuntimeError(f"every ROS domain id in {DOMAINS} is held by another test process ({_LOCKS})")
 
 
 def run_real(args: list[str], *, cwd: Path, timeout: float = 120.0, env: dict | None = None) -> subprocess.CompletedProcess:
