@@ -150,5 +150,5 @@ def test_sandboxed_controller_process_has_no_numpy_or_front_ends(tmp_path):
     result = run([node], duration=0.5, limits=Limits(lockstep=True))
     assert [r.msg for r in result.logs if r.node == "modules"] == ["heavy=[]"]
     # the fast path's child holds a copy of the simulator, which draws with numpy
-    fast = run([node], duration=0.5)
+    fast = run([node], duration=0.5, limits=Limits(lockstep=False))
     assert [r.msg for r in fast.logs if r.node == "modules"] == ["heavy=['numpy']"]

@@ -116,8 +116,8 @@ def run(
     RosArgsError, RecordingError for ``record``, UsageError for ``duration``).
     ``limits`` (turtletui.runtime.sandbox.Limits) bounds what sandboxed
     controllers may use; the defaults when None. One sandboxed controller
-    out of real time takes the fast path (turtletui.runtime.fastpath) unless
-    ``limits.lockstep``; ``setup`` (called with the simulation before the
+    out of real time may take the fast path (turtletui.runtime.fastpath):
+    where it pays, or as ``limits.lockstep`` says; ``setup`` (called with the simulation before the
     controllers start) keeps it there only as a
     turtletui.runtime.replica.ReplicableSetup, whose steps the sandboxed
     child can redo on its own copy. ``world`` is a fresh World
@@ -181,7 +181,7 @@ def run(
             setup=setup,
             graph_version=built_version,
             end_ns=end_ns,
-            lockstep=limits is not None and limits.lockstep,
+            lockstep=None if limits is None else limits.lockstep,
         )
         started = time.perf_counter()
         outcome = run_controllers(sim, specs, end_ns, ros_args=args, seed=seed, limits=limits, recipe=recipe)

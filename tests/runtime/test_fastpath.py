@@ -18,6 +18,9 @@ from turtletui.graph.logs import OUTPUT_SUFFIX
 from turtletui.runtime import fastpath
 from turtletui.runtime.sandbox import Limits
 
+FAST = Limits(lockstep=False)
+"""The fast path even for runs too short for it to pay."""
+
 REFERENCE = Path(__file__).resolve().parents[2] / "plugins" / "reference"
 
 
@@ -43,7 +46,8 @@ def write(tmp_path: Path, source: str, name: str = "controller.py") -> Path:
 
 def both_paths(path: Path, fast_runs: list[str], **options) -> tuple[RunResult, RunResult]:
     """The run on the fast path and in lockstep (asserting which is which)."""
-    fast = run([path], keep_poses=True, **options)
+    fast_limits = replace(options.get("limits") or Limits(), lockstep=False)
+    fast = run([path], keep_poses=True, **{**options, "limits": fast_limits})
     assert fast_runs, "the run did not take the fast path"
     taken = len(fast_runs)
     limits = replace(options.pop("limits", None) or Limits(), lockstep=True)
@@ -159,9 +163,9 @@ def test_timers_services_actions_parameters_and_discovery_are_the_same(tmp_path,
 
 def test_the_same_seed_gives_the_same_run_twice(tmp_path, fast_runs):
     path = write(tmp_path, EVERYTHING.replace("self.speed = self.get_parameter", "import random\n        self.speed = random.random() + 0 * self.get_parameter"))
-    first = run([path], duration=4.0, keep_poses=True, seed=3)
-    again = run([path], duration=4.0, keep_poses=True, seed=3)
-    other = run([path], duration=4.0, keep_poses=True, seed=4)
+    first = run([path], duration=4.0, keep_poses=True, seed=3, limits=FAST)
+    again = run([path], duration=4.0, keep_poses=True, seed=3, limits=FAST)
+    other = run([path], duration=4.0, keep_poses=True, seed=4, limits=FAST)
     assert len(fast_runs) == 3
     assert_same(first, again)
     assert first.poses != other.poses
@@ -304,7 +308,7 @@ TAMPERINGS = {
 @pytest.mark.parametrize("how", sorted(TAMPERINGS))
 def test_tampering_with_the_childs_copy_is_reported_and_changes_nothing_measured(tmp_path, fast_runs, how):
     path = write(tmp_path, TAMPER.replace("TAMPER\n", TAMPERINGS[how] + "\n").replace("            TAMPER", "            " + TAMPERINGS[how]))
-    result = run([path], duration=3.0, keep_poses=True)
+    result = run([path], duration=3.0, keep_poses=True, limits=FAST)
     assert fast_runs
     assert [c.kind for c in result.crashes] == ["tampered"], result.crashes
     crash = result.crashes[0]
@@ -378,8 +382,29 @@ def test_a_set_up_the_child_cannot_redo_keeps_the_lockstep_path(tmp_path, fast_r
         sim.graph.add_node("watcher", owner="test")
 
     for setup in (spawn_a_turtle, ReplicableSetup((), add_a_node)):
-        result = run([path], duration=1.0, keep_poses=True, setup=setup)
+        result = run([path], duration=1.0, keep_poses=True, setup=setup, limits=FAST)
         assert result.ok, result.crashes
     assert fast_runs == []
-    run([path], duration=1.0, setup=ReplicableSetup((), lambda sim: None))
+    run([path], duration=1.0, setup=ReplicableSetup((), lambda sim: None), limits=FAST)
+    assert len(fast_runs) == 1
+
+
+IDLE = """
+import rclpy
+from rclpy.node import Node
+
+rclpy.init()
+rclpy.spin(Node("idle"))
+"""
+
+
+def test_without_a_fork_server_only_a_run_long_enough_to_repay_the_copy_takes_the_fast_path(tmp_path, fast_runs):
+    from turtletui.runtime.replica import FAST_PATH_MIN_NS
+
+    path = write(tmp_path, IDLE)
+    short = run([path], duration=FAST_PATH_MIN_NS / 1e9 - 1)
+    assert short.ok, short.crashes
+    assert fast_runs == []
+    long = run([path], duration=FAST_PATH_MIN_NS / 1e9)
+    assert long.ok, long.crashes
     assert len(fast_runs) == 1

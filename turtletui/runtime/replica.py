@@ -111,8 +111,21 @@ def snapshot_world(world: World | None) -> str | None:
         return ""
 
 
+FAST_PATH_MIN_NS = 120_000_000_000
+"""Simulated time from which the fast path pays for itself in a child started
+afresh: its copy of the simulation costs it about 0.1 s to import (numpy, the
+simulator) and saves about 12 us of a 35 us exchange (bench/bench_ratios.py).
+A child forked from a fork server (grading) has imported it already."""
+
+
 def forced_lockstep() -> bool:
     return os.environ.get(LOCKSTEP_VAR, "") not in ("", "0")
+
+
+def _fast_path_pays(end_ns: int) -> bool:
+    from turtletui.runtime import forkserver
+
+    return end_ns >= FAST_PATH_MIN_NS or forkserver.servers() is not None
 
 
 def recipe_for(
@@ -123,7 +136,7 @@ def recipe_for(
     setup: Callable[[Simulation], None] | None,
     graph_version: int,
     end_ns: int,
-    lockstep: bool = False,
+    lockstep: bool | None = None,
 ) -> Recipe | None:
     """The recipe of the child's copy if this run may take the fast path, else
     None. ``world`` is :func:`snapshot_world` of the world before the
@@ -134,8 +147,12 @@ def recipe_for(
     child can redo (none, or a ReplicableSetup whose observers left the graph
     as its steps made it); nothing else on the graph (a bag's player or
     recorder, teleop, the app). Anything else keeps the lockstep path.
+    ``lockstep`` as Limits.lockstep: None takes the fast path only where it
+    pays (a long run, or a child from a fork server).
     """
     if lockstep or forced_lockstep() or sim.realtime or len(specs) != 1 or specs[0].trusted:
+        return None
+    if lockstep is None and not _fast_path_pays(end_ns):
         return None
     if not hasattr(os, "memfd_create"):  # the shared journal (Linux)
         return None

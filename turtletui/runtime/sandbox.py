@@ -65,9 +65,11 @@ class Limits:
     """Wall seconds the simulator and the controller poll for each other's
     answer before sleeping in the kernel; None: the machine's default
     (turtletui.runtime.wire.default_spin_seconds). 0 when runs share the CPUs."""
-    lockstep: bool = False
-    """Keep the lockstep path even for a run that could take the fast one
-    (turtletui.runtime.fastpath): for tests and benchmarks that compare them."""
+    lockstep: bool | None = None
+    """Which path a run that may take the fast one (turtletui.runtime.fastpath)
+    takes: None, the fast path where it pays (see replica.FAST_PATH_MIN_NS);
+    True, lockstep; False, the fast path. The run is the same on both: tests
+    and benchmarks choose to compare them."""
     run_as: tuple[int, int] | None = None
     """(uid, gid) the child runs as, with no supplementary groups: a grader
     running as root drops the student's code to an unprivileged user."""
