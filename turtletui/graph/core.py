@@ -410,6 +410,10 @@ class Graph:
         services, clients, actions): a sandbox sends its child a new mirror
         of the graph when it moved."""
         self.outbox: GraphOutbox | None = None
+        self.self_delivering: set[str] = set()
+        """Owners whose endpoints live in another process that delivers between
+        them itself (a sandboxed controller's): this graph gives them nothing
+        of their own."""
         """Told what this graph's nodes do, when the graph is one part of a
         larger one (see GraphOutbox); None for a whole graph."""
 
@@ -623,7 +627,10 @@ class Graph:
         remote = self.outbox.remote_owner if self.outbox is not None else None
         if remote in (pub.owner, sub.owner):
             return  # the other part of the graph gives those
-        if pub.owner == sub.owner or self.discovery_ns <= 0:
+        if pub.owner == sub.owner:
+            if pub.owner not in self.self_delivering:
+                self._give_kept(pub, sub, self.now_ns + 1)
+        elif self.discovery_ns <= 0:
             self._give_kept(pub, sub, self.now_ns + 1)
         else:
             at = self.discovered_at(pub, sub)

@@ -72,6 +72,7 @@ class GraphProxy:
     def __init__(self, graph: Graph, owner: str, label: str, pace: Pace, *, log_lines: int, log_bytes: int) -> None:
         self.graph = graph
         self.owner = owner
+        graph.self_delivering.add(owner)
         self.label = label
         self.pace = pace
         self.log_lines = log_lines
