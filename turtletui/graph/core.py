@@ -410,12 +410,12 @@ class Graph:
         services, clients, actions): a sandbox sends its child a new mirror
         of the graph when it moved."""
         self.outbox: GraphOutbox | None = None
+        """Told what this graph's nodes do, when the graph is one part of a
+        larger one (see GraphOutbox); None for a whole graph."""
         self.self_delivering: set[str] = set()
         """Owners whose endpoints live in another process that delivers between
         them itself (a sandboxed controller's): this graph gives them nothing
         of their own."""
-        """Told what this graph's nodes do, when the graph is one part of a
-        larger one (see GraphOutbox); None for a whole graph."""
 
     # -- time ---------------------------------------------------------------
     @property
