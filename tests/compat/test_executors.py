@@ -181,6 +181,7 @@ class Driver(Node):
         super().__init__("driver")
         self.pub = self.create_publisher(Twist, "/turtle1/cmd_vel", qos_profile_sensor_data)
         self.create_timer(0.1, lambda: self.pub.publish(Twist(linear=Vector3(x=1.0))))
+        self.create_timer(0.55, lambda: self.get_logger().info(f"matched {self.pub.get_subscription_count()}"))
 
 
 def main():
@@ -191,7 +192,8 @@ def main():
     assert result.ok, result.crashes
     assert [r.msg for r in result.logs if r.node == "driver"] == [
         "New subscription discovered on topic '/turtle1/cmd_vel', requesting incompatible QoS. "
-        "No messages will be sent to it. Last incompatible policy: RELIABILITY"
+        "No messages will be sent to it. Last incompatible policy: RELIABILITY",
+        "matched 0",
     ]
     assert (
         "New publisher discovered on topic '/turtle1/cmd_vel', offering incompatible QoS. "
