@@ -165,9 +165,10 @@ def main():
     assert [(r.t, r.msg) for r in result.logs if r.node == "impatient"] == [(0.5, "timed out")]
 
 
-def test_a_best_effort_cmd_vel_does_not_drive_turtlesim(tmp_path):
-    """In-process, where turtlesim and the controller share the graph (the
-    sandbox's wire does not carry QoS yet: README, fidelity table)."""
+@pytest.mark.parametrize("sandbox", [False, True], ids=["in-process", "sandboxed"])
+def test_a_best_effort_cmd_vel_does_not_drive_turtlesim(tmp_path, sandbox):
+    """Both sides warn, in rclpy's and rclcpp's words, whether turtlesim and
+    the controller share a process or not."""
     path = write(tmp_path, "sensor_qos.py", """
 import rclpy
 from geometry_msgs.msg import Twist, Vector3
@@ -180,17 +181,19 @@ class Driver(Node):
         super().__init__("driver")
         self.pub = self.create_publisher(Twist, "/turtle1/cmd_vel", qos_profile_sensor_data)
         self.create_timer(0.1, lambda: self.pub.publish(Twist(linear=Vector3(x=1.0))))
+        self.create_timer(0.55, lambda: self.get_logger().info(f"matched {self.pub.get_subscription_count()}"))
 
 
 def main():
     rclpy.init()
     rclpy.spin(Driver())
 """)
-    result = run([path], duration=1.0, sandbox=False, keep_poses=True)
+    result = run([path], duration=1.0, sandbox=sandbox, keep_poses=True)
     assert result.ok, result.crashes
     assert [r.msg for r in result.logs if r.node == "driver"] == [
         "New subscription discovered on topic '/turtle1/cmd_vel', requesting incompatible QoS. "
-        "No messages will be sent to it. Last incompatible policy: RELIABILITY"
+        "No messages will be sent to it. Last incompatible policy: RELIABILITY",
+        "matched 0",
     ]
     assert (
         "New publisher discovered on topic '/turtle1/cmd_vel', offering incompatible QoS. "

@@ -6,7 +6,6 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
-import pytest
 from support.hosts import node_logs, write_controller
 
 from turtletui.api import run
@@ -74,11 +73,6 @@ def test_traveling_in_time_turtle2_goes_where_turtle1_was_five_seconds_ago():
     assert result.turtles["turtle2"].distance > 10.0
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="the sandbox does not yet pass a transient-local publisher's kept messages to another process's"
-    " subscriptions (in one program it does: test_tf2.py)",
-)
 def test_a_static_broadcaster_s_frame_reaches_a_listener_in_another_process(tmp_path):
     listener = write_controller(
         tmp_path,

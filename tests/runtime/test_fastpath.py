@@ -161,6 +161,50 @@ def test_timers_services_actions_parameters_and_discovery_are_the_same(tmp_path,
     assert_same(fast, in_process, printed=False)
 
 
+QOS = """
+import rclpy
+from geometry_msgs.msg import Twist, Vector3
+from rclpy.node import Node
+from rclpy.qos import DurabilityPolicy, QoSProfile, qos_profile_sensor_data
+from std_msgs.msg import String
+
+
+def main():
+    rclpy.init()
+    node = Node("driver")
+    cmd = node.create_publisher(Twist, "/turtle1/cmd_vel", qos_profile_sensor_data)
+    kept = QoSProfile(depth=2, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+    latched = node.create_publisher(String, "/latched", kept)
+    for i in range(3):
+        latched.publish(String(data=f"latched {i}"))
+    other = Node("late")
+    heard = []
+    node.create_timer(0.1, lambda: cmd.publish(Twist(linear=Vector3(x=1.0))))
+
+    def join():
+        timer.cancel()
+        latched_qos = QoSProfile(depth=5, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+        other.create_subscription(String, "/latched", lambda m: heard.append(m.data), latched_qos)
+
+    timer = node.create_timer(0.3, join)
+    node.create_timer(1.0, lambda: node.get_logger().info(f"heard {heard} matched {cmd.get_subscription_count()}"))
+    executor = rclpy.executors.SingleThreadedExecutor()
+    executor.add_node(node)
+    executor.add_node(other)
+    executor.spin()
+"""
+
+
+def test_qos_mismatches_and_late_joiners_are_the_same_on_both_paths_and_in_process(tmp_path, fast_runs):
+    path = write(tmp_path, QOS)
+    fast, lockstep = both_paths(path, fast_runs, duration=1.5)
+    assert fast.ok, fast.crashes
+    assert any("offering incompatible QoS" in r.msg for r in fast.logs if r.node == "turtlesim")
+    assert any(r.msg.startswith("heard ['latched 1', 'latched 2'") for r in fast.logs if r.node == "driver")
+    assert_same(fast, lockstep)
+    assert_same(fast, run([path], keep_poses=True, sandbox=False, duration=1.5), printed=False)
+
+
 def test_the_same_seed_gives_the_same_run_twice(tmp_path, fast_runs):
     path = write(tmp_path, EVERYTHING.replace("self.speed = self.get_parameter", "import random\n        self.speed = random.random() + 0 * self.get_parameter"))
     first = run([path], duration=4.0, keep_poses=True, seed=3, limits=FAST)

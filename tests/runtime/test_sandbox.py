@@ -708,7 +708,7 @@ def test_patching_child_publish_is_validated_by_the_parent(tmp_path: Path) -> No
     path = write(tmp_path, """
         from turtletui.runtime import outbox, protocol
 
-        def forged_published(self, topic, msg):
+        def forged_published(self, topic, msg, publisher, young):
             self.publishes.append(protocol.Publish(topic.name, [["fast", 0.0, 0.0], [0.0, 0.0, 0.0]]))
 
         def misbehave(node):
@@ -800,9 +800,9 @@ FORGED = {
     "removal-unknown": (frame({"decl": [["rmrecord", "turtle", 1, "/turtle1"]]}), "exception", "RemoveRecord.kind must be one of service"),
     "param-garbage": (frame({"decl": [["param", 1, "p", {"nested": [1]}, False]]}), "exception", "SetParameter.value must be a value a ROS parameter can hold"),
     "pub-not-a-list": (frame({"pub": 5}), "exception", "pub: must be an array of Publish records"),
-    "pub-fields-not-a-list": (frame({"pub": [["/turtle1/cmd_vel", {"linear": 1}]]}), "exception", "Publish.values must be a list of field values"),
-    "pub-short-fields": (frame({"pub": [["/turtle1/cmd_vel", [1, 2, 3]]]}), "exception", REFUSED),
-    "pub-bad-field": (frame({"pub": [["/turtle1/cmd_vel", [["fast", 0, 0], [0, 0, 0]]]]}), "exception", REFUSED),
+    "pub-fields-not-a-list": (frame({"pub": [["/turtle1/cmd_vel", {"linear": 1}, 0, False]]}), "exception", "Publish.values must be a list of field values"),
+    "pub-short-fields": (frame({"pub": [["/turtle1/cmd_vel", [1, 2, 3], 0, False]]}), "exception", REFUSED),
+    "pub-bad-field": (frame({"pub": [["/turtle1/cmd_vel", [["fast", 0, 0], [0, 0, 0]], 0, False]]}), "exception", REFUSED),
     "call-bad-request": (frame({"call": [[1, "/spawn", ["far", 1.0, 0.0, ""]]]}), "exception", REFUSED),
     "asrv-unknown-type": (frame({"decl": [["asrv", 1, "/spin", "no_pkg/action/Nothing"]]}), "exception", REFUSED),
     "served-not-arrays": (frame({"served": [5]}), "exception", "served[0]: a served-goal event must be an array"),

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import math
-from collections import deque
 from collections.abc import Callable, Sequence
 from typing import Any
 
@@ -37,7 +36,7 @@ from turtletui.compat.graph_info import (
     endpoints_info,
 )
 from turtletui.compat.logging import RcutilsLogger, get_logger
-from turtletui.compat.matching import match_publisher, match_subscription, muted
+from turtletui.compat.matching import match_publisher, match_subscription
 from turtletui.compat.parameter import (
     ListParametersResult,
     Parameter,
@@ -53,7 +52,7 @@ from turtletui.compat.parameter_service import ParameterService
 from turtletui.compat.qos import (
     QoSProfile,
     depth_of,
-    is_transient_local,
+    incompatible_policy,
     qos_profile_parameter_events,
     qos_profile_rosout_default,
     qos_profile_services_default,
@@ -91,11 +90,8 @@ class Publisher(Destroyable):
         self._topic = record.topic
         self._destroyed = False  # read on every publish: an instance attribute is quicker
         self._topic_as_given = record.topic.name
-        self._muted = muted(record)
         self._graph = node._graph
         self._told_undiscovered = False
-        self.history: deque | None = deque(maxlen=depth_of(qos_profile)) if is_transient_local(qos_profile) else None
-        """The last messages, kept for late-joining transient-local subscriptions."""
         record.entity = self
 
     @property
@@ -118,23 +114,11 @@ class Publisher(Destroyable):
                 + (_describe(msg))
             )
         msg = self._copy(msg)
-        if self.history is not None:
-            self.history.append(msg)
         record = self._record
         graph = self._graph
         if record.created_ns + graph.discovery_ns > graph.now_ns:  # not graph.known_to_others(record)
             self._tell_if_lost()
-        if not self._muted:
-            self._publish(self._topic, msg, None, record)
-            return
-        # Subscriptions with incompatible QoS get nothing from this publisher.
-        topic = self._topic
-        everyone = topic.subscriptions
-        topic.subscriptions = [sub for sub in everyone if sub not in self._muted]
-        try:
-            self._publish(topic, msg, None, record)
-        finally:
-            topic.subscriptions = everyone
+        self._publish(self._topic, msg, None, record)
 
     def _tell_if_lost(self) -> None:
         """Say once why a message reached no one in another process, if someone
@@ -142,7 +126,10 @@ class Publisher(Destroyable):
         if self._told_undiscovered:
             return
         graph, record = self._graph, self._record
-        if any(sub not in self._muted and not graph.matched(record, sub) for sub in self._topic.subscriptions):
+        qos = self.qos_profile
+        if any(
+            not incompatible_policy(qos, sub.qos) and not graph.matched(record, sub) for sub in self._topic.subscriptions
+        ):
             self._told_undiscovered = True
             node = self._node.get_fully_qualified_name()
             graph.log("turtletui", WARN, _UNDISCOVERED.format(node=node, topic=self._topic.name))
@@ -151,7 +138,10 @@ class Publisher(Destroyable):
         """The subscriptions this publisher matches (QoS compatible, discovered)."""
         self._require_alive()
         graph, record = self._graph, self._record
-        return sum(1 for sub in self._topic.subscriptions if sub not in self._muted and graph.matched(record, sub))
+        qos = self.qos_profile
+        return sum(
+            1 for sub in self._topic.subscriptions if not incompatible_policy(qos, sub.qos) and graph.matched(record, sub)
+        )
 
     def wait_for_all_acked(self, timeout: Duration = Duration(seconds=-1)) -> bool:
         self._require_alive()
@@ -213,7 +203,10 @@ class Subscription(Destroyable):
         self._require_alive()
         record = self._record
         graph = self._node._graph
-        return sum(1 for pub in record.topic.publishers if record not in muted(pub) and graph.matched(pub, record))
+        qos = self.qos_profile
+        return sum(
+            1 for pub in record.topic.publishers if not incompatible_policy(pub.qos, qos) and graph.matched(pub, record)
+        )
 
     def destroy(self) -> None:
         self._node.destroy_subscription(self)

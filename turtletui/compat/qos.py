@@ -9,6 +9,7 @@ from enum import IntEnum
 from typing import Any
 
 from turtletui.compat.time import Duration
+from turtletui.graph.qos import incompatible_policy, is_transient_local  # noqa: F401  (the middleware's matching)
 
 
 class InvalidQoSProfileException(ValueError):
@@ -305,38 +306,3 @@ def depth_of(qos_profile: QoSProfile | int) -> int:
     if qos_profile.history == HistoryPolicy.KEEP_LAST:
         return max(qos_profile.depth, 1)
     return 1
-
-
-def _effective(qos_profile: Any) -> tuple[ReliabilityPolicy, DurabilityPolicy]:
-    """The reliability and durability an endpoint made with ``qos_profile``
-    has (an int depth, None and SYSTEM_DEFAULT mean rmw's default: reliable,
-    volatile). Another process's endpoint comes as its policies alone
-    (turtletui.runtime.graph_mirror.QosPolicies)."""
-    if not hasattr(qos_profile, "durability"):
-        return ReliabilityPolicy.RELIABLE, DurabilityPolicy.VOLATILE
-    reliability, durability = qos_profile.reliability, qos_profile.durability
-    if reliability == ReliabilityPolicy.SYSTEM_DEFAULT:
-        reliability = ReliabilityPolicy.RELIABLE
-    if durability == DurabilityPolicy.SYSTEM_DEFAULT:
-        durability = DurabilityPolicy.VOLATILE
-    return reliability, durability
-
-
-def incompatible_policy(publisher_qos: Any, subscription_qos: Any) -> str | None:
-    """Why a publisher and a subscription never match, as the name of the
-    last incompatible policy DDS reports ("RELIABILITY" or "DURABILITY"), or
-    None when they match. A best-effort publisher cannot serve a reliable
-    subscription; a volatile one cannot serve a transient-local one."""
-    pub_reliability, pub_durability = _effective(publisher_qos)
-    sub_reliability, sub_durability = _effective(subscription_qos)
-    if pub_reliability == ReliabilityPolicy.BEST_EFFORT and sub_reliability == ReliabilityPolicy.RELIABLE:
-        return "RELIABILITY"
-    if pub_durability == DurabilityPolicy.VOLATILE and sub_durability == DurabilityPolicy.TRANSIENT_LOCAL:
-        return "DURABILITY"
-    return None
-
-
-def is_transient_local(qos_profile: Any) -> bool:
-    """Whether an endpoint keeps (publisher) or asks for (subscription) the
-    last messages sent before a subscription joined."""
-    return _effective(qos_profile)[1] == DurabilityPolicy.TRANSIENT_LOCAL

@@ -20,6 +20,7 @@ from typing import Any, Literal, Protocol
 
 from turtletui.errors import TurtletuiError
 from turtletui.graph.logs import INFO, LogRecord
+from turtletui.graph.qos import incompatible_policy, is_transient_local
 
 NS_PER_S = 1_000_000_000
 LOCKSTEP_EPOCH_NS = 1_700_000_000 * NS_PER_S
@@ -106,6 +107,15 @@ class Publisher:
     """The QoS the creator asked for, as it gave it."""
     created_ns: int = 0
     """When it was made, in simulated ns (for discovery: Graph.discovery_ns)."""
+    muted: set = field(default_factory=set, repr=False)
+    """The subscriptions it never reaches: their QoS is incompatible with its own."""
+    kept: deque | None = field(init=False, repr=False)
+    """A transient-local publisher's last ``depth`` messages, as (when published,
+    message), for the transient-local subscriptions that join later; None
+    for a volatile one."""
+
+    def __post_init__(self) -> None:
+        self.kept = deque(maxlen=max(self.depth, 1)) if is_transient_local(self.qos) else None
 
 
 class Topic:
@@ -333,9 +343,10 @@ class GraphOutbox(Protocol):
     def parameter_set(self, node: NodeRecord, name: str, value: Any, remove: bool) -> None:
         """A node's parameter was set (or undeclared: ``remove``)."""
 
-    def published(self, topic: Topic, msg: Any) -> None:
-        """``msg`` was published by a publisher the other part has discovered
-        (and delivered to this graph's subscriptions)."""
+    def published(self, topic: Topic, msg: Any, publisher: Publisher | None, young: bool) -> None:
+        """``msg`` was published (and delivered to this graph's subscriptions)
+        by ``publisher``, which the other part has discovered unless
+        ``young`` (then only kept: it is transient local)."""
 
     def call(self, service: Service, request: Any, on_response: Callable[[Any], None]) -> None:
         """A remote ``service`` is called; ``on_response`` is for its answer."""
@@ -401,6 +412,10 @@ class Graph:
         self.outbox: GraphOutbox | None = None
         """Told what this graph's nodes do, when the graph is one part of a
         larger one (see GraphOutbox); None for a whole graph."""
+        self.self_delivering: set[str] = set()
+        """Owners whose endpoints live in another process that delivers between
+        them itself (a sandboxed controller's): this graph gives them nothing
+        of their own."""
 
     # -- time ---------------------------------------------------------------
     @property
@@ -572,6 +587,8 @@ class Graph:
         topic.publisher_owners.add(node.owner)
         if self.outbox is not None:
             self.outbox.declared(pub)
+        for sub in topic.subscriptions:
+            self._match(pub, sub)
         return pub
 
     def add_subscription(
@@ -593,7 +610,47 @@ class Graph:
         topic.subscriptions.append(sub)
         if self.outbox is not None:
             self.outbox.declared(sub)
+        for pub in topic.publishers:
+            self._match(pub, sub)
         return sub
+
+    def _match(self, pub: Publisher, sub: Subscription) -> None:
+        """Match a new publisher or subscription with an endpoint of its topic:
+        an incompatible QoS mutes the pair; a transient-local subscription
+        gets what a transient-local publisher kept once the two have
+        discovered each other (at once in one process), as DDS does."""
+        if incompatible_policy(pub.qos, sub.qos):
+            pub.muted.add(sub)
+            return
+        if pub.kept is None or not is_transient_local(sub.qos):
+            return
+        remote = self.outbox.remote_owner if self.outbox is not None else None
+        if remote in (pub.owner, sub.owner):
+            return  # the other part of the graph gives those
+        if pub.owner == sub.owner:
+            if pub.owner not in self.self_delivering:
+                self._give_kept(pub, sub, self.now_ns + 1)
+        elif self.discovery_ns <= 0:
+            self._give_kept(pub, sub, self.now_ns + 1)
+        else:
+            at = self.discovered_at(pub, sub)
+            self.call_later(sub.node, at - self.now_ns, lambda: self._give_kept(pub, sub, at))
+
+    def _give_kept(self, pub: Publisher, sub: Subscription, before_ns: int) -> None:
+        """Queue for ``sub`` what ``pub`` kept from before ``before_ns`` (later
+        messages reached it as they were published)."""
+        topic = pub.topic
+        if pub not in topic.publishers or sub not in topic.subscriptions or sub in pub.muted:
+            return
+        copy = sub.copy
+        given = False
+        for stamp, msg in pub.kept or ():
+            if stamp < before_ns:
+                sub.queue.append(msg if copy is None else copy(msg))
+                given = True
+        if given and not sub.pending:
+            sub.pending = True
+            self.ready.append(sub.ready_item)
 
     def remove_endpoint(self, endpoint: Publisher | Subscription) -> bool:
         """Take a publisher or subscription off its topic; False if it was not on it."""
@@ -652,27 +709,43 @@ class Graph:
         return len(topic.subscriptions) if topic is not None else 0
 
     def publish(
-        self, topic: Topic, msg: Any, source: str | None = None, publisher: Publisher | None = None
+        self,
+        topic: Topic,
+        msg: Any,
+        source: str | None = None,
+        publisher: Publisher | None = None,
+        *,
+        young: bool | None = None,
     ) -> None:
         """Deliver ``msg`` to every subscription of ``topic`` that has discovered
         ``publisher`` (see ``discovery_ns``; without one, the subscription's own
-        age decides), except those owned by ``source`` (a sandboxed host already
-        delivered to its own subscribers)."""
+        age decides) and whose QoS matches its own, except those owned by
+        ``source`` (a sandboxed host already delivered to its own subscribers).
+        ``young`` says whether the other processes have yet to discover the
+        publisher, when the caller knows better (the sandboxed host decided)."""
         outbox = self.outbox
         if outbox is not None:
             source = outbox.remote_owner  # the outbox delivers to those
         now = self.now_ns
         settled = now - self.discovery_ns  # endpoints made by then: discovered by all
         owner = source if publisher is None else publisher.owner
-        young = publisher is not None and publisher.created_ns > settled
+        if young is None:
+            young = publisher is not None and publisher.created_ns > settled
+        muted = ()
+        if publisher is not None:
+            muted = publisher.muted
+            if publisher.kept is not None:
+                publisher.kept.append((now, msg))
         if not young:  # others count only what reaches them (a sandboxed host forwards nothing young)
             topic.count += 1
             topic.last = msg
             topic._stamps.append(now)
         ready = None
         for sub in topic.subscriptions:
-            if (source is not None and sub.owner == source) or (
-                sub.owner != owner and (young or sub.created_ns > settled)
+            if (
+                (source is not None and sub.owner == source)
+                or (sub.owner != owner and (young or sub.created_ns > settled))
+                or (muted and sub in muted)
             ):
                 continue
             copy = sub.copy
@@ -685,8 +758,10 @@ class Graph:
         if self.taps and not young:
             for tap in self.taps:
                 tap("topic", (topic, msg))
-        if outbox is not None and not young:  # else no other process knows the publisher yet
-            outbox.published(topic, msg)
+        if outbox is not None and (not young or (publisher is not None and publisher.kept is not None)):
+            # a young publisher's messages reach no other process yet; the
+            # other part keeps a transient-local one's for late joiners
+            outbox.published(topic, msg, publisher, young)
 
     # -- timers -------------------------------------------------------------
     def add_timer(

@@ -14,6 +14,7 @@ import itertools
 from collections.abc import Callable
 from typing import Any
 
+from turtletui.compat.matching import match_mirror
 from turtletui.graph.core import (
     ActionClientRecord,
     ActionServer,
@@ -210,9 +211,9 @@ class ParentOutbox:
             value = list(value)
         self.changes.append(SetParameter(self.wire_ids[node], name, value, remove))
 
-    def published(self, topic: Topic, msg: Any) -> None:
+    def published(self, topic: Topic, msg: Any, publisher: Publisher | None, young: bool) -> None:
         # Its values now: a message changed after publish() is not what was sent.
-        self.publishes.append(Publish(topic.name, to_values(msg)))
+        self.publishes.append(Publish(topic.name, to_values(msg), self.wire_ids.get(publisher, 0), young))
 
     def call(self, service: Service, request: Any, on_response: Callable[[Any], None]) -> None:
         call_id = next(self._ids)
@@ -255,6 +256,7 @@ class ParentOutbox:
         ready = graph.ready
         if tick.graph is not None:  # first: what arrives with it may come from nodes it adds
             graph_mirror.apply(graph, tick.graph, self.own)
+            match_mirror(graph, self.remote_owner)
         own = self.own
         for sub_id, values in tick.deliveries:
             sub = own.get(sub_id)

@@ -163,6 +163,11 @@ class Log(NamedTuple):
 class Publish(NamedTuple):
     topic: str
     values: Values
+    publisher: int = 0
+    """The wire id of the child's publisher that sent it."""
+    young: bool = False
+    """Whether no other process has discovered the publisher yet: the parent
+    only keeps the message (the publisher is transient local)."""
 
 
 class CallService(NamedTuple):
@@ -613,7 +618,7 @@ _FIELDS: dict[type, tuple[Callable[[Any], Any], ...]] = {
     RemoveRecord: (_removable, _int, _str),
     SetParameter: (_int, _str, _parameter_value, _bool),
     Log: (_int, _str, _str),
-    Publish: (_str, _values),
+    Publish: (_str, _values, _int, _bool),
     CallService: (_int, _str, _values),
     SendGoal: (_int, _str, _values),
     CancelGoal: (_int,),

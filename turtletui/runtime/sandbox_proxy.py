@@ -15,7 +15,8 @@ import itertools
 from collections.abc import Callable
 from typing import Any
 
-from turtletui.graph.core import GoalHandle, Graph, GraphError, NodeRecord
+from turtletui.compat.matching import warn_others
+from turtletui.graph.core import GoalHandle, Graph, GraphError, NodeRecord, Publisher
 from turtletui.graph.logs import ERROR
 from turtletui.interfaces import from_values, get_interface, to_values
 from turtletui.runtime import graph_mirror
@@ -71,6 +72,7 @@ class GraphProxy:
     def __init__(self, graph: Graph, owner: str, label: str, pace: Pace, *, log_lines: int, log_bytes: int) -> None:
         self.graph = graph
         self.owner = owner
+        graph.self_delivering.add(owner)
         self.label = label
         self.pace = pace
         self.log_lines = log_lines
@@ -167,11 +169,15 @@ class GraphProxy:
             self._logs_dropped_there = report.logs_dropped  # the child's own count: only ever shown
         owner = self.owner
         topics = graph.topics
-        for name, values in report.publishes:
+        endpoints = self._endpoints
+        for name, values, publisher_id, young in report.publishes:
             topic = topics.get(name)
             if topic is None:
                 raise GraphError(f"published on undeclared topic {name}")
-            graph.publish(topic, self.build(topic.msg_type, values), source=owner)
+            publisher = endpoints.get(publisher_id)
+            if not isinstance(publisher, Publisher) or publisher.topic is not topic:
+                publisher = None
+            graph.publish(topic, self.build(topic.msg_type, values), owner, publisher, young=young)
         for call_id, name, values in report.calls:
             service = graph.services.get(name)
             if service is None:
@@ -298,9 +304,9 @@ class GraphProxy:
                 graph.remove_node(node)
         elif kind is DeclarePublisher:
             node = self._node(change.node, change)
-            self._endpoints[change.wire_id] = graph.add_publisher(
-                node, change.topic, get_interface(change.type_name), change.depth, qos=change.qos
-            )
+            publisher = graph.add_publisher(node, change.topic, get_interface(change.type_name), change.depth, qos=change.qos)
+            self._endpoints[change.wire_id] = publisher
+            warn_others(graph, publisher)
         elif kind is DeclareSubscription:
             node = self._node(change.node, change)
             wire_id = change.wire_id
@@ -309,9 +315,11 @@ class GraphProxy:
             def forward(msg: Any, wire_id: int = wire_id) -> None:
                 self._deliveries.append(Delivery(wire_id, self.values(msg)))
 
-            self._endpoints[wire_id] = graph.add_subscription(
+            subscription = graph.add_subscription(
                 node, change.topic, get_interface(change.type_name), change.depth, forward, qos=change.qos
             )
+            self._endpoints[wire_id] = subscription
+            warn_others(graph, subscription)
         elif kind is RemoveEndpoint:
             endpoint = self._endpoints.pop(change.wire_id, None)
             if endpoint is not None:

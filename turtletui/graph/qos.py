@@ -1,0 +1,46 @@
+"""QoS matching as DDS does it, on the policies' values (rclpy's enums are
+ints: a QoSProfile, another process's QosPolicies and None all work here).
+
+A best-effort publisher cannot serve a reliable subscription; a volatile one
+cannot serve a transient-local one. An endpoint without policies (None, a
+bare depth, SYSTEM_DEFAULT) has rmw's default: reliable, volatile.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+_RELIABLE, _BEST_EFFORT = 1, 2
+_TRANSIENT_LOCAL, _VOLATILE = 1, 2
+_SYSTEM_DEFAULT = 0
+
+
+def _effective(qos: Any) -> tuple[int, int]:
+    """(reliability, durability) of an endpoint made with ``qos``."""
+    try:
+        reliability, durability = int(qos.reliability), int(qos.durability)
+    except (AttributeError, TypeError, ValueError):
+        return _RELIABLE, _VOLATILE
+    return (
+        _RELIABLE if reliability == _SYSTEM_DEFAULT else reliability,
+        _VOLATILE if durability == _SYSTEM_DEFAULT else durability,
+    )
+
+
+def incompatible_policy(publisher_qos: Any, subscription_qos: Any) -> str | None:
+    """Why a publisher and a subscription never match, as the name of the last
+    incompatible policy DDS reports ("RELIABILITY" or "DURABILITY"), or None
+    when they match."""
+    pub_reliability, pub_durability = _effective(publisher_qos)
+    sub_reliability, sub_durability = _effective(subscription_qos)
+    if pub_reliability == _BEST_EFFORT and sub_reliability == _RELIABLE:
+        return "RELIABILITY"
+    if pub_durability == _VOLATILE and sub_durability == _TRANSIENT_LOCAL:
+        return "DURABILITY"
+    return None
+
+
+def is_transient_local(qos: Any) -> bool:
+    """Whether an endpoint keeps (publisher) or asks for (subscription) the
+    last messages sent before a subscription joined."""
+    return _effective(qos)[1] == _TRANSIENT_LOCAL
