@@ -111,8 +111,19 @@ class _GraderGone(BaseException):
     """The grader stopped this worker (or died): end the run, closing its sandbox."""
 
 
+_leaving = False
+"""Whether this worker is closing its run's sandbox because it was told to stop."""
+
+
 def _on_sigterm(signum: int, frame: Any) -> None:
+    global _leaving
+    if _leaving:
+        # A second SIGTERM (a broken pool terminates its workers, and so does
+        # the grader) must not cut short the closing of the sandbox: that could
+        # leave the child stopped, half-killed, forever.
+        return
     if _in_task:
+        _leaving = True
         raise _GraderGone  # the run's sandbox is closed on the way out (runner's finally)
     os._exit(1)
 

@@ -76,23 +76,27 @@ def kill_tree(pid: int, token: str, *, reaped: bool = False, spare: int | None =
     process's: it is spared then, but not its group or what holds the token.
     ``spare`` is a process holding the token that must live on (a fork server)."""
     marker = f"{TOKEN_VAR}={token}".encode()
-    _signal(pid, signal.SIGSTOP, group=True)
-    if not reaped:
-        _signal(pid, signal.SIGSTOP)
     stopped: set[int] = set()
-    for _ in range(8):
-        fresh = _sandboxed(-1 if reaped else pid, marker) - stopped
-        fresh.discard(spare)
-        if not fresh:
-            break
-        for child in fresh:
-            _signal(child, signal.SIGSTOP)
-        stopped |= fresh
-    _signal(pid, signal.SIGKILL, group=True)
-    if not reaped:
-        _signal(pid, signal.SIGKILL)
-    for child in stopped:
-        _signal(child, signal.SIGKILL)
+    try:
+        _signal(pid, signal.SIGSTOP, group=True)
+        if not reaped:
+            _signal(pid, signal.SIGSTOP)
+        for _ in range(8):
+            fresh = _sandboxed(-1 if reaped else pid, marker) - stopped
+            fresh.discard(spare)
+            if not fresh:
+                break
+            for child in fresh:
+                _signal(child, signal.SIGSTOP)
+            stopped |= fresh
+    finally:
+        # Even when interrupted (the grader stopping this worker): a process
+        # left stopped would never end, not even on its pipes closing.
+        _signal(pid, signal.SIGKILL, group=True)
+        if not reaped:
+            _signal(pid, signal.SIGKILL)
+        for child in stopped:
+            _signal(child, signal.SIGKILL)
 
 
 def reap_zombie_children() -> None:
