@@ -202,6 +202,35 @@ class Owner(Node):
     ]
 
 
+def test_a_topic_whose_endpoints_are_gone_may_be_used_with_another_type(controller_host):
+    # as the real rclpy (Kilted, Fast DDS) does with 0.5 s between the steps
+    result = controller_host.run(
+        HEADER
+        + """
+from std_msgs.msg import String
+
+def main():
+    rclpy.init()
+    node = Node("reuser")
+    log = node.get_logger().info
+    listed = lambda: [(n, t) for n, t in node.get_topic_names_and_types() if n == "/reuse"]
+    pub = node.create_publisher(Twist, "/reuse", 10)
+    log(f"first {listed()}")
+    node.destroy_publisher(pub)
+    log(f"destroyed {listed()}")
+    node.create_publisher(String, "/reuse", 10)
+    log(f"again {listed()}")
+""",
+        duration=0.5,
+    )
+    assert result.ok, result.crashes
+    assert node_logs(result, "reuser") == [
+        "first [('/reuse', ['geometry_msgs/msg/Twist'])]",
+        "destroyed []",
+        "again [('/reuse', ['std_msgs/msg/String'])]",
+    ]
+
+
 def test_a_destroyed_node_refuses_new_entities_with_rclpys_error(controller_host):
     result = controller_host.run(
         HEADER

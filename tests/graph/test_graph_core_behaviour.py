@@ -95,6 +95,21 @@ def test_a_topic_has_one_type():
         graph.topic("/turtle1/cmd_vel", Pose)
 
 
+def test_a_topic_leaves_the_graph_with_its_last_endpoint_and_may_return_with_another_type():
+    graph = make_graph()
+    node = graph.add_node("n")
+    pub = graph.add_publisher(node, "/reuse", Twist, 10)
+    sub = graph.add_subscription(node, "/reuse", Twist, 10, lambda msg: None)
+    graph.remove_endpoint(pub)
+    assert "/reuse" in graph.topics  # the subscription still uses it
+    graph.remove_endpoint(sub)
+    assert "/reuse" not in graph.topics
+    graph.add_publisher(node, "/reuse", String, 10)
+    assert graph.topic_names_and_types() == [("/reuse", ["std_msgs/msg/String"])]
+    graph.remove_node(node)
+    assert graph.topics == {}  # thousands of spawned and killed turtles leave nothing behind
+
+
 def test_publish_skips_the_source_owner():
     graph = make_graph()
     mine = graph.add_node("mine", owner="sandbox")
@@ -208,7 +223,7 @@ def test_remove_owner_destroys_its_nodes_endpoints_and_queued_callbacks():
     graph.run_ready()
     assert got == ["keep"]
     assert [n.name for n in graph.nodes] == ["keep"]
-    assert graph.topics["/cmd"].publishers == []
+    assert "/cmd" not in graph.topics  # its only publisher is gone
     assert "/svc" not in graph.services
     assert graph.advance(until_ns=1000) is False and fired == []
     assert gone.alive is False

@@ -501,12 +501,13 @@ class Graph:
         node.alive = False
         if node in self.nodes:
             self.nodes.remove(node)
-        for topic in self.topics.values():
+        for topic in list(self.topics.values()):
             topic.publishers = [p for p in topic.publishers if p.node is not node]
             for sub in topic.subscriptions:
                 if sub.node is node:
                     sub.queue.clear()  # nothing more reaches a destroyed node
             topic.subscriptions = [s for s in topic.subscriptions if s.node is not node]
+            self._drop_if_unused(topic)
         for name in [n for n, s in self.services.items() if s.node is node]:
             del self.services[name]
         for name in [n for n, a in self.action_servers.items() if a.node is node]:
@@ -665,9 +666,17 @@ class Graph:
             removed = len(kept) != len(topic.subscriptions)
             topic.subscriptions = kept
             endpoint.queue.clear()
+        self._drop_if_unused(topic)
         if removed and self.outbox is not None:
             self.outbox.removed(endpoint)
         return removed
+
+    def _drop_if_unused(self, topic: Topic) -> None:
+        """A topic with no endpoints left leaves the graph, as in ROS 2: it may
+        come back with another type, and the topics of thousands of spawned and
+        killed turtles cost nothing."""
+        if not topic.publishers and not topic.subscriptions and self.topics.get(topic.name) is topic:
+            del self.topics[topic.name]
 
     def topic_names_and_types(self) -> list[tuple[str, list[str]]]:
         """Every topic someone publishes or subscribes to, with its type, sorted by name."""

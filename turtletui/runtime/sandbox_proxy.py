@@ -92,6 +92,8 @@ class GraphProxy:
         self._request_ids = itertools.count(1)
         self._nodes: dict[int, NodeRecord] = {}
         self._endpoints: dict[int, Any] = {}
+        self._removed: dict[int, Any] = {}
+        """Endpoints the Report being applied destroyed: it may still carry their messages."""
         self._goals: dict[int, Any] = {}
         self._service_calls: dict[int, Callable[[list], None]] = {}
         self._deliveries: list[Delivery] = []
@@ -158,6 +160,7 @@ class GraphProxy:
         ProtocolError for what the graph cannot accept."""
         graph = self.graph
         unchanged = graph.version == self._mirrored_version
+        self._removed.clear()
         for change in report.changes:
             self._change(change)
         if unchanged:
@@ -170,13 +173,18 @@ class GraphProxy:
         owner = self.owner
         topics = graph.topics
         endpoints = self._endpoints
+        removed = self._removed
         for name, values, publisher_id, young in report.publishes:
-            topic = topics.get(name)
-            if topic is None:
-                raise GraphError(f"published on undeclared topic {name}")
-            publisher = endpoints.get(publisher_id)
-            if not isinstance(publisher, Publisher) or publisher.topic is not topic:
+            publisher = endpoints.get(publisher_id) or removed.get(publisher_id)
+            if isinstance(publisher, Publisher) and publisher.topic.name == name:
+                # its topic, also when the publisher is destroyed in this Report
+                # and its topic left the graph with it: the message was sent before
+                topic = publisher.topic
+            else:
                 publisher = None
+                topic = topics.get(name)
+                if topic is None:
+                    raise GraphError(f"published on undeclared topic {name}")
             graph.publish(topic, self.build(topic.msg_type, values), owner, publisher, young=young)
         for call_id, name, values in report.calls:
             service = graph.services.get(name)
@@ -323,6 +331,7 @@ class GraphProxy:
         elif kind is RemoveEndpoint:
             endpoint = self._endpoints.pop(change.wire_id, None)
             if endpoint is not None:
+                self._removed[change.wire_id] = endpoint
                 graph.remove_endpoint(endpoint)
         elif kind is DeclareTimer:
             if len(self.pace.timers) < _MAX_TIMERS_NAMED:
