@@ -160,7 +160,8 @@ class Timer:
     period_ns: int
     callback: Callable[[], None]
     owner: str
-    next_due: int
+    next_due: int | None
+    """When it fires next, in simulated ns; None while it is off the simulated clock (Graph.park_timer)."""
     canceled: bool = False
     seq: int = 0
     ready_item: tuple = field(init=False, repr=False)
@@ -795,6 +796,17 @@ class Graph:
     def cancel_timer(self, timer: Timer) -> None:
         """Stop a timer (``reset_timer`` starts it again)."""
         timer.canceled = True
+
+    def park_timer(self, timer: Timer) -> None:
+        """Take ``timer`` off the simulated clock: the graph no longer fires it
+        (a node's /clock does: turtletui.compat.timer); ``schedule_timer`` puts it back."""
+        timer.next_due = None  # its entry in the heap is stale now
+
+    def schedule_timer(self, timer: Timer, due_ns: int) -> None:
+        """Put ``timer`` (back) on the simulated clock, next due at ``due_ns``."""
+        timer.next_due = due_ns
+        if not timer.canceled:
+            heapq.heappush(self._timers, (due_ns, timer.seq, timer))
 
     def reset_timer(self, timer: Timer) -> None:
         """Restart a timer: its next call is one period from now."""
