@@ -11,6 +11,9 @@ from __future__ import annotations
 
 import pytest
 from support.hosts import node_logs, write_controller
+from test_node_plumbing import (
+    CLOCK,  # publishes /clock on a steady clock: 101 s, 102 s ... every 0.2 s
+)
 
 from turtletui.api import run
 
@@ -31,29 +34,6 @@ class Timed(Node):
 
     def on_steady_clock(self):
         self.get_logger().info(f"steady clock, node clock {self.get_clock().now().nanoseconds}")
-"""
-
-CLOCK = """
-import rclpy
-from rclpy.node import Node
-from rclpy.clock import Clock as WallClock, ClockType
-from rosgraph_msgs.msg import Clock
-
-
-class Simulator(Node):
-    # publishes /clock on its own steady clock (it has use_sim_time too)
-
-    def __init__(self):
-        super().__init__("simulator")
-        self.pub = self.create_publisher(Clock, "/clock", 10)
-        self.seconds = 100
-        self.create_timer(0.2, self.tick, clock=WallClock(clock_type=ClockType.STEADY_TIME))
-
-    def tick(self):
-        self.seconds += 1
-        msg = Clock()
-        msg.clock.sec = self.seconds
-        self.pub.publish(msg)
 """
 
 
