@@ -85,13 +85,15 @@ def test_turtlesims_parameter_changes_are_parameter_events(controller_host):
 
 SIM_TIME = """
 import rclpy
+from rclpy.clock import Clock, ClockType
 from rclpy.node import Node
 
 
 class Timed(Node):
     def __init__(self):
         super().__init__("timed")
-        self.create_timer(0.25, self.tick)
+        # on a steady clock: a timer on the node's clock would follow /clock (tests/compat/test_sim_time.py)
+        self.create_timer(0.25, self.tick, clock=Clock(clock_type=ClockType.STEADY_TIME))
 
     def tick(self):
         clock = self.get_clock()
@@ -101,6 +103,7 @@ class Timed(Node):
 
 CLOCK = """
 import rclpy
+from rclpy.clock import Clock as WallClock, ClockType
 from rclpy.node import Node
 from rosgraph_msgs.msg import Clock
 
@@ -110,7 +113,7 @@ class Simulator(Node):
         super().__init__("simulator")
         self.pub = self.create_publisher(Clock, "/clock", 10)
         self.seconds = 100
-        self.create_timer(0.2, self.tick)
+        self.create_timer(0.2, self.tick, clock=WallClock(clock_type=ClockType.STEADY_TIME))
 
     def tick(self):
         self.seconds += 1

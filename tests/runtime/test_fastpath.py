@@ -205,6 +205,49 @@ def test_qos_mismatches_and_late_joiners_are_the_same_on_both_paths_and_in_proce
     assert_same(fast, run([path], keep_poses=True, sandbox=False, duration=1.5), printed=False)
 
 
+ON_CLOCK = """
+import rclpy
+from builtin_interfaces.msg import Time
+from geometry_msgs.msg import Twist, Vector3
+from rclpy.clock import Clock as SteadyClock, ClockType
+from rclpy.node import Node
+from rclpy.parameter import Parameter
+from rosgraph_msgs.msg import Clock
+
+
+class Driver(Node):
+    \"\"\"Drives on /clock time, which its own steady timer publishes at 3/4 of the run's pace.\"\"\"
+
+    def __init__(self):
+        super().__init__("driver", parameter_overrides=[Parameter("use_sim_time", value=True)])
+        self.cmd = self.create_publisher(Twist, "/turtle1/cmd_vel", 10)
+        self.clock_pub = self.create_publisher(Clock, "/clock", 10)
+        self.ns = 0
+        self.create_timer(0.04, self.publish_clock, clock=SteadyClock(clock_type=ClockType.STEADY_TIME))
+        self.create_timer(0.1, self.drive)
+        self.turns = 0
+
+    def publish_clock(self):
+        self.ns += 30_000_000
+        self.clock_pub.publish(Clock(clock=Time(sec=self.ns // 10**9, nanosec=self.ns % 10**9)))
+
+    def drive(self):
+        self.turns += 1
+        self.cmd.publish(Twist(linear=Vector3(x=1.0), angular=Vector3(z=0.3 * (self.turns % 4))))
+        self.get_logger().info(f"drive {self.turns} at {self.get_clock().now().nanoseconds}")
+"""
+
+
+def test_timers_on_clock_time_are_the_same_on_both_paths_and_in_process(tmp_path, fast_runs):
+    path = write(tmp_path, ON_CLOCK)
+    fast, lockstep = both_paths(path, fast_runs, duration=2.0)
+    assert fast.ok, fast.crashes
+    drives = [r.msg for r in fast.logs if r.node == "driver"]
+    assert drives[:3] == ["drive 1 at 120000000", "drive 2 at 210000000", "drive 3 at 300000000"]
+    assert fast.turtles["turtle1"].x > 6.0
+    assert_same(fast, lockstep)
+    assert_same(fast, run([path], keep_poses=True, sandbox=False, duration=2.0), printed=False)
+
 def test_the_same_seed_gives_the_same_run_twice(tmp_path, fast_runs):
     path = write(tmp_path, EVERYTHING.replace("self.speed = self.get_parameter", "import random\n        self.speed = random.random() + 0 * self.get_parameter"))
     first = run([path], duration=4.0, keep_poses=True, seed=3, limits=FAST)

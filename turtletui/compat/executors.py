@@ -229,8 +229,13 @@ def wait_inside_callback(node: Any, done: Callable[[], bool], timeout_ns: int | 
     until ``done()`` (True) or the timeout (False). With threads (sandboxed)
     the executor's other threads run callbacks meanwhile; without (in-process)
     this thread runs them, one at a time, as far as their groups allow."""
-    host = node.context.host
-    if getattr(host, "scheduler", None) is not None and not host.scheduler.alone():
+    return wait_in_host(node.context.host, done, timeout_ns)
+
+
+def wait_in_host(host: Any, done: Callable[[], bool], timeout_ns: int | None) -> bool:
+    """Wait until ``done()`` (True) or the timeout (False): inside a callback,
+    as ``wait_inside_callback``; outside, while other threads run callbacks."""
+    if not host.callback_depth or (getattr(host, "scheduler", None) is not None and not host.scheduler.alone()):
         return host.spin_until(done, timeout_ns, callbacks=False)
     return host.spin_until(done, timeout_ns)
 

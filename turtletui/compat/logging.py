@@ -107,7 +107,8 @@ class RcutilsLogger:
         for kind in filters:
             if not _SHOULD_LOG[kind](context):
                 return False
-        (_current_host or _bind_current_host())().graph.log(name, int(severity), _text(message))
+        graph = (_current_host or _bind_current_host())().graph
+        graph.log(name, int(severity), _text(message), _origin(caller) if graph.hears_rosout() else None)
         return True
 
     def debug(self, message: str, **kwargs: Any) -> bool:
@@ -137,7 +138,8 @@ class RcutilsLogger:
         if severity < (_effective_level(self.name) if _LEVELS else _DEFAULT_LEVEL):
             return False
         text = message if message.__class__ is str else _text(message)
-        (_current_host or _bind_current_host())().graph.log(self.name, severity, text)
+        graph = (_current_host or _bind_current_host())().graph
+        graph.log(self.name, severity, text, _origin(_caller()) if graph.hears_rosout() else None)
         return True
 
     def error(self, message: str, **kwargs: Any) -> bool:
@@ -172,6 +174,12 @@ def _caller() -> tuple:
         frame = frame.f_back
     code = frame.f_code
     return (code.co_name, code.co_filename, frame.f_lineno, frame.f_lasti)
+
+
+def _origin(caller: tuple) -> tuple[str, str, int]:
+    """A call site as /rosout's Log has it: (file, function, line)."""
+    function, file, line, _ = caller
+    return (file, function, line)
 
 
 def _filters_from_kwargs(kwargs: dict[str, Any]) -> list[str]:

@@ -6,7 +6,11 @@ import math
 from collections.abc import Callable, Sequence
 from typing import Any
 
-from turtletui.compat.callback_groups import CallbackGroup, MutuallyExclusiveCallbackGroup
+from turtletui.compat.callback_groups import (
+    CallbackGroup,
+    MutuallyExclusiveCallbackGroup,
+    ReentrantCallbackGroup,
+)
 from turtletui.compat.context import Context, get_default_context
 from turtletui.compat.destroyable import Destroyable
 from turtletui.compat.dispatch import dispatcher
@@ -60,6 +64,7 @@ from turtletui.compat.qos import (
 from turtletui.compat.task import Future
 from turtletui.compat.time import Clock, ClockType, Duration, clock_for
 from turtletui.compat.time_source import TimeSource
+from turtletui.compat.timer import Rate, Timer
 from turtletui.graph import core
 from turtletui.graph.logs import WARN
 from turtletui.interfaces import copier, interface_name
@@ -212,49 +217,6 @@ class Subscription(Destroyable):
         self._node.destroy_subscription(self)
 
 
-class Timer(Destroyable):
-    """Calls ``callback()`` every ``timer_period_ns`` of simulated time."""
-
-    def __init__(self, node: Node, record: core.Timer) -> None:
-        self._node = node
-        self._record = record
-        self._graph = node._graph
-
-    @property
-    def timer_period_ns(self) -> int:
-        self._require_alive()
-        return self._record.period_ns
-
-    def cancel(self) -> None:
-        self._require_alive()
-        self._graph.cancel_timer(self._record)
-
-    def is_canceled(self) -> bool:
-        self._require_alive()
-        return self._record.canceled
-
-    def reset(self) -> None:
-        self._require_alive()
-        self._graph.reset_timer(self._record)
-
-    def is_ready(self) -> bool:
-        self._require_alive()
-        return not self._record.canceled and self._record.next_due <= self._graph.now_ns
-
-    def time_since_last_call(self) -> int:
-        self._require_alive()
-        return self._graph.now_ns - (self._record.next_due - self._record.period_ns)
-
-    def time_until_next_call(self) -> int | None:
-        self._require_alive()
-        if self._record.canceled:
-            return None
-        return self._record.next_due - self._graph.now_ns
-
-    def destroy(self) -> None:
-        self._node.destroy_timer(self)
-
-
 class Client(Destroyable):
     """A service client: ``call_async(request)`` returns a Future of the response."""
 
@@ -398,59 +360,6 @@ class Service(Destroyable):
         self._node.destroy_service(self)
 
 
-class Rate:
-    """``node.create_rate(hz).sleep()``: as rclpy's, a timer of the node (in
-    its default callback group) that ticks every period from the rate's
-    creation; ``sleep()`` returns at the next tick, at once if one passed
-    since the last sleep. The ticks need an executor spinning the node."""
-
-    def __init__(self, node: Node, frequency: float) -> None:
-        if isinstance(frequency, bool) or not isinstance(frequency, (int, float)):
-            raise TypeError(f"frequency must be a number of Hz, got {frequency!r}")
-        if not math.isfinite(frequency) or frequency <= 0:
-            raise ValueError(f"frequency must be positive and finite, got {frequency}")
-        self._node = node
-        self._period_ns = max(1, int(round(_NS / frequency)))
-        self._start = self._last = node.context.host.graph.now_ns
-        self._destroyed = False
-
-    def sleep(self) -> None:
-        """Wait for the next tick (in simulated time)."""
-        if self._destroyed:
-            raise RuntimeError("Rate cannot sleep because it has been destroyed")
-        host = self._node.context.host
-        hang = self._why_sleep_hangs(host)
-        if hang:
-            raise RuntimeError(
-                f"Rate.sleep() {hang}: in ROS 2 it would wait for ever. Spin the node in a thread "
-                "(threading.Thread(target=rclpy.spin, args=(node,), daemon=True).start()) and keep the loop "
-                "in main, or drive the loop from a timer (create_timer) instead."
-            )
-        period = self._period_ns
-        due = self._start + ((self._last - self._start) // period + 1) * period
-        if due > host.graph.now_ns:
-            host.sleep_until(due)
-        self._last = host.graph.now_ns
-
-    def _why_sleep_hangs(self, host: Any) -> str:
-        node = self._node
-        if host.callback_depth:
-            if not threads_that_can_help(node):
-                return "inside a callback of a single-threaded executor: the rate's timer cannot fire while it waits"
-            if busy_exclusive_group(node.default_callback_group):
-                return (
-                    "inside a callback of the node's default callback group: the rate's timer is in that group "
-                    "too and cannot fire while it waits"
-                )
-            return ""
-        if nothing_spins(node):
-            return "with nothing spinning the node: the rate's timer never fires"
-        return ""
-
-    def destroy(self) -> None:
-        self._destroyed = True
-
-
 class Node(Destroyable):
     """A ROS 2 node: the base class of every controller."""
 
@@ -516,6 +425,8 @@ class Node(Destroyable):
         self._on_set: list[Callable] = []
         self._entities: list[Any] = []
         self._default_callback_group = MutuallyExclusiveCallbackGroup()
+        self._rate_group = ReentrantCallbackGroup()
+        """Where the timers of the node's rates run, as rclpy's (never busy: a rate can always tick)."""
         self._callback_groups: list[CallbackGroup] = [self._default_callback_group]
         self._logger = get_logger(f"{namespace.strip('/').replace('/', '.')}.{node_name}".lstrip("."))
         self._clock = clock_for(self._context, ClockType.ROS_TIME)
@@ -705,20 +616,24 @@ class Node(Destroyable):
             raise ValueError(f"timer_period_sec must be positive and finite, got {timer_period_sec}")
         if not callable(callback):
             raise TypeError(f"create_timer() needs a callable callback, got {callback!r}")
+        if clock is not None and not isinstance(clock, Clock):
+            raise TypeError(f"create_timer() needs an rclpy.clock.Clock as clock, got {clock!r}")
         host = self._context.host
+        group = self._group(callback_group)
         record = self._graph.add_timer(
             self._record,
             max(1, int(round(timer_period_sec * _NS))),
-            dispatcher(host, self._group(callback_group), callback),
+            dispatcher(host, group, callback),
             # rclpy lets a destroyed node make a timer; no executor calls it
             autostart=autostart and not self._destroyed,
         )
-        timer = Timer(self, record)
+        timer = Timer(self, record, self._clock if clock is None else clock)
+        timer.callback_group = group
         self._entities.append(timer)
         return timer
 
     def create_rate(self, frequency: float, clock: Clock | None = None) -> Rate:
-        return Rate(self, frequency)
+        return Rate(self, frequency, clock)
 
     def create_client(
         self,

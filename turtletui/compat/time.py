@@ -1,11 +1,15 @@
 """``rclpy.time``, ``rclpy.duration`` and ``rclpy.clock``: simulated ROS time.
 
 Arithmetic, comparisons, bounds and error types follow rclpy's (Duration and Time
-are unhashable there too, since they define ``__eq__`` without ``__hash__``)."""
+are unhashable there too, since they define ``__eq__`` without ``__hash__``).
+A ROS clock's time jumps (its /clock override set, ROS time switched on or
+off) call the jump callbacks registered on it under rcl's thresholds, as
+rcl_set_ros_time_override and rcl_enable_ros_time_override do."""
 
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from enum import IntEnum
 from typing import TYPE_CHECKING
 
@@ -228,6 +232,108 @@ class Time:
         return cls(seconds=msg.sec, nanoseconds=msg.nanosec, clock_type=clock_type)
 
 
+class ClockChange(IntEnum):
+    """What a time jump did to a clock's source, as ``rclpy.clock.ClockChange`` (rcl's values)."""
+
+    ROS_TIME_NO_CHANGE = 1
+    ROS_TIME_ACTIVATED = 2
+    ROS_TIME_DEACTIVATED = 3
+    SYSTEM_TIME_NO_CHANGE = 4
+
+
+class JumpThreshold:
+    """When a jump callback runs: a forward jump of at least ``min_forward``, a
+    backward one of at least ``-min_backward``, or ROS time switched on or off."""
+
+    def __init__(
+        self, *, min_forward: Duration | None, min_backward: Duration | None, on_clock_change: bool = True
+    ) -> None:
+        if min_forward is not None and min_forward.nanoseconds <= 0:
+            raise ValueError("min_forward must be a positive non-zero duration")
+        if min_backward is not None and min_backward.nanoseconds >= 0:
+            raise ValueError("min_backward must be a negative non-zero duration")
+        if min_forward is None and min_backward is None and not on_clock_change:
+            raise ValueError("At least one jump threshold must be enabled")
+        self.min_forward = min_forward
+        self.min_backward = min_backward
+        self.on_clock_change = on_clock_change
+
+
+class TimeJump:
+    """A jump of a clock: ``clock_change`` and ``delta`` (a Duration)."""
+
+    def __init__(self, clock_change: ClockChange, delta: Duration) -> None:
+        if not isinstance(clock_change, ClockChange):
+            raise TypeError("clock_change must be an instance of rclpy.clock.ClockChange")
+        self._clock_change = clock_change
+        self._delta = delta
+
+    @property
+    def clock_change(self) -> ClockChange:
+        return self._clock_change
+
+    @property
+    def delta(self) -> Duration:
+        return self._delta
+
+
+class JumpHandle:
+    """A jump callback registered on a clock; ``unregister()`` removes it."""
+
+    def __init__(
+        self,
+        *,
+        clock: Clock,
+        threshold: JumpThreshold,
+        pre_callback: Callable[[], None] | None,
+        post_callback: Callable[[TimeJump], None] | None,
+    ) -> None:
+        if pre_callback is None and post_callback is None:
+            raise ValueError("One of pre_callback or post_callback must be callable")
+        if pre_callback is not None and not callable(pre_callback):
+            raise ValueError("pre_callback must be callable if given")
+        if post_callback is not None and not callable(post_callback):
+            raise ValueError("post_callback must be callable if given")
+        self._clock: Clock | None = clock
+        self._pre_callback = pre_callback
+        self._post_callback = post_callback
+        self._on_clock_change = threshold.on_clock_change
+        self._min_forward = 0 if threshold.min_forward is None else threshold.min_forward.nanoseconds
+        self._min_backward = 0 if threshold.min_backward is None else threshold.min_backward.nanoseconds
+        clock._jump_handles = [*clock._jump_handles, self]
+
+    def _exceeded(self, jump: TimeJump) -> bool:
+        """rcl_clock_call_callbacks' test."""
+        delta = jump.delta.nanoseconds
+        return (
+            (self._on_clock_change and jump.clock_change in _SOURCE_CHANGES)
+            or (self._min_backward < 0 and delta <= self._min_backward)
+            or (self._min_forward > 0 and delta >= self._min_forward)
+        )
+
+    def _call(self, jump: TimeJump, before: bool) -> None:
+        if before:
+            if self._pre_callback is not None:
+                self._pre_callback()
+        elif self._post_callback is not None:
+            self._post_callback(jump)
+
+    def unregister(self) -> None:
+        """Remove the callback from the clock."""
+        if self._clock is not None:
+            self._clock._jump_handles = [h for h in self._clock._jump_handles if h is not self]
+            self._clock = None
+
+    def __enter__(self) -> JumpHandle:
+        return self
+
+    def __exit__(self, *exc_info: object) -> None:
+        self.unregister()
+
+
+_SOURCE_CHANGES = (ClockChange.ROS_TIME_ACTIVATED, ClockChange.ROS_TIME_DEACTIVATED)
+
+
 class Clock:
     """A clock reading simulated time: it advances only as the simulation does.
 
@@ -239,6 +345,7 @@ class Clock:
     _ros_time_active = False
     """Whether now() reads ``_ros_time_ns`` (a ROSClock of a node with use_sim_time)."""
     _ros_time_ns = 0
+    _jump_handles: list[JumpHandle] = []  # noqa: RUF012  (replaced, never mutated: per clock once one registers)
 
     def __new__(cls, *, clock_type: ClockType = ClockType.SYSTEM_TIME) -> Clock:
         if not isinstance(clock_type, ClockType):
@@ -264,14 +371,50 @@ class Clock:
             return Time(nanoseconds=self._ros_time_ns, clock_type=self._clock_type)
         return Time(nanoseconds=self._ctx().host.graph.stamp_ns, clock_type=self._clock_type)
 
+    def create_jump_callback(
+        self,
+        threshold: JumpThreshold,
+        *,
+        pre_callback: Callable[[], None] | None = None,
+        post_callback: Callable[[TimeJump], None] | None = None,
+    ) -> JumpHandle:
+        """Call ``pre_callback()`` before and ``post_callback(TimeJump)`` after
+        each jump of this clock that exceeds ``threshold``."""
+        return JumpHandle(clock=self, threshold=threshold, pre_callback=pre_callback, post_callback=post_callback)
+
+    def _jump(self, jump: TimeJump, before: bool) -> None:
+        """Run the jump callbacks ``jump`` exceeds, in the order they were
+        registered (one that raises stops the rest, as in rclpy)."""
+        for handle in self._jump_handles:
+            if handle._exceeded(jump):
+                handle._call(jump, before)
+
     def sleep_for(self, rel_time: Duration, context: Context | None = None) -> bool:
         return self.sleep_until(self.now() + rel_time, context)
 
     def sleep_until(self, until: Time, context: Context | None = None) -> bool:
+        """Wait until the clock reads ``until``. A ROS clock reading /clock waits
+        for /clock to get there (another thread must spin its node); ROS time
+        switched on or off ends the wait early (False), as in rclpy."""
         if not isinstance(until, Time):
             raise TypeError("Time must be specified as rclpy.time.Time")
+        if until.clock_type != self._clock_type:
+            raise ValueError("until's clock type does not match this clock's type")
+        from turtletui.compat.executors import wait_in_host
+
         host = self._ctx(context).host
-        return host.sleep_until(until.nanoseconds - host.graph.epoch_ns)
+        if not self._ros_time_active:
+            return host.sleep_until(until.nanoseconds - host.graph.epoch_ns)
+        changed = False
+
+        def on_jump(jump: TimeJump) -> None:
+            nonlocal changed
+            changed = changed or jump.clock_change in _SOURCE_CHANGES
+
+        threshold = JumpThreshold(min_forward=Duration(nanoseconds=1), min_backward=None)
+        with self.create_jump_callback(threshold, post_callback=on_jump):
+            wait_in_host(host, lambda: changed or self.now() >= until, None)
+        return not changed and self.now() >= until
 
 
 class ROSClock(Clock):
@@ -285,13 +428,26 @@ class ROSClock(Clock):
         return self._ros_time_active
 
     def _set_ros_time_is_active(self, enabled: bool) -> None:
-        self._ros_time_active = bool(enabled)
+        enabled = bool(enabled)
+        if enabled == self._ros_time_active:
+            return
+        change = ClockChange.ROS_TIME_ACTIVATED if enabled else ClockChange.ROS_TIME_DEACTIVATED
+        jump = TimeJump(change, Duration())
+        self._jump(jump, before=True)
+        self._ros_time_active = enabled
+        self._jump(jump, before=False)
 
     def set_ros_time_override(self, time: Time) -> None:
         """What the clock reads while ROS time is active (the last /clock message)."""
         if not isinstance(time, Time):
-            raise TypeError("Time must be specified as rclpy.time.Time")
+            raise TypeError(f"Time must be specified as rclpy.time.Time. Received type: {type(time)}")
+        if not self._ros_time_active:
+            self._ros_time_ns = time.nanoseconds
+            return
+        jump = TimeJump(ClockChange.ROS_TIME_NO_CHANGE, Duration(nanoseconds=time.nanoseconds - self._ros_time_ns))
+        self._jump(jump, before=True)
         self._ros_time_ns = time.nanoseconds
+        self._jump(jump, before=False)
 
 
 def clock_for(context: Context, clock_type: ClockType = ClockType.ROS_TIME) -> Clock:

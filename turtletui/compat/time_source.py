@@ -6,7 +6,8 @@ true the node's ROS clock reads the last rosgraph_msgs/msg/Clock received on
 ``ros2 bag play --clock`` publishing /clock, time stands still. turtletui
 publishes no /clock of its own (its time is simulated anyway), so the first
 node of a program to turn use_sim_time on while nothing publishes /clock
-gets a one-time [turtletui] note saying why its time stands still.
+gets a one-time [turtletui] note saying why its time stands still. The
+node's timers and rates follow the same clock (turtletui.compat.timer).
 """
 
 from __future__ import annotations
@@ -24,7 +25,7 @@ USE_SIM_TIME_NAME = "use_sim_time"
 
 _NO_CLOCK = (
     "{node} uses simulated time (use_sim_time is true) but nothing publishes {topic} yet, so its clock "
-    "reads 0 and stands still until something does, as on ROS 2 without a simulator or `ros2 bag play "
+    "reads 0 and stands still, and its timers wait, until something does, as on ROS 2 without a simulator or `ros2 bag play "
     "--clock`. turtletui's own time needs no /clock: leave use_sim_time false, or publish "
     "rosgraph_msgs/msg/Clock on {topic}."
 )

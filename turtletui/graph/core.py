@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 from typing import Any, Literal, Protocol
 
 from turtletui.errors import TurtletuiError
-from turtletui.graph.logs import INFO, LogRecord
+from turtletui.graph.logs import INFO, LogRecord, to_log_message
 from turtletui.graph.qos import incompatible_policy, is_transient_local
 
 NS_PER_S = 1_000_000_000
@@ -32,6 +32,11 @@ DDS on one machine took 22 ms to 1.8 s to match a new publisher (Kilted,
 rclpy 9.1, a quiet to a busy 2-core VM)."""
 
 _RATE_WINDOW = 64
+ROSOUT = "/rosout"
+ROSOUT_ECHO_NS = 1_000_000
+"""How long a line logged in a /rosout callback takes to reach /rosout's
+subscriptions (about a round trip through rcl's logging and DDS on one
+machine); every other line reaches them at once."""
 
 _new_tuple = tuple.__new__
 """Makes a NamedTuple from a tuple without the Python-level ``__new__`` it adds
@@ -160,7 +165,8 @@ class Timer:
     period_ns: int
     callback: Callable[[], None]
     owner: str
-    next_due: int
+    next_due: int | None
+    """When it fires next, in simulated ns; None while it is off the simulated clock (Graph.park_timer)."""
     canceled: bool = False
     seq: int = 0
     ready_item: tuple = field(init=False, repr=False)
@@ -413,6 +419,10 @@ class Graph:
         """Told what this graph's nodes do, when the graph is one part of a
         larger one (see GraphOutbox); None for a whole graph."""
         self.self_delivering: set[str] = set()
+        self._in_rosout_callback = 0
+        """How many /rosout subscriptions are handing out messages right now."""
+        self._rosout_later: list[tuple[LogRecord, tuple[str, str, int] | None]] = []
+        """Lines logged in a /rosout callback, delivered ROSOUT_ECHO_NS later (see ``_to_rosout``)."""
         """Owners whose endpoints live in another process that delivers between
         them itself (a sandboxed controller's): this graph gives them nothing
         of their own."""
@@ -608,6 +618,8 @@ class Graph:
         self.version += 1
         topic = self.topic(name, msg_type)
         sub = Subscription(node, topic, depth, callback, node.owner, qos, copy, self.now_ns)
+        if name == ROSOUT:
+            sub.ready_item = (sub.owner, self._counted_rosout_delivery(sub.deliver))
         topic.subscriptions.append(sub)
         if self.outbox is not None:
             self.outbox.declared(sub)
@@ -804,6 +816,17 @@ class Graph:
     def cancel_timer(self, timer: Timer) -> None:
         """Stop a timer (``reset_timer`` starts it again)."""
         timer.canceled = True
+
+    def park_timer(self, timer: Timer) -> None:
+        """Take ``timer`` off the simulated clock: the graph no longer fires it
+        (a node's /clock does: turtletui.compat.timer); ``schedule_timer`` puts it back."""
+        timer.next_due = None  # its entry in the heap is stale now
+
+    def schedule_timer(self, timer: Timer, due_ns: int) -> None:
+        """Put ``timer`` (back) on the simulated clock, next due at ``due_ns``."""
+        timer.next_due = due_ns
+        if not timer.canceled:
+            heapq.heappush(self._timers, (due_ns, timer.seq, timer))
 
     def reset_timer(self, timer: Timer) -> None:
         """Restart a timer: its next call is one period from now."""
@@ -1034,7 +1057,9 @@ class Graph:
         ready.append((handle.action.owner, lambda: handle.request_cancel(answer)))
 
     # -- logs ---------------------------------------------------------------
-    def log(self, node: str, level: int, msg: str) -> LogRecord:
+    def log(self, node: str, level: int, msg: str, origin: tuple[str, str, int] | None = None) -> LogRecord:
+        """Log ``msg`` as the logger ``node``; ``origin`` is the call site
+        (file, function, line) that /rosout subscriptions see (see ``hears_rosout``)."""
         now = self.now_ns
         record = _new_tuple(LogRecord, (self.epoch_ns + now, now / NS_PER_S, level, node, msg))
         # Taps (the recorder) first: a line a Ctrl-C cuts short after it was
@@ -1046,7 +1071,99 @@ class Graph:
             sink(record)
         if self.outbox is not None:
             self.outbox.logged(record)
+        rosout = self.topics.get(ROSOUT)
+        if rosout is not None and rosout.subscriptions:
+            self._to_rosout(rosout, record, origin)
         return record
+
+    def hears_rosout(self) -> bool:
+        """Whether a subscription listens on /rosout (a logger then says where it was called)."""
+        rosout = self.topics.get(ROSOUT)
+        return rosout is not None and bool(rosout.subscriptions)
+
+    def _to_rosout(
+        self, topic: Topic, record: LogRecord, origin: tuple[str, str, int] | None, *, now: bool = False
+    ) -> None:
+        """Deliver ``record`` as an rcl_interfaces/msg/Log from its node's /rosout
+        publisher, as rcl_logging_rosout does (a child logger ``node.part``
+        through its node's; a logger of no node, or of a node without /rosout,
+        reaches nobody). Each graph delivers the lines of its own nodes to its
+        own subscriptions; the trusted graph also every line to the
+        subscriptions of other processes (a sandboxed child sends its lines).
+
+        A line logged in a /rosout callback is delivered ROSOUT_ECHO_NS later,
+        not at once: a node that logs whatever it hears there floods its log
+        as on ROS 2 instead of looping for ever in one instant (and its log
+        budget stops the flood)."""
+        publisher = self._rosout_publisher(topic, record.node)
+        if publisher is None:
+            return
+        if self._in_rosout_callback and not now:
+            if not self._rosout_later:
+                self._soon(publisher.node, ROSOUT_ECHO_NS, self._deliver_rosout_later)
+            self._rosout_later.append((record, origin))
+            return
+        msg = to_log_message(record, origin)
+        remote = self.outbox.remote_owner if self.outbox is not None else None
+        if publisher.kept is not None:
+            publisher.kept.append((self.now_ns, msg))
+        own = publisher.owner
+        ready = self.ready
+        for sub in topic.subscriptions:
+            if sub.owner == remote or (sub.owner == own and own in self.self_delivering):
+                continue  # delivered by the process they live in
+            if sub in publisher.muted or not self.matched(publisher, sub):
+                continue
+            sub.queue.append(msg if sub.copy is None else sub.copy(msg))
+            if not sub.pending:
+                sub.pending = True
+                ready.append(sub.ready_item)
+
+    def _counted_rosout_delivery(self, deliver: Callable[[], None]) -> Callable[[], None]:
+        def counted() -> None:
+            self._in_rosout_callback += 1
+            try:
+                deliver()
+            finally:
+                self._in_rosout_callback -= 1
+
+        return counted
+
+    def _soon(self, node: NodeRecord, delay_ns: int, callback: Callable[[], None]) -> None:
+        """Call ``callback`` once, ``delay_ns`` from now, as a timer of ``node``
+        that no other process is told of (the graph's own business)."""
+        self._seq += 1
+        timer = Timer(node, delay_ns, callback, node.owner, self.now_ns + delay_ns, seq=self._seq)
+
+        def once() -> None:
+            timer.canceled = True
+            callback()
+
+        timer.ready_item = (node.owner, once)
+        heapq.heappush(self._timers, (timer.next_due, timer.seq, timer))
+
+    def _deliver_rosout_later(self) -> None:
+        later, self._rosout_later = self._rosout_later, []
+        rosout = self.topics.get(ROSOUT)
+        if rosout is not None:
+            for record, origin in later:
+                self._to_rosout(rosout, record, origin, now=True)
+
+    def _rosout_publisher(self, topic: Topic, logger: str) -> Publisher | None:
+        """The /rosout publisher of the node whose logger is ``logger`` or its parent's."""
+        by_logger = {}
+        remote = self.outbox.remote_owner if self.outbox is not None else None
+        for pub in topic.publishers:
+            if pub.owner == remote:
+                continue  # a child logs for its own nodes only
+            node = pub.node
+            name = f"{node.namespace.strip('/').replace('/', '.')}.{node.name}".lstrip(".")
+            by_logger.setdefault(name, pub)
+        while True:
+            found = by_logger.get(logger)
+            if found is not None or "." not in logger:
+                return found
+            logger = logger.rsplit(".", 1)[0]
 
     def info(self, node: str, msg: str) -> LogRecord:
         return self.log(node, INFO, msg)

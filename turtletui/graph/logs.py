@@ -46,10 +46,15 @@ def parse_level(value: str | int) -> int:
         raise ValueError(f"unknown log level {value!r}: use one of {names}") from None
 
 
-def to_log_message(record: LogRecord) -> Any:
-    """The record as the rcl_interfaces/msg/Log a node publishes on /rosout."""
+def to_log_message(record: LogRecord, origin: tuple[str, str, int] | None = None) -> Any:
+    """The record as the rcl_interfaces/msg/Log a node publishes on /rosout;
+    ``origin`` is where it was logged: (file, function, line)."""
     from turtletui.interfaces.builtin_interfaces import Time
     from turtletui.interfaces.rcl_interfaces import Log
 
     sec, nanosec = divmod(record.stamp_ns, 1_000_000_000)
-    return Log(stamp=Time(sec=sec, nanosec=nanosec), level=max(0, min(record.level, 255)), name=record.node, msg=record.msg)
+    file, function, line = origin or ("", "", 0)
+    return Log(
+        stamp=Time(sec=sec, nanosec=nanosec), level=max(0, min(record.level, 255)), name=record.node,
+        msg=record.msg, file=file, function=function, line=line,
+    )

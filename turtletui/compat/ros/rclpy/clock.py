@@ -1,1 +1,9 @@
-from turtletui.compat.time import Clock, ClockType, ROSClock  # noqa: F401
+from turtletui.compat.time import (  # noqa: F401
+    Clock,
+    ClockChange,
+    ClockType,
+    JumpHandle,
+    JumpThreshold,
+    ROSClock,
+    TimeJump,
+)

@@ -1,0 +1,263 @@
+"""``rclpy.timer``: Timer and Rate, on the run's time or on a node's /clock.
+
+A timer keeps rcl's bookkeeping on its clock (rcl/src/rcl/timer.c). While
+that clock reads the run's time (every clock but a ROS clock whose node has
+use_sim_time on), the graph's heap of timers fires it, so that it costs
+nothing between calls. While it reads /clock, the graph's clock no longer
+drives it: it fires when /clock jumps past its next call, once however far
+the jump went, as rcl's jump callback and ``rcl_timer_call`` make it; a jump
+back further than its last call restarts its period; ROS time switched on or
+off carries the part of the period already gone over into the new time, as
+rcl's "time credit" does. With nothing publishing /clock it never fires.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any
+
+from turtletui.compat.destroyable import Destroyable
+from turtletui.compat.executors import (
+    busy_exclusive_group,
+    nothing_spins,
+    threads_that_can_help,
+    wait_in_host,
+)
+from turtletui.compat.time import (
+    _SOURCE_CHANGES,
+    Clock,
+    ClockChange,
+    Duration,
+    JumpHandle,
+    JumpThreshold,
+    ROSClock,
+    TimeJump,
+)
+
+if TYPE_CHECKING:
+    from turtletui.compat.node import Node
+    from turtletui.graph import core
+
+_NS = 1_000_000_000
+_TIMER_THRESHOLD = JumpThreshold(min_forward=Duration(nanoseconds=1), min_backward=Duration(nanoseconds=-1))
+"""What rcl_timer_init registers on a ROS clock: every jump, and ROS time switched on or off."""
+
+
+class Timer(Destroyable):
+    """Calls ``callback()`` every ``timer_period_ns`` of its clock's time."""
+
+    def __init__(self, node: Node, record: core.Timer, clock: Clock) -> None:
+        self._node = node
+        self._record = record
+        self._graph = node._graph
+        self._clock = clock
+        self.callback_group = None
+        # rcl's state, in the clock's nanoseconds, while /clock drives the timer
+        self._on_clock = False
+        self._next_call = self._last_call = self._credit = 0
+        self._pending = False
+        """Whether a call is queued on the graph and not yet taken."""
+        self._jump_handle: _TimerJumps | None = None
+        if isinstance(clock, ROSClock):
+            self._jump_handle = _TimerJumps(self)
+            if clock.ros_time_is_active:  # made on /clock time: rcl_timer_init's times
+                now = clock.now().nanoseconds
+                self._take_off_graph(now, now + record.period_ns)
+
+    @property
+    def clock(self) -> Clock:
+        return self._clock
+
+    @property
+    def timer_period_ns(self) -> int:
+        self._require_alive()
+        return self._record.period_ns
+
+    def cancel(self) -> None:
+        self._require_alive()
+        self._graph.cancel_timer(self._record)
+
+    def is_canceled(self) -> bool:
+        self._require_alive()
+        return self._record.canceled
+
+    def reset(self) -> None:
+        self._require_alive()
+        if self._on_clock:
+            self._record.canceled = False
+            self._next_call = self._now() + self._record.period_ns
+        else:
+            self._graph.reset_timer(self._record)
+
+    def is_ready(self) -> bool:
+        self._require_alive()
+        return not self._record.canceled and self._next_call_ns() <= self._now()
+
+    def time_since_last_call(self) -> int:
+        self._require_alive()
+        return self._now() - self._last_call_ns()
+
+    def time_until_next_call(self) -> int | None:
+        self._require_alive()
+        if self._record.canceled:
+            return None
+        return self._next_call_ns() - self._now()
+
+    def destroy(self) -> None:
+        self._node.destroy_timer(self)
+
+    # -- rcl's bookkeeping ---------------------------------------------------------------------
+    def _now(self) -> int:
+        return self._clock.now().nanoseconds
+
+    def _next_call_ns(self) -> int:
+        if self._on_clock:
+            return self._next_call
+        return self._graph.epoch_ns + self._record.next_due
+
+    def _last_call_ns(self) -> int:
+        if self._on_clock:
+            return self._last_call
+        return self._next_call_ns() - self._record.period_ns
+
+    def _take_off_graph(self, last_call: int, next_call: int) -> None:
+        self._on_clock = True
+        self._last_call, self._next_call = last_call, next_call
+        self._graph.park_timer(self._record)
+
+    def _put_on_graph(self) -> None:
+        self._on_clock = False
+        self._graph.schedule_timer(self._record, max(self._next_call - self._graph.epoch_ns, self._graph.now_ns))
+
+    def _alive(self) -> bool:
+        if self._destroyed or not self._record.node.alive:
+            if self._jump_handle is not None:
+                self._jump_handle.unregister()
+                self._jump_handle = None
+            return False
+        return True
+
+    def _before_jump(self, jump: TimeJump) -> None:
+        """rcl's pre-jump: on a change of time source, the part of the period
+        still to go is kept as credit (the clock still reads the old source)."""
+        if not self._alive() or jump.clock_change not in _SOURCE_CHANGES:
+            return
+        now = self._now()
+        if now != 0:
+            self._credit = self._next_call_ns() - now
+        if jump.clock_change is ClockChange.ROS_TIME_ACTIVATED:
+            self._take_off_graph(self._last_call_ns(), self._next_call_ns())
+
+    def _after_jump(self, jump: TimeJump) -> None:
+        """rcl's post-jump (``_rcl_timer_time_jump``)."""
+        if not self._alive():
+            return
+        period = self._record.period_ns
+        now = self._now()
+        if jump.clock_change in _SOURCE_CHANGES:
+            credit, self._credit = self._credit, 0
+            if now != 0 and credit:
+                self._next_call = now - credit + period
+                self._last_call = now - credit
+            elif now == 0:
+                self._credit = credit  # rcl leaves it for a later change of source
+            if jump.clock_change is ClockChange.ROS_TIME_DEACTIVATED:
+                self._put_on_graph()
+                return
+        elif now < self._last_call and self._next_call > now:
+            # back further than the last call: the next one a period from now
+            self._next_call, self._last_call = now + period, now
+        if self._next_call <= now:
+            self._queue_call()
+
+    def _queue_call(self) -> None:
+        if not self._pending and not self._record.canceled:
+            self._pending = True
+            self._graph.ready.append((self._record.owner, self._take))
+
+    def _take(self) -> None:
+        """What the executor does with a ready timer: ``rcl_timer_call``, then the callback."""
+        self._pending = False
+        if not self._on_clock or self._record.canceled or not self._alive():
+            return
+        now = self._now()
+        if self._next_call > now:
+            return
+        period = self._record.period_ns
+        self._last_call = now
+        next_call = self._next_call + period
+        if next_call <= now:  # missed calls are skipped, not made up
+            next_call += (1 + (now - next_call) // period) * period
+        self._next_call = next_call
+        self._record.callback()
+
+
+class _TimerJumps(JumpHandle):
+    """The jump callback rcl_timer_init registers on a ROS clock for its timer."""
+
+    def __init__(self, timer: Timer) -> None:
+        super().__init__(clock=timer.clock, threshold=_TIMER_THRESHOLD, pre_callback=None, post_callback=timer._after_jump)
+        self._timer = timer
+
+    def _call(self, jump: TimeJump, before: bool) -> None:
+        if before:
+            self._timer._before_jump(jump)
+        else:
+            self._timer._after_jump(jump)
+
+
+class Rate:
+    """``node.create_rate(hz)``: as rclpy's, a timer of the node's clock in a
+    reentrant group of its own; ``sleep()`` returns when the timer fires, at
+    once if it fired since the last sleep. The timer needs an executor
+    spinning the node (and, on /clock time, something publishing /clock)."""
+
+    def __init__(self, node: Node, frequency: float, clock: Clock | None = None) -> None:
+        if isinstance(frequency, bool) or not isinstance(frequency, (int, float)):
+            raise TypeError(f"frequency must be a number of Hz, got {frequency!r}")
+        if not math.isfinite(frequency) or frequency <= 0:
+            raise ValueError(f"frequency must be positive and finite, got {frequency}")
+        self._node = node
+        self._fired = False
+        self._destroyed = False
+        self._timer = node.create_timer(1.0 / frequency, self._tick, node._rate_group, clock)
+
+    def _tick(self) -> None:
+        self._fired = True
+
+    def sleep(self) -> None:
+        """Wait for the rate's timer to fire."""
+        if self._destroyed:
+            raise RuntimeError("Rate cannot sleep because it has been destroyed")
+        node = self._node
+        host = node.context.host
+        hang = self._why_sleep_hangs(host)
+        if hang:
+            raise RuntimeError(
+                f"Rate.sleep() {hang}: in ROS 2 it would wait for ever. Spin the node in a thread "
+                "(threading.Thread(target=rclpy.spin, args=(node,), daemon=True).start()) and keep the loop "
+                "in main, or drive the loop from a timer (create_timer) instead."
+            )
+        if not self._fired:
+            wait_in_host(host, lambda: self._fired or self._destroyed, None)
+        self._fired = False
+
+    def _why_sleep_hangs(self, host: Any) -> str:
+        node = self._node
+        clock_sub = node._time_source._clock_sub if self._timer._on_clock else None
+        if host.callback_depth:
+            if not threads_that_can_help(node):
+                return "inside a callback of a single-threaded executor: the rate's timer cannot fire while it waits"
+            if clock_sub is not None and busy_exclusive_group(node.default_callback_group):
+                return (
+                    "inside a callback of the node's default callback group on /clock time (use_sim_time): "
+                    "the node's /clock subscription is in that group too, so its clock cannot move while it waits"
+                )
+            return ""
+        if nothing_spins(node):
+            return "with nothing spinning the node: the rate's timer never fires"
+        return ""
+
+    def destroy(self) -> None:
+        self._destroyed = True
+        self._node.destroy_timer(self._timer)
