@@ -289,7 +289,7 @@ def test_a_fake_result_printed_or_written_does_not_reach_the_report(tmp_path: Pa
 
 SLOW_LESSON = LESSON.replace('id = "hostile-drive"', 'id = "slow-drive"').replace(
     "duration = 3.0",
-    'duration = 20.0\n\n[[scenarios]]\nname = "corner"\nstart = {x = 8.8, y = 8.8, theta = 0.785}\nduration = 20.0',
+    'duration = 6.0\n\n[[scenarios]]\nname = "corner"\nstart = {x = 8.8, y = 8.8, theta = 0.785}\nduration = 6.0',
 )
 
 
@@ -341,6 +341,6 @@ def test_slow_controllers_are_graded_in_minutes_with_verdicts_that_say_why(tmp_p
     for text in outputs("busy_loop", "no_crash"):
         assert "did not answer within 2 s of wall time" in text
 
-    # six submissions of two 20 s runs: minutes at most, even on a busy machine
+    # six submissions of two 6 s runs: minutes at most, even on a busy machine
     assert took < 300, f"the batch took {took:.0f} s"
     assert wait_until_gone([klass]) == []
