@@ -419,13 +419,13 @@ class Graph:
         """Told what this graph's nodes do, when the graph is one part of a
         larger one (see GraphOutbox); None for a whole graph."""
         self.self_delivering: set[str] = set()
+        """Owners whose endpoints live in another process that delivers between
+        them itself (a sandboxed controller's): this graph gives them nothing
+        of their own."""
         self._in_rosout_callback = 0
         """How many /rosout subscriptions are handing out messages right now."""
         self._rosout_later: list[tuple[LogRecord, tuple[str, str, int] | None]] = []
         """Lines logged in a /rosout callback, delivered ROSOUT_ECHO_NS later (see ``_to_rosout``)."""
-        """Owners whose endpoints live in another process that delivers between
-        them itself (a sandboxed controller's): this graph gives them nothing
-        of their own."""
 
     # -- time ---------------------------------------------------------------
     @property
