@@ -44,3 +44,19 @@ def is_transient_local(qos: Any) -> bool:
     """Whether an endpoint keeps (publisher) or asks for (subscription) the
     last messages sent before a subscription joined."""
     return _effective(qos)[1] == _TRANSIENT_LOCAL
+
+
+_RCLCPP_INCOMPATIBLE = (
+    "New publisher discovered on topic '{}', offering incompatible QoS. "
+    "No messages will be sent to it. Last incompatible policy: {}_QOS_POLICY",
+    "New subscription discovered on topic '{}', requesting incompatible QoS. "
+    "No messages will be sent to it. Last incompatible policy: {}_QOS_POLICY",
+)
+
+
+def rclcpp_incompatible_qos(publisher_side: bool, topic: str, policy: str) -> str:
+    """What rclcpp's default incompatible-QoS callback logs (WARN, on the
+    node's logger) for a publisher (``publisher_side``) or a subscription of
+    a C++ node: publisher_base.cpp's and subscription_base.cpp's words, the
+    policy as qos_policy_name_from_kind names it."""
+    return _RCLCPP_INCOMPATIBLE[publisher_side].format(topic, policy)
