@@ -8,11 +8,34 @@ bare depth, SYSTEM_DEFAULT) has rmw's default: reliable, volatile.
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, NamedTuple
 
 _RELIABLE, _BEST_EFFORT = 1, 2
 _TRANSIENT_LOCAL, _VOLATILE = 1, 2
 _SYSTEM_DEFAULT = 0
+_AUTOMATIC = 1
+
+
+class Policies(NamedTuple):
+    """The policies of an endpoint of the simulator's own nodes (teleop_turtle,
+    rosbag2's player), numbered as rclpy's enums: what the graph matches on
+    and what ``get_publishers_info_by_topic`` reports."""
+
+    reliability: int = _RELIABLE
+    durability: int = _VOLATILE
+    liveliness: int = _AUTOMATIC
+
+    @classmethod
+    def named(cls, reliability: str, durability: str) -> Policies:
+        """From rosbag2's names: "reliable" or "best_effort", "volatile" or "transient_local"."""
+        return cls(
+            _BEST_EFFORT if reliability == "best_effort" else _RELIABLE,
+            _TRANSIENT_LOCAL if durability == "transient_local" else _VOLATILE,
+        )
+
+
+DEFAULT = Policies()
+"""rclcpp's default: reliable, volatile (teleop_turtle's cmd_vel publisher)."""
 
 
 def _effective(qos: Any) -> tuple[int, int]:
@@ -25,6 +48,11 @@ def _effective(qos: Any) -> tuple[int, int]:
         _RELIABLE if reliability == _SYSTEM_DEFAULT else reliability,
         _VOLATILE if durability == _SYSTEM_DEFAULT else durability,
     )
+
+
+def offered(qos: Any) -> Policies:
+    """The reliability and durability an endpoint made with ``qos`` has."""
+    return Policies(*_effective(qos))
 
 
 def incompatible_policy(publisher_qos: Any, subscription_qos: Any) -> str | None:
