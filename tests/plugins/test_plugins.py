@@ -43,6 +43,7 @@ REFERENCE_CONTROLLERS = {
     "parameters_wall_avoider": "parameters_wall_avoider.py",
     "turtle_chaser": "turtle_chaser.py",
     "lidar_obstacle_avoider": "lidar_obstacle_avoider.py",
+    "tf2_buffer_server": "tf2_buffer_server.py",
 }
 
 

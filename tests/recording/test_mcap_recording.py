@@ -231,6 +231,9 @@ def test_the_apps_session_records_what_it_shows(tmp_path: Path):
     session = LiveSession([], record=str(tmp_path / "app.mcap"))
     clock = 100.0
     session.advance(clock)
+    for _ in range(5):  # a key pressed before turtlesim discovered the teleop node would be lost
+        clock += 0.016
+        session.advance(clock)
     session.teleop.drive(linear=1.0)
     for _ in range(60):
         clock += 0.016

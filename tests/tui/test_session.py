@@ -143,3 +143,32 @@ def test_a_recording_keeps_the_world(tmp_path: Path) -> None:
         assert not session.sim.world.obstacles
     finally:
         session.close()
+
+
+def test_the_teleop_keys_publish_from_teleop_turtles_cmd_vel_publisher() -> None:
+    """As turtle_teleop_key: an rclcpp node whose publisher (keep last 1,
+    reliable, volatile) others count and discover; a key pressed before
+    turtlesim discovered it moves nothing, as on ROS 2."""
+    from turtletui.graph.qos import Policies
+    from turtletui.interfaces.geometry_msgs import Twist
+    from turtletui.runtime.simulation import Simulation
+    from turtletui.tui.session import Teleop
+
+    logs: list = []
+    sim = Simulation(log_sinks=[logs.append])
+    teleop = Teleop(sim)
+    [publisher] = sim.graph.publishers_of("/turtle1/cmd_vel")
+    assert publisher.node.name == "teleop_turtle" and publisher.depth == 1 and publisher.qos == Policies()
+    teleop.drive(linear=1.0)
+    sim.run_until(DISCOVERY_NS)
+    turtle = sim.world.turtles["turtle1"]
+    assert turtle.distance == 0
+    teleop.drive(linear=1.0)
+    sim.run_until(DISCOVERY_NS + 200_000_000)
+    assert turtle.distance > 0.3
+    listener = sim.graph.add_node("listener")
+    sim.graph.add_subscription(listener, "/turtle1/cmd_vel", Twist, 1, lambda m: None, qos=Policies(durability=1))
+    assert [r.msg for r in logs if r.node == "teleop_turtle"] == [
+        "New subscription discovered on topic '/turtle1/cmd_vel', requesting incompatible QoS. "
+        "No messages will be sent to it. Last incompatible policy: DURABILITY_QOS_POLICY"
+    ]

@@ -3,7 +3,8 @@
 The graph mutes a publisher and a subscription whose reliability or
 durability are incompatible (turtletui.graph.qos): nothing passes between
 them and neither counts the other. Each side's node logs rclpy's warning
-(turtlesim's side logs rclcpp's) when its executor next runs. An endpoint
+when its executor next runs (the simulator's C++ nodes, turtlesim's...,
+log rclcpp's as the graph matches them: Graph._match). An endpoint
 of another process (a sandboxed controller's on the simulator's graph, or
 the simulator's as a sandboxed controller sees it) warns in its own
 process: :func:`warn_others` and :func:`match_mirror` are those processes'
@@ -15,7 +16,6 @@ from __future__ import annotations
 from typing import Any
 
 from turtletui.graph import core
-from turtletui.graph.logs import WARN
 from turtletui.graph.qos import incompatible_policy
 
 _PUBLISHER_SIDE = (
@@ -26,11 +26,6 @@ _SUBSCRIPTION_SIDE = (
     "New publisher discovered on topic '{}', offering incompatible QoS. "
     "No messages will be received from it. Last incompatible policy: {}"
 )
-_RCLCPP_SUBSCRIPTION_SIDE = (
-    "New publisher discovered on topic '{}', offering incompatible QoS. "
-    "No messages will be sent to it. Last incompatible policy: {}_QOS_POLICY"
-)
-
 REMOTE = "remote"
 """``record.entity`` of an endpoint that stands for another process's on the
 simulator's graph: that process warns for it."""
@@ -52,6 +47,20 @@ def match_subscription(node: Any, subscription: Any) -> None:
         policy = incompatible_policy(pub.qos, subscription.qos_profile)
         if policy:
             _warn_both(node._graph, pub, record, policy)
+
+
+def watch_mismatches(graph: core.Graph) -> None:
+    """Have ``graph`` tell this process's endpoints of the incompatible
+    endpoints made after them (a turtle spawned later, a bag's player): the
+    endpoint being made warns in match_publisher or match_subscription."""
+    graph.on_mismatch = _mismatched
+
+
+def _mismatched(pub: core.Publisher, sub: core.Subscription, policy: str) -> None:
+    for record in (pub, sub):
+        entity = getattr(record, "entity", None)
+        if entity is not None and entity is not REMOTE:
+            _warn(None, record, policy, pub, sub)
 
 
 def warn_others(graph: core.Graph, record: core.Publisher | core.Subscription) -> None:
@@ -90,10 +99,7 @@ def match_mirror(graph: core.Graph, remote_owner: str) -> None:
 
 def _warn_once(graph: core.Graph, own: Any, theirs: Any, pub: Any, sub: Any) -> None:
     policy = incompatible_policy(pub.qos, sub.qos)
-    if not policy:
-        return
-    warned = _warned(own)
-    if _key(theirs) not in warned:
+    if policy:
         _warn(graph, own, policy, pub, sub)
 
 
@@ -115,16 +121,19 @@ def _warn_both(graph: core.Graph, pub: core.Publisher, sub: core.Subscription, p
         _warn(graph, record, policy, pub, sub)
 
 
-def _warn(graph: core.Graph, record: Any, policy: str, pub: Any, sub: Any) -> None:
-    """``record``'s side of a mismatch between ``pub`` and ``sub`` logs its warning."""
+def _warn(graph: core.Graph | None, record: Any, policy: str, pub: Any, sub: Any) -> None:
+    """``record``'s side of a mismatch between ``pub`` and ``sub`` logs its
+    warning, once; ``graph`` None: ``record`` is this process's own."""
     other = sub if record is pub else pub
-    _warned(record).add(_key(other))
+    warned = _warned(record)
+    if _key(other) in warned:
+        return
+    warned.add(_key(other))
     entity = getattr(record, "entity", None)
-    remote = graph.outbox.remote_owner if graph.outbox is not None else None
+    remote = graph.outbox.remote_owner if graph is not None and graph.outbox is not None else None
     if entity is REMOTE or record.owner == remote:
         return  # another process warns for its own endpoints
     if entity is not None:
         text = _PUBLISHER_SIDE if record is pub else _SUBSCRIPTION_SIDE
         entity._node._qos_event(entity, text.format(entity._topic_as_given, policy))
-    elif record is sub:  # turtlesim's own subscription: rclcpp's words
-        graph.log(sub.node.name, WARN, _RCLCPP_SUBSCRIPTION_SIDE.format(sub.topic.name, policy))
+    # a C++ node of the simulator's (turtlesim's...) warned as the graph matched it

@@ -40,7 +40,7 @@ from turtletui.compat.graph_info import (
     endpoints_info,
 )
 from turtletui.compat.logging import RcutilsLogger, get_logger
-from turtletui.compat.matching import match_publisher, match_subscription
+from turtletui.compat.matching import match_publisher, match_subscription, watch_mismatches
 from turtletui.compat.parameter import (
     ListParametersResult,
     Parameter,
@@ -420,6 +420,7 @@ class Node(Destroyable):
         self._record = host.graph.add_node(
             node_name, namespace, host.owner, parameter_setter=self._set_from_outside
         )
+        watch_mismatches(host.graph)
         self._parameters: dict[str, Parameter] = {}
         self._descriptors: dict[str, ParameterDescriptor] = {}
         self._on_set: list[Callable] = []

@@ -19,8 +19,8 @@ from dataclasses import dataclass, field
 from typing import Any, Literal, Protocol
 
 from turtletui.errors import TurtletuiError
-from turtletui.graph.logs import INFO, LogRecord, to_log_message
-from turtletui.graph.qos import incompatible_policy, is_transient_local
+from turtletui.graph.logs import INFO, WARN, LogRecord, to_log_message
+from turtletui.graph.qos import incompatible_policy, is_transient_local, rclcpp_incompatible_qos
 
 NS_PER_S = 1_000_000_000
 LOCKSTEP_EPOCH_NS = 1_700_000_000 * NS_PER_S
@@ -62,6 +62,10 @@ class NodeRecord:
     parameter_setter: Callable[[str, Any], str | None] | None = field(default=None, repr=False)
     """How ``ros2 param set`` reaches the node: ``setter(name, value)`` returns
     why it refused, or None; None when nothing outside the node can set them."""
+    rclcpp: bool = False
+    """A C++ node of the simulator's (turtlesim, teleop_turtle, rosbag2's):
+    rclcpp warns in its log of its endpoints' QoS mismatches (a controller's
+    nodes warn in rclpy's words themselves)."""
 
     @property
     def fqn(self) -> str:
@@ -418,6 +422,10 @@ class Graph:
         self.outbox: GraphOutbox | None = None
         """Told what this graph's nodes do, when the graph is one part of a
         larger one (see GraphOutbox); None for a whole graph."""
+        self.on_mismatch: Callable[[Publisher, Subscription, str], None] | None = None
+        """Told of every publisher and subscription that match but for their
+        QoS (with the policy's name), as DDS tells both sides: the rclpy layer
+        warns its own endpoints of them (a C++ node's warn here, in _match)."""
         self.self_delivering: set[str] = set()
         """Owners whose endpoints live in another process that delivers between
         them itself (a sandboxed controller's): this graph gives them nothing
@@ -495,11 +503,13 @@ class Graph:
         owner: str = "local",
         *,
         parameter_setter: Callable[[str, Any], str | None] | None = None,
+        rclcpp: bool = False,
     ) -> NodeRecord:
         """A new node; ``parameter_setter`` is how ``ros2 param set`` reaches it
-        (see NodeRecord.parameter_setter)."""
+        (see NodeRecord.parameter_setter); ``rclcpp`` for a C++ node of the
+        simulator's (see NodeRecord.rclcpp)."""
         self.version += 1
-        node = NodeRecord(name, namespace or "", owner, parameter_setter=parameter_setter)
+        node = NodeRecord(name, namespace or "", owner, parameter_setter=parameter_setter, rclcpp=rclcpp)
         self.nodes.append(node)
         if self.outbox is not None:
             self.outbox.declared(node)
@@ -631,9 +641,16 @@ class Graph:
         """Match a new publisher or subscription with an endpoint of its topic:
         an incompatible QoS mutes the pair; a transient-local subscription
         gets what a transient-local publisher kept once the two have
-        discovered each other (at once in one process), as DDS does."""
-        if incompatible_policy(pub.qos, sub.qos):
+        discovered each other (at once in one process), as DDS does. A
+        C++ node's side of a mismatch logs rclcpp's warning."""
+        policy = incompatible_policy(pub.qos, sub.qos)
+        if policy:
             pub.muted.add(sub)
+            for record in (pub, sub):
+                if record.node.rclcpp:
+                    self.log(record.node.name, WARN, rclcpp_incompatible_qos(record is pub, pub.topic.name, policy))
+            if self.on_mismatch is not None:
+                self.on_mismatch(pub, sub, policy)
             return
         if pub.kept is None or not is_transient_local(sub.qos):
             return

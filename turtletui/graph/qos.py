@@ -8,11 +8,34 @@ bare depth, SYSTEM_DEFAULT) has rmw's default: reliable, volatile.
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, NamedTuple
 
 _RELIABLE, _BEST_EFFORT = 1, 2
 _TRANSIENT_LOCAL, _VOLATILE = 1, 2
 _SYSTEM_DEFAULT = 0
+_AUTOMATIC = 1
+
+
+class Policies(NamedTuple):
+    """The policies of an endpoint of the simulator's own nodes (teleop_turtle,
+    rosbag2's player), numbered as rclpy's enums: what the graph matches on
+    and what ``get_publishers_info_by_topic`` reports."""
+
+    reliability: int = _RELIABLE
+    durability: int = _VOLATILE
+    liveliness: int = _AUTOMATIC
+
+    @classmethod
+    def named(cls, reliability: str, durability: str) -> Policies:
+        """From rosbag2's names: "reliable" or "best_effort", "volatile" or "transient_local"."""
+        return cls(
+            _BEST_EFFORT if reliability == "best_effort" else _RELIABLE,
+            _TRANSIENT_LOCAL if durability == "transient_local" else _VOLATILE,
+        )
+
+
+DEFAULT = Policies()
+"""rclcpp's default: reliable, volatile (teleop_turtle's cmd_vel publisher)."""
 
 
 def _effective(qos: Any) -> tuple[int, int]:
@@ -25,6 +48,11 @@ def _effective(qos: Any) -> tuple[int, int]:
         _RELIABLE if reliability == _SYSTEM_DEFAULT else reliability,
         _VOLATILE if durability == _SYSTEM_DEFAULT else durability,
     )
+
+
+def offered(qos: Any) -> Policies:
+    """The reliability and durability an endpoint made with ``qos`` has."""
+    return Policies(*_effective(qos))
 
 
 def incompatible_policy(publisher_qos: Any, subscription_qos: Any) -> str | None:
@@ -44,3 +72,19 @@ def is_transient_local(qos: Any) -> bool:
     """Whether an endpoint keeps (publisher) or asks for (subscription) the
     last messages sent before a subscription joined."""
     return _effective(qos)[1] == _TRANSIENT_LOCAL
+
+
+_RCLCPP_INCOMPATIBLE = (
+    "New publisher discovered on topic '{}', offering incompatible QoS. "
+    "No messages will be sent to it. Last incompatible policy: {}_QOS_POLICY",
+    "New subscription discovered on topic '{}', requesting incompatible QoS. "
+    "No messages will be sent to it. Last incompatible policy: {}_QOS_POLICY",
+)
+
+
+def rclcpp_incompatible_qos(publisher_side: bool, topic: str, policy: str) -> str:
+    """What rclcpp's default incompatible-QoS callback logs (WARN, on the
+    node's logger) for a publisher (``publisher_side``) or a subscription of
+    a C++ node: publisher_base.cpp's and subscription_base.cpp's words, the
+    policy as qos_policy_name_from_kind names it."""
+    return _RCLCPP_INCOMPATIBLE[publisher_side].format(topic, policy)

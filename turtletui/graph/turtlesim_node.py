@@ -154,7 +154,7 @@ class TurtlesimNode:
         self.graph = graph
         self.name = name
         """The node's name: turtlesim's own, or what ``-r __node:=NAME`` made it."""
-        self.node = graph.add_node(name, owner="sim", parameter_setter=self.set_parameter)
+        self.node = graph.add_node(name, owner="sim", parameter_setter=self.set_parameter, rclcpp=True)
         self.world = world if world is not None else World(spawn_turtle1=False)
         self._turtles: dict[str, _TurtleEndpoints] = {}
         self._poses: dict[str, Any] = {}
@@ -221,9 +221,10 @@ class TurtlesimNode:
             except OverflowError:
                 fields = _float32(turtle.x, turtle.y, turtle.theta, speed, turtle.wz)
             pose = poses[turtle.name] = trusted_pose(*fields)
-            publish(ends.pose.topic, pose)
+            # young=False: the trace sees every pose; QoS mismatches still mute
+            publish(ends.pose.topic, pose, None, ends.pose, young=False)
             if sense:
-                publish(ends.color.topic, Color._trusted(*turtle.color))
+                publish(ends.color.topic, Color._trusted(*turtle.color), None, ends.color, young=False)
         if self._scan_period and world.ticks % self._scan_period == 0:
             self._publish_scans()
 
@@ -244,7 +245,8 @@ class TurtlesimNode:
             lidar.range_max,
         )
         for i, turtle in enumerate(order):
-            topic = self._turtles[turtle.name].scan.topic
+            publisher = self._turtles[turtle.name].scan
+            topic = publisher.topic
             if not (topic.subscriptions or graph.taps):
                 continue
             ranges = lidar.scan(
@@ -266,7 +268,7 @@ class TurtlesimNode:
                 range_max=range_max,
                 ranges=array("f", ranges.tobytes()),
             )
-            graph.publish(topic, msg)
+            graph.publish(topic, msg, None, publisher, young=False)
 
     def published(self, turtle: str, pose: Any) -> bool:
         """Whether ``pose`` is the message this node last published for

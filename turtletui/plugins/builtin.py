@@ -52,6 +52,11 @@ REFERENCE_CONTROLLERS: tuple[tuple[str, str, str], ...] = (
         "lidar_obstacle_avoider.py",
         "Reads the front of /turtle1/scan and turns toward the more open side",
     ),
+    (
+        "tf2_buffer_server",
+        "tf2_buffer_server.py",
+        "tf2_ros's buffer_server: answers tf2_ros.BufferClient's lookups on tf2_buffer_server",
+    ),
 )
 """(controller name, file in the reference folder, description)."""
 

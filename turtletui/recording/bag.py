@@ -20,8 +20,15 @@ from typing import Any
 
 from turtletui.errors import TurtletuiError
 from turtletui.graph.core import NS_PER_S, NodeRecord
-from turtletui.graph.logs import ERROR, INFO
+from turtletui.graph.logs import ERROR, INFO, WARN
 from turtletui.interfaces import from_dict
+from turtletui.recording.qos import (
+    DEFAULT,
+    OfferedQos,
+    adapted_offer,
+    mixed_offers_warning,
+    parse_profiles,
+)
 from turtletui.recording.read import McapReadError, iter_messages, known_channels, mcap_file_of
 from turtletui.recording.recorder import McapRecorder
 from turtletui.sim import DT
@@ -71,7 +78,7 @@ class BagRecording:
         except OSError as err:
             raise BagError(str(err)) from None
         self.stopped = False
-        self.node = node if node is not None else graph.add_node(RECORDER, owner=RECORDER)
+        self.node = node if node is not None else graph.add_node(RECORDER, owner=RECORDER, rclcpp=True)
         self._log(f"Opened database '{self.folder / (self.folder.name + '_0.mcap')}' for READ_WRITE.")
         self._log("Listening for topics...")
         live = sorted(name for name, topic in graph.topics.items() if topic.publishers or topic.subscriptions)
@@ -223,15 +230,15 @@ class BagPlayback:
         self.rate = rate
         self.loop = loop
         self._topics = None if topics is None else frozenset(topics)
-        self.messages, self.duration_ns = _bag_length(self.path, self._topics)
+        self.messages, self.duration_ns, offers = _playable(self.path, self._topics)
         """Messages played in one pass, and the time from the first to the last (ns)."""
         self.published = 0
         """Messages published so far (every pass)."""
         self.done = False
         """True once the bag was played to its end (never with ``loop``) or stopped."""
         self._graph = sim.graph
-        self.node = node if node is not None else self._graph.add_node(PLAYER, owner=PLAYER)
-        self._publishers: dict[str, Any] = {}
+        self.node = node if node is not None else self._graph.add_node(PLAYER, owner=PLAYER, rclcpp=True)
+        self._publishers = self._make_publishers(offers)
         self._reader: Iterator[tuple[int, str, type, dict[str, Any]]] | None = None
         self._next: tuple[int, str, type, dict[str, Any]] | None = None
         self._timer: Any = None
@@ -290,7 +297,8 @@ class BagPlayback:
                 self._log(ERROR, f"{self.path}: {topic}: cannot play this message ({err}): stopping")
                 self._end()
                 return
-            graph.publish(self._publisher(topic, cls).topic, msg)
+            publisher = self._publishers[topic]
+            graph.publish(publisher.topic, msg, None, publisher)
             self.published += 1
             self._read_next()
         if self._next is not None:
@@ -301,11 +309,18 @@ class BagPlayback:
         else:
             self._end()
 
-    def _publisher(self, topic: str, cls: type) -> Any:
-        found = self._publishers.get(topic)
-        if found is None:
-            found = self._publishers[topic] = self._graph.add_publisher(self.node, topic, cls, 10)
-        return found
+    def _make_publishers(self, offers: dict[str, tuple[type, list[OfferedQos]]]) -> dict[str, Any]:
+        """rosbag2's player makes a publisher for every topic it plays before
+        it plays (so the first messages may go before anyone discovered it),
+        keep last 10 with the QoS the recorded publishers offered."""
+        publishers = {}
+        for topic, (cls, profiles) in offers.items():
+            offer = adapted_offer(profiles)
+            if offer is None:
+                self._graph.log("rosbag2_storage", WARN, mixed_offers_warning(topic))
+                offer = DEFAULT
+            publishers[topic] = self._graph.add_publisher(self.node, topic, cls, 10, qos=offer.policies())
+        return publishers
 
     def _close_reader(self) -> None:
         if self._reader is not None:
@@ -322,10 +337,15 @@ class BagPlayback:
         self._graph.remove_node(self.node)
 
 
-def _bag_length(path: Path, topics: Collection[str] | None) -> tuple[int, int]:
-    """(messages turtletui can play, ns from the first message to the last) of a bag."""
+def _playable(path: Path, topics: Collection[str] | None) -> tuple[int, int, dict[str, tuple[type, list[OfferedQos]]]]:
+    """(messages turtletui can play, ns from the first message to the last,
+    {topic: (message class, what its recorded publishers offered)}) of a bag."""
     summary, channels, _ = _summary(path, topics)
     stats = summary.statistics
     count = sum(stats.channel_message_counts.get(channel_id, 0) for channel_id in channels)
     duration = stats.message_end_time - stats.message_start_time if stats.message_count else 0
-    return count, duration
+    offers = {}
+    for channel_id, (topic, cls) in sorted(channels.items()):
+        metadata = summary.channels[channel_id].metadata or {}
+        offers[topic] = (cls, parse_profiles(metadata.get("offered_qos_profiles", "")))
+    return count, duration, offers

@@ -23,6 +23,7 @@ from turtletui.errors import TurtletuiError
 from turtletui.graph.logs import LEVEL_NAMES
 from turtletui.interfaces import InterfaceError, Message
 from turtletui.recording.mcap_file import TURTLETUI_METADATA
+from turtletui.recording.qos import OfferedQos, parse_profiles
 from turtletui.recording.schema import interface_of
 from turtletui.recording.stream import GOAL_SUFFIX, REQUEST_SUFFIX, RESPONSE_SUFFIX, ROSOUT_TOPIC
 
@@ -87,6 +88,15 @@ def read_mcap(
             epoch = stats.message_start_time if stats is not None else 0
         events = list(_events(reader, int(epoch), everything))
     return header, events
+
+
+def recorded_offers(path: str | os.PathLike[str]) -> dict[str, list[OfferedQos]]:
+    """What the publishers of each topic of an MCAP recording or rosbag2
+    folder offered, as its channels' ``offered_qos_profiles`` say."""
+    with _decoding_reader(Path(path)) as reader:
+        summary = reader.get_summary()
+        channels = summary.channels.values() if summary is not None else ()
+        return {c.topic: parse_profiles((c.metadata or {}).get("offered_qos_profiles", "")) for c in channels}
 
 
 def iter_messages(

@@ -92,10 +92,13 @@ class RosStream:
         self._last_ns = 0
 
     # -- channels ---------------------------------------------------------------------
-    def channel(self, topic: str, type_name: str, qos: OfferedQos = DEFAULT, publishers: int = 1) -> Channel:
+    def channel(self, topic: str, type_name: str, offers: OfferedQos | list[OfferedQos] = DEFAULT) -> Channel:
+        """The channel of ``topic``, made on first use with what its publishers
+        offer (one offer, or each publisher's)."""
         found = self._channels.get(topic)
         if found is None:
-            found = self._channels[topic] = Channel(topic, type_name, [qos] * max(publishers, 1))
+            offers = [offers] if isinstance(offers, OfferedQos) else offers or [DEFAULT]
+            found = self._channels[topic] = Channel(topic, type_name, offers)
             if self._topics is None or topic in self._topics:
                 self._sink.add_channel(found)
             else:
@@ -121,7 +124,7 @@ class RosStream:
             topic, msg = payload[0], payload[1]
             channel = self._channels.get(topic.name)
             if channel is None:
-                channel = self.channel(topic.name, topic.type_name, publishers=len(topic.publishers))
+                channel = self.channel(topic.name, topic.type_name, [OfferedQos.of(p.qos) for p in topic.publishers])
             self._write(channel, t_ns, msg)
             if kind == "pose":
                 self._pose(t_ns, payload[2], msg)

@@ -59,7 +59,7 @@ class BagStream(Stream):
     runs_in_background = True
 
     def __init__(self, cli: Ros2Cli, command: str, node_name: str, start: Callable[[Any], Any]) -> None:
-        super().__init__(cli, command, node=cli.graph.add_node(node_name, owner=f"{OWNER}:{node_name}"))
+        super().__init__(cli, command, node=cli.graph.add_node(node_name, owner=f"{OWNER}:{node_name}", rclcpp=True))
         self._graph.log_sinks.append(self._on_log)
         try:
             self.work = start(self.node)

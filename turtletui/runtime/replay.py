@@ -22,6 +22,7 @@ from turtletui.graph.core import NS_PER_S
 from turtletui.graph.introspection import is_plumbing_topic
 from turtletui.graph.logs import INFO
 from turtletui.interfaces import from_dict, get_interface
+from turtletui.recording.qos import DEFAULT, OfferedQos, adapted_offer
 from turtletui.runtime.recorder import RecordingError
 from turtletui.runtime.simulation import Simulation
 
@@ -41,6 +42,8 @@ class Recording:
     logs: list[dict[str, Any]] = field(default_factory=list)
     end: float = 0.0
     """Time of the last event, simulated seconds."""
+    offers: dict[str, list[OfferedQos]] = field(default_factory=dict)
+    """What each topic's recorded publishers offered (MCAP recordings only)."""
 
     @property
     def duration(self) -> float:
@@ -96,13 +99,13 @@ def read_recording(path: str | Path) -> Recording:
 
 
 def _read_mcap(path: Path) -> Recording:
-    from turtletui.recording.read import McapReadError, read_mcap
+    from turtletui.recording.read import McapReadError, read_mcap, recorded_offers
 
     try:
         header, events = read_mcap(path)
     except McapReadError as err:
         raise RecordingError(str(err)) from None
-    recording = Recording(path, header=header)
+    recording = Recording(path, header=header, offers=recorded_offers(path))
     for event in events:
         recording.end = max(recording.end, event["t"])
         if "log" in event:
@@ -124,35 +127,45 @@ def _check_input(path: Path, number: int | str, event: dict[str, Any]) -> None:
 
 
 def install_replay(sim: Simulation, recording: Recording) -> None:
-    """Put the recorded start pose in place and schedule every recorded input."""
+    """Put the recorded start pose in place and schedule every recorded input.
+
+    As ``ros2 bag play`` would, a ``rosbag2_player`` node publishes the
+    recorded messages, from publishers it makes at the start with the QoS
+    the recorded publishers offered (an MCAP recording says; a JSON Lines
+    one does not: rclcpp's default then); its service calls and goals come
+    from the same node."""
     from turtletui.graph.core import Graph
+    from turtletui.recording.bag import PLAYER
 
     graph: Graph = sim.graph
     start = recording.start
     if start is not None and "turtle1" in sim.world.turtles:
         sim.world.place("turtle1", *start)
-    node = graph.add_node("replay", owner="replay")
+    node = graph.add_node(PLAYER, owner=PLAYER, rclcpp=True)
     publishers: dict[str, Any] = {}
+    for event in recording.inputs:
+        name = event.get("topic")
+        if name is not None and name not in publishers:
+            offer = adapted_offer(recording.offers.get(name, [])) or DEFAULT
+            msg_type = get_interface(event["type"])
+            publishers[name] = graph.add_publisher(node, name, msg_type, 10, qos=offer.policies())
     graph.log("turtletui", INFO, f"replaying {recording.path.name}: {len(recording.inputs)} recorded inputs")
 
     def send(event: dict[str, Any]) -> Callable[[], None]:
         def fire() -> None:
             if "topic" in event:
-                msg_type = get_interface(event["type"])
-                name = event["topic"]
-                if name not in publishers:
-                    publishers[name] = graph.add_publisher(node, name, msg_type, 10)
-                graph.publish(publishers[name].topic, from_dict(msg_type, event["msg"]), source="replay")
+                publisher = publishers[event["topic"]]
+                graph.publish(publisher.topic, from_dict(publisher.topic.msg_type, event["msg"]), None, publisher)
             elif "service" in event:
                 service = graph.services.get(event["service"])
                 if service is not None:
                     request = from_dict(service.srv_type.Request, event["request"])
-                    graph.call(event["service"], request, lambda response: None, "replay")
+                    graph.call(event["service"], request, lambda response: None, PLAYER)
             else:
                 server = graph.action_servers.get(event["action"])
                 if server is not None:
                     goal = from_dict(server.action_type.Goal, event["goal"])
-                    graph.send_goal(event["action"], goal, "replay", _ignore, _ignore, _ignore)
+                    graph.send_goal(event["action"], goal, PLAYER, _ignore, _ignore, _ignore)
 
         return fire
 

@@ -17,6 +17,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from turtletui.graph.logs import ERROR, INFO, LogRecord
+from turtletui.graph.qos import DEFAULT as DEFAULT_QOS
 from turtletui.interfaces.geometry_msgs import Twist
 from turtletui.interfaces.std_srvs import Empty
 from turtletui.interfaces.turtlesim import RotateAbsolute
@@ -114,8 +115,9 @@ class Teleop:
     lock: Any = field(default_factory=threading.RLock)
 
     def __post_init__(self) -> None:
-        self.node = self.sim.graph.add_node("teleop_turtle", "", _OWNER)
-        self._publisher = self.sim.graph.add_publisher(self.node, f"/{self.turtle}/cmd_vel", Twist, 1)
+        # turtle_teleop_key: an rclcpp node, cmd_vel keep last 1, reliable, volatile
+        self.node = self.sim.graph.add_node("teleop_turtle", "", _OWNER, rclcpp=True)
+        self._publisher = self.sim.graph.add_publisher(self.node, f"/{self.turtle}/cmd_vel", Twist, 1, qos=DEFAULT_QOS)
         self.sim.graph.add_action_client(self.node, f"/{self.turtle}/rotate_absolute", RotateAbsolute)
 
     @_locked
@@ -123,7 +125,7 @@ class Teleop:
         msg = Twist()
         msg.linear.x = linear * TELEOP_LINEAR
         msg.angular.z = angular * TELEOP_ANGULAR
-        self.sim.graph.publish(self._publisher.topic, msg)
+        self.sim.graph.publish(self._publisher.topic, msg, None, self._publisher)
 
     @_locked
     def rotate(self, key: str) -> None:

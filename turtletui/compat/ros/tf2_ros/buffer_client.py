@@ -1,0 +1,1 @@
+from turtletui.compat.tf2.buffer_client import BufferClient  # noqa: F401
