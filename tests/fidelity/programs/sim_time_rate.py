@@ -46,8 +46,11 @@ def main():
         # the period ends at a /clock instant; reading it may come one message later
         print("woke near", round(clock.now().nanoseconds / 5e8) / 2)
     print("slept", clock.sleep_for(Duration(seconds=1)), "until near", round(clock.now().nanoseconds / 5e8) / 2)
-    rclpy.shutdown()
+    # the executor stops before the context: a spin thread still running when
+    # rclpy.shutdown() comes may raise there (the real rclpy now and then does)
+    executor.shutdown()
     spinner.join()
+    rclpy.shutdown()
 
 
 if __name__ == "__main__":
