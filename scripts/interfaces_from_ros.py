@@ -44,6 +44,10 @@ DOCS = {
     "rcl_interfaces": "rcl_interfaces: /rosout's Log, the parameter messages and the parameter services.",
     "lifecycle_msgs": "lifecycle_msgs: a managed (lifecycle) node's states, transitions and services.",
     "rosgraph_msgs": "rosgraph_msgs: Clock, what /clock carries when a node uses simulated time.",
+    "service_msgs": "service_msgs: ServiceEventInfo, the header of a service's event messages.",
+    "type_description_interfaces": (
+        "type_description_interfaces: type descriptions and the GetTypeDescription service every node serves."
+    ),
 }
 
 

@@ -147,7 +147,7 @@ def main():
     start = node.get_clock().now()
     ready = AsyncParameterClient(node, "ghost").wait_for_services(timeout_sec=1.0)
     waited = (node.get_clock().now() - start).nanoseconds / 1e9
-    services = [name for name, _ in node.get_service_names_and_types() if name.startswith("/tuner/")]
+    services = [name for name, _ in node.get_service_names_and_types() if name.startswith("/tuner/") and "param" in name]
     node.get_logger().info(f"{ready} after {waited} s; own parameter services {services}")
 """,
         duration=2.0,

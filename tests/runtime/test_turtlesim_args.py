@@ -84,3 +84,12 @@ def test_bad_arguments_are_one_line_errors(argv: list[str], expected: str) -> No
         parse_turtlesim_args(argv)
     message = str(caught.value)
     assert expected in message and "\n" not in message
+
+
+def test_the_type_description_service_can_be_turned_off() -> None:
+    assert "/turtlesim/get_type_description" in built(parse_turtlesim_args([])).graph.services
+    args = parse_turtlesim_args(["--ros-args", "-p", "start_type_description_service:=false"])
+    assert "/turtlesim/get_type_description" not in built(args).graph.services
+    assert "/turtlesim/get_parameters" in built(args).graph.services
+    with pytest.raises(RosArgsError, match="start_type_description_service:=1: .* must be a bool"):
+        parse_turtlesim_args(["--ros-args", "-p", "start_type_description_service:=1"])

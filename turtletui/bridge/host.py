@@ -29,6 +29,7 @@ from turtletui.graph.core import GoalHandle, Graph, GraphError, NodeRecord, Publ
 from turtletui.graph.introspection import is_plumbing_topic
 from turtletui.graph.logs import INFO, WARN, LogRecord
 from turtletui.graph.parameter_services import is_parameter_service
+from turtletui.graph.type_description_service import is_type_description_service
 from turtletui.interfaces import InterfaceError, from_dict, get_interface, to_dict
 
 OWNER = "ros"
@@ -197,8 +198,8 @@ class RosBridge:
                 if sub.owner != OWNER:
                     wanted[sub] = ("sub", {"topic": name, "type": topic.type_name, "depth": sub.depth})
         for name, service in graph.services.items():
-            # the twin's nodes serve their parameters themselves
-            if service.owner != OWNER and not is_parameter_service(service):
+            # the twin's nodes serve their parameters and type descriptions themselves
+            if service.owner != OWNER and not is_parameter_service(service) and not is_type_description_service(service):
                 wanted[service] = ("srv", {"name": name, "type": service.type_name})
         for name, server in graph.action_servers.items():
             if server.owner != OWNER:

@@ -30,6 +30,8 @@ ROS_PACKAGES = (
     "rosgraph_msgs",
     "lifecycle_msgs",
     "action_msgs",
+    "service_msgs",
+    "type_description_interfaces",
     "turtlesim",
     "turtlesim_msgs",
 )

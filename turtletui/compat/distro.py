@@ -168,3 +168,13 @@ def current_distro() -> str:
         if isinstance(finder, MissingPackageFinder):
             return finder.distro
     return NEWEST_LTS
+
+
+def type_description_names(distro: str) -> tuple[tuple[str, str], ...] | None:
+    """How ``distro`` names turtlesim's types in type descriptions and hashes
+    (turtletui.interfaces.type_descriptions.Names: turtlesim_msgs from Kilted
+    on); None where nodes serve no ~/get_type_description (Humble: Iron on)."""
+    if check_distro(distro) == "humble":
+        return None
+    package = DISTROS[distro].turtlesim_package
+    return (("turtlesim", package),) if package != "turtlesim" else ()

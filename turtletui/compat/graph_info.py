@@ -6,6 +6,7 @@ import hashlib
 from enum import IntEnum
 from typing import Any
 
+from turtletui.compat.distro import current_distro, type_description_names
 from turtletui.compat.qos import (
     DurabilityPolicy,
     HistoryPolicy,
@@ -14,6 +15,55 @@ from turtletui.compat.qos import (
     ReliabilityPolicy,
 )
 from turtletui.graph import core
+from turtletui.interfaces import get_interface
+from turtletui.interfaces.type_descriptions import type_hash
+
+_HASH_SIZE = 32
+
+
+class TypeHash:
+    """A type's hash (``rclpy.type_hash.TypeHash``): ``version`` (1 for RIHS01,
+    -1 unset) and ``value`` (32 bytes); ``str()`` gives ``RIHS01_<hex>``."""
+
+    __slots__ = ("_version", "_value")
+
+    def __init__(self, version: int = -1, value: bytes = bytes(_HASH_SIZE)) -> None:
+        self.version = version
+        self.value = value
+
+    @property
+    def version(self) -> int:
+        return self._version
+
+    @version.setter
+    def version(self, value: int) -> None:
+        assert isinstance(value, int)
+        self._version = value
+
+    @property
+    def value(self) -> bytes:
+        return self._value
+
+    @value.setter
+    def value(self, value: bytes) -> None:
+        assert isinstance(value, bytes)
+        self._value = value
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, TypeHash) and (self._version, self._value) == (other._version, other._value)
+
+    __hash__ = None  # type: ignore[assignment]  # as rclpy's
+
+    def __str__(self) -> str:
+        if self._version <= 0 or len(self._value) != _HASH_SIZE:
+            return "INVALID"
+        return f"RIHS{self._version:02}_{self._value.hex()}"
+
+
+def type_hash_of(type_name: str) -> TypeHash:
+    """The TypeHash of an interface type as this process's distro names it."""
+    text = type_hash(get_interface(type_name), None, type_description_names(current_distro()) or ())
+    return TypeHash(1, bytes.fromhex(text.partition("_")[2]))
 
 
 class NodeNameNonExistentError(RuntimeError):
@@ -31,13 +81,16 @@ class TopicEndpointTypeEnum(IntEnum):
 class TopicEndpointInfo:
     """One publisher or subscription of a topic, as rclpy describes it."""
 
-    __slots__ = ("node_name", "node_namespace", "topic_type", "endpoint_type", "endpoint_gid", "qos_profile")
+    __slots__ = (
+        "node_name", "node_namespace", "topic_type", "topic_type_hash", "endpoint_type", "endpoint_gid", "qos_profile",
+    )
 
     def __init__(
         self,
         node_name: str = "",
         node_namespace: str = "",
         topic_type: str = "",
+        topic_type_hash: TypeHash | None = None,
         endpoint_type: TopicEndpointTypeEnum | int = TopicEndpointTypeEnum.INVALID,
         endpoint_gid: list[int] | None = None,
         qos_profile: QoSProfile | None = None,
@@ -45,6 +98,7 @@ class TopicEndpointInfo:
         self.node_name = node_name
         self.node_namespace = node_namespace
         self.topic_type = topic_type
+        self.topic_type_hash = topic_type_hash if topic_type_hash is not None else TypeHash()
         self.endpoint_type = TopicEndpointTypeEnum(endpoint_type)
         self.endpoint_gid = list(endpoint_gid or [])
         self.qos_profile = qos_profile if qos_profile is not None else _reported_qos(None)
@@ -67,6 +121,7 @@ class TopicEndpointInfo:
                 f"Node name: {self.node_name}",
                 f"Node namespace: {self.node_namespace}",
                 f"Topic type: {self.topic_type}",
+                f"Topic type hash: {self.topic_type_hash}",
                 f"Endpoint type: {self.endpoint_type.name}",
                 f"GID: {'.'.join(format(x, '02x') for x in self.endpoint_gid)}",
                 "QoS profile:",
@@ -92,6 +147,7 @@ def endpoints_info(
                 node_name=node.name,
                 node_namespace=node.namespace or "/",
                 topic_type=endpoint.topic.type_name,
+                topic_type_hash=type_hash_of(endpoint.topic.type_name),
                 endpoint_type=kind,
                 endpoint_gid=_gid(node.fqn, endpoint.topic.name, kind, nth),
                 qos_profile=_reported_qos(endpoint.qos),

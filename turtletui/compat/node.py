@@ -65,6 +65,7 @@ from turtletui.compat.task import Future
 from turtletui.compat.time import Clock, ClockType, Duration, clock_for
 from turtletui.compat.time_source import TimeSource
 from turtletui.compat.timer import Rate, Timer
+from turtletui.compat.type_description_service import TypeDescriptionService
 from turtletui.graph import core
 from turtletui.graph.logs import WARN
 from turtletui.interfaces import copier, interface_name
@@ -449,8 +450,7 @@ class Node(Destroyable):
         if start_parameter_services:
             ParameterService(self)
         if current_distro() != "humble":  # rclpy's TypeDescriptionService, Iron on
-            read_only = ParameterDescriptor(type=Parameter.Type.BOOL.value, read_only=True)
-            self.declare_parameter("start_type_description_service", True, read_only)
+            self._type_description_service = TypeDescriptionService(self)
 
     # -- identity ---------------------------------------------------------------
     @property

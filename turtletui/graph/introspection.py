@@ -216,29 +216,25 @@ PARAMETER_SERVICES = (
     ("describe_parameters", "rcl_interfaces/srv/DescribeParameters"),
     ("get_parameter_types", "rcl_interfaces/srv/GetParameterTypes"),
     ("get_parameters", "rcl_interfaces/srv/GetParameters"),
-    ("get_type_description", "type_description_interfaces/srv/GetTypeDescription"),
     ("list_parameters", "rcl_interfaces/srv/ListParameters"),
     ("set_parameters", "rcl_interfaces/srv/SetParameters"),
     ("set_parameters_atomically", "rcl_interfaces/srv/SetParametersAtomically"),
 )
-"""The services every ROS 2 node serves as ``<node>/<name>`` (get_type_description from Iron on)."""
+"""The services every ROS 2 node serves as ``<node>/<name>`` for its parameters
+(get_type_description, Iron on, turtletui's nodes serve themselves)."""
 
 
-def with_ros_plumbing(
-    snap: GraphSnapshot, *, type_description: bool = True, parameter_event_subscribers: tuple[str, ...] = ()
-) -> GraphSnapshot:
+def with_ros_plumbing(snap: GraphSnapshot, *, parameter_event_subscribers: tuple[str, ...] = ()) -> GraphSnapshot:
     """``snap`` as the ros2 tools show a real graph: every node also publishes
     /parameter_events and /rosout and serves its parameter services, as rcl
-    makes every node do (``type_description``: also get_type_description,
-    Iron and later). ``parameter_event_subscribers`` are the nodes that also
+    makes every node do. ``parameter_event_subscribers`` are the nodes that also
     subscribe to /parameter_events (rclcpp nodes such as turtlesim).
     turtletui's graph keeps none of these: its log and parameters are its own."""
-    services = [(name, kind) for name, kind in PARAMETER_SERVICES if type_description or name != "get_type_description"]
     names = tuple(node.name for node in snap.nodes)
     listeners = tuple(sorted(n for n in parameter_event_subscribers if n in names))
     nodes = []
     for node in snap.nodes:
-        own = tuple((f"{node.name}/{name}", kind) for name, kind in services)
+        own = tuple((f"{node.name}/{name}", kind) for name, kind in PARAMETER_SERVICES)
         subs = (PLUMBING_TOPICS[0],) if node.name in listeners else ()
         nodes.append(replace(
             node,
@@ -255,7 +251,7 @@ def with_ros_plumbing(
     extra = [
         ServiceInfo(f"{node}/{name}", kind, node, ())
         for node in names
-        for name, kind in services
+        for name, kind in PARAMETER_SERVICES
         if f"{node}/{name}" not in known
     ]
     return replace(

@@ -19,6 +19,7 @@ from turtletui.graph.core import (
 )
 from turtletui.graph.logs import ERROR, INFO, WARN
 from turtletui.graph.parameter_services import serve_parameters, value_message
+from turtletui.graph.type_description_service import serve_type_descriptions
 from turtletui.interfaces.builtin_interfaces import Time
 from turtletui.interfaces.geometry_msgs import Twist
 from turtletui.interfaces.rcl_interfaces import (
@@ -42,6 +43,7 @@ from turtletui.interfaces.turtlesim import (
     TeleportAbsolute,
     TeleportRelative,
 )
+from turtletui.interfaces.type_descriptions import Names
 from turtletui.sim import (
     ARENA_SIZE,
     DT,
@@ -150,7 +152,12 @@ class TurtlesimNode:
 
     NAME = "turtlesim"
 
-    def __init__(self, graph: Graph, world: World | None = None, *, name: str = NAME) -> None:
+    def __init__(
+        self, graph: Graph, world: World | None = None, *, name: str = NAME, type_names: Names | None = ()
+    ) -> None:
+        """``type_names``: how the distro names turtlesim's types in its type
+        descriptions (see type_descriptions.Names); None for a distro without
+        the type description service (Humble)."""
         self.graph = graph
         self.name = name
         """The node's name: turtlesim's own, or what ``-r __node:=NAME`` made it."""
@@ -171,6 +178,9 @@ class TurtlesimNode:
         for name, value in zip(PARAMETERS, (*bg, self.world.holonomic), strict=True):
             graph.set_parameter(self.node, name, value)
         serve_parameters(graph, self.node, _descriptors())
+        self._type_descriptions: Service | None = None
+        if type_names is not None:  # rclcpp's NodeTypeDescriptions, Iron on
+            self._type_descriptions = serve_type_descriptions(graph, self.node, type_names)
         # What rclcpp gives every node: /rosout, and /parameter_events both ways.
         graph.add_publisher(self.node, "/rosout", Log, _PLUMBING_DEPTH)
         self._parameter_events = graph.add_publisher(self.node, "/parameter_events", ParameterEvent, _PLUMBING_DEPTH)
@@ -295,6 +305,12 @@ class TurtlesimNode:
         )
         self.graph.publish(self._parameter_events.topic, event, publisher=self._parameter_events)
         return None
+
+    def stop_type_description_service(self) -> None:
+        """What ``-p start_type_description_service:=false`` does: no ``~/get_type_description``."""
+        if self._type_descriptions is not None:
+            self.graph.remove_service(self._type_descriptions)
+            self._type_descriptions = None
 
     # -- services ---------------------------------------------------------------
     def _clear(self, request: Any, respond) -> None:

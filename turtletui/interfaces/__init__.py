@@ -39,10 +39,12 @@ from turtletui.interfaces import (  # noqa: F401  (registers every type)
     rcl_interfaces,
     rosgraph_msgs,
     sensor_msgs,
+    service_msgs,
     std_msgs,
     std_srvs,
     tf2_msgs,
     turtlesim,
+    type_description_interfaces,
     unique_identifier_msgs,
     visualization_msgs,
 )

@@ -107,7 +107,6 @@ def ros_view(cli: Any) -> GraphSnapshot:
     turtlesim = getattr(getattr(sim, "turtlesim", None), "node", None)
     return with_ros_plumbing(
         snapshot(cli.graph),
-        type_description=getattr(sim, "distro", None) != "humble",  # get_type_description: Iron on
         parameter_event_subscribers=(turtlesim.fqn,) if turtlesim is not None else (),  # rclcpp's own
     )
 

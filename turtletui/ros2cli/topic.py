@@ -5,10 +5,12 @@ from __future__ import annotations
 from argparse import ArgumentParser, Namespace
 from typing import TYPE_CHECKING, Any
 
+from turtletui.compat.distro import NEWEST_LTS, type_description_names
 from turtletui.graph.core import NS_PER_S
 from turtletui.graph.introspection import TopicInfo
 from turtletui.interfaces import Message, get_interface, interface_name
 from turtletui.interfaces.rcl_interfaces import Log
+from turtletui.interfaces.type_descriptions import type_hash
 from turtletui.ros2cli.arguments import (
     Command,
     Verb,
@@ -150,6 +152,7 @@ def _info(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
                 f"Node name: {endpoint.node.name}",
                 f"Node namespace: {endpoint.node.namespace or '/'}",
                 f"Topic type: {topic.type_name}",
+                *_hash_line(cli, topic.type_name),
                 f"Endpoint type: {kind}",
                 "QoS profile:",
                 "  Reliability: RELIABLE",
@@ -162,6 +165,14 @@ def _info(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
                 "",
             ]
     return CommandResult(lines)
+
+
+def _hash_line(cli: Ros2Cli, type_name: str) -> list[str]:
+    """``Topic type hash: RIHS01_...`` as ros2 prints it from Iron on (none in Humble)."""
+    names = type_description_names(getattr(cli.sim, "distro", None) or NEWEST_LTS)
+    if names is None:
+        return []
+    return [f"Topic type hash: {type_hash(get_interface(type_name), None, names)}"]
 
 
 def _type_arguments(parser: ArgumentParser) -> None:

@@ -7,7 +7,7 @@ import time
 from collections.abc import Callable, Sequence
 from typing import Protocol
 
-from turtletui.compat.distro import resolve_distro
+from turtletui.compat.distro import resolve_distro, type_description_names
 from turtletui.graph.core import DISCOVERY_NS, LOCKSTEP_EPOCH_NS, NS_PER_S, Graph
 from turtletui.graph.introspection import dangling_endpoints
 from turtletui.graph.logs import WARN, LogRecord
@@ -68,7 +68,9 @@ class Simulation:
         self.graph.discovery_ns = DISCOVERY_NS
         self.graph.log_sinks.extend(log_sinks)
         self.world = world if world is not None else World(spawn_turtle1=False)
-        self.turtlesim = TurtlesimNode(self.graph, self.world, name=turtlesim_name)
+        self.turtlesim = TurtlesimNode(
+            self.graph, self.world, name=turtlesim_name, type_names=type_description_names(self.distro)
+        )
         self.remotes: list[RemoteHost] = []
         self._typo_check = self.graph.add_timer(
             self.turtlesim.node, TOPIC_CHECK_AFTER_NS, self._warn_dangling_topics

@@ -19,6 +19,7 @@ from typing import TYPE_CHECKING, Any
 from turtletui.compat.ros_args import RosArgsError, parse_ros_args
 from turtletui.graph.logs import INFO, LogRecord, parse_level
 from turtletui.graph.turtlesim_node import PARAMETERS, TurtlesimNode, parameter_problem
+from turtletui.graph.type_description_service import PARAMETER as TYPE_DESCRIPTION_PARAMETER
 
 if TYPE_CHECKING:
     from turtletui.runtime.simulation import Simulation
@@ -36,6 +37,8 @@ class TurtlesimArgs:
     """Parameter overrides (``-p NAME:=VALUE``), checked against turtlesim's declarations."""
     log_level: int = INFO
     """The lowest level turtlesim logs at (``--log-level``)."""
+    type_description_service: bool = True
+    """``-p start_type_description_service:=false`` turns ~/get_type_description off."""
 
     def log_filter(self, sink: Callable[[LogRecord], None]) -> Callable[[LogRecord], None]:
         """``sink`` without turtlesim's lines below ``log_level``."""
@@ -55,6 +58,8 @@ class TurtlesimArgs:
             problem = sim.turtlesim.set_parameter(name, value)
             if problem is not None:  # parse_turtlesim_args checked them: a bug if reached
                 raise RosArgsError(problem)
+        if not self.type_description_service:
+            sim.turtlesim.stop_type_description_service()
 
 
 def parse_turtlesim_args(argv: Sequence[str]) -> TurtlesimArgs:
@@ -82,12 +87,18 @@ def parse_turtlesim_args(argv: Sequence[str]) -> TurtlesimArgs:
             )
         name = target
     parameters: dict[str, Any] = {}
+    type_description_service = True
     for source, param, value in parsed.param_rules(f"/{name}", own, name):
         # an rclcpp node leaves a file's parameters that it does not declare
         # (a /** section is for every node); -p names them, and is told
-        if source == "--params-file" and param not in (*PARAMETERS, "use_sim_time"):
+        if source == "--params-file" and param not in (*PARAMETERS, "use_sim_time", TYPE_DESCRIPTION_PARAMETER):
             continue
         flag = "--params-file: " if source == "--params-file" else "-p "
+        if param == TYPE_DESCRIPTION_PARAMETER:
+            if not isinstance(value, bool):
+                raise RosArgsError(f"{flag}{param}:={_shown(value)}: {param} must be a bool")
+            type_description_service = value
+            continue
         if param == "use_sim_time":
             if value is not False:
                 raise RosArgsError(
@@ -109,7 +120,7 @@ def parse_turtlesim_args(argv: Sequence[str]) -> TurtlesimArgs:
             log_level = parse_level(parsed.log_level)
         except ValueError as err:
             raise RosArgsError(f"--log-level {parsed.log_level}: {err}") from None
-    return TurtlesimArgs(name, parameters, log_level)
+    return TurtlesimArgs(name, parameters, log_level, type_description_service)
 
 
 def _shown(value: Any) -> str:

@@ -1,0 +1,1 @@
+from turtletui.compat.graph_info import TypeHash  # noqa: F401
