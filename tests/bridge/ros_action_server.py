@@ -15,6 +15,10 @@ except ImportError:  # Kilted on
 
 
 def execute(goal_handle):
+    # A client's feedback subscription may not be matched yet when its goal is
+    # accepted (Fast DDS discovers each topic on its own): on a busy machine the
+    # first feedback was lost. Real clients meet the same race; give it time.
+    time.sleep(0.5)
     for remaining in (0.75, 0.25):
         goal_handle.publish_feedback(RotateAbsolute.Feedback(remaining=remaining))
         time.sleep(0.1)

@@ -1111,6 +1111,8 @@ def test_interface_names_and_types_per_turtle():
         "/turtlesim/list_parameters": "rcl_interfaces/srv/ListParameters",
         "/turtlesim/set_parameters": "rcl_interfaces/srv/SetParameters",
         "/turtlesim/set_parameters_atomically": "rcl_interfaces/srv/SetParametersAtomically",
+        # Iron on: rcl's type description service (start_type_description_service)
+        "/turtlesim/get_type_description": "type_description_interfaces/srv/GetTypeDescription",
     }
     assert {n: a.type_name for n, a in graph.action_servers.items()} == {
         "/turtle1/rotate_absolute": "turtlesim/action/RotateAbsolute"
