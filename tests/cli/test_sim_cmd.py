@@ -12,7 +12,7 @@ import time
 from pathlib import Path
 
 import pytest
-from support.pilot import SIZE, pilot_test, wait_for
+from support.pilot import SIZE, pilot_test, type_command, wait_for
 from support.web_driver import run_app_and_quit
 from textual.widgets import Input
 
@@ -153,7 +153,7 @@ async def test_the_app_runs_turtlesim_alone_driven_by_keys_and_ros2_commands() -
         command.value = 'ros2 topic pub --once /turtle1/cmd_vel geometry_msgs/msg/Twist "{linear: {y: 1.5}}"'
         await pilot.press("enter")
         await wait_for(pilot, lambda: turtle.y > y + 0.3)
-        await pilot.press(*"ros2 param set /my_sim background_g 0", "enter")
+        await type_command(pilot, "ros2 param set /my_sim background_g 0")
         await wait_for(pilot, lambda: sim.world.background == (0, 0, 255))
 
 

@@ -48,7 +48,12 @@ async def wait_for(pilot, condition, timeout: float = 30.0) -> None:
 
 
 async def type_command(pilot, line: str) -> None:
-    """Type a ros2 command on the app's command line (opening it first) and run it."""
-    if pilot.app.focused is not pilot.app.query_one("#command"):
+    """Type a ros2 command on the app's command line (opening it first) and run
+    it: its first key pressed, the rest pasted (a key at a time, a long command
+    took seconds while the simulation redraws)."""
+    command = pilot.app.query_one("#command")
+    if pilot.app.focused is not command:
         await pilot.press("colon")
-    await pilot.press(*line, "enter")
+    await pilot.press(line[0])
+    command.insert_text_at_cursor(line[1:])
+    await pilot.press("enter")

@@ -10,7 +10,7 @@ import stat
 import textwrap
 from pathlib import Path
 
-from support.pilot import SIZE, pilot_test, wait_for
+from support.pilot import SIZE, pilot_test, type_command, wait_for
 from textual import events
 from textual.widgets import ContentSwitcher, Static
 from textual.widgets.text_area import Selection
@@ -151,7 +151,7 @@ async def test_escape_returns_the_keys_to_the_arena_and_E_takes_them_back(tmp_pa
 async def test_ctrl_c_copies_in_the_editor_and_stops_commands_everywhere_else(tmp_path: Path) -> None:
     app, _ = started(tmp_path)
     async with app.run_test(size=SIZE) as pilot:
-        await pilot.press("colon", *"ros2 topic echo /turtle1/pose", "enter")
+        await type_command(pilot, "ros2 topic echo /turtle1/pose")
         assert app.terminal.foreground is not None
         await pilot.press("escape", "E")
         panel = app.query_one(EditorPanel)
@@ -165,7 +165,8 @@ async def test_ctrl_c_copies_in_the_editor_and_stops_commands_everywhere_else(tm
         assert "E" in keys.shown and "^S" not in keys.shown
         await pilot.press("ctrl+c")  # from the arena: stops the command
         assert app.terminal.foreground is None
-        await pilot.press("colon", *"ros2 topic hz /turtle1/pose", "enter", "ctrl+c")  # and from the command line
+        await type_command(pilot, "ros2 topic hz /turtle1/pose")
+        await pilot.press("ctrl+c")  # and from the command line
         assert app.terminal.foreground is None
 
 
