@@ -41,9 +41,11 @@ def install(distro: str | None = None) -> None:
     """Make ``import rclpy`` (and the message packages) resolve to turtletui's,
     as in ROS 2 ``distro`` (the default when None: see turtletui.compat.distro),
     where only one of ``turtlesim`` and ``turtlesim_msgs`` exists."""
-    from turtletui.compat.distro import install_finder, resolve_distro
+    from turtletui.compat.distro import install_finder, resolve_distro, show_types_as
 
-    install_finder(resolve_distro(distro))
+    distro = resolve_distro(distro)
+    install_finder(distro)
+    show_types_as(distro)
     if sys.path[:1] != [SHIM_PATH]:
         if SHIM_PATH in sys.path:
             sys.path.remove(SHIM_PATH)

@@ -10,12 +10,19 @@ fails as it would there, with one line saying why and what to do.
 from __future__ import annotations
 
 import ast
+import functools
 import os
+import re
 import sys
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from importlib.abc import MetaPathFinder
 from pathlib import Path
+from typing import Any
+
+from turtletui.interfaces import InterfaceError, all_interfaces, get_interface, interface_name
+from turtletui.interfaces._message import show_package_as
+from turtletui.interfaces.type_descriptions import renamed_type_name
 
 
 @dataclass(frozen=True)
@@ -170,11 +177,56 @@ def current_distro() -> str:
     return NEWEST_LTS
 
 
+def package_renames(distro: str) -> dict[str, str]:
+    """How ``distro`` renames turtletui's interface packages (old -> new): the
+    one source of the names a run shows. turtletui defines turtlesim's types
+    as ``turtlesim/...``; from Kilted on they are ``turtlesim_msgs/...``."""
+    package = DISTROS[check_distro(distro)].turtlesim_package
+    return {"turtlesim": package} if package != "turtlesim" else {}
+
+
+def ros_type_name(type_name: str, distro: str) -> str:
+    """A type's full name as ``distro`` has it (``turtlesim/msg/Pose`` is
+    ``turtlesim_msgs/msg/Pose`` from Kilted on); other names as they are."""
+    return renamed_type_name(type_name, package_renames(distro))
+
+
+def type_namer(distro: str) -> Callable[[Any], str]:
+    """``interface_name`` as ``distro`` names types, for a graph's endpoints."""
+    renames = package_renames(distro)
+
+    @functools.cache
+    def name(cls: type) -> str:
+        return renamed_type_name(interface_name(cls), renames)
+
+    return name
+
+
+def distro_interface(name: str, distro: str) -> type:
+    """``get_interface`` as ``distro``'s ROS knows types: a name in the
+    turtlesim package it lacks is unknown there (InterfaceError saying so)."""
+    missing = MissingPackageFinder(distro).missing
+    text = str(name).strip()
+    if re.split(r"[/.]", text, maxsplit=1)[0] == missing:
+        raise InterfaceError(missing_package_message(missing, distro).replace("No module", "No package", 1),
+                             type_name=text)
+    return get_interface(name)
+
+
+def distro_interfaces(distro: str) -> list[str]:
+    """Every interface ``distro`` has, by full name, sorted (``ros2 interface list``)."""
+    return sorted(ros_type_name(name, distro) for name in all_interfaces())
+
+
+def show_types_as(distro: str) -> None:
+    """Make messages print (repr) with the package names ``distro`` has."""
+    show_package_as("turtlesim", package_renames(distro).get("turtlesim", "turtlesim"))
+
+
 def type_description_names(distro: str) -> tuple[tuple[str, str], ...] | None:
     """How ``distro`` names turtlesim's types in type descriptions and hashes
     (turtletui.interfaces.type_descriptions.Names: turtlesim_msgs from Kilted
     on); None where nodes serve no ~/get_type_description (Humble: Iron on)."""
     if check_distro(distro) == "humble":
         return None
-    package = DISTROS[distro].turtlesim_package
-    return (("turtlesim", package),) if package != "turtlesim" else ()
+    return tuple(package_renames(distro).items())

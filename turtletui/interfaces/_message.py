@@ -734,3 +734,13 @@ def define_action(full_name: str, text: str, namespace: dict | None = None) -> t
             namespace[f'{name}_{suffix}'] = part
     _TOP_LEVEL.append(full_name)
     return cls
+
+
+def show_package_as(package: str, shown: str) -> None:
+    """Make the messages of ``package`` print (repr) as ``shown``'s do: the
+    distro of a run decides (from Kilted on turtlesim's ``Pose`` prints as
+    ``turtlesim_msgs.msg.Pose(...)``). Their full names stay as defined."""
+    prefix = f'{package}/'
+    for name, cls in _REGISTRY.items():
+        if name.startswith(prefix) and issubclass(cls, Message):
+            cls._REPR_PREFIX = f'{shown}/{name[len(prefix):]}'.replace('/', '.')

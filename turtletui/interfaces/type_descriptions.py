@@ -16,6 +16,7 @@ from __future__ import annotations
 import functools
 import hashlib
 import json
+from collections.abc import Mapping
 from typing import Any
 
 from turtletui.interfaces._message import (
@@ -152,9 +153,9 @@ def _full(cls: type, type_name: str, names: Names) -> dict[str, Any]:
 
 def _renamed(full: dict[str, Any], names: dict[str, str]) -> dict[str, Any]:
     def individual(t: dict[str, Any]) -> dict[str, Any]:
-        fields = [dict(f, type=dict(f["type"], nested_type_name=_renamed_name(f["type"]["nested_type_name"], names)))
+        fields = [dict(f, type=dict(f["type"], nested_type_name=renamed_type_name(f["type"]["nested_type_name"], names)))
                   for f in t["fields"]]
-        return {"type_name": _renamed_name(t["type_name"], names), "fields": fields}
+        return {"type_name": renamed_type_name(t["type_name"], names), "fields": fields}
 
     return {"type_description": individual(full["type_description"]),
             "referenced_type_descriptions": [individual(t) for t in full["referenced_type_descriptions"]]}
@@ -195,11 +196,13 @@ def type_sources(cls: type, names: Names = ()) -> list[dict[str, str]]:
     full = _full(cls, cls._TYPE_NAME, ())
     top, *used = [full["type_description"]["type_name"]] + [t["type_name"] for t in full["referenced_type_descriptions"]]
     renames = dict(names)
-    sources = [_source(name, _renamed_name(name, renames)) for name in used]
-    return [_source(top, _renamed_name(top, renames)), *sorted(sources, key=lambda source: source["type_name"])]
+    sources = [_source(name, renamed_type_name(name, renames)) for name in used]
+    return [_source(top, renamed_type_name(top, renames)), *sorted(sources, key=lambda source: source["type_name"])]
 
 
-def _renamed_name(type_name: str, names: dict[str, str]) -> str:
+def renamed_type_name(type_name: str, names: Mapping[str, str]) -> str:
+    """``type_name`` with its package renamed by ``names`` (old -> new, see
+    Names): ``turtlesim/msg/Pose`` -> ``turtlesim_msgs/msg/Pose``."""
     package, slash, rest = type_name.partition("/")
     return names.get(package, package) + slash + rest
 

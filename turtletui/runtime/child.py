@@ -29,7 +29,6 @@ from time import monotonic as _monotonic
 from typing import Any
 
 from turtletui.graph.core import Graph
-from turtletui.interfaces import interface_name
 from turtletui.runtime import protocol, wire
 from turtletui.runtime.host import CallbackTracking
 from turtletui.runtime.outbox import OWNER, ParentOutbox
@@ -220,6 +219,7 @@ def main(config: dict[str, Any] | None = None) -> None:
     _apply_limits(config.get("limits", {}))
     from turtletui import compat
     from turtletui.compat import context as compat_context
+    from turtletui.compat.distro import resolve_distro, type_namer
     from turtletui.runtime import scheduler, virtual_time
     from turtletui.runtime.loader import (
         ControllerError,
@@ -231,8 +231,9 @@ def main(config: dict[str, Any] | None = None) -> None:
         user_frames,
     )
 
-    compat.install(config.get("distro"))
-    graph = Graph(epoch_ns=config["epoch_ns"], type_name=interface_name)
+    distro = resolve_distro(config.get("distro"))
+    compat.install(distro)
+    graph = Graph(epoch_ns=config["epoch_ns"], type_name=type_namer(distro))
     graph.discovery_ns = config.get("discovery_ns", 0)
     log_lines = config.get("limits", {}).get("log_lines")
     outbox = ParentOutbox(graph) if log_lines is None else ParentOutbox(graph, log_budget=int(log_lines) + 1)

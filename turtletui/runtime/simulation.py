@@ -7,12 +7,11 @@ import time
 from collections.abc import Callable, Sequence
 from typing import Protocol
 
-from turtletui.compat.distro import resolve_distro, type_description_names
+from turtletui.compat.distro import resolve_distro, type_description_names, type_namer
 from turtletui.graph.core import DISCOVERY_NS, LOCKSTEP_EPOCH_NS, NS_PER_S, Graph
 from turtletui.graph.introspection import dangling_endpoints
 from turtletui.graph.logs import WARN, LogRecord
 from turtletui.graph.turtlesim_node import TurtlesimNode
-from turtletui.interfaces import interface_name
 from turtletui.sim import World
 
 _real_sleep = time.sleep  # controllers may get a simulated time.sleep
@@ -64,7 +63,7 @@ class Simulation:
         self.distro = resolve_distro(distro)
         """The ROS 2 distro controllers run as (turtletui.compat.distro)."""
         epoch = time.time_ns() if realtime else LOCKSTEP_EPOCH_NS
-        self.graph = Graph(epoch_ns=epoch, type_name=interface_name)
+        self.graph = Graph(epoch_ns=epoch, type_name=type_namer(self.distro))
         self.graph.discovery_ns = DISCOVERY_NS
         self.graph.log_sinks.extend(log_sinks)
         self.world = world if world is not None else World(spawn_turtle1=False)
