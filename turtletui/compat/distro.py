@@ -134,14 +134,16 @@ def _imported_packages(tree: ast.AST) -> set[str]:
 
 def missing_package_message(package: str, distro: str) -> str:
     """What importing ``package`` (turtlesim or turtlesim_msgs) says where it is missing."""
+    return f"No module named '{package}' ({missing_package_reason(distro)})"
+
+
+def missing_package_reason(distro: str) -> str:
+    """Why ``distro`` has the other turtlesim interface package only, and what to do."""
     if DISTROS[distro].turtlesim_package == "turtlesim":
-        where, other = "'turtlesim' up to Jazzy", "kilted or newer"
+        where, other, missing = "'turtlesim' up to Jazzy", "kilted or newer", "turtlesim_msgs"
     else:
-        where, other = "'turtlesim_msgs' from Kilted on", "jazzy or older"
-    return (
-        f"No module named '{package}' (turtlesim's types are in {where}; this run is"
-        f" --distro {distro}, use --distro {other} for '{package}')"
-    )
+        where, other, missing = "'turtlesim_msgs' from Kilted on", "jazzy or older", "turtlesim"
+    return f"turtlesim's types are in {where}; this run is --distro {distro}, use --distro {other} for '{missing}'"
 
 
 class MissingPackageFinder(MetaPathFinder):
@@ -202,15 +204,20 @@ def type_namer(distro: str) -> Callable[[Any], str]:
     return name
 
 
-def distro_interface(name: str, distro: str) -> type:
+def lacks_package_of(type_name: str, distro: str) -> bool:
+    """Whether ``type_name`` (``turtlesim/srv/Spawn``, dotted or short) is in
+    the turtlesim interface package ``distro`` does not have."""
+    package = re.split(r"[/.]", str(type_name).strip(), maxsplit=1)[0]
+    return package == MissingPackageFinder(distro).missing
+
+
+def distro_interface(type_name: str, distro: str) -> type:
     """``get_interface`` as ``distro``'s ROS knows types: a name in the
-    turtlesim package it lacks is unknown there (InterfaceError saying so)."""
-    missing = MissingPackageFinder(distro).missing
-    text = str(name).strip()
-    if re.split(r"[/.]", text, maxsplit=1)[0] == missing:
-        raise InterfaceError(missing_package_message(missing, distro).replace("No module", "No package", 1),
-                             type_name=text)
-    return get_interface(name)
+    turtlesim package it lacks is unknown there (InterfaceError saying why)."""
+    if lacks_package_of(type_name, distro):
+        raise InterfaceError(f"unknown interface type '{type_name}' ({missing_package_reason(distro)})",
+                             type_name=str(type_name))
+    return get_interface(type_name)
 
 
 def distro_interfaces(distro: str) -> list[str]:

@@ -70,8 +70,8 @@ def _send_goal_arguments(parser: ArgumentParser) -> None:
 
 def _send_goal(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
     server = _server(cli, args.action_name)
-    cls = interface_or_error(args.action_type, Action, "action")
-    check_type(cls, server.type_name, f"action '{server.name}'")
+    cls = interface_or_error(cli, args.action_type, Action, "action")
+    check_type(cli, cls, server.type_name, f"action '{server.name}'")
     goal = message_values(args.goal, cls.Goal, "goal")
     return cli.start(GoalStream(cli, line, server.name, cls, goal, args.feedback))
 

@@ -6,6 +6,7 @@ import shlex
 from argparse import ArgumentParser
 from typing import TYPE_CHECKING, Protocol
 
+from turtletui.compat.distro import NEWEST_LTS
 from turtletui.graph.core import Graph, GraphError, NodeRecord
 from turtletui.interfaces import InterfaceError
 from turtletui.ros2cli import action, bag, interface, node, param, service, topic
@@ -43,6 +44,8 @@ class Ros2Cli:
         self.graph: Graph = sim if isinstance(sim, Graph) else sim.graph
         self.sim = None if isinstance(sim, Graph) else sim
         """The simulation, for ``ros2 bag`` (None when only a graph was given)."""
+        self.distro: str = getattr(self.sim, "distro", None) or NEWEST_LTS
+        """The ROS 2 distro the graph's nodes run as: which types exist, and their names."""
         self.streams: list[Stream] = []
         """Streams still running, oldest first."""
         self.help_width = help_width

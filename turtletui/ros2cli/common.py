@@ -9,11 +9,13 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, TypeVar
 
+from turtletui.compat.distro import lacks_package_of, missing_package_reason, ros_type_name
 from turtletui.graph.core import Graph, Topic
 from turtletui.graph.introspection import GraphSnapshot, NodeInfo, snapshot, with_ros_plumbing
 from turtletui.interfaces import Action, Service, get_interface, interface_name
 
 if TYPE_CHECKING:
+    from turtletui.ros2cli.cli import Ros2Cli
     from turtletui.ros2cli.streams import Stream
 
 T = TypeVar("T")
@@ -141,16 +143,35 @@ def kind_word(cls: type) -> str:
     return "message"
 
 
-def interface_or_error(name: str, base: type, what: str) -> type:
-    """The interface class called ``name``; it must be a ``what`` (message...) type."""
+def interface_or_error(cli: Ros2Cli, name: str, base: type, what: str) -> type:
+    """The interface class called ``name``; it must be a ``what`` (message...)
+    type of the run's distro (ros2cli's own sentence when its package is not)."""
+    if lacks_package_of(name, cli.distro):
+        raise CommandError(f"The passed {what} type is invalid ({missing_package_reason(cli.distro)})")
     cls = get_interface(name)
     if not issubclass(cls, base):
         raise CommandError(f"'{name}' is a {kind_word(cls)} type, not a {what} type")
     return cls
 
 
-def check_type(cls: type, actual: str, what: str) -> None:
+def type_name(cli: Ros2Cli, cls: type) -> str:
+    """The full name of an interface class as the run's distro has it."""
+    return ros_type_name(interface_name(cls), cli.distro)
+
+
+def message_repr(cli: Ros2Cli, msg: Any) -> str:
+    """``repr(msg)`` with the package names of the run's distro
+    (``turtlesim_msgs.srv.Spawn_Request(...)`` from Kilted on), whatever the
+    names this process's messages print with."""
+    text, cls = repr(msg), type(msg)
+    prefix = getattr(cls, "_REPR_PREFIX", "")
+    if not prefix or not text.startswith(prefix):
+        return text
+    return type_name(cli, cls).replace("/", ".") + text[len(prefix):]
+
+
+def check_type(cli: Ros2Cli, cls: type, actual: str, what: str) -> None:
     """The type a user named must be the one the graph has."""
-    wanted = interface_name(cls)
+    wanted = type_name(cli, cls)
     if wanted != actual:
         raise CommandError(f"{what} has type {actual}, not {wanted}")

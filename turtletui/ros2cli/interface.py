@@ -5,7 +5,8 @@ from __future__ import annotations
 from argparse import ArgumentParser, Namespace
 from typing import TYPE_CHECKING
 
-from turtletui.interfaces import all_interfaces, definition_text
+from turtletui.compat.distro import distro_interface, distro_interfaces
+from turtletui.interfaces import definition_text
 from turtletui.ros2cli.arguments import Command, Verb
 from turtletui.ros2cli.common import CommandError, CommandResult, hint
 
@@ -38,7 +39,7 @@ def _show_arguments(parser: ArgumentParser) -> None:
 
 
 def _show(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
-    text = definition_text(args.type, all_comments=args.all_comments, no_comments=args.no_comments)
+    text = definition_text(distro_interface(args.type, cli.distro), all_comments=args.all_comments, no_comments=args.no_comments)
     return CommandResult(text.split("\n"))
 
 
@@ -48,13 +49,13 @@ def _list(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
     for kind, _, title in _KINDS:
         if kind in kinds:
             lines.append(f"{title}:")
-            lines.extend(f"    {n}" for n in all_interfaces() if n.split("/")[1] == kind)
+            lines.extend(f"    {n}" for n in distro_interfaces(cli.distro) if n.split("/")[1] == kind)
     return CommandResult(lines)
 
 
 def _packages(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
     kinds = _kinds(args)
-    return CommandResult(sorted({n.split("/")[0] for n in all_interfaces() if n.split("/")[1] in kinds}))
+    return CommandResult(sorted({n.split("/")[0] for n in distro_interfaces(cli.distro) if n.split("/")[1] in kinds}))
 
 
 def _package_arguments(parser: ArgumentParser) -> None:
@@ -63,9 +64,9 @@ def _package_arguments(parser: ArgumentParser) -> None:
 
 
 def _package(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
-    names = [n for n in all_interfaces() if n.split("/")[0] == args.package_name]
+    names = [n for n in distro_interfaces(cli.distro) if n.split("/")[0] == args.package_name]
     if not names:
-        packages = sorted({n.split("/")[0] for n in all_interfaces()})
+        packages = sorted({n.split("/")[0] for n in distro_interfaces(cli.distro)})
         raise CommandError(f"unknown package '{args.package_name}'{hint(args.package_name, packages)}")
     kinds = _kinds(args)
     return CommandResult([n for n in names if n.split("/")[1] in kinds])

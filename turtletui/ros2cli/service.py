@@ -5,7 +5,7 @@ from __future__ import annotations
 from argparse import ArgumentParser, Namespace
 from typing import TYPE_CHECKING, Any
 
-from turtletui.interfaces import Service, interface_name
+from turtletui.interfaces import Service
 from turtletui.ros2cli.arguments import Command, Verb, list_options
 from turtletui.ros2cli.common import (
     CommandError,
@@ -16,6 +16,7 @@ from turtletui.ros2cli.common import (
     interface_or_error,
     name_list,
     ros_view,
+    type_name,
 )
 from turtletui.ros2cli.streams import CallStream
 from turtletui.ros2cli.values import message_values
@@ -68,7 +69,7 @@ def _find_arguments(parser: ArgumentParser) -> None:
 
 
 def _find(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
-    wanted = interface_name(interface_or_error(args.service_type, Service, "service"))
+    wanted = type_name(cli, interface_or_error(cli, args.service_type, Service, "service"))
     found = [s for s in ros_view(cli).services if s.type == wanted]
     return name_list(found, count=args.count_services, show_types=False, hidden=args.include_hidden_services)
 
@@ -102,8 +103,8 @@ def _call(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
     if _looks_like_values(srv_type) and values == "{}":
         # The type left out: turtletui knows it from the graph.
         srv_type, values = None, srv_type
-    cls = service.srv_type if srv_type is None else interface_or_error(srv_type, Service, "service")
-    check_type(cls, service.type_name, f"service '{service.name}'")
+    cls = service.srv_type if srv_type is None else interface_or_error(cli, srv_type, Service, "service")
+    check_type(cli, cls, service.type_name, f"service '{service.name}'")
     request = message_values(values, cls.Request, "request")
     return cli.start(CallStream(cli, line, service.name, cls, request))
 

@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING, Any
 from turtletui.graph.core import NS_PER_S, GoalHandle, NodeRecord, Topic
 from turtletui.graph.logs import LogRecord, to_log_message
 from turtletui.interfaces import Message, from_dict, to_dict
+from turtletui.ros2cli.common import message_repr
 from turtletui.ros2cli.values import message_yaml, yaml_lines
 
 if TYPE_CHECKING:
@@ -244,7 +245,7 @@ class PubStream(Stream):
         msg = from_dict(self._cls, self._values)  # a fresh message each time, as on a wire
         self.count += 1
         if self._print_nth and self.count % self._print_nth == 0:
-            self._emit([f"publishing #{self.count}: {msg!r}", ""])
+            self._emit([f"publishing #{self.count}: {message_repr(self._cli, msg)}", ""])
         self._graph.publish(self.publisher.topic, msg, None, self.publisher)
         if self._times and self.count >= self._times:
             self._finish()
@@ -256,13 +257,13 @@ class CallStream(Stream):
     def __init__(self, cli: Ros2Cli, command: str, name: str, srv_cls: type, request: Any) -> None:
         super().__init__(cli, command)
         self.client = self._graph.add_client(self.node, name, srv_cls)
-        self._emit([f"requester: making request: {request!r}", ""])
+        self._emit([f"requester: making request: {message_repr(self._cli, request)}", ""])
         self._graph.call(name, request, self._on_response, self.node.owner)
 
     def _on_response(self, response: Any) -> None:
         if self.done:
             return
-        self._emit(["response:", repr(response), ""])
+        self._emit(["response:", message_repr(self._cli, response), ""])
         self._finish()
 
 

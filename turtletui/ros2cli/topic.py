@@ -5,10 +5,10 @@ from __future__ import annotations
 from argparse import ArgumentParser, Namespace
 from typing import TYPE_CHECKING, Any
 
-from turtletui.compat.distro import NEWEST_LTS, type_description_names
+from turtletui.compat.distro import type_description_names
 from turtletui.graph.core import NS_PER_S
 from turtletui.graph.introspection import TopicInfo
-from turtletui.interfaces import Message, get_interface, interface_name
+from turtletui.interfaces import Message, get_interface
 from turtletui.interfaces.rcl_interfaces import Log
 from turtletui.interfaces.type_descriptions import type_hash
 from turtletui.ros2cli.arguments import (
@@ -31,6 +31,7 @@ from turtletui.ros2cli.common import (
     name_list,
     ros_view,
     topic_or_error,
+    type_name,
 )
 from turtletui.ros2cli.streams import EchoStream, HzStream, PubStream, RosoutEchoStream
 from turtletui.ros2cli.values import message_values
@@ -74,17 +75,17 @@ def _echo(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
     name = absolute(args.topic_name)
     if name == "/rosout" and any(t.name == name for t in ros_view(cli).topics):  # logs are not messages here
         if args.message_type is not None:
-            check_type(get_interface(args.message_type), "rcl_interfaces/msg/Log", f"topic '{name}'")
-        path = _field_path(Log, args.field) if args.field is not None else []
+            check_type(cli, interface_or_error(cli, args.message_type, Message, "message"), "rcl_interfaces/msg/Log", f"topic '{name}'")
+        path = _field_path(cli, Log, args.field) if args.field is not None else []
         return cli.start(RosoutEchoStream(cli, line, None, args.once, path))
     topic = topic_or_error(cli.graph, name, "does not appear to be published yet")
     if args.message_type is not None:
-        check_type(get_interface(args.message_type), topic.type_name, f"topic '{name}'")
-    path = _field_path(topic.msg_type, args.field) if args.field is not None else []
+        check_type(cli, interface_or_error(cli, args.message_type, Message, "message"), topic.type_name, f"topic '{name}'")
+    path = _field_path(cli, topic.msg_type, args.field) if args.field is not None else []
     return cli.start(EchoStream(cli, line, topic, args.once, path))
 
 
-def _field_path(cls: type, text: str) -> list[str]:
+def _field_path(cli: Ros2Cli, cls: type, text: str) -> list[str]:
     path = [part for part in text.split(".") if part]
     if not path:
         raise CommandError(f"Invalid field value '{text}'")
@@ -93,7 +94,7 @@ def _field_path(cls: type, text: str) -> list[str]:
         specs = {s.name: s for s in getattr(current, "_FIELDS", ())}
         if part not in specs:
             names = ", ".join(specs) or "none"
-            raise CommandError(f"invalid field '{text}' of {interface_name(cls)} (fields: {names})")
+            raise CommandError(f"invalid field '{text}' of {type_name(cli, cls)} (fields: {names})")
         current = specs[part].msg_cls if specs[part].kind == "msg" and not specs[part].array else None
     return path
 
@@ -167,12 +168,12 @@ def _info(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
     return CommandResult(lines)
 
 
-def _hash_line(cli: Ros2Cli, type_name: str) -> list[str]:
+def _hash_line(cli: Ros2Cli, name: str) -> list[str]:
     """``Topic type hash: RIHS01_...`` as ros2 prints it from Iron on (none in Humble)."""
-    names = type_description_names(getattr(cli.sim, "distro", None) or NEWEST_LTS)
+    names = type_description_names(cli.distro)
     if names is None:
         return []
-    return [f"Topic type hash: {type_hash(get_interface(type_name), None, names)}"]
+    return [f"Topic type hash: {type_hash(get_interface(name), None, names)}"]
 
 
 def _type_arguments(parser: ArgumentParser) -> None:
@@ -194,7 +195,7 @@ def _find_arguments(parser: ArgumentParser) -> None:
 
 
 def _find(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
-    wanted = interface_name(interface_or_error(args.topic_type, Message, "message"))
+    wanted = type_name(cli, interface_or_error(cli, args.topic_type, Message, "message"))
     found = [t for t in ros_view(cli).topics if t.type == wanted]
     return name_list(found, count=args.count_topics, show_types=False, hidden=args.include_hidden_topics)
 
@@ -223,10 +224,10 @@ def _pub_arguments(parser: ArgumentParser) -> None:
 
 def _pub(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
     name = absolute(args.topic_name)
-    cls = interface_or_error(args.message_type, Message, "message")
+    cls = interface_or_error(cli, args.message_type, Message, "message")
     topic = live_topic(cli.graph, name)
     if topic is not None:
-        check_type(cls, topic.type_name, f"topic '{name}'")
+        check_type(cli, cls, topic.type_name, f"topic '{name}'")
     msg = message_values(args.values, cls, "message")
     rate = args.rate
     notes = []
