@@ -435,6 +435,11 @@ class Graph:
         self._rosout_later: list[tuple[LogRecord, tuple[str, str, int] | None]] = []
         """Lines logged in a /rosout callback, delivered ROSOUT_ECHO_NS later (see ``_to_rosout``)."""
 
+    def type_name_of(self, cls: type) -> str:
+        """The full name of an interface class as this graph's distro has it
+        (``turtlesim_msgs/msg/Pose`` from Kilted on)."""
+        return self._type_name(cls)
+
     # -- time ---------------------------------------------------------------
     @property
     def t(self) -> float:

@@ -73,7 +73,9 @@ class FoxgloveBridge:
         self._context = foxglove.Context()
         self._channels: dict[int, Any] = {}
         self._tap = RunTap(sim)
-        self._stream = RosStream(self, epoch_ns=self._graph.epoch_ns, scene=self._tap.scene())
+        self._stream = RosStream(
+            self, epoch_ns=self._graph.epoch_ns, scene=self._tap.scene(), type_name=self._graph.type_name_of
+        )
         self._inbox: queue.SimpleQueue[Callable[[], None]] = queue.SimpleQueue()
         self._services: dict[str, str] = {}
         self._parameters: dict[str, Any] = {}

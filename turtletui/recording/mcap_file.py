@@ -18,10 +18,11 @@ from __future__ import annotations
 import json
 import os
 import shutil
-from collections.abc import Collection
+from collections.abc import Callable, Collection
 from pathlib import Path
 from typing import Any
 
+from turtletui.interfaces import interface_name
 from turtletui.recording import rosbag2
 from turtletui.recording.errors import RecordingWriteError
 from turtletui.recording.qos import profiles_yaml
@@ -39,7 +40,7 @@ _CHUNK_SIZE = 1024 * 1024
 class McapSink:
     """An open MCAP writer that RosStream writes into."""
 
-    def __init__(self, stream: Any) -> None:
+    def __init__(self, stream: Any, distro: str = rosbag2.ROS_DISTRO) -> None:
         try:
             from mcap.writer import CompressionType, Writer
         except ImportError:
@@ -52,6 +53,7 @@ class McapSink:
         self.start_ns: int | None = None
         self.end_ns = 0
         self.message_count = 0
+        self.distro = distro
 
     def add_channel(self, channel: Channel) -> None:
         schema_id = self._schemas.get(channel.type_name)
@@ -80,7 +82,9 @@ class McapSink:
             rosbag2.TopicInfo(channel.topic, channel.type_name, channel.qos, channel.count, type_hash(channel.type_name))
             for channel in channels
         ]
-        return rosbag2.BagInfo([file_name], start, max(self.end_ns - start, 0), self.message_count, topics)
+        return rosbag2.BagInfo(
+            [file_name], start, max(self.end_ns - start, 0), self.message_count, topics, self.distro
+        )
 
     def finish(self, bag: rosbag2.BagInfo, header: dict[str, Any] | None) -> None:
         self._writer.add_metadata("rosbag2", {"serialized_metadata": rosbag2.serialized_metadata(bag)})
@@ -100,8 +104,17 @@ class McapWriter:
     """Writes one recording: ``feed`` events, then ``close``."""
 
     def __init__(
-        self, path: str | os.PathLike[str], *, epoch_ns: int, scene: Scene, topics: Collection[str] | None = None
+        self,
+        path: str | os.PathLike[str],
+        *,
+        epoch_ns: int,
+        scene: Scene,
+        topics: Collection[str] | None = None,
+        distro: str = rosbag2.ROS_DISTRO,
+        type_name: Callable[[type], str] = interface_name,
     ) -> None:
+        """``distro`` and ``type_name`` (the graph's type_name_of): the run's
+        distro and how it names types, as the bag records them."""
         self.folder = is_bag_folder(path)
         self.path = Path(os.fspath(path).rstrip("/" + os.sep) or ".")
         if self.folder:
@@ -121,12 +134,12 @@ class McapWriter:
         except OSError as err:
             raise RecordingWriteError(f"{path}: cannot write the recording ({err.strerror})") from None
         try:
-            self._sink = McapSink(self._file)
+            self._sink = McapSink(self._file, distro)
         except BaseException:
             self._file.close()
             self._discard()
             raise
-        self.stream = RosStream(self._sink, epoch_ns=epoch_ns, scene=scene, topics=topics)
+        self.stream = RosStream(self._sink, epoch_ns=epoch_ns, scene=scene, topics=topics, type_name=type_name)
 
     def close(self, keep: bool = True, header: dict[str, Any] | None = None) -> None:
         """Finish and rename into place (``keep``), or drop; nothing temporary is left."""

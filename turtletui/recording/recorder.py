@@ -14,6 +14,7 @@ from typing import Any
 
 from turtletui.graph.logs import LogRecord
 from turtletui.recording.mcap_file import McapWriter
+from turtletui.recording.rosbag2 import ROS_DISTRO
 from turtletui.recording.tap import RunTap
 
 _FLUSH_EVERY = 4096
@@ -44,6 +45,7 @@ class McapRecorder:
         self.path = path
         self._topics = topics
         self._header = header
+        self._distro = getattr(sim, "distro", None) or ROS_DISTRO
         self._tap = RunTap(sim, earlier_logs, everything=not buffered)
         self._scene = self._tap.scene()
         self._writer = None if buffered else self._open()
@@ -51,7 +53,11 @@ class McapRecorder:
             self._tap.graph.taps.append(self._flush_when_full)
 
     def _open(self) -> McapWriter:
-        return McapWriter(self.path, epoch_ns=self._tap.graph.epoch_ns, scene=self._scene, topics=self._topics)
+        graph = self._tap.graph
+        return McapWriter(
+            self.path, epoch_ns=graph.epoch_ns, scene=self._scene, topics=self._topics, distro=self._distro,
+            type_name=graph.type_name_of,
+        )
 
     def _flush_when_full(self, kind: str, payload: Any) -> None:
         if len(self._tap.events) >= _FLUSH_EVERY:

@@ -15,8 +15,7 @@ from turtletui.recording.qos import OfferedQos
 VERSION = 9
 STORAGE = "mcap"
 ROS_DISTRO = "jazzy"
-"""The type names recorded (turtlesim/msg/Pose...) are Jazzy's: from Kilted on
-turtlesim's types are turtlesim_msgs/msg/..."""
+"""The distro a bag says it was recorded with when the run's is not known."""
 
 
 @dataclass
@@ -37,6 +36,8 @@ class BagInfo:
     duration_ns: int
     message_count: int
     topics: list[TopicInfo]
+    ros_distro: str = ROS_DISTRO
+    """The distro of the run (its type names: turtlesim_msgs/msg/Pose from Kilted on)."""
 
 
 def metadata_yaml(info: BagInfo) -> str:
@@ -90,7 +91,7 @@ def _bag_lines(info: BagInfo) -> list[str]:
             f"      nanoseconds: {info.duration_ns}",
             f"    message_count: {info.message_count}",
         ]
-    lines += ["custom_data: ~", f"ros_distro: {ROS_DISTRO}"]
+    lines += ["custom_data: ~", f"ros_distro: {info.ros_distro}"]
     return lines
 
 

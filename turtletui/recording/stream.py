@@ -82,8 +82,18 @@ class RosStream:
     (LogRecord) and "background" ((r, g, b), turtlesim's parameters).
     """
 
-    def __init__(self, sink: Sink, *, epoch_ns: int, scene: Scene, topics: Collection[str] | None = None) -> None:
+    def __init__(
+        self,
+        sink: Sink,
+        *,
+        epoch_ns: int,
+        scene: Scene,
+        topics: Collection[str] | None = None,
+        type_name: Callable[[type], str] = interface_name,
+    ) -> None:
         self._sink = sink
+        self._type_name = type_name
+        """How the run's distro names a type (the graph's type_name_of)."""
         self._epoch_ns = epoch_ns
         self._topics = None if topics is None else frozenset(topics)
         """Only these topics are written (``ros2 bag record TOPIC...``); None: every one."""
@@ -134,7 +144,7 @@ class RosStream:
             self._service(t_ns, *payload)
         elif kind == "goal":
             name, goal = payload
-            self._write(self.channel(name + GOAL_SUFFIX, interface_name(goal)), t_ns, goal)
+            self._write(self.channel(name + GOAL_SUFFIX, self._type_name(type(goal))), t_ns, goal)
         elif kind == "background":
             self.scene.set_background(payload)
         if self.scene.due(t_ns):
@@ -172,10 +182,10 @@ class RosStream:
         self._sink.write(channel, record.stamp_ns, cdr.serialize(msg))
 
     def _service(self, t_ns: int, name: str, request: Any, response: Any) -> None:
-        request_type = interface_name(request)
-        service_type = request_type.removesuffix("_Request")
-        self._write(self.channel(name + REQUEST_SUFFIX, recorded_type_name(request_type)), t_ns, request)
-        response_type = recorded_type_name(interface_name(response))
+        service_type = interface_name(request).removesuffix("_Request")  # turtletui's own name
+        request_type = recorded_type_name(self._type_name(type(request)))
+        self._write(self.channel(name + REQUEST_SUFFIX, request_type), t_ns, request)
+        response_type = recorded_type_name(self._type_name(type(response)))
         self._write(self.channel(name + RESPONSE_SUFFIX, response_type), t_ns, response)
         # turtlesim's own services: /spawn, /kill, /clear, /reset, /<turtle>/set_pen
         short = name[1:] if name.count("/") == 1 else "set_pen" if name.count("/") == 2 else ""

@@ -14,4 +14,8 @@ def type_hash(type_name: str) -> str:
     """The RIHS01 hash of a recorded message type (``turtlesim/msg/Pose``);
     a request recorded as ``turtlesim/msg/SetPen_Request`` is hashed under that
     name, as readers that check hashes (rosbags) hash the type they are given."""
-    return _class_hash(interface_of(type_name), type_name)
+    cls = interface_of(type_name)
+    # a type recorded under another package's name (turtlesim_msgs/... from
+    # Kilted on) names the types of its own package it uses that way too
+    defined, recorded = cls._TYPE_NAME.split("/", 1)[0], type_name.split("/", 1)[0]
+    return _class_hash(cls, type_name, ((defined, recorded),) if recorded != defined else ())
