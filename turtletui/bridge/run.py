@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING, Any
 from turtletui.api import RunResult, TurtleSummary
 from turtletui.bridge.host import RosBridge
 from turtletui.bridge.process import RUN_FILE_SCRIPT, TwinProcess, start_twin
+from turtletui.compat.distro import distro_of_ros
 from turtletui.graph.core import NS_PER_S
 from turtletui.graph.logs import INFO, LogRecord
 from turtletui.runtime.loader import ControllerError, ControllerSpec, check_source
@@ -44,6 +45,12 @@ class RosConnection:
 def connect(ros_python: str | None = None) -> RosConnection:
     """Start the twin in a ROS 2 python; RosUnavailable (one line) if there is none."""
     return RosConnection(*start_twin(ros_python))
+
+
+def distro_of(ros: RosConnection) -> str:
+    """The distro a simulation joined to ``ros`` runs as: the real graph's, so
+    that both name turtlesim's types alike (turtlesim_msgs/... from Kilted on)."""
+    return distro_of_ros(str(ros.info.get("distro", "")), str(ros.info.get("turtlesim_package", "")))
 
 
 def attach(
@@ -180,8 +187,9 @@ def run_ros(
     if args and args[0] != "--ros-args":
         args = ["--ros-args", *args]
     logs: list[LogRecord] = []
-    sim = Simulation(world=world, realtime=True, log_sinks=[logs.append])
-    bridge = attach(sim, ros_python, earlier_logs=logs)
+    ros = connect(ros_python)
+    sim = Simulation(world=world, realtime=True, log_sinks=[logs.append], distro=distro_of(ros))
+    bridge = attach(sim, ros, earlier_logs=logs)
     if on_log is not None:
         for record in logs:
             on_log(record)

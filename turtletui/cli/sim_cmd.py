@@ -103,6 +103,7 @@ def sim(
             record=record,
             foxglove=foxglove,
             ros=connection,
+            distro=_ros_distro(connection),
         ).run()
         return
     connection = _connect(ros, ros_python)
@@ -125,6 +126,7 @@ def sim(
             realtime=True,
             log_sinks=[started.append],
             turtlesim_name=args.name,
+            distro=_ros_distro(connection),
         )
         args.apply(simulation)
         sinks = simulation.graph.log_sinks
@@ -160,3 +162,12 @@ def _connect(ros: bool, ros_python: str | None):
     from turtletui.cli.ros_run import connect_or_fail
 
     return connect_or_fail(ros_python)
+
+
+def _ros_distro(connection: object) -> str | None:
+    """The distro of the real ROS 2 graph a run joins (``--ros``), else None (the default)."""
+    if connection is None:
+        return None
+    from turtletui.bridge.run import distro_of
+
+    return distro_of(connection)

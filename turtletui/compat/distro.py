@@ -113,13 +113,28 @@ def distro_of_imports(paths: Iterable[Path]) -> tuple[str, str] | None:
             importers[package].append(Path(path).name)
     if not importers["turtlesim"] or importers["turtlesim_msgs"]:
         return None
-    newest = max((d for d in DISTROS.values() if d.turtlesim_package == "turtlesim"), key=lambda d: d.year)
+    newest = DISTROS[newest_with_package("turtlesim")]
     files = ", ".join(importers["turtlesim"])
     return newest.name, (
         f"{files} import{'s' if len(importers['turtlesim']) == 1 else ''} turtlesim.msg: running as ROS 2"
         f" {newest.name.capitalize()}, the newest with that package (from Kilted on turtlesim's types are in"
         f" turtlesim_msgs); --distro chooses another"
     )
+
+
+def newest_with_package(package: str) -> str:
+    """The newest distro whose turtlesim interfaces are in ``package``."""
+    return max((d for d in DISTROS.values() if d.turtlesim_package == package), key=lambda d: d.year).name
+
+
+def distro_of_ros(ros_distro: str, turtlesim_package: str) -> str:
+    """The distro to run as on a real ROS 2 graph (its ``$ROS_DISTRO`` and the
+    package its turtlesim types are in), so both name types alike: that distro
+    when turtletui knows it, else the newest with that package."""
+    name = ros_distro.strip().lower()
+    if name in DISTROS and DISTROS[name].turtlesim_package == turtlesim_package:
+        return name
+    return newest_with_package(turtlesim_package if turtlesim_package in _TURTLESIM_PACKAGES else "turtlesim_msgs")
 
 
 def _imported_packages(tree: ast.AST) -> set[str]:
