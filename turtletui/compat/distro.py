@@ -20,8 +20,7 @@ from importlib.abc import MetaPathFinder
 from pathlib import Path
 from typing import Any
 
-from turtletui.interfaces import InterfaceError, all_interfaces, get_interface, interface_name
-from turtletui.interfaces._message import show_package_as
+from turtletui.interfaces import InterfaceError, all_interfaces, get_interface, interface_name, show_package_as
 from turtletui.interfaces.type_descriptions import renamed_type_name
 
 

@@ -14,6 +14,7 @@ Public helpers (the registry and the JSON bridge to the sandboxed process):
 * :func:`ros_module_members` -- the classes of one ROS python module
   (``turtlesim.srv``), for the shim packages.
 * :func:`definition_text` -- what ``ros2 interface show`` prints.
+* :func:`show_package_as` -- the package name a package's messages print with.
 * :func:`to_dict` / :func:`from_dict` -- plain nested dicts for JSON; from_dict
   validates untrusted data completely.
 * :func:`copier` -- the fast copy function of a message class (what a
@@ -61,6 +62,7 @@ from turtletui.interfaces._message import (
     Message,
     Service,
     _build,
+    show_package_as,
 )
 from turtletui.interfaces._values import compile_values
 
@@ -83,6 +85,7 @@ __all__ = [
     'get_interface',
     'interface_name',
     'ros_module_members',
+    'show_package_as',
     'to_dict',
     'to_values',
     'trusted_from_values',
