@@ -20,7 +20,13 @@ from importlib.abc import MetaPathFinder
 from pathlib import Path
 from typing import Any
 
-from turtletui.interfaces import InterfaceError, all_interfaces, get_interface, interface_name, show_package_as
+from turtletui.interfaces import (
+    InterfaceError,
+    all_interfaces,
+    get_interface,
+    interface_name,
+    show_package_as,
+)
 from turtletui.interfaces.type_descriptions import renamed_type_name
 
 
