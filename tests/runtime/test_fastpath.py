@@ -348,9 +348,12 @@ def test_a_failing_controller_fails_at_the_same_instant_on_both_paths(tmp_path, 
             rclpy.spin(Failing())
         """.replace("MISBEHAVE", misbehaviour),
     )
-    fast, lockstep = both_paths(path, fast_runs, duration=1.5, limits=Limits(step_timeout=0.5))
+    # the start may take a minute; a stuck callback after it is stopped at the step's timeout
+    limits = Limits(step_timeout=0.5, start_timeout=60.0)
+    fast, lockstep = both_paths(path, fast_runs, duration=1.5, limits=limits)
     assert [c.kind for c in fast.crashes] == ([kind] if kind else [])
     assert_same(fast, lockstep)
+    assert fast.wall_time < 30  # about 1 s: the child's first answers came late, at the start's timeout
 
 
 # -- tampering --------------------------------------------------------------------------------------

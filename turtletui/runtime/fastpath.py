@@ -198,7 +198,11 @@ class Loopback(SandboxHost):
         _HEADER.pack_into(journal, 0, self._seq, self._length)  # after the record: the parent may read it now
         self._records += 1
         self._index += 1
-        if self._records >= _BATCH_RECORDS or _perf_counter() - self._last_flush > _FLUSH_SECONDS:
+        if (
+            self._records >= _BATCH_RECORDS
+            or _perf_counter() - self._last_flush > _FLUSH_SECONDS
+            or self._seq == 0  # the answer that ends the start: the parent waits for it with the start's timeout
+        ):
             self.flush()
 
     def flush(self) -> None:
