@@ -134,14 +134,13 @@ def test_usage_errors_are_one_line_naming_the_option_and_the_value(_cache: Path)
     bad = CliRunner().invoke(app, ["autograder", "github", "--bogus"])
     assert bad.exit_code == 2 and "No such option: --bogus" in bad.stderr
     assert bad.stderr.strip().splitlines() == [bad.stderr.strip()]
-    for args, line in [
-        (["run", "x.py", "--headless", "-d", "abc"], "--duration: input should be a valid number"),
-        (["sim", "--headless", "--seed=1.5"], "--seed: input should be a valid integer"),
+    for args, option, value in [
+        (["run", "x.py", "--headless", "-d", "abc"], "--duration", "'abc'"),
+        (["sim", "--headless", "--seed=1.5"], "--seed", "'1.5'"),
     ]:
         wrong = CliRunner().invoke(app, args)
-        value = "'abc'" if "abc" in args else "'1.5'"
-        assert wrong.exit_code == 2 and wrong.stderr.startswith(f"turtletui: error: {line}"), wrong.stderr
-        assert f"(got {value})" in wrong.stderr and len(wrong.stderr.strip().splitlines()) == 1
+        assert wrong.exit_code == 2 and wrong.stderr.startswith(f"turtletui: error: {option}: "), wrong.stderr
+        assert wrong.stderr.count(value) == 1 and len(wrong.stderr.strip().splitlines()) == 1, wrong.stderr
     helped = CliRunner().invoke(app, ["autograder", "--help"])
     assert helped.exit_code == 0 and "gradescope" in helped.stdout
     assert "internal error" not in bad.stderr + helped.stderr

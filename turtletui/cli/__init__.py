@@ -55,7 +55,7 @@ def usage_line(err: Any, argv: list[str]) -> str:
         if name in opts:
             value = given if eq else (argv[i + 1] if i + 1 < len(argv) else None)
     why = message.split(": ", 1)[-1].rstrip(".")
-    got = "" if value is None else f" (got {value!r})"
+    got = "" if value is None or repr(value) in why else f" (got {value!r})"
     return f"{max(opts, key=len)}: {why[:1].lower()}{why[1:]}{got}{where}"
 
 
