@@ -7,7 +7,7 @@ import threading
 import rclpy
 from builtin_interfaces.msg import Time
 from rclpy.duration import Duration
-from rclpy.executors import MultiThreadedExecutor
+from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rosgraph_msgs.msg import Clock
@@ -26,6 +26,14 @@ class Simulator(Node):
         self.publisher.publish(Clock(clock=Time(sec=sec, nanosec=tenth * 100_000_000)))
 
 
+def spin(executor):
+    # rclpy's own examples: rclpy.shutdown() in main may end the spin with this
+    try:
+        executor.spin()
+    except ExternalShutdownException:
+        pass
+
+
 def main():
     rclpy.init()
     node = Node("paced", parameter_overrides=[Parameter("use_sim_time", value=True)])
@@ -33,7 +41,7 @@ def main():
     executor = MultiThreadedExecutor(num_threads=2)
     executor.add_node(node)
     executor.add_node(simulator)
-    spinner = threading.Thread(target=executor.spin, daemon=True)
+    spinner = threading.Thread(target=spin, args=(executor,), daemon=True)
     spinner.start()
     clock = node.get_clock()
     rate = node.create_rate(2)
@@ -46,11 +54,8 @@ def main():
         # the period ends at a /clock instant; reading it may come one message later
         print("woke near", round(clock.now().nanoseconds / 5e8) / 2)
     print("slept", clock.sleep_for(Duration(seconds=1)), "until near", round(clock.now().nanoseconds / 5e8) / 2)
-    # the executor stops before the context: a spin thread still running when
-    # rclpy.shutdown() comes may raise there (the real rclpy now and then does)
-    executor.shutdown()
-    spinner.join()
     rclpy.shutdown()
+    spinner.join()
 
 
 if __name__ == "__main__":
