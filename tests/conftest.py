@@ -7,22 +7,6 @@ from pathlib import Path
 
 import pytest
 
-LONG_FIRST = (
-    "tests/platforms/",
-    "tests/grading/test_ray_backend.py",
-    "tests/grading/test_hostile.py",
-    "tests/bridge/test_real_ros.py",
-    "tests/tui/test_browser.py",
-    "tests/grading/test_batch.py",
-    "tests/runtime/test_budget.py",
-)
-"""Files of tests that take seconds each: run first, so that pytest-xdist's
-last minute is not one worker finishing a long test while the other waits."""
-
-
-def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
-    items.sort(key=lambda item: not item.nodeid.startswith(LONG_FIRST))  # stable: the rest keeps its order
-
 
 @pytest.fixture(autouse=True)
 def _private_data_home(tmp_path_factory: pytest.TempPathFactory, monkeypatch: pytest.MonkeyPatch) -> Path:
