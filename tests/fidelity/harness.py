@@ -43,6 +43,7 @@ class Output:
     returncode: int
 
 
+_NEVER_RETRIEVED = "The following exception was never retrieved: "
 _RCLPY_WARNING = re.compile(r"^\S*/site-packages/rclpy/\S+:\d+: \w+Warning: ")
 
 
@@ -54,6 +55,8 @@ def _lines(text: str) -> list[str]:
             skip_source_line = False
             continue
         skip_source_line = False
+        if line.startswith(_NEVER_RETRIEVED):
+            continue  # rclpy's notice, when a Future is collected, of a task that failed at shutdown: timing noise
         if _RCLPY_WARNING.match(line):
             # rclpy's own internals warning about themselves (e.g. "Failed to fini
             # rosout publisher" after a refused node name): not the program's output

@@ -104,10 +104,11 @@ def _fork(request: dict[str, Any], fds: list[int], sock: socket.socket, main: An
     if middle == 0:
         try:
             os.close(report_r)
+            me = os.getpid()
             pid = os.fork()
             if pid == 0:
                 os.close(report_w)
-                _run(request, fds, sock, main)
+                _run(request, fds, sock, main, me)
             os.write(report_w, str(pid).encode())
         finally:
             os._exit(0)
@@ -118,8 +119,9 @@ def _fork(request: dict[str, Any], fds: list[int], sock: socket.socket, main: An
     return int(answer or 0)
 
 
-def _run(request: dict[str, Any], fds: list[int], sock: socket.socket, main: Any) -> None:
-    """In the run child: become what subprocess would have started, then run."""
+def _run(request: dict[str, Any], fds: list[int], sock: socket.socket, main: Any, middle: int) -> None:
+    """In the run child (forked by the process ``middle``): become what
+    subprocess would have started, then run."""
     code = 1
     try:
         sock.close()
@@ -139,6 +141,12 @@ def _run(request: dict[str, Any], fds: list[int], sock: socket.socket, main: Any
         if journal:
             config["fd_journal"] = journal[0]  # the fast path's (turtletui.runtime.fastpath)
         sys.argv = ["-c", json.dumps(config)]
+        # The middle process exits at once; until it has, the controller would
+        # see it as its parent (os.getppid(), a signal to its parent) instead
+        # of the caller, as a child started by subprocess sees it.
+        deadline = time.monotonic() + 5.0
+        while os.getppid() == middle and time.monotonic() < deadline:
+            _real_sleep(0.0002)
         main(config)
         code = 0
     except BaseException:  # noqa: BLE001 - nothing may return into the server's loop

@@ -7,7 +7,7 @@ import threading
 import rclpy
 from builtin_interfaces.msg import Time
 from rclpy.duration import Duration
-from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor
+from rclpy.executors import MultiThreadedExecutor
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rosgraph_msgs.msg import Clock
@@ -26,12 +26,13 @@ class Simulator(Node):
         self.publisher.publish(Clock(clock=Time(sec=sec, nanosec=tenth * 100_000_000)))
 
 
-def spin(executor):
-    # rclpy's own examples: rclpy.shutdown() in main may end the spin with this
-    try:
-        executor.spin()
-    except ExternalShutdownException:
-        pass
+def spin(executor, spinning):
+    # Spinning stops before rclpy.shutdown(): the real rclpy raises in a spin
+    # thread still waiting when the context ends (RCLError: failed to
+    # initialize wait set), executor.shutdown() during a spin races too, and
+    # a callback still running then fails to publish.
+    while spinning.is_set():
+        executor.spin_once(timeout_sec=0.05)
 
 
 def main():
@@ -41,7 +42,9 @@ def main():
     executor = MultiThreadedExecutor(num_threads=2)
     executor.add_node(node)
     executor.add_node(simulator)
-    spinner = threading.Thread(target=spin, args=(executor,), daemon=True)
+    spinning = threading.Event()
+    spinning.set()
+    spinner = threading.Thread(target=spin, args=(executor, spinning), daemon=True)
     spinner.start()
     clock = node.get_clock()
     rate = node.create_rate(2)
@@ -54,8 +57,11 @@ def main():
         # the period ends at a /clock instant; reading it may come one message later
         print("woke near", round(clock.now().nanoseconds / 5e8) / 2)
     print("slept", clock.sleep_for(Duration(seconds=1)), "until near", round(clock.now().nanoseconds / 5e8) / 2)
-    rclpy.shutdown()
+    simulator.timer.cancel()
+    spinning.clear()
     spinner.join()
+    executor.shutdown()  # waits for the callbacks still running in its threads
+    rclpy.shutdown()
 
 
 if __name__ == "__main__":
