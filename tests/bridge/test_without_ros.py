@@ -55,7 +55,8 @@ def test_the_environment_variable_names_the_ros_python(monkeypatch: pytest.Monke
 
 def test_ros_options_that_mean_nothing_on_a_real_graph_are_refused(tmp_path: Path) -> None:
     for extra, word in ((["--in-process"], "--in-process"), (["--record", str(tmp_path / "r.mcap")], "ros2 bag"),
-                        (["--foxglove", "127.0.0.1:8765"], "foxglove_bridge")):
+                        (["--foxglove", "127.0.0.1:8765"], "foxglove_bridge"),
+                        (["--distro", "humble"], "its own distro")):
         done = subprocess.run(
             [sys.executable, "-m", "turtletui", "run", "--headless", "--ros", *extra],
             capture_output=True, text=True, timeout=60,

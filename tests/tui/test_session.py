@@ -172,3 +172,21 @@ def test_the_teleop_keys_publish_from_teleop_turtles_cmd_vel_publisher() -> None
         "New subscription discovered on topic '/turtle1/cmd_vel', requesting incompatible QoS. "
         "No messages will be sent to it. Last incompatible policy: DURABILITY_QOS_POLICY"
     ]
+
+
+def test_on_a_real_graph_the_session_runs_as_its_distro(monkeypatch) -> None:
+    """With --ros the simulated turtlesim names its types as the real graph's
+    turtlesim does (turtlesim_msgs/... from Kilted on), whatever the default."""
+    import turtletui.bridge.run as bridge_run
+
+    attached = []
+    monkeypatch.setattr(bridge_run, "attach", lambda sim, ros, **_: attached.append(sim) or None)
+    for info, distro in (({"distro": "kilted", "turtlesim_package": "turtlesim_msgs"}, "kilted"),
+                         ({"distro": "humble", "turtlesim_package": "turtlesim"}, "humble")):
+        ros = bridge_run.RosConnection(twin=None, info=info)
+        session = LiveSession([], ros=ros, start=False)
+        try:
+            assert session.sim.distro == distro
+            assert attached[-1] is session.sim
+        finally:
+            session.close()

@@ -26,8 +26,12 @@ def ros_python_option() -> Any:
     )
 
 
-def check_ros_options(*, record: str | None, foxglove: str | None, in_process: bool) -> None:
+def check_ros_options(
+    *, record: str | None, foxglove: str | None, in_process: bool, distro: str | None = None
+) -> None:
     """Options that mean nothing for processes on a real ROS 2 graph are refused."""
+    if distro is not None:
+        fail("--distro is not available with --ros: the ROS 2 that --ros joins is its own distro")
     if in_process:
         fail("--in-process and --ros do not go together: with --ros each file is its own ROS 2 process")
     if record is not None:

@@ -65,7 +65,7 @@ def run(
         metavar="NAME",
         help="The ROS 2 your nodes run as: humble, jazzy (turtlesim.msg), kilted or lyrical"
         " (turtlesim_msgs.msg). Default: $TURTLETUI_DISTRO, else the lesson's, else jazzy for files that"
-        " import turtlesim.msg, else lyrical, the newest LTS.",
+        " import turtlesim.msg, else lyrical, the newest LTS. With --ros: the graph's own.",
     ),
     world: str = typer.Option(
         None,
@@ -97,7 +97,7 @@ def run(
     if ros:
         from turtletui.cli.ros_run import check_ros_options
 
-        check_ros_options(record=record, foxglove=foxglove, in_process=in_process)
+        check_ros_options(record=record, foxglove=foxglove, in_process=in_process, distro=distro)
     if not headless:
         require_screen("run headless instead: turtletui run FILE.py --headless --duration 60")
         _run_app(controllers, plugins_of(plugin), lesson, ascii_only, seed, world, pixels, record, foxglove,

@@ -102,8 +102,7 @@ def sim(
             graphics=drawing.graphics,
             record=record,
             foxglove=foxglove,
-            ros=connection,
-            distro=_ros_distro(connection),
+            ros=connection,  # the session runs as the graph's distro
         ).run()
         return
     connection = _connect(ros, ros_python)

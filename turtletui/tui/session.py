@@ -172,7 +172,8 @@ class LiveSession:
     ) -> None:
         """``start``: start the controllers now (else with start_controllers()).
         ``distro``: the ROS 2 distro nodes run as (None: the default).
-        ``ros``: on a real ROS 2 graph (``--ros``), the controllers then ROS 2 processes."""
+        ``ros``: on a real ROS 2 graph (``--ros``), the controllers then ROS 2
+        processes, and the distro the graph's own."""
         self.lock = threading.RLock()
         """Held by whoever reads or changes the simulation: the app advances it
         from a ticker thread while the screen's thread reads it and sends requests."""
@@ -187,6 +188,10 @@ class LiveSession:
         self._seed = seed
         self._turtlesim = turtlesim or TurtlesimArgs()
         self._distro = distro
+        if ros is not None:
+            from turtletui.bridge.run import distro_of
+
+            self._distro = distro_of(ros)  # the real graph's, as its turtlesim names its types
         self.hits = HitMarks()
         """Where turtles ran into walls and obstacles lately (the arena marks them)."""
         self._build(world)
