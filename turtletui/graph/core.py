@@ -705,6 +705,11 @@ class Graph:
             self.outbox.removed(endpoint)
         return removed
 
+    def drop_unused_topics(self) -> None:
+        """Every topic with no endpoints left leaves the graph (see _drop_if_unused)."""
+        for topic in list(self.topics.values()):
+            self._drop_if_unused(topic)
+
     def _drop_if_unused(self, topic: Topic) -> None:
         """A topic with no endpoints left leaves the graph, as in ROS 2: it may
         come back with another type, and the topics of thousands of spawned and

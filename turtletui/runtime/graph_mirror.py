@@ -221,8 +221,7 @@ def apply(graph: Graph, mirror: GraphMirror, own: Mapping[int, Any]) -> None:
                 for e in t.subscriptions
             ],
         )
-    for name in [name for name, t in graph.topics.items() if not t.publishers and not t.subscriptions]:
-        del graph.topics[name]  # the parent's endpoints on it are gone (Graph._drop_if_unused)
+    graph.drop_unused_topics()  # the parent's endpoints on them are gone
     for r in mirror.services:
         srv_type = _interface(r.type_name)
         if srv_type is not None and r.name not in graph.services:
