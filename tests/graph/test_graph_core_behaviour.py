@@ -340,26 +340,73 @@ def test_graph_queries_list_names_types_and_endpoints_by_node():
     graph.add_publisher(ctl, "/turtle1/cmd_vel", Twist, 10)
     graph.add_service(sim, "/spawn", Empty, lambda r, respond: None)
     graph.add_client(ctl, "/spawn", Empty)
+    graph.add_client(ctl, "/kill", Empty)  # no server: listed all the same, as rcl lists it
     graph.add_action_client(ctl, "/turtle1/rotate_absolute", RotateAbsolute)
     assert graph.node_names_and_namespaces() == [("turtlesim", "/"), ("ctl", "/lab")]
     assert graph.find_node("ctl", "/lab/") is ctl and graph.find_node("ctl", "/") is None
-    assert graph.topic_names_and_types() == [
-        ("/turtle1/cmd_vel", ["geometry_msgs/msg/Twist"]),
-        ("/turtle1/pose", ["turtlesim/msg/Pose"]),
-    ]
+    hidden = "/turtle1/rotate_absolute/_action/"  # the action client's (see the next test)
+    assert [name for name, _ in graph.topic_names_and_types() if not name.startswith(hidden)] == [
+        "/turtle1/cmd_vel", "/turtle1/pose"]
+    assert ("/turtle1/pose", ["turtlesim/msg/Pose"]) in graph.topic_names_and_types()
     [sub] = graph.subscriptions_of("/turtle1/pose")
     assert (sub.node, sub.depth, sub.qos) == (ctl, 5, "sensor")
     assert graph.publishers_of("/nothing") == []
-    assert graph.service_names_and_types() == [("/spawn", ["std_srvs/srv/Empty"])]
+    assert [entry for entry in graph.service_names_and_types() if not entry[0].startswith(hidden)] == [
+        ("/kill", ["std_srvs/srv/Empty"]), ("/spawn", ["std_srvs/srv/Empty"])]
+    assert (graph.count_services("/kill"), graph.count_clients("/kill")) == (0, 1)
     assert graph.action_names_and_types() == [("/turtle1/rotate_absolute", ["turtlesim/action/RotateAbsolute"])]
     assert graph.names_and_types_by_node(ctl, "publishers") == [("/turtle1/cmd_vel", ["geometry_msgs/msg/Twist"])]
-    assert graph.names_and_types_by_node(ctl, "subscriptions") == [("/turtle1/pose", ["turtlesim/msg/Pose"])]
-    assert graph.names_and_types_by_node(ctl, "clients") == [("/spawn", ["std_srvs/srv/Empty"])]
+    assert graph.names_and_types_by_node(ctl, "subscriptions")[0] == ("/turtle1/pose", ["turtlesim/msg/Pose"])
+    assert graph.names_and_types_by_node(ctl, "clients")[:2] == [
+        ("/kill", ["std_srvs/srv/Empty"]), ("/spawn", ["std_srvs/srv/Empty"])]
     assert graph.names_and_types_by_node(sim, "services") == [("/spawn", ["std_srvs/srv/Empty"])]
     assert graph.names_and_types_by_node(ctl, "action_clients") == [
         ("/turtle1/rotate_absolute", ["turtlesim/action/RotateAbsolute"])
     ]
     assert graph.names_and_types_by_node(ctl, "action_servers") == []
+
+
+def test_an_actions_hidden_topics_and_services_are_in_the_queries():
+    # rcl_action's endpoints behind every action server and client (measured on
+    # the real rclpy: tests/fidelity/programs/action_graph.py)
+    graph = make_graph()
+    sim = graph.add_node("turtlesim", owner="sim")
+    ctl = graph.add_node("ctl", "/lab")
+    server = graph.add_action_server(sim, "/turtle1/rotate_absolute", RotateAbsolute, lambda handle: None)
+    first = graph.add_action_client(ctl, "/turtle1/rotate_absolute", RotateAbsolute)
+    graph.add_action_client(ctl, "/turtle1/rotate_absolute", RotateAbsolute)
+    feedback, status = "/turtle1/rotate_absolute/_action/feedback", "/turtle1/rotate_absolute/_action/status"
+    topics = [
+        (feedback, ["turtlesim/action/RotateAbsolute_FeedbackMessage"]),
+        (status, ["action_msgs/msg/GoalStatusArray"]),
+    ]
+    services = [
+        ("/turtle1/rotate_absolute/_action/cancel_goal", ["action_msgs/srv/CancelGoal"]),
+        ("/turtle1/rotate_absolute/_action/get_result", ["turtlesim/action/RotateAbsolute_GetResult"]),
+        ("/turtle1/rotate_absolute/_action/send_goal", ["turtlesim/action/RotateAbsolute_SendGoal"]),
+    ]
+    assert graph.topic_names_and_types() == topics
+    assert graph.service_names_and_types() == services
+    assert graph.names_and_types_by_node(sim, "publishers") == topics
+    assert graph.names_and_types_by_node(sim, "services") == services
+    assert graph.names_and_types_by_node(ctl, "subscriptions") == topics  # two clients, each name once
+    assert graph.names_and_types_by_node(ctl, "clients") == services
+    assert graph.names_and_types_by_node(sim, "subscriptions") == graph.names_and_types_by_node(ctl, "services") == []
+    assert (graph.count_publishers(status), graph.count_subscribers(status)) == (1, 2)
+    assert (graph.count_services(services[0][0]), graph.count_clients(services[0][0])) == (1, 2)
+    [publisher] = graph.publishers_of(status)
+    assert (publisher.node, publisher.topic.type_name, publisher.depth) == (sim, "action_msgs/msg/GoalStatusArray", 1)
+    assert (publisher.qos.reliability, publisher.qos.durability) == (1, 1)  # reliable, transient local
+    assert [s.qos.durability for s in graph.subscriptions_of(feedback)] == [2, 2]  # volatile
+    assert graph.topics == {}  # derived for the queries: nothing is published there
+
+    graph.remove_action_client(first)
+    assert graph.count_subscribers(feedback) == 1
+    graph.remove_action_server(server)
+    assert graph.count_publishers(status) == 0 and graph.count_services(services[2][0]) == 0
+    assert graph.topic_names_and_types() == topics  # the other client's are still there
+    graph.remove_node(ctl)
+    assert graph.topic_names_and_types() == graph.service_names_and_types() == []
 
 
 def test_a_timer_made_without_autostart_waits_for_a_reset():

@@ -123,3 +123,56 @@ def test_topic_name_typos_are_pointed_out_after_a_second(tmp_path: Path, sandbox
 def test_a_well_connected_controller_gets_no_warning() -> None:
     result = run([PART6], duration=2.0, sandbox=False)
     assert [r for r in result.logs if r.node == "turtletui"] == []
+
+
+ACTION_USER = """
+import rclpy
+from rclpy.action import ActionClient, ActionServer
+from rclpy.node import Node
+from turtlesim.action import RotateAbsolute
+
+
+class User(Node):
+    def __init__(self):
+        super().__init__("user")
+        self.client = ActionClient(self, RotateAbsolute, "/turtle1/rotate_absolute")
+        self.server = ActionServer(self, RotateAbsolute, "spin", lambda goal_handle: RotateAbsolute.Result())
+        # a hidden topic named on purpose: turtlesim's action server publishes there
+        feedback = RotateAbsolute.Impl.FeedbackMessage
+        self.create_subscription(feedback, "/turtle1/rotate_absolute/_action/feedback", lambda msg: None, 10)
+"""
+
+
+@pytest.mark.parametrize("sandbox", [True, False], ids=["sandboxed", "in-process"])
+def test_hidden_action_endpoints_are_for_the_ros2_tools_not_the_views(tmp_path: Path, sandbox: bool) -> None:
+    path = tmp_path / "user.py"
+    path.write_text(ACTION_USER)
+    taken: list[tuple[GraphSnapshot, GraphSnapshot]] = []
+
+    def setup(sim):
+        sim.graph.call_later(sim.turtlesim.node, 500_000_000, lambda: taken.append(
+            (snapshot(sim.graph), snapshot(sim.graph, action_endpoints=True))))
+
+    result = run([path], duration=2.0, sandbox=sandbox, setup=setup)
+    assert result.ok, result.crashes
+    [(view, ros)] = taken
+    # the views (Topics and Graph panels), as rqt_graph: only the topic the file subscribed to by name
+    assert [t.name for t in view.topics if "/_action/" in t.name] == ["/turtle1/rotate_absolute/_action/feedback"]
+    assert not any("/_action/" in s.name for s in view.services)
+    feedback = ros.topic("/turtle1/rotate_absolute/_action/feedback")
+    assert (feedback.type, feedback.publishers, feedback.subscribers) == (
+        "turtlesim/action/RotateAbsolute_FeedbackMessage", ("/turtlesim",), ("/user", "/user"))
+    status = ros.topic("/turtle1/rotate_absolute/_action/status")
+    assert (status.type, status.publishers, status.subscribers) == (
+        "action_msgs/msg/GoalStatusArray", ("/turtlesim",), ("/user",))
+    assert ros.topic("/spin/_action/feedback").publishers == ("/user",)
+    services = {s.name: s for s in ros.services}
+    assert services["/turtle1/rotate_absolute/_action/send_goal"].clients == ("/user",)
+    assert services["/spin/_action/get_result"].server == "/user"
+    user = ros.node("/user")
+    assert ("/spin/_action/status", "action_msgs/msg/GoalStatusArray") in user.publishers
+    assert ("/turtle1/rotate_absolute/_action/feedback", "turtlesim/action/RotateAbsolute_FeedbackMessage") in (
+        user.subscribers)
+    assert ("/turtle1/rotate_absolute/_action/cancel_goal", "action_msgs/srv/CancelGoal") in user.service_clients
+    # no typo warning: turtlesim's action server publishes the feedback the file listens to
+    assert [r.msg for r in result.logs if r.node == "turtletui"] == []

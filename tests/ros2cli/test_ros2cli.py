@@ -555,6 +555,97 @@ def test_closing_send_goal_cancels_it(sim, cli):
     assert sim.world.turtles["turtle1"].theta == theta
 
 
+# -- an action's hidden topics and services -------------------------------------------
+# rcl_action gives turtlesim's rotate_absolute server (and every action client)
+# endpoints under <action>/_action/: ros2 shows them only when asked (ros2cli's
+# topic_or_service_is_hidden), as on a real graph.
+
+ROTATE = "/turtle1/rotate_absolute/_action"
+
+
+def test_hidden_action_topics_and_services_are_listed_when_asked(cli):
+    assert not any("/_action/" in line for line in ok(cli, "ros2 topic list").lines)
+    assert not any("/_action/" in line for line in ok(cli, "ros2 service list").lines)
+    topics = ok(cli, "ros2 topic list -t --include-hidden-topics").lines
+    assert [line for line in topics if "/_action/" in line] == [
+        f"{ROTATE}/feedback [turtlesim/action/RotateAbsolute_FeedbackMessage]",
+        f"{ROTATE}/status [action_msgs/msg/GoalStatusArray]",
+    ]
+    services = ok(cli, "ros2 service list -t --include-hidden-services").lines
+    assert [line for line in services if "/_action/" in line] == [
+        f"{ROTATE}/cancel_goal [action_msgs/srv/CancelGoal]",
+        f"{ROTATE}/get_result [turtlesim/action/RotateAbsolute_GetResult]",
+        f"{ROTATE}/send_goal [turtlesim/action/RotateAbsolute_SendGoal]",
+    ]
+    assert ok(cli, "ros2 topic find action_msgs/msg/GoalStatusArray").lines == []
+    assert ok(cli, "ros2 topic find action_msgs/msg/GoalStatusArray --include-hidden-topics").lines == [
+        f"{ROTATE}/status"]
+    assert ok(cli, "ros2 service find action_msgs/srv/CancelGoal -c --include-hidden-services").lines == ["1"]
+    info = ok(cli, "ros2 node info /turtlesim --include-hidden").lines
+    assert f"    {ROTATE}/status: action_msgs/msg/GoalStatusArray" in info
+    assert f"    {ROTATE}/send_goal: turtlesim/action/RotateAbsolute_SendGoal" in info
+    assert info.index(f"    {ROTATE}/status: action_msgs/msg/GoalStatusArray") < info.index("  Service Servers:")
+
+
+def test_a_send_goal_client_subscribes_to_the_hidden_topics(sim, cli):
+    assert ok(cli, f"ros2 topic info {ROTATE}/status").lines == [
+        "Type: action_msgs/msg/GoalStatusArray", "Publisher count: 1", "Subscription count: 0"]
+    goal = ok(cli, "ros2 action send_goal /turtle1/rotate_absolute turtlesim/action/RotateAbsolute '{theta: 3.0}'")
+    assert ok(cli, f"ros2 topic info {ROTATE}/feedback").lines[1:] == ["Publisher count: 1", "Subscription count: 1"]
+    verbose = ok(cli, f"ros2 topic info -v {ROTATE}/status").lines
+    assert verbose[:4] == ["Type: action_msgs/msg/GoalStatusArray", "", "Publisher count: 1", ""]
+    assert verbose[4:6] == ["Node name: turtlesim", "Node namespace: /"]
+    assert verbose.count("  Durability: TRANSIENT_LOCAL") == 2  # rcl_action's status QoS, both sides
+    assert verbose.count("  History (Depth): KEEP_LAST (1)") == 2
+    assert f"Node name: {goal.stream.node.name}" in verbose
+    assert ok(cli, f"ros2 service --include-hidden-services info {ROTATE}/get_result").lines == [
+        "Type: turtlesim/action/RotateAbsolute_GetResult", "Clients count: 1", "Services count: 1"]
+    goal.stream.close()
+    step(sim, 0.1)
+    assert ok(cli, f"ros2 topic info {ROTATE}/feedback").lines[2] == "Subscription count: 0"
+
+
+@pytest.mark.parametrize(("line", "shown"), [
+    (f"ros2 topic --include-hidden-topics type {ROTATE}/feedback", "turtlesim/action/RotateAbsolute_FeedbackMessage"),
+    (f"ros2 service --include-hidden-services type {ROTATE}/cancel_goal", "action_msgs/srv/CancelGoal"),
+])
+def test_hidden_names_are_typed_when_asked(cli, line, shown):
+    assert ok(cli, line).lines == [shown]
+
+
+@pytest.mark.parametrize(("line", "message"), [
+    # ros2 exits 1 silently (type) or says "Unknown service" (info): one line says why here
+    (f"ros2 topic type {ROTATE}/status",
+     f"ros2 topic type: topic '{ROTATE}/status' is hidden (a part of its name starts with '_'): "
+     f"try 'ros2 topic --include-hidden-topics type {ROTATE}/status'"),
+    (f"ros2 service info {ROTATE}/send_goal",
+     f"ros2 service info: service '{ROTATE}/send_goal' is hidden (a part of its name starts with '_'): "
+     f"try 'ros2 service --include-hidden-services info {ROTATE}/send_goal'"),
+    # nothing travels there: the graph hands goals, feedback and results over itself
+    (f"ros2 topic echo {ROTATE}/feedback",
+     "ros2 topic echo: turtletui sends nothing on the hidden topics of action '/turtle1/rotate_absolute': "
+     "'ros2 action send_goal --feedback /turtle1/rotate_absolute TYPE GOAL' prints a goal's feedback and result"),
+    (f"ros2 topic hz {ROTATE}/status", "ros2 topic hz: turtletui sends nothing on the hidden topics"),
+    (f"ros2 service call {ROTATE}/cancel_goal action_msgs/srv/CancelGoal",
+     "ros2 service call: turtletui's actions are reached through 'ros2 action send_goal /turtle1/rotate_absolute "
+     "TYPE GOAL' (Ctrl+C cancels the goal), not through their hidden services"),
+    ("ros2 service type /turtle1/rotate_absolute/_action/sendgoal",
+     "ros2 service type: service '/turtle1/rotate_absolute/_action/sendgoal' does not exist"),
+])
+def test_hidden_action_names_get_one_clear_line(cli, line, message):
+    result = cli.run(line)
+    assert result.error and len(result.lines) == 1
+    assert result.lines[0].startswith(message)
+
+
+def test_a_service_with_only_clients_is_listed_as_ros2_lists_it(sim, cli):
+    node = sim.graph.add_node("caller")
+    sim.graph.add_client(node, "/nobody_serves", sim.graph.services["/clear"].srv_type)
+    assert "/nobody_serves" in ok(cli, "ros2 service list").lines
+    assert ok(cli, "ros2 service info /nobody_serves").lines == [
+        "Type: std_srvs/srv/Empty", "Clients count: 1", "Services count: 0"]
+
+
 # -- ros2 interface ----------------------------------------------------------------
 
 def test_interface_show(cli):

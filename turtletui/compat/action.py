@@ -160,7 +160,8 @@ class ActionClient(Destroyable):
         status_sub_qos_profile: QoSProfile = qos_profile_action_status_default,
     ) -> None:
         """The callback group and QoS profiles are accepted and ignored (as for topics, only
-        delivery order matters in the simulation)."""
+        delivery order matters in the simulation); graph queries report the
+        client's hidden endpoints with rclpy's default profiles."""
         if not all(hasattr(action_type, part) for part in ("Goal", "Result", "Feedback")):
             raise TypeError(
                 f"ActionClient needs an action class such as turtlesim.action.RotateAbsolute, got {action_type!r}"

@@ -216,7 +216,8 @@ class ActionServer(Destroyable):
         result_timeout: int = 10,
     ) -> None:
         """The QoS profiles and ``result_timeout`` are accepted and ignored (results
-        reach their client when the goal ends)."""
+        reach their client when the goal ends); graph queries report the
+        server's hidden endpoints with rclpy's default profiles."""
         if not all(hasattr(action_type, part) for part in ("Goal", "Result", "Feedback")):
             raise TypeError(
                 f"ActionServer needs an action class such as turtlesim.action.RotateAbsolute, got {action_type!r}"

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import hashlib
+from collections.abc import Sequence
 from enum import IntEnum
 from typing import Any
 
@@ -15,6 +16,7 @@ from turtletui.compat.qos import (
     ReliabilityPolicy,
 )
 from turtletui.graph import core
+from turtletui.graph.action_endpoints import ActionTopicEndpoint
 from turtletui.interfaces import get_interface
 from turtletui.interfaces.type_descriptions import type_hash
 
@@ -134,9 +136,10 @@ class TopicEndpointInfo:
 
 
 def endpoints_info(
-    endpoints: list[core.Publisher] | list[core.Subscription], kind: TopicEndpointTypeEnum
+    endpoints: Sequence[core.Publisher | core.Subscription | ActionTopicEndpoint], kind: TopicEndpointTypeEnum
 ) -> list[TopicEndpointInfo]:
-    """The TopicEndpointInfo of each of a topic's publishers (or subscriptions)."""
+    """The TopicEndpointInfo of each of a topic's publishers (or subscriptions),
+    an action's hidden ones included."""
     infos = []
     seen: dict[str, int] = {}
     for endpoint in endpoints:

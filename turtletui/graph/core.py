@@ -19,6 +19,12 @@ from dataclasses import dataclass, field
 from typing import Any, Literal, Protocol
 
 from turtletui.errors import TurtletuiError
+from turtletui.graph.action_endpoints import (
+    ActionServiceEndpoint,
+    ActionTopicEndpoint,
+    service_endpoints,
+    topic_endpoints,
+)
 from turtletui.graph.logs import INFO, WARN, LogRecord, to_log_message
 from turtletui.graph.qos import incompatible_policy, is_transient_local, rclcpp_incompatible_qos
 
@@ -44,6 +50,15 @@ _new_tuple = tuple.__new__
 
 EndpointKind = Literal["publishers", "subscriptions", "services", "clients", "action_servers", "action_clients"]
 """What ``Graph.names_and_types_by_node`` lists."""
+
+
+def _grouped(found: set[tuple[str, str]]) -> list[tuple[str, list[str]]]:
+    """(name, type) pairs as rcl's names-and-types lists give them: sorted by
+    name, each name once with its types (a topic may carry several)."""
+    grouped: dict[str, list[str]] = {}
+    for name, type_name in sorted(found):
+        grouped.setdefault(name, []).append(type_name)
+    return list(grouped.items())
 
 
 class GraphError(TurtletuiError):
@@ -576,7 +591,8 @@ class Graph:
         return None
 
     def names_and_types_by_node(self, node: NodeRecord, kind: EndpointKind) -> list[tuple[str, list[str]]]:
-        """The names and types of one kind of endpoint ``node`` has, sorted by name."""
+        """The names and types of one kind of endpoint ``node`` has, sorted by name
+        (with the hidden ones behind its actions: ``action_topic_endpoints``...)."""
         if kind == "publishers":
             found = {(t.name, t.type_name) for t in self.topics.values() for p in t.publishers if p.node is node}
         elif kind == "subscriptions":
@@ -589,7 +605,25 @@ class Graph:
                 "action_clients": self.action_clients,
             }[kind]
             found = {(r.name, r.type_name) for r in records if r.node is node}
-        return [(name, [type_name]) for name, type_name in sorted(found)]
+        if kind == "publishers" or kind == "subscriptions":
+            found.update((e.topic.name, e.topic.type_name) for e in self.action_topic_endpoints(kind) if e.node is node)
+        elif kind == "services" or kind == "clients":
+            found.update((e.name, e.type_name) for e in self.action_service_endpoints(kind) if e.node is node)
+        return _grouped(found)
+
+    # rcl_action's endpoints behind every action (turtletui.graph.action_endpoints):
+    # derived from the action records, so that every host answers the same.
+    def action_topic_endpoints(self, kind: Literal["publishers", "subscriptions"]) -> list[ActionTopicEndpoint]:
+        """The feedback and status publishers of every action server, or the
+        subscriptions of every action client."""
+        records = self.action_servers.values() if kind == "publishers" else self.action_clients
+        return [endpoint for record in records for endpoint in topic_endpoints(record)]
+
+    def action_service_endpoints(self, kind: Literal["services", "clients"]) -> list[ActionServiceEndpoint]:
+        """The send_goal, cancel_goal and get_result servers of every action
+        server, or the clients of every action client."""
+        records = self.action_servers.values() if kind == "services" else self.action_clients
+        return [endpoint for record in records for endpoint in service_endpoints(record)]
 
     # -- topics -------------------------------------------------------------
     def topic(self, name: str, msg_type: type) -> Topic:
@@ -718,22 +752,28 @@ class Graph:
             del self.topics[topic.name]
 
     def topic_names_and_types(self) -> list[tuple[str, list[str]]]:
-        """Every topic someone publishes or subscribes to, with its type, sorted by name."""
-        return sorted(
-            (name, [topic.type_name])
-            for name, topic in self.topics.items()
-            if topic.publishers or topic.subscriptions
-        )
+        """Every topic someone publishes or subscribes to, with its type, sorted by
+        name; the hidden topics of actions included (``action_topic_endpoints``)."""
+        found = {(name, topic.type_name) for name, topic in self.topics.items() if topic.publishers or topic.subscriptions}
+        for kind in ("publishers", "subscriptions"):
+            found.update((e.topic.name, e.topic.type_name) for e in self.action_topic_endpoints(kind))
+        return _grouped(found)
 
-    def publishers_of(self, name: str) -> list[Publisher]:
-        """The publishers on topic ``name`` (none for an unknown topic), oldest first."""
-        topic = self.topics.get(name)
-        return list(topic.publishers) if topic is not None else []
+    def publishers_of(self, name: str) -> list[Publisher | ActionTopicEndpoint]:
+        """The publishers on topic ``name`` (none for an unknown topic), oldest
+        first, then an action server's if it is one of its hidden topics."""
+        return self._topic_endpoints(name, "publishers")
 
-    def subscriptions_of(self, name: str) -> list[Subscription]:
-        """The subscriptions of topic ``name`` (none for an unknown topic), oldest first."""
+    def subscriptions_of(self, name: str) -> list[Subscription | ActionTopicEndpoint]:
+        """The subscriptions of topic ``name`` (none for an unknown topic), oldest
+        first, then the action clients' if it is one of their hidden topics."""
+        return self._topic_endpoints(name, "subscriptions")
+
+    def _topic_endpoints(self, name: str, kind: Literal["publishers", "subscriptions"]) -> list[Any]:
+        """A topic's publishers or subscriptions: its own, then those of actions."""
         topic = self.topics.get(name)
-        return list(topic.subscriptions) if topic is not None else []
+        own = list(getattr(topic, kind)) if topic is not None else []
+        return own + [e for e in self.action_topic_endpoints(kind) if e.topic.name == name]
 
     def discovered_at(self, one: Any, other: Any) -> int:
         """When two records of different owners (processes) have discovered
@@ -749,12 +789,12 @@ class Graph:
         return pub.owner == sub.owner or self.discovered_at(pub, sub) <= self.now_ns
 
     def count_publishers(self, name: str) -> int:
-        topic = self.topics.get(name)
-        return len(topic.publishers) if topic is not None else 0
+        """How many publishers topic ``name`` has (an action server's hidden ones included)."""
+        return len(self.publishers_of(name))
 
     def count_subscribers(self, name: str) -> int:
-        topic = self.topics.get(name)
-        return len(topic.subscriptions) if topic is not None else 0
+        """How many subscriptions topic ``name`` has (action clients' hidden ones included)."""
+        return len(self.subscriptions_of(name))
 
     def publish(
         self,
@@ -893,8 +933,13 @@ class Graph:
         return name in self.services
 
     def service_names_and_types(self) -> list[tuple[str, list[str]]]:
-        """Every service with a server, with its type, sorted by name."""
-        return sorted((name, [s.type_name]) for name, s in self.services.items())
+        """Every service with a server or a client, with its type, sorted by name;
+        the hidden services of actions included (``action_service_endpoints``)."""
+        found = {(name, s.type_name) for name, s in self.services.items()}
+        found.update((c.name, c.type_name) for c in self.clients)
+        for kind in ("services", "clients"):
+            found.update((e.name, e.type_name) for e in self.action_service_endpoints(kind))
+        return _grouped(found)
 
     def service_matched(self, client: ServiceClient) -> bool:
         """Whether ``client`` has discovered the server of its service (and the
@@ -902,10 +947,14 @@ class Graph:
         return self._server_matched(self.services.get(client.name), client)
 
     def count_services(self, name: str) -> int:
-        return 1 if name in self.services else 0
+        """How many servers service ``name`` has (an action server's hidden ones included)."""
+        hidden = sum(1 for e in self.action_service_endpoints("services") if e.name == name)
+        return (1 if name in self.services else 0) + hidden
 
     def count_clients(self, name: str) -> int:
-        return sum(1 for c in self.clients if c.name == name)
+        """How many clients service ``name`` has (action clients' hidden ones included)."""
+        hidden = sum(1 for e in self.action_service_endpoints("clients") if e.name == name)
+        return sum(1 for c in self.clients if c.name == name) + hidden
 
     def add_client(self, node: NodeRecord, name: str, srv_type: type) -> ServiceClient:
         self.version += 1

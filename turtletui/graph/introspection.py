@@ -11,6 +11,7 @@ from dataclasses import dataclass, replace
 from difflib import get_close_matches
 from typing import Any
 
+from turtletui.graph.action_endpoints import ActionTopicEndpoint
 from turtletui.graph.core import Graph
 
 
@@ -46,9 +47,12 @@ class TopicInfo:
 
 @dataclass(frozen=True)
 class ServiceInfo:
+    """A service that has a server or a client (``ros2 service list`` lists both)."""
+
     name: str
     type: str
     server: str
+    """The serving node's full name; "" while only clients wait for one."""
     clients: tuple[str, ...]
 
 
@@ -100,8 +104,11 @@ def _unknown(kind: str, name: str, known: list[str]) -> str:
     return f"unknown {kind} {name}{hint}"
 
 
-def snapshot(graph: Graph) -> GraphSnapshot:
-    """Copy what the graph holds now into a GraphSnapshot."""
+def snapshot(graph: Graph, *, action_endpoints: bool = False) -> GraphSnapshot:
+    """Copy what the graph holds now into a GraphSnapshot. With
+    ``action_endpoints``, the hidden topics and services behind every action
+    (``<action>/_action/...``) are in it too, as the ros2 tools see them; the
+    views leave them out, as rqt_graph does."""
     now = graph.now_ns
     per_node: dict[int, dict[str, list]] = {
         id(node): {key: [] for key in ("pub", "sub", "srv", "cli", "asrv", "acli")} for node in graph.nodes
@@ -111,7 +118,7 @@ def snapshot(graph: Graph) -> GraphSnapshot:
         if id(node) in per_node:
             per_node[id(node)][key].append(entry)
 
-    topics = []
+    topics: dict[str, TopicInfo] = {}
     for name, topic in graph.topics.items():
         if not topic.publishers and not topic.subscriptions:
             continue
@@ -119,28 +126,36 @@ def snapshot(graph: Graph) -> GraphSnapshot:
             add(pub.node, "pub", (name, topic.type_name))
         for sub in topic.subscriptions:
             add(sub.node, "sub", (name, topic.type_name))
-        topics.append(
-            TopicInfo(
-                name,
-                topic.type_name,
-                tuple(sorted(p.node.fqn for p in topic.publishers)),
-                tuple(sorted(s.node.fqn for s in topic.subscriptions)),
-                topic.rate(now),
-                topic.count,
-            )
+        topics[name] = TopicInfo(
+            name,
+            topic.type_name,
+            tuple(sorted(p.node.fqn for p in topic.publishers)),
+            tuple(sorted(s.node.fqn for s in topic.subscriptions)),
+            topic.rate(now),
+            topic.count,
         )
-    services = []
-    for name, service in graph.services.items():
-        add(service.node, "srv", (name, service.type_name))
-        clients = tuple(sorted(c.node.fqn for c in graph.clients if c.name == name))
-        services.append(ServiceInfo(name, service.type_name, service.node.fqn, clients))
-    for client in graph.clients:
-        add(client.node, "cli", (client.name, client.type_name))
+    servers = [(name, service.type_name, service.node) for name, service in graph.services.items()]
+    callers = [(c.name, c.type_name, c.node) for c in graph.clients]
+    if action_endpoints:
+        for key, kind in (("pub", "publishers"), ("sub", "subscriptions")):
+            for endpoint in graph.action_topic_endpoints(kind):
+                add(endpoint.node, key, (endpoint.topic.name, endpoint.topic.type_name))
+                _add_action_topic(topics, endpoint, key)
+        servers += [(e.name, e.type_name, e.node) for e in graph.action_service_endpoints("services")]
+        callers += [(e.name, e.type_name, e.node) for e in graph.action_service_endpoints("clients")]
+    services: dict[str, ServiceInfo] = {}
+    for name, type_name, node in servers:
+        add(node, "srv", (name, type_name))
+        services.setdefault(name, ServiceInfo(name, type_name, node.fqn, ()))
+    for name, type_name, node in callers:
+        add(node, "cli", (name, type_name))
+        info = services.get(name) or ServiceInfo(name, type_name, "", ())
+        services[name] = replace(info, clients=tuple(sorted((*info.clients, node.fqn))))
     actions = []
     for name, server in graph.action_servers.items():
         add(server.node, "asrv", (name, server.type_name))
-        clients = tuple(sorted(c.node.fqn for c in graph.action_clients if c.name == name))
-        actions.append(ActionInfo(name, server.type_name, server.node.fqn, clients))
+        action_clients = tuple(sorted(c.node.fqn for c in graph.action_clients if c.name == name))
+        actions.append(ActionInfo(name, server.type_name, server.node.fqn, action_clients))
     for client in graph.action_clients:
         add(client.node, "acli", (client.name, client.type_name))
     nodes = []
@@ -156,10 +171,21 @@ def snapshot(graph: Graph) -> GraphSnapshot:
     return GraphSnapshot(
         now / 1e9,
         tuple(sorted(nodes, key=lambda n: n.name)),
-        tuple(sorted(topics, key=lambda t: t.name)),
-        tuple(sorted(services, key=lambda s: s.name)),
+        tuple(sorted(topics.values(), key=lambda t: t.name)),
+        tuple(sorted(services.values(), key=lambda s: s.name)),
         tuple(sorted(actions, key=lambda a: a.name)),
     )
+
+
+def _add_action_topic(topics: dict[str, TopicInfo], endpoint: ActionTopicEndpoint, key: str) -> None:
+    """Count an action's hidden publisher (``key`` "pub") or subscription on its topic."""
+    name = endpoint.topic.name
+    info = topics.get(name) or TopicInfo(name, endpoint.topic.type_name, (), (), 0.0, 0)
+    if key == "pub":
+        info = replace(info, publishers=tuple(sorted((*info.publishers, endpoint.node.fqn))))
+    else:
+        info = replace(info, subscribers=tuple(sorted((*info.subscribers, endpoint.node.fqn))))
+    topics[name] = info
 
 
 def dangling_endpoints(graph: Graph, owner_prefix: str = "") -> list[str]:
@@ -170,11 +196,12 @@ def dangling_endpoints(graph: Graph, owner_prefix: str = "") -> list[str]:
     live = {name for name, t in graph.topics.items() if t.publishers or t.subscriptions}
     for name, topic in sorted(graph.topics.items()):
         for sub in topic.subscriptions:
-            if sub.owner.startswith(owner_prefix) and sub.owner != "sim" and not topic.publishers \
+            # (graph.count_*: an action's hidden endpoints count, though no view shows them)
+            if sub.owner.startswith(owner_prefix) and sub.owner != "sim" and not graph.count_publishers(name) \
                     and name not in OPTIONAL_INPUTS:
                 warnings.append(_dangling(sub.node.fqn, "subscribes to", name, "publishes", live))
         for pub in topic.publishers:
-            if pub.owner.startswith(owner_prefix) and pub.owner != "sim" and not topic.subscriptions \
+            if pub.owner.startswith(owner_prefix) and pub.owner != "sim" and not graph.count_subscribers(name) \
                     and not is_plumbing_topic(name):
                 # Publishing to no one is normal (a debug topic): say so only
                 # when a topic of a very similar name exists.

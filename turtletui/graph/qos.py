@@ -68,6 +68,16 @@ def incompatible_policy(publisher_qos: Any, subscription_qos: Any) -> str | None
     return None
 
 
+def policy_names(qos: Any) -> tuple[str, str]:
+    """The reliability and durability an endpoint made with ``qos`` has, as
+    rclpy names them: ("RELIABLE" or "BEST_EFFORT", "VOLATILE" or "TRANSIENT_LOCAL")."""
+    reliability, durability = _effective(qos)
+    return (
+        "BEST_EFFORT" if reliability == _BEST_EFFORT else "RELIABLE",
+        "TRANSIENT_LOCAL" if durability == _TRANSIENT_LOCAL else "VOLATILE",
+    )
+
+
 def is_transient_local(qos: Any) -> bool:
     """Whether an endpoint keeps (publisher) or asks for (subscription) the
     last messages sent before a subscription joined."""

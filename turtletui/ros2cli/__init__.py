@@ -42,7 +42,10 @@ help. What rcl gives every node is shown as the real tools show it
 (``/parameter_events``, ``/rosout``, the parameter services: see
 graph.introspection.with_ros_plumbing) though turtletui's graph keeps none of
 it: ``topic echo /rosout`` prints the log, and a parameter service call
-points at ``ros2 param``. Not modelled: QoS options, service recording
+points at ``ros2 param``. So are an action's hidden topics and services
+(``<action>/_action/...``: graph.action_endpoints), shown only with the
+``--include-hidden-*`` options as ros2cli does; nothing travels on them, and
+``topic echo``/``hz`` and ``service call`` there say so. Not modelled: QoS options, service recording
 (``bag record --services``), ``ros2 run``/``launch``.
 """
 

@@ -104,12 +104,29 @@ def topic_or_error(graph: Graph, name: str, what: str) -> Topic:
 def ros_view(cli: Any) -> GraphSnapshot:
     """The graph as the ros2 tools show it: with what rcl gives every node
     (/rosout, /parameter_events, the parameter services), which turtletui's
-    graph does not keep."""
+    graph does not keep, and the hidden topics and services behind every
+    action (``<action>/_action/...``)."""
     sim = cli.sim
     turtlesim = getattr(getattr(sim, "turtlesim", None), "node", None)
     return with_ros_plumbing(
-        snapshot(cli.graph),
+        snapshot(cli.graph, action_endpoints=True),
         parameter_event_subscribers=(turtlesim.fqn,) if turtlesim is not None else (),  # rclcpp's own
+    )
+
+
+def action_behind(name: str) -> str | None:
+    """The action whose hidden topic or service ``name`` is
+    (``/turtle1/rotate_absolute`` for ``/turtle1/rotate_absolute/_action/status``), or None."""
+    action, marker, _ = name.rpartition("/_action/")
+    return action if marker and action else None
+
+
+def hidden_error(kind: str, verb: str, name: str) -> CommandError:
+    """A hidden name a verb was not told to consider, said in one line (ros2
+    ``topic type`` exits 1 and ``service info`` says ``Unknown service``)."""
+    return CommandError(
+        f"{kind} '{name}' is hidden (a part of its name starts with '_'): "
+        f"try 'ros2 {kind} --include-hidden-{kind}s {verb} {name}'"
     )
 
 

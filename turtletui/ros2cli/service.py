@@ -5,15 +5,20 @@ from __future__ import annotations
 from argparse import ArgumentParser, Namespace
 from typing import TYPE_CHECKING, Any
 
+from turtletui.graph.introspection import ServiceInfo
 from turtletui.interfaces import Service
 from turtletui.ros2cli.arguments import Command, Verb, list_options
 from turtletui.ros2cli.common import (
     CommandError,
     CommandResult,
     absolute,
+    action_behind,
     check_type,
     entity_or_error,
+    hidden_error,
+    hint,
     interface_or_error,
+    is_hidden,
     name_list,
     ros_view,
     type_name,
@@ -55,11 +60,22 @@ def _parameter_service(cli: Ros2Cli, name: str) -> Any:
     return next((s for s in ros_view(cli).services if s.name == name), None)
 
 
+def _shown_service(cli: Ros2Cli, args: Namespace, verb: str) -> ServiceInfo:
+    """The service as ``ros2 service list`` shows it (with a server or only
+    clients, one rcl gives every node, an action's hidden one), if the
+    command considers it."""
+    name = absolute(args.service_name)
+    shown = ros_view(cli).services
+    found = next((s for s in shown if s.name == name), None)
+    if found is None:
+        raise CommandError(f"service '{name}' does not exist{hint(name, [s.name for s in shown if not is_hidden(s.name)])}")
+    if is_hidden(name) and not args.include_hidden_services:
+        raise hidden_error("service", verb, name)
+    return found
+
+
 def _type(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
-    plumbing = _parameter_service(cli, args.service_name)
-    if plumbing is not None:
-        return CommandResult([plumbing.type])
-    return CommandResult([_service(cli, args.service_name, "does not exist").type_name])
+    return CommandResult([_shown_service(cli, args, "type").type])
 
 
 def _find_arguments(parser: ArgumentParser) -> None:
@@ -75,13 +91,9 @@ def _find(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
 
 
 def _info(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
-    plumbing = _parameter_service(cli, args.service_name)
-    if plumbing is not None:
-        return CommandResult([f"Type: {plumbing.type}", "Clients count: 0", "Services count: 1"])
-    service = _service(cli, args.service_name, "does not exist")
-    clients = [c for c in cli.graph.clients if c.name == service.name]
-    return CommandResult([f"Type: {service.type_name}", f"Clients count: {len(clients)}",
-                          "Services count: 1"])
+    service = _shown_service(cli, args, "info")
+    return CommandResult([f"Type: {service.type}", f"Clients count: {len(service.clients)}",
+                          f"Services count: {1 if service.server else 0}"])
 
 
 def _call_arguments(parser: ArgumentParser) -> None:
@@ -95,6 +107,12 @@ def _call_arguments(parser: ArgumentParser) -> None:
 
 
 def _call(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
+    action = action_behind(absolute(args.service_name))
+    if action is not None and cli.graph.count_services(absolute(args.service_name)):
+        raise CommandError(
+            f"turtletui's actions are reached through 'ros2 action send_goal {action} TYPE GOAL' "
+            "(Ctrl+C cancels the goal), not through their hidden services"
+        )
     if _parameter_service(cli, args.service_name) is not None:
         name = absolute(args.service_name)
         raise CommandError(f"turtletui does not serve {name} (its nodes serve their parameter services only)")

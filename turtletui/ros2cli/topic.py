@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING, Any
 from turtletui.compat.distro import type_description_names
 from turtletui.graph.core import NS_PER_S
 from turtletui.graph.introspection import TopicInfo
+from turtletui.graph.qos import policy_names
 from turtletui.interfaces import Message, get_interface
 from turtletui.interfaces.rcl_interfaces import Log
 from turtletui.interfaces.type_descriptions import type_hash
@@ -23,9 +24,12 @@ from turtletui.ros2cli.common import (
     CommandError,
     CommandResult,
     absolute,
+    action_behind,
     check_type,
+    hidden_error,
     hint,
     interface_or_error,
+    is_hidden,
     live_topic,
     live_topic_names,
     name_list,
@@ -78,6 +82,7 @@ def _echo(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
             check_type(cli, interface_or_error(cli, args.message_type, Message, "message"), "rcl_interfaces/msg/Log", f"topic '{name}'")
         path = _field_path(cli, Log, args.field) if args.field is not None else []
         return cli.start(RosoutEchoStream(cli, line, None, args.once, path))
+    _refuse_action_topic(cli, name)
     topic = topic_or_error(cli.graph, name, "does not appear to be published yet")
     if args.message_type is not None:
         check_type(cli, interface_or_error(cli, args.message_type, Message, "message"), topic.type_name, f"topic '{name}'")
@@ -110,8 +115,21 @@ def _hz_arguments(parser: ArgumentParser) -> None:
 
 def _hz(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
     name = absolute(args.topic_name)
+    _refuse_action_topic(cli, name)
     topic = topic_or_error(cli.graph, name, "does not appear to be published yet")
     return cli.start(HzStream(cli, line, topic, args.window_size))
+
+
+def _refuse_action_topic(cli: Ros2Cli, name: str) -> None:
+    """An action's hidden feedback or status topic carries nothing in turtletui
+    (its graph hands goals, feedback and results over itself): say so, and
+    what shows them instead."""
+    action = action_behind(name)
+    if action is not None and live_topic(cli.graph, name) is None and cli.graph.publishers_of(name):
+        raise CommandError(
+            f"turtletui sends nothing on the hidden topics of action '{action}': "
+            f"'ros2 action send_goal --feedback {action} TYPE GOAL' prints a goal's feedback and result"
+        )
 
 
 # -- info, type, find ------------------------------------------------------------------
@@ -124,41 +142,40 @@ def _info_arguments(parser: ArgumentParser) -> None:
                              "to this topic")
 
 
-def _plumbing(cli: Ros2Cli, name: str) -> TopicInfo | None:
-    """/rosout or /parameter_events as ros2 shows them (not in turtletui's graph)."""
-    if live_topic(cli.graph, name) is not None:
-        return None
-    return next((t for t in ros_view(cli).topics if t.name == name), None)
+def _shown_topic(cli: Ros2Cli, name: str) -> TopicInfo:
+    """The topic as ros2 shows it: a live one, /rosout or /parameter_events
+    (which turtletui's graph may not keep), or an action's hidden one."""
+    found = next((t for t in ros_view(cli).topics if t.name == name), None)
+    if found is None:
+        topic_or_error(cli.graph, name, "does not exist")  # raises, with a hint
+    return found
 
 
 def _info(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
+    # ros2 topic info considers hidden topics always
     name = absolute(args.topic_name)
-    plumbing = _plumbing(cli, name)
-    if plumbing is not None:
-        return CommandResult([f"Type: {plumbing.type}", f"Publisher count: {len(plumbing.publishers)}",
-                              f"Subscription count: {len(plumbing.subscribers)}"])
-    topic = topic_or_error(cli.graph, name, "does not exist")
-    if not args.verbose:
-        return CommandResult([
-            f"Type: {topic.type_name}",
-            f"Publisher count: {len(topic.publishers)}",
-            f"Subscription count: {len(topic.subscriptions)}",
-        ])
-    lines = [f"Type: {topic.type_name}", ""]
-    for title, kind, endpoints in (("Publisher", "PUBLISHER", topic.publishers),
-                                   ("Subscription", "SUBSCRIPTION", topic.subscriptions)):
+    shown = _shown_topic(cli, name)
+    graph = cli.graph
+    publishers, subscriptions = graph.publishers_of(name), graph.subscriptions_of(name)
+    if not args.verbose or not (publishers or subscriptions):
+        return CommandResult([f"Type: {shown.type}", f"Publisher count: {len(shown.publishers)}",
+                              f"Subscription count: {len(shown.subscribers)}"])
+    lines = [f"Type: {shown.type}", ""]
+    for title, kind, endpoints in (("Publisher", "PUBLISHER", publishers),
+                                   ("Subscription", "SUBSCRIPTION", subscriptions)):
         lines += [f"{title} count: {len(endpoints)}", ""]
         for endpoint in endpoints:
+            reliability, durability = policy_names(endpoint.qos)
             lines += [
                 f"Node name: {endpoint.node.name}",
                 f"Node namespace: {endpoint.node.namespace or '/'}",
-                f"Topic type: {topic.type_name}",
-                *_hash_line(cli, topic.type_name),
+                f"Topic type: {shown.type}",
+                *_hash_line(cli, shown.type),
                 f"Endpoint type: {kind}",
                 "QoS profile:",
-                "  Reliability: RELIABLE",
+                f"  Reliability: {reliability}",
                 f"  History (Depth): KEEP_LAST ({endpoint.depth})",
-                "  Durability: VOLATILE",
+                f"  Durability: {durability}",
                 "  Lifespan: Infinite",
                 "  Deadline: Infinite",
                 "  Liveliness: AUTOMATIC",
@@ -182,10 +199,10 @@ def _type_arguments(parser: ArgumentParser) -> None:
 
 def _type(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
     name = absolute(args.topic_name)
-    plumbing = _plumbing(cli, name)
-    if plumbing is not None:
-        return CommandResult([plumbing.type])
-    return CommandResult([topic_or_error(cli.graph, name, "does not exist").type_name])
+    shown = _shown_topic(cli, name)
+    if is_hidden(name) and not args.include_hidden_topics:
+        raise hidden_error("topic", "type", name)
+    return CommandResult([shown.type])
 
 
 def _find_arguments(parser: ArgumentParser) -> None:
