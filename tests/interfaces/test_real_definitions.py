@@ -28,11 +28,11 @@ import turtletui.interfaces as I
 pytestmark = pytest.mark.realros
 
 PACKAGES = ["std_msgs", "geometry_msgs", "sensor_msgs", "nav_msgs", "std_srvs", "rcl_interfaces", "lifecycle_msgs",
-            "rosgraph_msgs", "service_msgs", "type_description_interfaces"]
+            "rosgraph_msgs", "service_msgs", "type_description_interfaces", "action_msgs"]
 PROBE = Path(__file__).with_name("probe_messages.py")
 EXPECTED_COUNTS = {"std_msgs": 30, "geometry_msgs": 32, "sensor_msgs": 28, "nav_msgs": 10, "std_srvs": 3,
                    "rcl_interfaces": 21, "lifecycle_msgs": 8, "rosgraph_msgs": 1,
-                   "service_msgs": 1, "type_description_interfaces": 7}
+                   "service_msgs": 1, "type_description_interfaces": 7, "action_msgs": 4}
 
 
 @pytest.fixture(scope="module")

@@ -16,20 +16,9 @@ from turtletui.compat.qos import (
 from turtletui.compat.task import Future
 from turtletui.graph.logs import WARN
 from turtletui.interfaces import copier
+from turtletui.interfaces.action_msgs import GoalStatus
 
 _NS = 1_000_000_000
-
-
-class GoalStatus:
-    """Numbers of action_msgs/msg/GoalStatus."""
-
-    STATUS_UNKNOWN = 0
-    STATUS_ACCEPTED = 1
-    STATUS_EXECUTING = 2
-    STATUS_CANCELING = 3
-    STATUS_SUCCEEDED = 4
-    STATUS_CANCELED = 5
-    STATUS_ABORTED = 6
 
 
 _STATUS = {

@@ -1,1 +1,4 @@
-from turtletui.compat.action import GoalStatus  # noqa: F401
+from turtletui.interfaces import ros_module_members as _members
+
+globals().update(_members("action_msgs", "msg"))
+del _members

@@ -1,0 +1,4 @@
+from turtletui.interfaces import ros_module_members as _members
+
+globals().update(_members("action_msgs", "srv"))
+del _members
