@@ -612,15 +612,104 @@ def test_module_exports_for_shims():
         for name in module.__all__:
             cls = getattr(module, name)
             assert cls.__name__ == name
-            assert cls.__module__ == module.__name__
+            package, kind, _ = cls._TYPE_NAME.split('/')
+            assert cls.__module__.rpartition('.')[0] == f'{package}.{kind}'  # as rosidl's: see below
             assert cls._TYPE_NAME in I.all_interfaces()
     assert 'SetPen_Request' not in turtlesim.__all__
-    assert set(I.ros_module_members('turtlesim', 'srv')) == {
-        'Spawn', 'Kill', 'SetPen', 'TeleportAbsolute', 'TeleportRelative'}
+    assert set(I.ros_module_members('turtlesim', 'srv')) == {  # as rosidl_generator_py's __init__.py
+        f'{name}{part}' for name in ('Spawn', 'Kill', 'SetPen', 'TeleportAbsolute', 'TeleportRelative')
+        for part in ('', '_Request', '_Response', '_Event')}
     assert I.ros_module_members('turtlesim_msgs', 'msg') == {'Pose': TURTLE_POSE, 'Color': Color}
-    assert I.ros_module_members('turtlesim', 'action') == {'RotateAbsolute': RotateAbsolute}
+    assert I.ros_module_members('turtlesim', 'action') == {
+        'RotateAbsolute': RotateAbsolute,
+        **{f'RotateAbsolute_{service}_{part}': getattr(getattr(RotateAbsolute.Impl, f'{service}Service'), part)
+           for service in ('GetResult', 'SendGoal') for part in ('Event', 'Request', 'Response')}}
     with pytest.raises(I.InterfaceError):
         I.ros_module_members('turtlesim', 'nope')
+
+
+# ---------------------------------------------------------------------------
+# class identities: what type(msg) prints (rosidl_generator_py's modules)
+# ---------------------------------------------------------------------------
+
+@pytest.mark.parametrize(('cls', 'module', 'qualname'), [
+    (Twist, 'geometry_msgs.msg._twist', 'Twist'),
+    (std_msgs.Float64MultiArray, 'std_msgs.msg._float64_multi_array', 'Float64MultiArray'),
+    (geometry_msgs.PoseWithCovarianceStamped, 'geometry_msgs.msg._pose_with_covariance_stamped',
+     'PoseWithCovarianceStamped'),
+    (geometry_msgs.Point32, 'geometry_msgs.msg._point32', 'Point32'),
+    (unique_identifier_msgs.UUID, 'unique_identifier_msgs.msg._uuid', 'UUID'),
+    (rcl_interfaces.SetParametersAtomically, 'rcl_interfaces.srv._set_parameters_atomically',
+     'SetParametersAtomically'),
+    (std_srvs.SetBool.Request, 'std_srvs.srv._set_bool', 'SetBool_Request'),
+    (std_srvs.SetBool.Event, 'std_srvs.srv._set_bool', 'SetBool_Event'),
+    (SetPen.Response, 'turtlesim.srv._set_pen', 'SetPen_Response'),
+    (RotateAbsolute, 'turtlesim.action._rotate_absolute', 'RotateAbsolute'),
+    (RotateAbsolute.Feedback, 'turtlesim.action._rotate_absolute', 'RotateAbsolute_Feedback'),
+    (RotateAbsolute.Impl, 'turtlesim.action._rotate_absolute', 'RotateAbsolute.Impl'),
+    (RotateAbsolute.Impl.SendGoalService.Request, 'turtlesim.action._rotate_absolute',
+     'RotateAbsolute_SendGoal_Request'),
+    (RotateAbsolute.Impl.CancelGoalService, 'action_msgs.srv._cancel_goal', 'CancelGoal'),
+], ids=lambda value: value if isinstance(value, str) else value.__qualname__)
+def test_classes_are_named_as_rosidl_names_them(cls, module, qualname):
+    """As ROS 2 Kilted's (measured): <class 'geometry_msgs.msg._twist.Twist'>."""
+    assert (cls.__module__, cls.__qualname__) == (module, qualname)
+    assert cls.__name__ == qualname.rpartition('.')[2]
+    assert repr(cls) == str(cls) == f"<class '{module}.{qualname}'>"
+    if qualname.endswith('Impl'):
+        assert type(cls) is type
+    else:
+        assert repr(type(cls)) == f"<class '{module}.Metaclass_{qualname}'>"
+
+
+def test_services_have_rosidl_s_event_message():
+    """Service introspection's Event (Iron on), also of an action's services."""
+    event = SetPen.Event
+    assert event.get_fields_and_field_types() == {
+        'info': 'service_msgs/ServiceEventInfo',
+        'request': 'sequence<turtlesim/SetPen_Request, 1>',
+        'response': 'sequence<turtlesim/SetPen_Response, 1>'}
+    assert repr(std_srvs.Empty.Event()).startswith('std_srvs.srv.Empty_Event(info=service_msgs.msg.ServiceEventInfo(')
+    assert turtlesim.SetPen_Event is event
+    assert RotateAbsolute.Impl.GetResultService.Event.__qualname__ == 'RotateAbsolute_GetResult_Event'
+    with pytest.raises(AssertionError):
+        std_srvs.SetBool.Event(request=[std_srvs.SetBool.Request()] * 2)  # at most one
+
+
+def test_a_distro_renames_turtlesim_s_classes_and_back():
+    try:
+        I.show_package_as('turtlesim', 'turtlesim_msgs')
+        assert repr(Spawn.Request) == "<class 'turtlesim_msgs.srv._spawn.Spawn_Request'>"
+        assert repr(type(TURTLE_POSE)) == "<class 'turtlesim_msgs.msg._pose.Metaclass_Pose'>"
+        assert RotateAbsolute.Impl.__module__ == 'turtlesim_msgs.action._rotate_absolute'
+        assert RotateAbsolute.Impl.FeedbackMessage.get_fields_and_field_types()['feedback'] == \
+            'turtlesim_msgs/RotateAbsolute_Feedback'
+        assert Spawn.Event.get_fields_and_field_types()['request'] == 'sequence<turtlesim_msgs/Spawn_Request, 1>'
+        assert repr(Spawn.Request()) == "turtlesim_msgs.srv.Spawn_Request(x=0.0, y=0.0, theta=0.0, name='')"
+        assert I.interface_name(Spawn.Request) == 'turtlesim/srv/Spawn_Request'  # the registry's name stays
+    finally:
+        I.show_package_as('turtlesim', 'turtlesim')
+    assert repr(Spawn.Request) == "<class 'turtlesim.srv._spawn.Spawn_Request'>"
+    assert RotateAbsolute.Impl.FeedbackMessage.get_fields_and_field_types()['feedback'] == \
+        'turtlesim/RotateAbsolute_Feedback'
+
+
+@pytest.mark.parametrize('protocol', range(2, pickle.HIGHEST_PROTOCOL + 1))
+def test_classes_pickle_by_their_names_where_no_ros_module_exists(protocol):
+    """Classes and messages pickle by their full names, so they need no module
+    geometry_msgs.msg._twist (only controllers' processes have those)."""
+    for cls in (Twist, SetPen, SetPen.Request, SetPen.Event, RotateAbsolute, RotateAbsolute.Impl.FeedbackMessage):
+        assert pickle.loads(pickle.dumps(cls, protocol)) is cls
+    msg = RotateAbsolute.Impl.FeedbackMessage(feedback=RotateAbsolute.Feedback(remaining=1.5))
+    data = pickle.dumps([msg, type(msg)], protocol)
+    assert b'turtlesim.action._rotate_absolute' not in data and b'turtlesim/action/RotateAbsolute_FeedbackMessage' in data
+    assert pickle.loads(data) == [msg, type(msg)]
+
+
+def test_like_ros_s_slotted_messages_do_not_pickle_with_protocols_0_and_1():
+    for protocol in (0, 1):
+        with pytest.raises(TypeError):
+            pickle.dumps(Twist(), protocol)
 
 
 # ---------------------------------------------------------------------------

@@ -12,7 +12,8 @@ Public helpers (the registry and the JSON bridge to the sandboxed process):
 * :func:`interface_name` -- class or instance -> full ROS name.
 * :func:`all_interfaces` -- every top-level msg/srv/action name, sorted.
 * :func:`ros_module_members` -- the classes of one ROS python module
-  (``turtlesim.srv``), for the shim packages.
+  (``turtlesim.srv``), for the shim packages; :func:`ros_submodules` -- the
+  modules rosidl generates in it (``turtlesim.srv._spawn``).
 * :func:`definition_text` -- what ``ros2 interface show`` prints.
 * :func:`show_package_as` -- the package name a package's messages print with.
 * :func:`to_dict` / :func:`from_dict` -- plain nested dicts for JSON; from_dict
@@ -85,6 +86,7 @@ __all__ = [
     'get_interface',
     'interface_name',
     'ros_module_members',
+    'ros_submodules',
     'show_package_as',
     'to_dict',
     'to_values',
@@ -173,19 +175,52 @@ def all_interfaces() -> list[str]:
     return sorted(_TOP_LEVEL)
 
 
-def ros_module_members(package: str, kind: str) -> dict[str, type]:
-    """The classes a ROS python module exports, e.g. ``('turtlesim', 'srv')``.
+_EXPORTED_PARTS = {
+    'srv': ('Event', 'Request', 'Response'),
+    'action': tuple(f'{service}_{part}' for service in ('GetResult', 'SendGoal')
+                    for part in ('Event', 'Request', 'Response')),
+}
+"""What rosidl_generator_py's ``__init__.py`` imports besides each interface
+(Kilted's, measured): ``Spawn_Request`` from ``turtlesim_msgs.srv``."""
 
-    For the shim packages: ``globals().update(ros_module_members('turtlesim_msgs',
-    'msg'))`` gives ``Pose`` and ``Color`` (the same objects as for
-    ``turtlesim``). Raises :class:`InterfaceError` if there are none.
+
+def ros_module_members(package: str, kind: str) -> dict[str, type]:
+    """The classes a ROS python module exports, e.g. ``('turtlesim', 'srv')``:
+    each interface and, as rosidl_generator_py writes them, a service's
+    ``Spawn_Request``, ``Spawn_Response``, ``Spawn_Event`` and an action's
+    ``RotateAbsolute_SendGoal_Request`` ... (its other parts only through it).
+
+    For the shim packages: ``ros_module_members('turtlesim_msgs', 'msg')``
+    gives ``Pose`` and ``Color`` (the same objects as for ``turtlesim``).
+    Raises :class:`InterfaceError` if there are none.
     """
     package = _PACKAGE_ALIASES.get(package, package)
     prefix = f'{package}/{kind}/'
-    members = {n[len(prefix):]: _REGISTRY[n] for n in _TOP_LEVEL if n.startswith(prefix)}
+    members = {}
+    for full_name in sorted(n for n in _TOP_LEVEL if n.startswith(prefix)):
+        name = full_name[len(prefix):]
+        members[name] = _REGISTRY[full_name]
+        for part in _EXPORTED_PARTS.get(kind, ()):
+            members[f'{name}_{part}'] = _REGISTRY[f'{full_name}_{part}']
     if not members:
         raise InterfaceError(f'no interfaces for {package}.{kind}')
     return members
+
+
+def ros_submodules(package: str, kind: str) -> dict[str, dict[str, type]]:
+    """The modules rosidl generates inside a ROS python module, one per
+    interface, with the classes each defines, e.g. for ``('turtlesim_msgs',
+    'srv')``: ``{'_spawn': {'Spawn': ..., 'Spawn_Request': ...,
+    'Metaclass_Spawn': ..., ...}, ...}`` (named after the classes'
+    ``__module__``, which follows the distro for turtlesim's)."""
+    modules = {cls.__module__ for cls in ros_module_members(package, kind).values()}
+    found: dict[str, dict[str, type]] = {}
+    for cls in _REGISTRY.values():
+        if cls.__module__ in modules:
+            members = found.setdefault(cls.__module__.rpartition('.')[2], {})
+            members[cls.__qualname__] = cls
+            members[type(cls).__qualname__] = type(cls)
+    return found
 
 
 # --------------------------------------------------------------------------

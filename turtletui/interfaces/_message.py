@@ -16,7 +16,8 @@ class is used, so importing the package stays cheap. Standard library only.
 
 from __future__ import annotations
 
-import sys as _sys
+import copyreg as _copyreg
+import re as _re
 from array import array as _array
 from math import isinf as _isinf
 from operator import attrgetter as _attrgetter
@@ -600,6 +601,46 @@ def _split_name(full_name: str, kind: str) -> tuple[str, str]:
     return parts[0], parts[2]
 
 
+def ros_module_name(full_name: str) -> str:
+    """The module rosidl_generator_py writes an interface's classes in:
+    ``'geometry_msgs/msg/Twist'`` -> ``'geometry_msgs.msg._twist'`` (its
+    camel-case name in lower case with underscores, as rosidl_pycommon's
+    convert_camel_case_to_lower_case_underscore makes it)."""
+    package, kind, name = full_name.split('/')
+    snake = _re.sub('([a-z0-9])([A-Z])', r'\1_\2', _re.sub('(.)([A-Z][a-z]+)', r'\1_\2', name)).lower()
+    return f'{package}.{kind}._{snake}'
+
+
+def _metaclass(name: str, module: str, role: str) -> type:
+    """The class of an interface class, named as rosidl's (``Metaclass_Twist``):
+    ``type(Twist)`` prints as in ROS. Pickle and copy reach classes through it
+    by their full names (``_by_name``), so that they need no ROS-named module."""
+    meta = type(f'Metaclass_{name}', (type,), {
+        '__module__': module,
+        '__qualname__': f'Metaclass_{name}',
+        '__doc__': f"Metaclass of {role} '{name}'.",
+    })
+    _copyreg.pickle(meta, _reduce_class)
+    return meta
+
+
+def _reduce_class(cls: type) -> tuple:
+    return _by_name, (cls._TYPE_NAME,)
+
+
+def _by_name(full_name: str) -> type:
+    """The interface class registered as ``full_name`` (what pickles name)."""
+    return _REGISTRY[full_name]
+
+
+def _message_doc(name: str, constants: dict[str, Any]) -> str:
+    """A message class's docstring, as rosidl_generator_py writes it."""
+    if not constants:
+        return f"Message class '{name}'."
+    listed = ''.join(f'      {constant}\n' for constant in constants)
+    return f"\n    Message class '{name}'.\n\n    Constants:\n{listed}    "
+
+
 def _create_message(full_name: str, text: str, module: str) -> type:
     package, _, name = full_name.split('/')
     if full_name in _REGISTRY:
@@ -612,7 +653,7 @@ def _create_message(full_name: str, text: str, module: str) -> type:
         '__slots__': tuple(s.slot for s in fields),
         '__module__': module,
         '__qualname__': name,
-        '__doc__': f"Message class '{name}' ({full_name}).",
+        '__doc__': _message_doc(name, constants),
         '_TYPE_NAME': full_name,
         '_REPR_PREFIX': full_name.replace('/', '.'),
         '_DEFINITION': text,
@@ -623,7 +664,7 @@ def _create_message(full_name: str, text: str, module: str) -> type:
     for spec in fields:
         if spec.has_default:
             ns[f'{spec.name.upper()}__DEFAULT'] = spec.default
-    cls = type(name, (Message,), ns)
+    cls = _metaclass(name, module, 'message')(name, (Message,), ns)
     for spec in fields:
         spec.set = cls.__dict__[spec.slot].__set__
         setattr(cls, spec.name, _lazy_property(cls, spec))
@@ -635,10 +676,11 @@ def _create_message(full_name: str, text: str, module: str) -> type:
 def _create_wrapper(base: type, full_name: str, text: str, module: str,
                     members: dict[str, Any]) -> type:
     name = full_name.rsplit('/', 1)[1]
-    cls = type(name, (base,), {
+    role = 'service' if base is Service else 'action'
+    cls = _metaclass(name, module, role)(name, (base,), {
         '__module__': module,
         '__qualname__': name,
-        '__doc__': f"{base.__name__} class '{name}' ({full_name}).",
+        '__doc__': None,
         '_TYPE_NAME': full_name,
         '_DEFINITION': text,
         **members,
@@ -647,41 +689,54 @@ def _create_wrapper(base: type, full_name: str, text: str, module: str,
     return cls
 
 
-def _module_of(namespace: dict | None) -> str:
-    if namespace is None:
-        namespace = _sys._getframe(2).f_globals
-    return namespace.get('__name__', __name__)
+def _create_service(full_name: str, text: str, module: str) -> type:
+    """A service class, its ``Request``, ``Response`` and (service introspection's,
+    Iron on) ``Event`` message; ``full_name`` may be an action's part (``..._SendGoal``)."""
+    sections = _split_sections(text)
+    if len(sections) != 2:
+        raise ValueError(f'{full_name}: a service needs exactly one ---')
+    _service_event_info()
+    name = full_name.rsplit('/', 1)[1]
+    request = _create_message(f'{full_name}_Request', sections[0], module)
+    response = _create_message(f'{full_name}_Response', sections[1], module)
+    event = _create_message(f'{full_name}_Event', (
+        f'service_msgs/ServiceEventInfo info\n{name}_Request[<=1] request\n{name}_Response[<=1] response\n'),
+        module)
+    return _create_wrapper(Service, full_name, text, module,
+                           {'Request': request, 'Response': response, 'Event': event})
+
+
+def _service_event_info() -> None:
+    """Define service_msgs (a service's Event message nests its ServiceEventInfo) first."""
+    if 'service_msgs/msg/ServiceEventInfo' not in _REGISTRY:
+        import turtletui.interfaces.service_msgs  # noqa: F401
 
 
 def define_message(full_name: str, text: str, namespace: dict | None = None) -> type:
     """Create and register the message class *full_name* from its .msg *text*.
 
-    *namespace* is the defining module's ``globals()`` (gives ``__module__``).
+    Its ``__module__`` is rosidl's (``geometry_msgs.msg._twist``, see
+    ros_module_name); *namespace*, the defining module's ``globals()``, is
+    where services and actions put their parts.
     """
     _split_name(full_name, 'msg')
-    cls = _create_message(full_name, text, _module_of(namespace))
+    cls = _create_message(full_name, text, ros_module_name(full_name))
     _TOP_LEVEL.append(full_name)
     return cls
 
 
 def define_service(full_name: str, text: str, namespace: dict | None = None) -> type:
-    """Create and register a service class with nested ``Request``/``Response``.
+    """Create and register a service class with nested ``Request``, ``Response``
+    and ``Event``.
 
-    ``Name_Request`` / ``Name_Response`` also go into *namespace* (the
-    module's ``globals()``) so pickle finds them, as in ROS's ``_name.py``.
+    ``Name_Request``, ``Name_Response`` and ``Name_Event`` also go into
+    *namespace* (the module's ``globals()``), as in ROS's ``_name.py``.
     """
     _, name = _split_name(full_name, 'srv')
-    module = _module_of(namespace)
-    sections = _split_sections(text)
-    if len(sections) != 2:
-        raise ValueError(f'{full_name}: a service needs exactly one ---')
-    request = _create_message(f'{full_name}_Request', sections[0], module)
-    response = _create_message(f'{full_name}_Response', sections[1], module)
-    cls = _create_wrapper(Service, full_name, text, module,
-                          {'Request': request, 'Response': response})
+    cls = _create_service(full_name, text, ros_module_name(full_name))
     if namespace is not None:
-        namespace[f'{name}_Request'] = request
-        namespace[f'{name}_Response'] = response
+        for part in ('Request', 'Response', 'Event'):
+            namespace[f'{name}_{part}'] = getattr(cls, part)
     _TOP_LEVEL.append(full_name)
     return cls
 
@@ -695,30 +750,26 @@ def define_action(full_name: str, text: str, namespace: dict | None = None) -> t
     ``unique_identifier_msgs`` must be defined first.
     """
     _, name = _split_name(full_name, 'action')
-    module = _module_of(namespace)
+    module = ros_module_name(full_name)
     sections = _split_sections(text)
     if len(sections) != 3:
         raise ValueError(f'{full_name}: an action needs exactly two ---')
     made = {suffix: _create_message(f'{full_name}_{suffix}', body, module)
             for suffix, body in zip(('Goal', 'Result', 'Feedback'), sections, strict=True)}
-    for suffix, body in (
-        ('SendGoal_Request', f'unique_identifier_msgs/UUID goal_id\n{name}_Goal goal\n'),
-        ('SendGoal_Response', 'bool accepted\nbuiltin_interfaces/Time stamp\n'),
-        ('GetResult_Request', 'unique_identifier_msgs/UUID goal_id\n'),
-        ('GetResult_Response', f'int8 status\n{name}_Result result\n'),
-        ('FeedbackMessage', f'unique_identifier_msgs/UUID goal_id\n{name}_Feedback feedback\n'),
+    for service, request, response in (
+        ('SendGoal', f'unique_identifier_msgs/UUID goal_id\n{name}_Goal goal\n',
+         'bool accepted\nbuiltin_interfaces/Time stamp\n'),
+        ('GetResult', 'unique_identifier_msgs/UUID goal_id\n', f'int8 status\n{name}_Result result\n'),
     ):
-        made[suffix] = _create_message(f'{full_name}_{suffix}', body, module)
-    for service in ('SendGoal', 'GetResult'):
-        request, response = made[f'{service}_Request'], made[f'{service}_Response']
-        made[service] = _create_wrapper(
-            Service, f'{full_name}_{service}',
-            f'{request._DEFINITION}---\n{response._DEFINITION}', module,
-            {'Request': request, 'Response': response})
+        made[service] = _create_service(f'{full_name}_{service}', f'{request}---\n{response}', module)
+        for part in ('Request', 'Response', 'Event'):
+            made[f'{service}_{part}'] = getattr(made[service], part)
+    made['FeedbackMessage'] = _create_message(
+        f'{full_name}_FeedbackMessage', f'unique_identifier_msgs/UUID goal_id\n{name}_Feedback feedback\n', module)
     impl = type('Impl', (), {
         '__module__': module,
         '__qualname__': f'{name}.Impl',
-        '__doc__': 'Wrapper types used by the action protocol (as in rclpy).',
+        '__doc__': None,
         'SendGoalService': made['SendGoal'],
         'GetResultService': made['GetResult'],
         'FeedbackMessage': made['FeedbackMessage'],
@@ -737,10 +788,30 @@ def define_action(full_name: str, text: str, namespace: dict | None = None) -> t
 
 
 def show_package_as(package: str, shown: str) -> None:
-    """Make the messages of ``package`` print (repr) as ``shown``'s do: the
-    distro of a run decides (from Kilted on turtlesim's ``Pose`` prints as
-    ``turtlesim_msgs.msg.Pose(...)``). Their full names stay as defined."""
+    """Make the interfaces of ``package`` look as ``shown``'s do: the distro of
+    a run decides (from Kilted on turtlesim's ``Pose`` prints as
+    ``turtlesim_msgs.msg.Pose(...)``, its class is
+    ``turtlesim_msgs.msg._pose.Pose``, and nested turtlesim types are
+    ``turtlesim_msgs/...`` in ``get_fields_and_field_types()``). Their full
+    names (the registry's) stay as defined."""
     prefix = f'{package}/'
     for name, cls in _REGISTRY.items():
-        if name.startswith(prefix) and issubclass(cls, Message):
-            cls._REPR_PREFIX = f'{shown}/{name[len(prefix):]}'.replace('/', '.')
+        if name.startswith(prefix):
+            module = shown + cls.__module__[cls.__module__.index('.'):]
+            cls.__module__ = type(cls).__module__ = module
+            impl = cls.__dict__.get('Impl')
+            if impl is not None:
+                impl.__module__ = module
+        if issubclass(cls, Message):
+            if name.startswith(prefix):
+                cls._REPR_PREFIX = f'{shown}/{name[len(prefix):]}'.replace('/', '.')
+            cls._fields_and_field_types = {
+                spec.name: _shown_type(spec, package, shown) for spec in cls._FIELDS}
+
+
+def _shown_type(spec: FieldSpec, package: str, shown: str) -> str:
+    """``spec.fields_type`` with a nested type of ``package`` named as ``shown``'s."""
+    if spec.kind == 'msg' and spec.msg_cls._TYPE_NAME.startswith(f'{package}/'):
+        return f'{shown}/{spec.fields_type.partition("/")[2]}' if spec.array in (_SCALAR, _FIXED) \
+            else spec.fields_type.replace(f'<{package}/', f'<{shown}/', 1)
+    return spec.fields_type

@@ -38,7 +38,6 @@ _ARRAY_OFFSETS = {_SCALAR: 0, _FIXED: 48, _BOUNDED: 96, _SEQ: 144}
 """Added to the element's id: scalar, fixed array, bounded sequence, unbounded sequence."""
 _EMPTY_STRUCTURE = "structure_needs_at_least_one_member"
 """The uint8 member rosidl gives a message without fields."""
-_SERVICE_EVENT_INFO = "service_msgs/msg/ServiceEventInfo"
 
 
 def _field(name: str, type_id: int, *, capacity: int = 0, string_capacity: int = 0, nested: str = "",
@@ -86,22 +85,10 @@ def _nested(name: str, type_name: str) -> dict[str, Any]:
 def _service_parts(cls: type, found: dict[str, dict[str, Any]]) -> list[dict[str, Any]]:
     """The fields of a service's own description; its request, response and
     event message descriptions go into ``found``."""
-    name = cls._TYPE_NAME
-    request, response = cls.Request._TYPE_NAME, cls.Response._TYPE_NAME
-    _collect(cls.Request, found)
-    _collect(cls.Response, found)
-    _collect(_REGISTRY[_SERVICE_EVENT_INFO], found)
-    one = _TYPE_IDS["nested"] + _ARRAY_OFFSETS[_BOUNDED]
-    found[f"{name}_Event"] = {
-        "type_name": f"{name}_Event",
-        "fields": [
-            _nested("info", _SERVICE_EVENT_INFO),
-            _field("request", one, capacity=1, nested=request),
-            _field("response", one, capacity=1, nested=response),
-        ],
-    }
-    return [_nested("request_message", request), _nested("response_message", response),
-            _nested("event_message", f"{name}_Event")]
+    parts = (("request_message", cls.Request), ("response_message", cls.Response), ("event_message", cls.Event))
+    for _, part in parts:
+        _collect(part, found)
+    return [_nested(field, part._TYPE_NAME) for field, part in parts]
 
 
 def _action_parts(cls: type, found: dict[str, dict[str, Any]]) -> list[dict[str, Any]]:
