@@ -1,6 +1,7 @@
 """Describe message classes as a program sees them: run under the real rclpy and under turtletui.
 
     python probe_messages.py PACKAGE...   (prints JSON on stdout)
+    python probe_messages.py --identities PACKAGE...
 
 For every message class of the packages (services' Request/Response and
 actions' Goal/Result/Feedback included): its fields and their types, its
@@ -8,8 +9,11 @@ constants and field defaults, a default instance (as plain data, and its
 repr), and what happens when each field is set to each of a list of values
 (accepted and stored as what, or refused with which exception and sentence).
 With the real rclpy it also gives the text of each interface file, read
-where ament_index finds the package. tests/interfaces/test_real_definitions.py
-runs it both ways and compares.
+where ament_index finds the package. With --identities it gives instead what
+every class of the packages is called (``__module__``, ``__qualname__``,
+``repr``, its metaclass, where ``import`` and pickle find it) and what the
+package's modules hold. tests/interfaces/test_real_definitions.py runs it
+both ways and compares.
 """
 
 from __future__ import annotations
@@ -18,6 +22,7 @@ import array
 import importlib
 import json
 import os
+import pickle
 import sys
 
 os.environ["ROS_PYTHON_CHECK_FIELDS"] = "1"  # the real classes check only when asked (Iron on)
@@ -137,8 +142,78 @@ def definition_files(package: str) -> dict[str, str]:
     return texts
 
 
+def interface_classes(package: str):
+    """(label, class) of every interface class of a package, its parts included."""
+    for kind in ("msg", "srv", "action"):
+        try:
+            module = importlib.import_module(f"{package}.{kind}")
+        except ImportError:
+            continue
+        for name in sorted(n for n in dir(module) if n[0].isupper()):
+            cls = getattr(module, name)
+            label = f"{package}.{kind}.{name}"
+            yield label, cls
+            if "_" in name:
+                continue  # a part the module exports too (Spawn_Request): its identity only
+            parts = {"srv": ("Request", "Response", "Event"), "action": ("Goal", "Result", "Feedback", "Impl")}
+            for part in parts.get(kind, ()):
+                yield f"{label}.{part}", getattr(cls, part)
+            if kind == "action":
+                for part in ("SendGoalService", "GetResultService", "FeedbackMessage", "CancelGoalService",
+                             "GoalStatusMessage"):
+                    inner = getattr(cls.Impl, part)
+                    yield f"{label}.Impl.{part}", inner
+                    for service_part in ("Request", "Response", "Event") if part.endswith("Service") else ():
+                        yield f"{label}.Impl.{part}.{service_part}", getattr(inner, service_part)
+
+
+def identity(cls) -> dict:
+    """What a program printing or pickling the class sees."""
+    try:
+        found = importlib.import_module(cls.__module__)
+        for name in cls.__qualname__.split("."):
+            found = getattr(found, name)
+        importable = found is cls
+    except (ImportError, AttributeError) as err:
+        importable = f"{type(err).__name__}: {err}"
+    module = sys.modules.get(cls.__module__)
+    return {
+        "module": cls.__module__,
+        "qualname": cls.__qualname__,
+        "name": cls.__name__,
+        "repr": repr(cls),
+        "str": str(cls),
+        "doc": cls.__doc__,
+        "metaclass": repr(type(cls)),
+        "metaclass_doc": type(cls).__doc__,
+        "importable": importable,
+        "module_classes": sorted(n for n in vars(module) if n[0].isupper()) if module else None,
+        "pickles": pickle.loads(pickle.dumps(cls)) is cls,
+    }
+
+
+def package_modules(package: str) -> dict:
+    """The public names and the per-interface modules of the package's modules."""
+    out = {}
+    for kind in ("msg", "srv", "action"):
+        try:
+            module = importlib.import_module(f"{package}.{kind}")
+        except ImportError:
+            continue
+        out[kind] = sorted(n for n in vars(module) if not n.startswith("__"))
+    return out
+
+
 def main() -> None:
     packages = [a for a in sys.argv[1:] if not a.startswith("--")]
+    if "--identities" in sys.argv:
+        out = {"classes": {}, "modules": {}}
+        for package in packages:
+            out["modules"][package] = package_modules(package)
+            for label, cls in interface_classes(package):
+                out["classes"][label] = identity(cls)
+        json.dump(out, sys.stdout, sort_keys=True)
+        return
     out = {"classes": {}, "files": {}}
     for package in packages:
         for name, cls in message_classes(package):

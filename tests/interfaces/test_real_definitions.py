@@ -35,6 +35,20 @@ EXPECTED_COUNTS = {"std_msgs": 30, "geometry_msgs": 32, "sensor_msgs": 28, "nav_
                    "service_msgs": 1, "type_description_interfaces": 7, "action_msgs": 4}
 
 
+IDENTITY_PACKAGES = [*PACKAGES, "builtin_interfaces", "unique_identifier_msgs", "turtlesim_msgs"]
+"""Every package of turtletui's that the real ROS 2 of the tests has (turtlesim_msgs: Kilted's name)."""
+
+
+def _ours(args: list[str], cwd) -> dict:
+    code = (
+        "import runpy, sys; import turtletui.compat as c; c.install('kilted'); "
+        f"sys.argv = ['probe', *{args!r}]; runpy.run_path({str(PROBE)!r}, run_name='__main__')"
+    )
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=cwd, timeout=120)
+    assert done.returncode == 0, done.stderr
+    return json.loads(done.stdout)
+
+
 @pytest.fixture(scope="module")
 def real(tmp_path_factory) -> dict:
     done = run_real([str(PROBE), *PACKAGES, "--files"], cwd=tmp_path_factory.mktemp("real"))
@@ -44,14 +58,7 @@ def real(tmp_path_factory) -> dict:
 
 @pytest.fixture(scope="module")
 def ours(tmp_path_factory) -> dict:
-    code = (
-        "import runpy, sys; import turtletui.compat as c; c.install(); "
-        f"sys.argv = ['probe', *{PACKAGES!r}]; runpy.run_path({str(PROBE)!r}, run_name='__main__')"
-    )
-    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                          cwd=tmp_path_factory.mktemp("ours"), timeout=120)
-    assert done.returncode == 0, done.stderr
-    return json.loads(done.stdout)
+    return _ours(PACKAGES, tmp_path_factory.mktemp("ours"))
 
 
 def _normalised(value):
@@ -107,3 +114,18 @@ def test_setting_any_field_to_anything_does_what_ros_does(real, ours, package):
             assert mine == theirs, f"{name}.{field}"
             compared += len(outcomes)
     assert compared > 0
+
+
+def test_every_class_is_named_printed_imported_and_pickled_as_ros_s(tmp_path):
+    """``type(msg)`` prints ``<class 'geometry_msgs.msg._twist.Twist'>``, its
+    metaclass ``Metaclass_Twist``, ``import geometry_msgs.msg._twist`` finds
+    it, and so on for every class, services' and actions' parts included."""
+    real_run = run_real([str(PROBE), "--identities", *IDENTITY_PACKAGES], cwd=tmp_path)
+    assert real_run.returncode == 0, real_run.stderr
+    theirs = json.loads(real_run.stdout)
+    mine = _ours(["--identities", *IDENTITY_PACKAGES], tmp_path)
+    assert mine["modules"] == theirs["modules"]
+    assert set(mine["classes"]) == set(theirs["classes"])
+    assert len(theirs["classes"]) > 300
+    for label, identity in theirs["classes"].items():
+        assert mine["classes"][label] == identity, label

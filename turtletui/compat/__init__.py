@@ -30,6 +30,7 @@ ROS_PACKAGES = (
     "rosgraph_msgs",
     "lifecycle_msgs",
     "action_msgs",
+    "unique_identifier_msgs",
     "service_msgs",
     "type_description_interfaces",
     "turtlesim",

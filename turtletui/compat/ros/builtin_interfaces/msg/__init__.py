@@ -1,1 +1,4 @@
-from turtletui.interfaces.builtin_interfaces import *  # noqa: F401,F403
+from turtletui.compat.interface_modules import fill as _fill
+
+_fill(globals())
+del _fill

@@ -1,4 +1,4 @@
-from turtletui.interfaces import ros_module_members as _members
+from turtletui.compat.interface_modules import fill as _fill
 
-globals().update(_members("sensor_msgs", "srv"))
-del _members
+_fill(globals())
+del _fill

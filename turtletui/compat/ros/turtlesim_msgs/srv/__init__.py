@@ -1,1 +1,4 @@
-from turtletui.interfaces.turtlesim import Kill, SetPen, Spawn, TeleportAbsolute, TeleportRelative  # noqa: F401
+from turtletui.compat.interface_modules import fill as _fill
+
+_fill(globals())
+del _fill
