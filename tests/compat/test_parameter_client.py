@@ -54,7 +54,11 @@ def test_a_parameter_client_reads_and_sets_turtlesims_parameters(controller_host
     assert result.ok, result.crashes
     assert node_logs(result, "tuner") == [
         "ready True",
-        "list ['background_b', 'background_g', 'background_r', 'holonomic']",
+        "list ['background_b', 'background_g', 'background_r', 'holonomic', "  # and rclcpp's own
+        "'qos_overrides./parameter_events.publisher.depth', 'qos_overrides./parameter_events.publisher.durability', "
+        "'qos_overrides./parameter_events.publisher.history', "
+        "'qos_overrides./parameter_events.publisher.reliability', 'start_type_description_service', "
+        "'use_sim_time']",
         "get [(2, 69, False), (1, 0, False)]",
         "unknown []",
         "set True ",

@@ -64,8 +64,13 @@ def test_services_actions_and_parameters_of_turtlesim() -> None:
     assert (action.name, action.type, action.server) == (
         "/turtle1/rotate_absolute", "turtlesim/action/RotateAbsolute", "/turtlesim")
     turtlesim = graph.node("turtlesim")
-    assert dict(turtlesim.parameters) == {
-        "background_r": 69, "background_g": 86, "background_b": 255, "holonomic": False}
+    assert dict(turtlesim.parameters) == {  # its own, and what rclcpp declares on every node
+        "background_r": 69, "background_g": 86, "background_b": 255, "holonomic": False,
+        "use_sim_time": False, "start_type_description_service": True,
+        "qos_overrides./parameter_events.publisher.depth": 1000,
+        "qos_overrides./parameter_events.publisher.durability": "volatile",
+        "qos_overrides./parameter_events.publisher.history": "keep_last",
+        "qos_overrides./parameter_events.publisher.reliability": "reliable"}
     assert ("/turtle1/pose", "turtlesim/msg/Pose") in turtlesim.publishers
     assert ("/turtle1/cmd_vel", "geometry_msgs/msg/Twist") in turtlesim.subscribers
     with pytest.raises(KeyError, match="did you mean /turtle1/pose"):

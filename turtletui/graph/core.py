@@ -397,7 +397,13 @@ class GraphOutbox(Protocol):
 class Graph:
     """Nodes, topics, services, actions and timers sharing one simulated clock."""
 
-    def __init__(self, *, epoch_ns: int = LOCKSTEP_EPOCH_NS, type_name: Callable[[type], str]) -> None:
+    def __init__(
+        self,
+        *,
+        epoch_ns: int = LOCKSTEP_EPOCH_NS,
+        type_name: Callable[[type], str],
+        type_description_names: tuple[tuple[str, str], ...] | None = (),
+    ) -> None:
         self.now_ns = 0
         """Simulated nanoseconds since start."""
         self.epoch_ns = epoch_ns
@@ -427,6 +433,10 @@ class Graph:
         delivered to it. Within one process they match at once (one DDS
         participant). 0: always at once; a run uses DISCOVERY_NS."""
         self._type_name = type_name
+        self.type_description_names = type_description_names
+        """How the distro names types in type descriptions (type_descriptions.Names:
+        turtlesim's as turtlesim_msgs from Kilted on); None where nodes serve no
+        ``~/get_type_description`` (Humble)."""
         self._timers: list[tuple[int, int, Timer]] = []
         self._seq = 0
         self._goal_ids = 0

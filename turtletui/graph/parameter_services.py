@@ -152,7 +152,7 @@ def serve_parameters(graph: Graph, node: NodeRecord, descriptors: Mapping[str, P
 
     def set_atomically(parameters: list[Any]) -> SetParametersResult:
         for parameter in parameters:
-            reason = _refusal(parameter, descriptors.get(parameter.name), node)
+            reason = rclcpp_refusal(parameter, descriptors.get(parameter.name), node)
             if reason:
                 return SetParametersResult(successful=False, reason=reason)
         for parameter in parameters:
@@ -178,8 +178,9 @@ def serve_parameters(graph: Graph, node: NodeRecord, descriptors: Mapping[str, P
     ]
 
 
-def _refusal(parameter: Any, descriptor: ParameterDescriptor | None, node: NodeRecord) -> str:
-    """Why rclcpp refuses to set ``parameter`` (an rcl_interfaces Parameter), "" if it would not."""
+def rclcpp_refusal(parameter: Any, descriptor: ParameterDescriptor | None, node: NodeRecord) -> str:
+    """Why rclcpp refuses to set ``parameter`` (an rcl_interfaces Parameter) on
+    ``node`` whose ``descriptor`` it has (None: undeclared), "" if it would not."""
     name, new_type = parameter.name, parameter.value.type
     if descriptor is None or name not in node.parameters:
         return f"parameter '{name}' cannot be set because it was not declared"

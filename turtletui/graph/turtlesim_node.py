@@ -18,16 +18,12 @@ from turtletui.graph.core import (
     Subscription,
 )
 from turtletui.graph.logs import ERROR, INFO, WARN
-from turtletui.graph.parameter_services import serve_parameters, value_message
-from turtletui.graph.type_description_service import serve_type_descriptions
+from turtletui.graph.simulated_node import SimulatedNode
 from turtletui.interfaces.builtin_interfaces import Time
 from turtletui.interfaces.geometry_msgs import Twist
 from turtletui.interfaces.rcl_interfaces import (
     IntegerRange,
-    Log,
-    Parameter,
     ParameterDescriptor,
-    ParameterEvent,
     ParameterType,
 )
 from turtletui.interfaces.sensor_msgs import LaserScan
@@ -43,7 +39,6 @@ from turtletui.interfaces.turtlesim import (
     TeleportAbsolute,
     TeleportRelative,
 )
-from turtletui.interfaces.type_descriptions import Names
 from turtletui.sim import (
     ARENA_SIZE,
     DT,
@@ -62,18 +57,12 @@ from turtletui.sim.obstacles import RayCaster
 
 QOS_DEPTH = 7
 """turtlesim's topics: keep last 7, reliable (qos.hpp)."""
-_PLUMBING_DEPTH = 1000
-"""rclcpp's depth for /rosout and /parameter_events."""
-
-
-def _ignore_event(event: Any) -> None:
-    """rclcpp's own /parameter_events subscription (its TimeSource's): nothing here needs it."""
 
 _F32 = struct.Struct("5f")
 _F32_pack = _F32.pack
 _F32_unpack = _F32.unpack
 PARAMETERS = ("background_r", "background_g", "background_b", "holonomic")
-"""The parameters turtlesim declares (besides use_sim_time, which every node has)."""
+"""The parameters turtlesim declares (besides what every rclcpp node declares: turtletui.graph.simulated_node)."""
 _ROTATION_ENDINGS = {"succeeded": "Rotation goal completed successfully", "canceled": "Rotation goal canceled"}
 """What turtle.cpp logs (INFO) when a rotate_absolute goal ends; an abort has its own warning."""
 
@@ -152,17 +141,22 @@ class TurtlesimNode:
 
     NAME = "turtlesim"
 
-    def __init__(
-        self, graph: Graph, world: World | None = None, *, name: str = NAME, type_names: Names | None = ()
-    ) -> None:
-        """``type_names``: how the distro names turtlesim's types in its type
-        descriptions (see type_descriptions.Names); None for a distro without
-        the type description service (Humble)."""
+    def __init__(self, graph: Graph, world: World | None = None, *, name: str = NAME) -> None:
+        """The node's type descriptions name turtlesim's types as the graph's
+        distro does (``graph.type_description_names``)."""
         self.graph = graph
         self.name = name
         """The node's name: turtlesim's own, or what ``-r __node:=NAME`` made it."""
-        self.node = graph.add_node(name, owner="sim", parameter_setter=self.set_parameter, rclcpp=True)
         self.world = world if world is not None else World(spawn_turtle1=False)
+        own = _descriptors()
+        values = (*self.world.background, self.world.holonomic)
+        self._ros = SimulatedNode(
+            graph, name, "sim",
+            parameters=[(p, value, own[p]) for p, value in zip(PARAMETERS, values, strict=True)],
+            on_set=self._apply_parameter,
+        )
+        """What rclcpp gives the node: /rosout, /parameter_events, the parameter services ..."""
+        self.node = self._ros.node
         self._turtles: dict[str, _TurtleEndpoints] = {}
         self._poses: dict[str, Any] = {}
         """The Pose message last published for each turtle."""
@@ -174,17 +168,6 @@ class TurtlesimNode:
         self._scan_period = lidar.period_ticks(DT) if lidar is not None else 0
         self._scan_angles = lidar.angles() if lidar is not None else None
         self._caster = RayCaster(self.world.obstacles) if lidar is not None else None
-        bg = self.world.background
-        for name, value in zip(PARAMETERS, (*bg, self.world.holonomic), strict=True):
-            graph.set_parameter(self.node, name, value)
-        serve_parameters(graph, self.node, _descriptors())
-        self._type_descriptions: Service | None = None
-        if type_names is not None:  # rclcpp's NodeTypeDescriptions, Iron on
-            self._type_descriptions = serve_type_descriptions(graph, self.node, type_names)
-        # What rclcpp gives every node: /rosout, and /parameter_events both ways.
-        graph.add_publisher(self.node, "/rosout", Log, _PLUMBING_DEPTH)
-        self._parameter_events = graph.add_publisher(self.node, "/parameter_events", ParameterEvent, _PLUMBING_DEPTH)
-        graph.add_subscription(self.node, "/parameter_events", ParameterEvent, _PLUMBING_DEPTH, _ignore_event)
         self._log(INFO, f"Starting turtlesim with node name {self.node.fqn}")
         node = self.node
         graph.add_service(node, "/clear", Empty, self._clear)
@@ -289,6 +272,9 @@ class TurtlesimNode:
     # -- parameters -----------------------------------------------------------
     def set_parameter(self, name: str, value: Any) -> str | None:
         """Set one of turtlesim's parameters; returns a reason if refused."""
+        return self._ros.set_parameter(name, value)
+
+    def _apply_parameter(self, name: str, value: Any) -> str | None:
         problem = parameter_problem(name, value, self.node.fqn)
         if problem is not None:
             return problem
@@ -297,20 +283,11 @@ class TurtlesimNode:
         else:
             params = {**self.node.parameters, name: value}
             self.world.set_background((params["background_r"], params["background_g"], params["background_b"]))
-        self.graph.set_parameter(self.node, name, value)
-        event = ParameterEvent(
-            stamp=Time(sec=self.graph.stamp_ns // NS_PER_S, nanosec=self.graph.stamp_ns % NS_PER_S),
-            node=self.node.fqn,
-            changed_parameters=[Parameter(name=name, value=value_message(value))],
-        )
-        self.graph.publish(self._parameter_events.topic, event, publisher=self._parameter_events)
         return None
 
     def stop_type_description_service(self) -> None:
         """What ``-p start_type_description_service:=false`` does: no ``~/get_type_description``."""
-        if self._type_descriptions is not None:
-            self.graph.remove_service(self._type_descriptions)
-            self._type_descriptions = None
+        self._ros.stop_type_description_service()
 
     # -- services ---------------------------------------------------------------
     def _clear(self, request: Any, respond) -> None:

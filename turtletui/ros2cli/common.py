@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING, Any, TypeVar
 
 from turtletui.compat.distro import lacks_package_of, missing_package_reason, ros_type_name
 from turtletui.graph.core import Graph, Topic
-from turtletui.graph.introspection import GraphSnapshot, NodeInfo, snapshot, with_ros_plumbing
+from turtletui.graph.introspection import GraphSnapshot, NodeInfo, snapshot
 from turtletui.interfaces import Action, Service, get_interface, interface_name
 
 if TYPE_CHECKING:
@@ -102,16 +102,12 @@ def topic_or_error(graph: Graph, name: str, what: str) -> Topic:
 
 
 def ros_view(cli: Any) -> GraphSnapshot:
-    """The graph as the ros2 tools show it: with what rcl gives every node
-    (/rosout, /parameter_events, the parameter services), which turtletui's
-    graph does not keep, and the hidden topics and services behind every
+    """The graph as the ros2 tools show it: every node with what rcl gives it
+    (/rosout, /parameter_events, the parameter services ...), which
+    turtletui's graph keeps for every node (turtletui.graph.simulated_node,
+    turtletui.compat.node), and the hidden topics and services behind every
     action (``<action>/_action/...``)."""
-    sim = cli.sim
-    turtlesim = getattr(getattr(sim, "turtlesim", None), "node", None)
-    return with_ros_plumbing(
-        snapshot(cli.graph, action_endpoints=True),
-        parameter_event_subscribers=(turtlesim.fqn,) if turtlesim is not None else (),  # rclcpp's own
-    )
+    return snapshot(cli.graph, action_endpoints=True)
 
 
 def action_behind(name: str) -> str | None:

@@ -104,7 +104,14 @@ def _dump_arguments(parser: ArgumentParser) -> None:
 
 def _dump(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
     node = node_or_error(snapshot(cli.graph), args.node_name)
-    params = {name: list(value) if isinstance(value, tuple) else value for name, value in node.parameters}
+    params: dict[str, Any] = {}
+    for name, value in sorted(node.parameters):
+        # as ros2param's insert_dict: "qos_overrides./parameter_events.publisher.depth" nests
+        *parents, leaf = name.split(".")
+        level = params
+        for part in parents:
+            level = level.setdefault(part, {})
+        level[leaf] = list(value) if isinstance(value, tuple) else value
     return CommandResult(yaml_lines({node.name: {"ros__parameters": params}}))
 
 

@@ -219,7 +219,7 @@ def main(config: dict[str, Any] | None = None) -> None:
     _apply_limits(config.get("limits", {}))
     from turtletui import compat
     from turtletui.compat import context as compat_context
-    from turtletui.compat.distro import resolve_distro, type_namer
+    from turtletui.compat.distro import resolve_distro, type_description_names, type_namer
     from turtletui.runtime import scheduler, virtual_time
     from turtletui.runtime.loader import (
         ControllerError,
@@ -233,7 +233,9 @@ def main(config: dict[str, Any] | None = None) -> None:
 
     distro = resolve_distro(config.get("distro"))
     compat.install(distro)
-    graph = Graph(epoch_ns=config["epoch_ns"], type_name=type_namer(distro))
+    graph = Graph(
+        epoch_ns=config["epoch_ns"], type_name=type_namer(distro), type_description_names=type_description_names(distro)
+    )
     graph.discovery_ns = config.get("discovery_ns", 0)
     log_lines = config.get("limits", {}).get("log_lines")
     outbox = ParentOutbox(graph) if log_lines is None else ParentOutbox(graph, log_budget=int(log_lines) + 1)

@@ -63,13 +63,13 @@ class Simulation:
         self.distro = resolve_distro(distro)
         """The ROS 2 distro controllers run as (turtletui.compat.distro)."""
         epoch = time.time_ns() if realtime else LOCKSTEP_EPOCH_NS
-        self.graph = Graph(epoch_ns=epoch, type_name=type_namer(self.distro))
+        self.graph = Graph(
+            epoch_ns=epoch, type_name=type_namer(self.distro), type_description_names=type_description_names(self.distro)
+        )
         self.graph.discovery_ns = DISCOVERY_NS
         self.graph.log_sinks.extend(log_sinks)
         self.world = world if world is not None else World(spawn_turtle1=False)
-        self.turtlesim = TurtlesimNode(
-            self.graph, self.world, name=turtlesim_name, type_names=type_description_names(self.distro)
-        )
+        self.turtlesim = TurtlesimNode(self.graph, self.world, name=turtlesim_name)
         self.remotes: list[RemoteHost] = []
         self._typo_check = self.graph.add_timer(
             self.turtlesim.node, TOPIC_CHECK_AFTER_NS, self._warn_dangling_topics
