@@ -120,6 +120,58 @@ def test_node_info_turtlesim_as_ros2node_prints_it(cli):
     ]
 
 
+def test_node_info_teleop_turtle_as_the_tutorial_shows_it(sim, cli):
+    """The 'Understanding nodes' tutorial's `ros2 node info /teleop_turtle` (Jazzy;
+    turtletui leaves out an action client's hidden topics and services)."""
+    from turtletui.tui.session import Teleop
+
+    Teleop(sim)
+    assert ok(cli, "ros2 node info /teleop_turtle").lines == [
+        "/teleop_turtle",
+        "  Subscribers:",
+        "    /parameter_events: rcl_interfaces/msg/ParameterEvent",
+        "  Publishers:",
+        "    /parameter_events: rcl_interfaces/msg/ParameterEvent",
+        "    /rosout: rcl_interfaces/msg/Log",
+        "    /turtle1/cmd_vel: geometry_msgs/msg/Twist",
+        "  Service Servers:",
+        *(f"    /teleop_turtle/{service}" for service in PARAMETER_SERVICES),
+        "  Service Clients:",
+        "",
+        "  Action Servers:",
+        "",
+        "  Action Clients:",
+        "    /turtle1/rotate_absolute: turtlesim/action/RotateAbsolute",
+    ]
+    assert ok(cli, "ros2 param list /teleop_turtle").lines == [
+        "  qos_overrides./parameter_events.publisher.depth", "  qos_overrides./parameter_events.publisher.durability",
+        "  qos_overrides./parameter_events.publisher.history", "  qos_overrides./parameter_events.publisher.reliability",
+        "  scale_angular", "  scale_linear", "  start_type_description_service", "  use_sim_time"]
+    assert ok(cli, "ros2 param set /teleop_turtle scale_linear 4.0").lines == ["Set parameter successful"]
+    assert ok(cli, "ros2 param get /teleop_turtle scale_linear").lines == ["Double value is: 4.0"]
+
+
+def test_a_command_s_hidden_node_is_ros2cli_s_rclpy_node(sim, cli):
+    """ros2cli's DirectNode: /rosout, /parameter_events, ~/get_type_description,
+    use_sim_time and start_type_description_service; no parameter services."""
+    echo = ok(cli, "ros2 topic echo /turtle1/pose")
+    node = echo.stream.node
+    info = ok(cli, f"ros2 node info {node.fqn} --include-hidden").lines
+    assert info[info.index("  Publishers:") + 1:info.index("  Service Servers:") + 2] == [
+        "    /parameter_events: rcl_interfaces/msg/ParameterEvent",
+        "    /rosout: rcl_interfaces/msg/Log",
+        "  Service Servers:",
+        "    /_ros2cli_1/get_type_description: type_description_interfaces/srv/GetTypeDescription",
+    ]
+    assert info[info.index("  Subscribers:") + 1:info.index("  Publishers:")] == ["    /turtle1/pose: turtlesim/msg/Pose"]
+    assert node.parameters == {"use_sim_time": False, "start_type_description_service": True}
+    assert "/_ros2cli_1/get_type_description" not in ok(cli, "ros2 service list").lines  # hidden, as ROS's
+    plain = ok(cli, f"ros2 node info {node.fqn}").lines
+    assert plain[plain.index("  Service Servers:") + 1] == ""
+    refused = cli.run(f"ros2 param set {node.fqn} use_sim_time true")
+    assert refused.error
+
+
 def test_node_info_shows_the_clients_of_a_running_command(cli):
     call = ok(cli, "ros2 service call /clear std_srvs/srv/Empty")
     info = ok(cli, f"ros2 node info {call.stream.node.fqn}").lines
@@ -371,7 +423,11 @@ def test_service_call_reaches_turtlesims_parameter_services(sim, cli):
     step(sim, 0.016)
     assert listed.stream.poll()[1] == (
         "rcl_interfaces.srv.ListParameters_Response(result=rcl_interfaces.msg.ListParametersResult("
-        "names=['background_b', 'background_g', 'background_r', 'holonomic'], prefixes=[]))"
+        "names=['background_b', 'background_g', 'background_r', 'holonomic', "
+        "'qos_overrides./parameter_events.publisher.depth', 'qos_overrides./parameter_events.publisher.durability', "
+        "'qos_overrides./parameter_events.publisher.history', "
+        "'qos_overrides./parameter_events.publisher.reliability', 'start_type_description_service', "
+        "'use_sim_time'], prefixes=['qos_overrides./parameter_events.publisher']))"
     )
     refused = ok(cli, "ros2 service call /turtlesim/set_parameters rcl_interfaces/srv/SetParameters "
                       "\"{parameters: [{name: background_r, value: {type: 2, integer_value: 256}}]}\"")
@@ -438,20 +494,40 @@ def test_values_are_converted_as_set_message_fields_converts_them(sim, cli):
 
 # -- ros2 param ------------------------------------------------------------------
 
+TURTLESIM_PARAMETERS = [  # `ros2 param list /turtlesim` on Jazzy and Kilted: its own and rclcpp's
+    "background_b", "background_g", "background_r", "holonomic",
+    "qos_overrides./parameter_events.publisher.depth", "qos_overrides./parameter_events.publisher.durability",
+    "qos_overrides./parameter_events.publisher.history", "qos_overrides./parameter_events.publisher.reliability",
+    "start_type_description_service", "use_sim_time"]
+
+
 def test_param_list_get(sim, cli):
-    assert ok(cli, "ros2 param list").lines == [
-        "/turtlesim:", "  background_b", "  background_g", "  background_r", "  holonomic"]
-    assert ok(cli, "ros2 param list /turtlesim").lines == [
-        "  background_b", "  background_g", "  background_r", "  holonomic"]
+    assert ok(cli, "ros2 param list").lines == ["/turtlesim:", *(f"  {name}" for name in TURTLESIM_PARAMETERS)]
+    assert ok(cli, "ros2 param list /turtlesim").lines == [f"  {name}" for name in TURTLESIM_PARAMETERS]
     assert ok(cli, "ros2 param get /turtlesim background_r").lines == ["Integer value is: 69"]
     assert ok(cli, "ros2 param get /turtlesim holonomic").lines == ["Boolean value is: False"]
+    assert ok(cli, "ros2 param get /turtlesim use_sim_time").lines == ["Boolean value is: False"]
+    assert ok(cli, "ros2 param get /turtlesim qos_overrides./parameter_events.publisher.depth").lines == [
+        "Integer value is: 1000"]
 
 
 def test_param_list_with_types_and_get_without(cli):
+    types = ["integer"] * 3 + ["boolean", "integer", "string", "string", "string", "boolean", "boolean"]
     assert ok(cli, "ros2 param list /turtlesim --param-type").lines == [
-        "  background_b (type: integer)", "  background_g (type: integer)",
-        "  background_r (type: integer)", "  holonomic (type: boolean)"]
+        f"  {name} (type: {kind})" for name, kind in zip(TURTLESIM_PARAMETERS, types, strict=True)]
     assert ok(cli, "ros2 param get /turtlesim background_r --hide-type").lines == ["69"]
+
+
+def test_rclcpp_s_own_parameters_are_read_only_but_use_sim_time(sim, cli):
+    refused = cli.run("ros2 param set /turtlesim qos_overrides./parameter_events.publisher.depth 10")
+    assert refused.error and refused.lines == [
+        "Setting parameter failed: parameter 'qos_overrides./parameter_events.publisher.depth' cannot be set"
+        " because it is read-only"]
+    assert cli.run("ros2 param set /turtlesim start_type_description_service false").error
+    assert ok(cli, "ros2 param set /turtlesim use_sim_time false").lines == ["Set parameter successful"]
+    refused = cli.run("ros2 param set /turtlesim use_sim_time true")
+    assert refused.error and "use_sim_time can only be false" in refused.lines[0]
+    assert ok(cli, "ros2 param get /turtlesim use_sim_time").lines == ["Boolean value is: False"]
 
 
 def test_interface_list_and_packages_by_kind(cli):
@@ -477,6 +553,7 @@ def test_param_set_holonomic(sim, cli):
 
 
 def test_param_dump(cli):
+    """As ros2param's dump: dotted names nest, keys sorted."""
     assert ok(cli, "ros2 param dump /turtlesim").lines == [
         "/turtlesim:",
         "  ros__parameters:",
@@ -484,6 +561,15 @@ def test_param_dump(cli):
         "    background_g: 86",
         "    background_r: 69",
         "    holonomic: false",
+        "    qos_overrides:",
+        "      /parameter_events:",
+        "        publisher:",
+        "          depth: 1000",
+        "          durability: volatile",
+        "          history: keep_last",
+        "          reliability: reliable",
+        "    start_type_description_service: true",
+        "    use_sim_time: false",
     ]
 
 

@@ -146,8 +146,8 @@ def test_a_recording_keeps_the_world(tmp_path: Path) -> None:
 
 
 def test_the_teleop_keys_publish_from_teleop_turtles_cmd_vel_publisher() -> None:
-    """As turtle_teleop_key: an rclcpp node whose publisher (keep last 1,
-    reliable, volatile) others count and discover; a key pressed before
+    """As turtle_teleop_key: an rclcpp node whose publisher (reliable,
+    volatile) others count and discover; a key pressed before
     turtlesim discovered it moves nothing, as on ROS 2."""
     from turtletui.graph.qos import Policies
     from turtletui.interfaces.geometry_msgs import Twist
@@ -158,7 +158,11 @@ def test_the_teleop_keys_publish_from_teleop_turtles_cmd_vel_publisher() -> None
     sim = Simulation(log_sinks=[logs.append])
     teleop = Teleop(sim)
     [publisher] = sim.graph.publishers_of("/turtle1/cmd_vel")
-    assert publisher.node.name == "teleop_turtle" and publisher.depth == 1 and publisher.qos == Policies()
+    # keep last 7 from Jazzy on (turtlesim's topic_qos), 1 in Humble
+    assert publisher.node.name == "teleop_turtle" and publisher.depth == 7 and publisher.qos == Policies()
+    humble = Simulation(distro="humble")
+    Teleop(humble)
+    assert [p.depth for p in humble.graph.publishers_of("/turtle1/cmd_vel")] == [1]
     teleop.drive(linear=1.0)
     sim.run_until(DISCOVERY_NS)
     turtle = sim.world.turtles["turtle1"]

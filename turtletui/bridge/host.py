@@ -29,6 +29,7 @@ from turtletui.graph.core import GoalHandle, Graph, GraphError, NodeRecord, Publ
 from turtletui.graph.introspection import is_plumbing_topic
 from turtletui.graph.logs import INFO, WARN, LogRecord
 from turtletui.graph.parameter_services import is_parameter_service
+from turtletui.graph.simulated_node import rclcpp_parameters
 from turtletui.graph.type_description_service import is_type_description_service
 from turtletui.interfaces import InterfaceError, from_dict, get_interface, to_dict
 
@@ -232,7 +233,10 @@ class RosBridge:
         node_id = self._nodes[node] = self._new_id()
         parameters = {k: v for k, v in node.parameters.items() if _is_parameter_value(v)}
         self._node_parameters[node_id] = dict(parameters)
-        descriptors = TURTLESIM_PARAMETERS if node is self._turtlesim else {}
+        descriptors = dict(TURTLESIM_PARAMETERS) if node is self._turtlesim else {}
+        for name, _, descriptor in rclcpp_parameters():
+            if descriptor.read_only and name in parameters:  # rclcpp's qos_overrides: read-only on the twin too
+                descriptors[name] = {"description": descriptor.description, "read_only": True}
         self._send({
             "op": "node",
             "id": node_id,

@@ -623,6 +623,7 @@ def _descriptor(name: str, value, spec):
         if "range" in spec:
             low, high = spec["range"]
             descriptor.integer_range = [IntegerRange(from_value=low, to_value=high, step=1)]
+        descriptor.read_only = bool(spec.get("read_only", False))
     return descriptor
 
 

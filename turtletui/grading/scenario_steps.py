@@ -8,7 +8,6 @@ child imports it.
 from __future__ import annotations
 
 from turtletui.graph.logs import INFO
-from turtletui.graph.qos import DEFAULT as DEFAULT_QOS
 from turtletui.runtime.simulation import Simulation
 
 
@@ -18,23 +17,21 @@ class ScenarioDriver:
     node that only watches sees the turtle move.
 
     It is that person's turtle_teleop_key, as on a real system: a
-    ``teleop_turtle`` node whose cmd_vel publisher (keep last 1, reliable,
-    volatile) counts, shows in ``ros2 node list`` and is discovered like
+    ``teleop_turtle`` node (turtletui.graph.teleop_node) whose cmd_vel
+    publisher counts, shows in ``ros2 node list`` and is discovered like
     any other, so its first messages reach turtlesim only once turtlesim
     has discovered it."""
 
     PERIOD_NS = 16_000_000
-    NODE = "teleop_turtle"
 
     def __init__(self, sim: Simulation, drive: tuple[float, float]) -> None:
+        from turtletui.graph.teleop_node import TeleopNode
         from turtletui.interfaces.geometry_msgs import Twist, Vector3
 
-        graph = sim.graph
-        node = graph.add_node(self.NODE, owner="scenario", rclcpp=True)
+        teleop = TeleopNode(sim.graph, "scenario", sim.distro)
         self.msg = Twist(linear=Vector3(x=drive[0]), angular=Vector3(z=drive[1]))
         """The one message it publishes (the trace tells it from the controller's)."""
-        publisher = graph.add_publisher(node, "/turtle1/cmd_vel", Twist, 1, qos=DEFAULT_QOS)
-        graph.add_timer(node, self.PERIOD_NS, lambda: graph.publish(publisher.topic, self.msg, None, publisher))
+        sim.graph.add_timer(teleop.node, self.PERIOD_NS, lambda: teleop.publish(self.msg))
 
 
 def place_turtle(sim: Simulation, start: tuple[float, float, float], label: str) -> None:

@@ -19,8 +19,9 @@ from pathlib import Path
 from typing import Any
 
 from turtletui.errors import TurtletuiError
-from turtletui.graph.core import NS_PER_S, NodeRecord
+from turtletui.graph.core import NS_PER_S, Graph, NodeRecord
 from turtletui.graph.logs import ERROR, INFO, WARN
+from turtletui.graph.simulated_node import SimulatedNode
 from turtletui.interfaces import from_dict
 from turtletui.recording.qos import (
     DEFAULT,
@@ -43,6 +44,12 @@ LOOP_MIN_NS = round(DT * NS_PER_S)
 
 class BagError(TurtletuiError, ValueError):
     """A bag that cannot be recorded, read or played: one line naming it."""
+
+
+def rosbag2_node(graph: Graph, name: str, owner: str) -> NodeRecord:
+    """A node of rosbag2's (``rosbag2_recorder``, ``rosbag2_player``): rosbag2_transport's
+    Recorder and Player are rclcpp nodes, with what every one has."""
+    return SimulatedNode(graph, name, owner).node
 
 
 def default_bag_name(now: float | None = None) -> str:
@@ -78,7 +85,7 @@ class BagRecording:
         except OSError as err:
             raise BagError(str(err)) from None
         self.stopped = False
-        self.node = node if node is not None else graph.add_node(RECORDER, owner=RECORDER, rclcpp=True)
+        self.node = node if node is not None else rosbag2_node(graph, RECORDER, RECORDER)
         self._log(f"Opened database '{self.folder / (self.folder.name + '_0.mcap')}' for READ_WRITE.")
         self._log("Listening for topics...")
         live = sorted(name for name, topic in graph.topics.items() if topic.publishers or topic.subscriptions)
@@ -237,7 +244,7 @@ class BagPlayback:
         self.done = False
         """True once the bag was played to its end (never with ``loop``) or stopped."""
         self._graph = sim.graph
-        self.node = node if node is not None else self._graph.add_node(PLAYER, owner=PLAYER, rclcpp=True)
+        self.node = node if node is not None else rosbag2_node(self._graph, PLAYER, PLAYER)
         self._publishers = self._make_publishers(offers)
         self._reader: Iterator[tuple[int, str, type, dict[str, Any]]] | None = None
         self._next: tuple[int, str, type, dict[str, Any]] | None = None

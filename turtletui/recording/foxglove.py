@@ -24,6 +24,7 @@ from typing import Any
 
 from turtletui.errors import UsageError
 from turtletui.graph.logs import INFO, WARN
+from turtletui.graph.simulated_node import SimulatedNode
 from turtletui.interfaces import InterfaceError, from_dict, get_interface
 from turtletui.recording import cdr
 from turtletui.recording.errors import FoxgloveError
@@ -94,7 +95,7 @@ class FoxgloveBridge:
             self._tap.detach()
             raise FoxgloveError(f"--foxglove {address}: cannot serve ({err})") from None
         self.url = f"ws://{host if ':' not in host else f'[{host}]'}:{self._server.port}"
-        self._node = self._graph.add_node(NODE, owner=OWNER)
+        self._node = SimulatedNode(self._graph, NODE, OWNER).node  # foxglove_bridge: an rclcpp node
         self._timer = self._graph.add_timer(self._node, _TICK_NS, self._pump)
         self._graph.log(NODE, INFO, f"Foxglove: open a connection to {self.url}")
         self._pump()

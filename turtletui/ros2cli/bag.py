@@ -29,6 +29,7 @@ from turtletui.recording.bag import (
     BagRecording,
     bag_info,
     bag_topics,
+    rosbag2_node,
 )
 from turtletui.ros2cli.arguments import Command, Verb
 from turtletui.ros2cli.common import (
@@ -59,7 +60,7 @@ class BagStream(Stream):
     runs_in_background = True
 
     def __init__(self, cli: Ros2Cli, command: str, node_name: str, start: Callable[[Any], Any]) -> None:
-        super().__init__(cli, command, node=cli.graph.add_node(node_name, owner=f"{OWNER}:{node_name}", rclcpp=True))
+        super().__init__(cli, command, node=rosbag2_node(cli.graph, node_name, f"{OWNER}:{node_name}"))
         self._graph.log_sinks.append(self._on_log)
         try:
             self.work = start(self.node)

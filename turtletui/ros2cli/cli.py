@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING, Protocol
 
 from turtletui.compat.distro import NEWEST_LTS
 from turtletui.graph.core import Graph, GraphError, NodeRecord
+from turtletui.graph.simulated_node import SimulatedNode
 from turtletui.interfaces import InterfaceError
 from turtletui.ros2cli import action, bag, interface, node, param, service, topic
 from turtletui.ros2cli.arguments import (
@@ -102,7 +103,9 @@ class Ros2Cli:
         """A new hidden node for one command (``/_ros2cli_1``, ``/_ros2cli_2``...),
         its process's own (the others discover its endpoints in time)."""
         self._hidden += 1
-        return self.graph.add_node(f"{HIDDEN_NODE_PREFIX}{self._hidden}", owner=f"{OWNER}:{self._hidden}")
+        # ros2cli's DirectNode: an rclpy node without parameter services
+        name, owner = f"{HIDDEN_NODE_PREFIX}{self._hidden}", f"{OWNER}:{self._hidden}"
+        return SimulatedNode(self.graph, name, owner, rclcpp=False).node
 
     def start(self, stream: Stream) -> CommandResult:
         """The result of a streaming command: its first lines, and the stream

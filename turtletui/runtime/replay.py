@@ -135,13 +135,13 @@ def install_replay(sim: Simulation, recording: Recording) -> None:
     one does not: rclcpp's default then); its service calls and goals come
     from the same node."""
     from turtletui.graph.core import Graph
-    from turtletui.recording.bag import PLAYER
+    from turtletui.recording.bag import PLAYER, rosbag2_node
 
     graph: Graph = sim.graph
     start = recording.start
     if start is not None and "turtle1" in sim.world.turtles:
         sim.world.place("turtle1", *start)
-    node = graph.add_node(PLAYER, owner=PLAYER, rclcpp=True)
+    node = rosbag2_node(graph, PLAYER, PLAYER)
     publishers: dict[str, Any] = {}
     for event in recording.inputs:
         name = event.get("topic")

@@ -17,8 +17,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from turtletui.graph.logs import ERROR, INFO, LogRecord
-from turtletui.graph.qos import DEFAULT as DEFAULT_QOS
-from turtletui.interfaces.geometry_msgs import Twist
+from turtletui.graph.teleop_node import HEADINGS, TeleopNode
 from turtletui.interfaces.std_srvs import Empty
 from turtletui.interfaces.turtlesim import RotateAbsolute
 from turtletui.runtime.loader import ControllerError, ControllerSpec, check_source
@@ -39,22 +38,6 @@ SPEEDS = (0.25, 0.5, 1.0, 2.0, 4.0, 8.0)
 MAX_CATCH_UP = 0.25
 """Wall seconds of simulation at most per advance: after a stall (a
 suspended laptop, a slow terminal) the world does not race to catch up."""
-
-TELEOP_LINEAR = 2.0
-TELEOP_ANGULAR = 2.0
-"""turtle_teleop_key's scale_linear and scale_angular parameters."""
-
-TELEOP_HEADINGS = {
-    "g": 0.0,
-    "t": 0.7854,
-    "r": 1.5708,
-    "e": 2.3562,
-    "d": 3.1416,
-    "c": -2.3562,
-    "v": -1.5708,
-    "b": -0.7854,
-}
-"""turtle_teleop_key's rotate_absolute goals, as it sends them (rad)."""
 
 _OWNER = "app"
 
@@ -105,33 +88,30 @@ class ControllerSlot:
 
 @dataclass
 class Teleop:
-    """turtle_teleop_key as a node of the app: arrows publish a Twist each,
-    g/t/r/e/d/c/v/b send rotate_absolute goals, f cancels."""
+    """turtle_teleop_key as a node of the app (turtletui.graph.teleop_node):
+    arrows publish a Twist each, g/t/r/e/d/c/v/b send rotate_absolute goals,
+    f cancels."""
 
     sim: Simulation
     turtle: str = "turtle1"
     goal: Any = None
+    ros: TeleopNode = field(init=False)
     node: Any = field(init=False)
     lock: Any = field(default_factory=threading.RLock)
 
     def __post_init__(self) -> None:
-        # turtle_teleop_key: an rclcpp node, cmd_vel keep last 1, reliable, volatile
-        self.node = self.sim.graph.add_node("teleop_turtle", "", _OWNER, rclcpp=True)
-        self._publisher = self.sim.graph.add_publisher(self.node, f"/{self.turtle}/cmd_vel", Twist, 1, qos=DEFAULT_QOS)
-        self.sim.graph.add_action_client(self.node, f"/{self.turtle}/rotate_absolute", RotateAbsolute)
+        self.ros = TeleopNode(self.sim.graph, _OWNER, self.sim.distro, turtle=self.turtle)
+        self.node = self.ros.node
 
     @_locked
     def drive(self, linear: float = 0.0, angular: float = 0.0) -> None:
-        msg = Twist()
-        msg.linear.x = linear * TELEOP_LINEAR
-        msg.angular.z = angular * TELEOP_ANGULAR
-        self.sim.graph.publish(self._publisher.topic, msg, None, self._publisher)
+        self.ros.publish(self.ros.key_twist(linear, angular))
 
     @_locked
     def rotate(self, key: str) -> None:
         self.sim.graph.send_goal(
             f"/{self.turtle}/rotate_absolute",
-            RotateAbsolute.Goal(theta=TELEOP_HEADINGS[key]),
+            RotateAbsolute.Goal(theta=HEADINGS[key]),
             _OWNER,
             self._accepted,
             lambda feedback: None,
