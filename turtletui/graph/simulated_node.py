@@ -37,7 +37,7 @@ from turtletui.interfaces.rcl_interfaces import (
 
 PLUMBING_DEPTH = 1000
 """rcl's depth for /rosout and /parameter_events."""
-ROSOUT_QOS = Policies(durability=1)
+ROSOUT_QOS = Policies.named("reliable", "transient_local")
 """rcl's /rosout publisher: reliable, transient local (keep last 1000)."""
 PARAMETER_EVENTS = "/parameter_events"
 USE_SIM_TIME = "use_sim_time"
@@ -56,15 +56,12 @@ def rclcpp_parameters() -> list[OwnParameter]:
     /parameter_events publisher (durability, history, depth, reliability, as
     declare_qos_parameters goes through a publisher's policies)."""
     prefix = f"qos_overrides.{PARAMETER_EVENTS}.publisher."
-    qos = [
-        (policy, value, kind)
-        for policy, value, kind in (
-            ("durability", "volatile", ParameterType.PARAMETER_STRING),
-            ("history", "keep_last", ParameterType.PARAMETER_STRING),
-            ("depth", PLUMBING_DEPTH, ParameterType.PARAMETER_INTEGER),
-            ("reliability", "reliable", ParameterType.PARAMETER_STRING),
-        )
-    ]
+    qos = (
+        ("durability", "volatile", ParameterType.PARAMETER_STRING),
+        ("history", "keep_last", ParameterType.PARAMETER_STRING),
+        ("depth", PLUMBING_DEPTH, ParameterType.PARAMETER_INTEGER),
+        ("reliability", "reliable", ParameterType.PARAMETER_STRING),
+    )
     return [
         _declared(USE_SIM_TIME, False, ParameterType.PARAMETER_BOOL),
         _declared(

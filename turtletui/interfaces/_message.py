@@ -613,8 +613,9 @@ def ros_module_name(full_name: str) -> str:
 
 def _metaclass(name: str, module: str, role: str) -> type:
     """The class of an interface class, named as rosidl's (``Metaclass_Twist``):
-    ``type(Twist)`` prints as in ROS. Pickle and copy reach classes through it
-    by their full names (``_by_name``), so that they need no ROS-named module."""
+    ``type(Twist)`` prints as in ROS. Pickle reaches a class (and so a message)
+    through it by its full name (``_by_name``), so that no process needs a
+    module named ``geometry_msgs.msg._twist`` to unpickle one."""
     meta = type(f'Metaclass_{name}', (type,), {
         '__module__': module,
         '__qualname__': f'Metaclass_{name}',
