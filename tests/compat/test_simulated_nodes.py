@@ -46,6 +46,7 @@ def main():
     log(f"publishers {{node.get_publisher_names_and_types_by_node(TARGET, '/')}}")
     log(f"subscriptions {{node.get_subscriber_names_and_types_by_node(TARGET, '/')}}")
     log(f"services {{node.get_service_names_and_types_by_node(TARGET, '/')}}")
+    log(f"clients {{node.get_client_names_and_types_by_node(TARGET, '/')}}")
     log(f"ready {{client.wait_for_services(1.0)}}")
     names = list(wait(client.list_parameters()).result.names)
     log(f"parameters {{names}}")
@@ -84,6 +85,13 @@ def rclcpp_services(node: str) -> list:
 
 
 EVENTS = ("/parameter_events", ["rcl_interfaces/msg/ParameterEvent"])
+ACTION = "/turtle1/rotate_absolute/_action/"
+ROTATE_CLIENT_TOPICS = [(f"{ACTION}feedback", ["turtlesim/action/RotateAbsolute_FeedbackMessage"]),
+                        (f"{ACTION}status", ["action_msgs/msg/GoalStatusArray"])]
+ROTATE_CLIENT_SERVICES = [(f"{ACTION}cancel_goal", ["action_msgs/srv/CancelGoal"]),
+                          (f"{ACTION}get_result", ["turtlesim/action/RotateAbsolute_GetResult"]),
+                          (f"{ACTION}send_goal", ["turtlesim/action/RotateAbsolute_SendGoal"])]
+"""What rcl_action gives turtle_teleop_key's rotate_absolute client."""
 ROSOUT = ("/rosout", ["rcl_interfaces/msg/Log"])
 COMMON_SETS = [
     "set use_sim_time=True: False {refusal!r}",
@@ -114,8 +122,9 @@ def test_a_scenario_s_teleop_turtle_is_turtle_teleop_key_s_node(controller_host)
     assert lines == [
         "nodes [('probe', '/'), ('teleop_turtle', '/'), ('turtlesim', '/')]",
         f"publishers {[EVENTS, ROSOUT, ('/turtle1/cmd_vel', ['geometry_msgs/msg/Twist'])]}",
-        f"subscriptions {[EVENTS]}",
+        f"subscriptions {[EVENTS, *ROTATE_CLIENT_TOPICS]}",
         f"services {rclcpp_services('teleop_turtle')}",
+        f"clients {ROTATE_CLIENT_SERVICES}",
         "ready True",
         f"parameters {sorted(['scale_angular', 'scale_linear', *RCLCPP_PARAMETERS])}",
         values_line({**RCLCPP_PARAMETERS, "scale_angular": 3, "scale_linear": 3}),
@@ -148,6 +157,7 @@ def test_rosbag2_s_player_and_recorder_are_rclcpp_nodes(controller_host, tmp_pat
             f"publishers {topics}",
             f"subscriptions {[EVENTS, ('/turtle1/pose', ['turtlesim/msg/Pose'])] if node.endswith('recorder') else [EVENTS]}",
             f"services {rclcpp_services(node)}",
+            "clients []",
             "ready True",
             f"parameters {list(RCLCPP_PARAMETERS)}",
             values_line(RCLCPP_PARAMETERS),
