@@ -165,7 +165,7 @@ def test_run_ros_drives_turtlesim_with_the_unchanged_course_controller(ros_pytho
         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
     )
     try:
-        done = run_ros_script(ros_python, "ros_probe.py", "60", "0", "turtle_controller")
+        done = run_ros_script(ros_python, "ros_probe.py", "60", "0", "turtle_controller", "--driven")
         time.sleep(3.0)  # a few more seconds of driving, then Ctrl-C
     finally:
         run.send_signal(signal.SIGINT)
@@ -396,7 +396,7 @@ def test_sim_ros_headless_is_turtlesim_for_the_unchanged_course_controller(ros_p
     )
     controller = subprocess.Popen([ros_python, str(PART6)], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     try:
-        done = run_ros_script(ros_python, "ros_probe.py", "60", "0", "turtle_controller")
+        done = run_ros_script(ros_python, "ros_probe.py", "60", "0", "turtle_controller", "--driven")
     finally:
         controller.send_signal(signal.SIGINT)
         controller.communicate(timeout=30)
@@ -407,7 +407,8 @@ def test_sim_ros_headless_is_turtlesim_for_the_unchanged_course_controller(ros_p
     report = json.loads(done.stdout.strip().splitlines()[-1])
     assert "turtlesim" in report["nodes"] and "turtle_controller" in report["nodes"], (report, err[-2000:])
     assert 50.0 < report["pose_rate"] < 75.0, report
-    assert report["turtle1_travel"] > 3.0, (report, err[-2000:])  # driven: about 3 s at up to 5 m/s while the probe measured
+    # driven all the while the probe measured (3 s once it moved), at 1 m/s turning and 5 m/s straight
+    assert report["turtle1_travel"] > 2.0, (report, err[-2000:])
     assert report["spawned"] == "turtle2"
     assert report["get"][0] == 10  # the probe set background_r; background_g came from --ros-args
     lines = err.splitlines()  # as turtlesim_node's, the log is on stderr
