@@ -59,22 +59,29 @@ def sentence(exc: BaseException) -> str:
     return f"{type(exc).__name__}: {str(exc).split(' (')[0]}"
 
 
-def message_classes(package: str):
+def exported(package: str):
+    """(kind, name, class) of every class the package's msg, srv and action modules export."""
     for kind in ("msg", "srv", "action"):
         try:
             module = importlib.import_module(f"{package}.{kind}")
         except ImportError:
             continue
-        for name in sorted(n for n in dir(module) if n[0].isupper() and "_" not in n):
-            cls = getattr(module, name)
-            if kind == "msg":
-                yield f"{package}/msg/{name}", cls
-            elif kind == "srv":
-                yield f"{package}/srv/{name}_Request", cls.Request
-                yield f"{package}/srv/{name}_Response", cls.Response
-            else:
-                for part in ("Goal", "Result", "Feedback"):
-                    yield f"{package}/action/{name}_{part}", getattr(cls, part)
+        for name in sorted(n for n in dir(module) if n[0].isupper()):
+            yield kind, name, getattr(module, name)
+
+
+def message_classes(package: str):
+    for kind, name, cls in exported(package):
+        if "_" in name:
+            continue  # a part (Spawn_Request): named below through its interface
+        if kind == "msg":
+            yield f"{package}/msg/{name}", cls
+        elif kind == "srv":
+            yield f"{package}/srv/{name}_Request", cls.Request
+            yield f"{package}/srv/{name}_Response", cls.Response
+        else:
+            for part in ("Goal", "Result", "Feedback"):
+                yield f"{package}/action/{name}_{part}", getattr(cls, part)
 
 
 def constant_names(cls) -> list[str]:
@@ -144,27 +151,21 @@ def definition_files(package: str) -> dict[str, str]:
 
 def interface_classes(package: str):
     """(label, class) of every interface class of a package, its parts included."""
-    for kind in ("msg", "srv", "action"):
-        try:
-            module = importlib.import_module(f"{package}.{kind}")
-        except ImportError:
-            continue
-        for name in sorted(n for n in dir(module) if n[0].isupper()):
-            cls = getattr(module, name)
-            label = f"{package}.{kind}.{name}"
-            yield label, cls
-            if "_" in name:
-                continue  # a part the module exports too (Spawn_Request): its identity only
-            parts = {"srv": ("Request", "Response", "Event"), "action": ("Goal", "Result", "Feedback", "Impl")}
-            for part in parts.get(kind, ()):
-                yield f"{label}.{part}", getattr(cls, part)
-            if kind == "action":
-                for part in ("SendGoalService", "GetResultService", "FeedbackMessage", "CancelGoalService",
-                             "GoalStatusMessage"):
-                    inner = getattr(cls.Impl, part)
-                    yield f"{label}.Impl.{part}", inner
-                    for service_part in ("Request", "Response", "Event") if part.endswith("Service") else ():
-                        yield f"{label}.Impl.{part}.{service_part}", getattr(inner, service_part)
+    for kind, name, cls in exported(package):
+        label = f"{package}.{kind}.{name}"
+        yield label, cls
+        if "_" in name:
+            continue  # a part the module exports too (Spawn_Request): its identity only
+        parts = {"srv": ("Request", "Response", "Event"), "action": ("Goal", "Result", "Feedback", "Impl")}
+        for part in parts.get(kind, ()):
+            yield f"{label}.{part}", getattr(cls, part)
+        if kind == "action":
+            for part in ("SendGoalService", "GetResultService", "FeedbackMessage", "CancelGoalService",
+                         "GoalStatusMessage"):
+                inner = getattr(cls.Impl, part)
+                yield f"{label}.Impl.{part}", inner
+                for service_part in ("Request", "Response", "Event") if part.endswith("Service") else ():
+                    yield f"{label}.Impl.{part}.{service_part}", getattr(inner, service_part)
 
 
 def identity(cls) -> dict:
