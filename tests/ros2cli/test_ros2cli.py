@@ -511,6 +511,19 @@ def test_param_list_get(sim, cli):
         "Integer value is: 1000"]
 
 
+def test_humble_nodes_have_no_type_description_parameter():
+    """start_type_description_service came with the type description service, in Iron."""
+    from turtletui.graph.teleop_node import TeleopNode
+
+    sim = Simulation(distro="humble")
+    TeleopNode(sim.graph, "teleop", "humble")
+    cli = Ros2Cli(sim)
+    expected = [f"  {name}" for name in TURTLESIM_PARAMETERS if name != "start_type_description_service"]
+    assert ok(cli, "ros2 param list /turtlesim").lines == expected
+    assert "  start_type_description_service" not in ok(cli, "ros2 param list /teleop_turtle").lines
+    assert "  use_sim_time" in ok(cli, "ros2 param list /teleop_turtle").lines
+
+
 def test_param_list_with_types_and_get_without(cli):
     types = ["integer"] * 3 + ["boolean", "integer", "string", "string", "string", "boolean", "boolean"]
     assert ok(cli, "ros2 param list /turtlesim --param-type").lines == [

@@ -50,11 +50,12 @@ def _declared(name: str, value: Any, kind: int, description: str = "", *, read_o
     return name, value, ParameterDescriptor(name=name, type=kind, description=description, read_only=read_only)
 
 
-def rclcpp_parameters() -> list[OwnParameter]:
+def rclcpp_parameters(type_descriptions: bool = True) -> list[OwnParameter]:
     """What rclcpp::Node declares, in its order: its TimeSource's ``use_sim_time``,
-    NodeTypeDescriptions' ``start_type_description_service``, and the QoS of its
-    /parameter_events publisher (durability, history, depth, reliability, as
-    declare_qos_parameters goes through a publisher's policies)."""
+    NodeTypeDescriptions' ``start_type_description_service`` (Iron on:
+    ``type_descriptions``), and the QoS of its /parameter_events publisher
+    (durability, history, depth, reliability, as declare_qos_parameters goes
+    through a publisher's policies)."""
     prefix = f"qos_overrides.{PARAMETER_EVENTS}.publisher."
     qos = (
         ("durability", "volatile", ParameterType.PARAMETER_STRING),
@@ -62,12 +63,13 @@ def rclcpp_parameters() -> list[OwnParameter]:
         ("depth", PLUMBING_DEPTH, ParameterType.PARAMETER_INTEGER),
         ("reliability", "reliable", ParameterType.PARAMETER_STRING),
     )
+    started = _declared(
+        TYPE_DESCRIPTION_PARAMETER, True, ParameterType.PARAMETER_BOOL,
+        "Start the ~/get_type_description service for this node.", read_only=True,
+    )
     return [
         _declared(USE_SIM_TIME, False, ParameterType.PARAMETER_BOOL),
-        _declared(
-            TYPE_DESCRIPTION_PARAMETER, True, ParameterType.PARAMETER_BOOL,
-            "Start the ~/get_type_description service for this node.", read_only=True,
-        ),
+        *([started] if type_descriptions else []),
         *(
             _declared(prefix + policy, value, kind, f"qos policy {{{policy}}} for publisher {{{PARAMETER_EVENTS}}}",
                       read_only=True)
@@ -76,15 +78,14 @@ def rclcpp_parameters() -> list[OwnParameter]:
     ]
 
 
-def rclpy_parameters() -> list[OwnParameter]:
-    """What an rclpy node declares itself: ``use_sim_time`` and ``start_type_description_service``."""
-    return [
-        _declared(USE_SIM_TIME, False, ParameterType.PARAMETER_BOOL),
-        _declared(
-            TYPE_DESCRIPTION_PARAMETER, True, ParameterType.PARAMETER_BOOL,
-            "If enabled, start the ~/get_type_description service.", read_only=True,
-        ),
-    ]
+def rclpy_parameters(type_descriptions: bool = True) -> list[OwnParameter]:
+    """What an rclpy node declares itself: ``use_sim_time`` and (Iron on:
+    ``type_descriptions``) ``start_type_description_service``."""
+    started = _declared(
+        TYPE_DESCRIPTION_PARAMETER, True, ParameterType.PARAMETER_BOOL,
+        "If enabled, start the ~/get_type_description service.", read_only=True,
+    )
+    return [_declared(USE_SIM_TIME, False, ParameterType.PARAMETER_BOOL), *([started] if type_descriptions else [])]
 
 
 def _ignore_event(event: Any) -> None:
@@ -116,7 +117,8 @@ class SimulatedNode:
             name, namespace, owner, parameter_setter=self.set_parameter if rclcpp else None, rclcpp=rclcpp
         )
         self._on_set = on_set
-        builtin = rclcpp_parameters() if rclcpp else rclpy_parameters()
+        served = graph.type_description_names is not None  # Iron on
+        builtin = rclcpp_parameters(served) if rclcpp else rclpy_parameters(served)
         self._builtin = {parameter for parameter, _, _ in builtin}
         self.descriptors: dict[str, ParameterDescriptor] = {}
         for parameter, value, descriptor in [*builtin, *parameters]:
@@ -126,7 +128,7 @@ class SimulatedNode:
             serve_parameters(graph, self.node, self.descriptors) if rclcpp else []
         )
         self.type_descriptions: Service | None = None
-        if graph.type_description_names is not None:  # Iron on
+        if served:
             self.type_descriptions = serve_type_descriptions(graph, self.node, graph.type_description_names)
         self.rosout: Publisher = graph.add_publisher(self.node, "/rosout", Log, PLUMBING_DEPTH, qos=ROSOUT_QOS)
         self.parameter_events: Publisher = graph.add_publisher(
