@@ -723,11 +723,14 @@ def test_hidden_names_are_typed_when_asked(cli, line, shown):
     # nothing travels there: the graph hands goals, feedback and results over itself
     (f"ros2 topic echo {ROTATE}/feedback",
      "ros2 topic echo: turtletui sends nothing on the hidden topics of action '/turtle1/rotate_absolute': "
-     "'ros2 action send_goal --feedback /turtle1/rotate_absolute TYPE GOAL' prints a goal's feedback and result"),
+     "'ros2 action send_goal --feedback /turtle1/rotate_absolute turtlesim/action/RotateAbsolute GOAL' prints a "
+     "goal's feedback and result"),
+    (f"ros2 topic pub --once {ROTATE}/feedback turtlesim/action/RotateAbsolute_FeedbackMessage",
+     "ros2 topic pub: turtletui sends nothing on the hidden topics of action '/turtle1/rotate_absolute'"),
     (f"ros2 topic hz {ROTATE}/status", "ros2 topic hz: turtletui sends nothing on the hidden topics"),
     (f"ros2 service call {ROTATE}/cancel_goal action_msgs/srv/CancelGoal",
      "ros2 service call: turtletui's actions are reached through 'ros2 action send_goal /turtle1/rotate_absolute "
-     "TYPE GOAL' (Ctrl+C cancels the goal), not through their hidden services"),
+     "turtlesim/action/RotateAbsolute GOAL' (Ctrl+C cancels the goal), not through their hidden services"),
     ("ros2 service type /turtle1/rotate_absolute/_action/sendgoal",
      "ros2 service type: service '/turtle1/rotate_absolute/_action/sendgoal' does not exist"),
 ])

@@ -117,6 +117,11 @@ def action_behind(name: str) -> str | None:
     return action if marker and action else None
 
 
+def action_type_shown(graph: Graph, action: str) -> str:
+    """The type of ``action`` as ``ros2 action send_goal`` takes it, or TYPE if no server offers it."""
+    return dict(graph.action_names_and_types()).get(action, ["TYPE"])[0]
+
+
 def hidden_error(kind: str, verb: str, name: str) -> CommandError:
     """A hidden name a verb was not told to consider, said in one line (ros2
     ``topic type`` exits 1 and ``service info`` says ``Unknown service``)."""

@@ -13,6 +13,7 @@ from turtletui.ros2cli.common import (
     CommandResult,
     absolute,
     action_behind,
+    action_type_shown,
     check_type,
     entity_or_error,
     hidden_error,
@@ -110,7 +111,8 @@ def _call(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
     action = action_behind(absolute(args.service_name))
     if action is not None and cli.graph.count_services(absolute(args.service_name)):
         raise CommandError(
-            f"turtletui's actions are reached through 'ros2 action send_goal {action} TYPE GOAL' "
+            f"turtletui's actions are reached through "
+            f"'ros2 action send_goal {action} {action_type_shown(cli.graph, action)} GOAL' "
             "(Ctrl+C cancels the goal), not through their hidden services"
         )
     if _parameter_service(cli, args.service_name) is not None:

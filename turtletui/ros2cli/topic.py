@@ -25,6 +25,7 @@ from turtletui.ros2cli.common import (
     CommandResult,
     absolute,
     action_behind,
+    action_type_shown,
     check_type,
     hidden_error,
     hint,
@@ -122,13 +123,16 @@ def _hz(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
 
 def _refuse_action_topic(cli: Ros2Cli, name: str) -> None:
     """An action's hidden feedback or status topic carries nothing in turtletui
-    (its graph hands goals, feedback and results over itself): say so, and
-    what shows them instead."""
+    (its graph hands goals, feedback and results over itself): echoing, timing
+    or publishing there would wait forever. Say so, and what shows them instead."""
     action = action_behind(name)
-    if action is not None and live_topic(cli.graph, name) is None and cli.graph.publishers_of(name):
+    graph = cli.graph
+    if action is None or live_topic(graph, name) is not None:
+        return
+    if graph.publishers_of(name) or graph.subscriptions_of(name):
         raise CommandError(
-            f"turtletui sends nothing on the hidden topics of action '{action}': "
-            f"'ros2 action send_goal --feedback {action} TYPE GOAL' prints a goal's feedback and result"
+            f"turtletui sends nothing on the hidden topics of action '{action}': 'ros2 action send_goal "
+            f"--feedback {action} {action_type_shown(graph, action)} GOAL' prints a goal's feedback and result"
         )
 
 
@@ -241,6 +245,7 @@ def _pub_arguments(parser: ArgumentParser) -> None:
 
 def _pub(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
     name = absolute(args.topic_name)
+    _refuse_action_topic(cli, name)
     cls = interface_or_error(cli, args.message_type, Message, "message")
     topic = live_topic(cli.graph, name)
     if topic is not None:
