@@ -130,7 +130,10 @@ class TopicEndpointInfo:
                 f"  Reliability: {qos.reliability.name}",
                 f"  History (Depth): {history}",
                 f"  Durability: {qos.durability.name}",
+                "  Lifespan: Infinite",  # rmw reports no lifespan, deadline or lease here: rclpy's default
+                "  Deadline: Infinite",
                 f"  Liveliness: {qos.liveliness.name}",
+                "  Liveliness lease duration: Infinite",
             ]
         )
 
