@@ -6,6 +6,7 @@ from argparse import ArgumentParser, Namespace
 from typing import TYPE_CHECKING, Any
 
 from turtletui.compat.distro import type_description_names
+from turtletui.compat.graph_info import TopicEndpointTypeEnum, endpoints_info
 from turtletui.graph.core import NS_PER_S
 from turtletui.graph.introspection import TopicInfo
 from turtletui.graph.qos import policy_names
@@ -165,20 +166,22 @@ def _info(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
         return CommandResult([f"Type: {shown.type}", f"Publisher count: {len(shown.publishers)}",
                               f"Subscription count: {len(shown.subscribers)}"])
     lines = [f"Type: {shown.type}", ""]
-    for title, kind, endpoints in (("Publisher", "PUBLISHER", publishers),
-                                   ("Subscription", "SUBSCRIPTION", subscriptions)):
+    for title, kind, endpoints in (("Publisher", TopicEndpointTypeEnum.PUBLISHER, publishers),
+                                   ("Subscription", TopicEndpointTypeEnum.SUBSCRIPTION, subscriptions)):
         lines += [f"{title} count: {len(endpoints)}", ""]
-        for endpoint in endpoints:
+        # the GIDs a program's get_*_info_by_topic gives them
+        for endpoint, info in zip(endpoints, endpoints_info(endpoints, kind), strict=True):
             reliability, durability = policy_names(endpoint.qos)
             lines += [
                 f"Node name: {endpoint.node.name}",
                 f"Node namespace: {endpoint.node.namespace or '/'}",
                 f"Topic type: {shown.type}",
                 *_hash_line(cli, shown.type),
-                f"Endpoint type: {kind}",
+                f"Endpoint type: {kind.name}",
+                f"GID: {'.'.join(format(x, '02x') for x in info.endpoint_gid)}",
                 "QoS profile:",
                 f"  Reliability: {reliability}",
-                f"  History (Depth): KEEP_LAST ({endpoint.depth})",
+                "  History (Depth): UNKNOWN",  # what Fast DDS shares of another endpoint
                 f"  Durability: {durability}",
                 "  Lifespan: Infinite",
                 "  Deadline: Infinite",
