@@ -97,8 +97,8 @@ def run_turtletui(program: Path, cwd: Path, host: str) -> Output:
 
 
 def programs() -> list[Path]:
-    """Every program of the suite, by name."""
-    return sorted(PROGRAMS.glob("*.py"))
+    """Every program of the suite, by name (``_*.py`` are modules they share)."""
+    return sorted(p for p in PROGRAMS.glob("*.py") if not p.name.startswith("_"))
 
 
 SANDBOXED_ONLY = "Sandboxed only:"

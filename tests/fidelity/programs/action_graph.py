@@ -3,6 +3,7 @@ _action/feedback and _action/status publishers and _action/send_goal, cancel_goa
 get_result services, a client's subscriptions and clients (two clients of one action, a
 client with no server), their types, counts, QoS and hashes, and their going away."""
 import rclpy
+from _discovery import spin_until
 from rclpy.action import ActionClient, ActionServer, get_action_names_and_types
 from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
@@ -22,14 +23,6 @@ def print_names(label, names_and_types):
     for name, types in names_and_types:
         print("   ", name, types)
 
-
-def spin_until(executor, condition, seconds=10.0):
-    """Spin until condition() holds (discovery takes a moment under DDS)."""
-    for _ in range(int(seconds / 0.05)):
-        if condition():
-            return True
-        executor.spin_once(timeout_sec=0.05)
-    return condition()
 
 
 def print_queries(node, label):

@@ -2,19 +2,11 @@
 every line but the GID, which the middleware makes up, for a default publisher
 and a best-effort, transient-local subscription."""
 import rclpy
+from _discovery import spin_until
 from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 from std_msgs.msg import String
-
-
-def spin_until(executor, condition, seconds=10.0):
-    """Spin until condition() holds (discovery takes a moment under DDS)."""
-    for _ in range(int(seconds / 0.05)):
-        if condition():
-            return True
-        executor.spin_once(timeout_sec=0.05)
-    return condition()
 
 
 def without_gid(info):

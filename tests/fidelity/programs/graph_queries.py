@@ -1,19 +1,11 @@
 """Graph queries between two nodes of one program: counts, names and types, and a
 destroyed service, publisher and node going away for the other node."""
 import rclpy
+from _discovery import spin_until
 from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 from std_msgs.msg import String
 from std_srvs.srv import Empty
-
-
-def spin_until(executor, condition, seconds=10.0):
-    """Spin until condition() holds (discovery takes a moment under DDS)."""
-    for _ in range(int(seconds / 0.05)):
-        if condition():
-            return True
-        executor.spin_once(timeout_sec=0.05)
-    return condition()
 
 
 def main():

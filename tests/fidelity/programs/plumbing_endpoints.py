@@ -1,18 +1,10 @@
 """The endpoints rcl gives every node besides its own: /rosout and /parameter_events
 publishers, the parameter services, and the parameters every rclpy node declares."""
 import rclpy
+from _discovery import spin_until
 from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 from std_msgs.msg import String
-
-
-def spin_until(executor, condition, seconds=10.0):
-    """Spin until condition() holds (discovery takes a moment under DDS)."""
-    for _ in range(int(seconds / 0.05)):
-        if condition():
-            return True
-        executor.spin_once(timeout_sec=0.05)
-    return condition()
 
 
 def main():

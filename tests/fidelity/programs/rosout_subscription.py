@@ -5,17 +5,10 @@ a node that logs in its /rosout callback hears that line too."""
 import os
 
 import rclpy
+from _discovery import spin_until
 from rcl_interfaces.msg import Log
 from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
-
-
-def spin_until(executor, condition, seconds=10.0):
-    for _ in range(int(seconds / 0.05)):
-        if condition():
-            return True
-        executor.spin_once(timeout_sec=0.05)
-    return condition()
 
 
 def main():

@@ -6,6 +6,7 @@ import hashlib
 import json
 
 import rclpy
+from _discovery import spin_until
 from geometry_msgs.msg import Twist
 from rclpy.action import ActionClient
 from rclpy.executors import SingleThreadedExecutor
@@ -14,15 +15,6 @@ from std_srvs.srv import SetBool, Trigger
 from turtlesim.action import RotateAbsolute
 from turtlesim.msg import Pose
 from type_description_interfaces.srv import GetTypeDescription
-
-
-def spin_until(executor, condition, seconds=10.0):
-    """Spin until condition() holds (discovery takes a moment under DDS)."""
-    for _ in range(int(seconds / 0.05)):
-        if condition():
-            return True
-        executor.spin_once(timeout_sec=0.05)
-    return condition()
 
 
 def rihs01(description):

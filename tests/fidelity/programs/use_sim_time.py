@@ -2,19 +2,12 @@
 the node subscribes to /clock and its clock reads 0 until a rosgraph_msgs Clock
 arrives, then the last one received; set false again, it reads ROS time."""
 import rclpy
+from _discovery import spin_until
 from builtin_interfaces.msg import Time
 from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rosgraph_msgs.msg import Clock
-
-
-def spin_until(executor, condition, seconds=10.0):
-    for _ in range(int(seconds / 0.05)):
-        if condition():
-            return True
-        executor.spin_once(timeout_sec=0.05)
-    return condition()
 
 
 def main():
