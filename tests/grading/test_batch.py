@@ -33,6 +33,7 @@ from turtletui.grading.engine import prepare
 from turtletui.grading.reports import render_report
 from turtletui.grading.submissions import find_submissions
 from turtletui.lessons.loader import load_lesson
+from turtletui.runtime.sandbox import Limits
 
 
 def plan_of(lesson: Path):
@@ -408,8 +409,11 @@ def test_a_lesson_sets_its_own_time_limit_and_the_grader_may_override_it(tmp_pat
     [limited] = grade_submissions(plan_of(lesson), find_submissions([klass]), jobs=1).submissions
     assert any("the submission's runs may take 1.5 s of wall time in all" in t.output for t in limited.tests)
     assert limited.score == 0.0
-    [unlimited] = grade_submissions(plan_of(lesson), find_submissions([klass]), jobs=2, time_limit=60).submissions
-    assert unlimited.score == MAX_SCORE
+    # its 12 ms per pose is close to real time: on a busy machine the pace
+    # rule could stop it, and that is not what this test is about
+    [unlimited] = grade_submissions(plan_of(lesson), find_submissions([klass]), jobs=2, time_limit=60,
+                                    limits=Limits(realtime_lag=None)).submissions
+    assert unlimited.score == MAX_SCORE, [(t.check, t.output[:300]) for t in unlimited.tests if t.score < t.max_score]
 
 
 def test_a_time_limit_that_is_not_a_positive_number_is_a_one_line_error(tmp_path: Path, lesson: Path):
