@@ -751,6 +751,8 @@ def test_a_service_with_only_clients_is_listed_as_ros2_lists_it(sim, cli):
     assert "/nobody_serves" in ok(cli, "ros2 service list").lines
     assert ok(cli, "ros2 service info /nobody_serves").lines == [
         "Type: std_srvs/srv/Empty", "Clients count: 1", "Services count: 0"]
+    called = cli.run("ros2 service call /nobody_serves std_srvs/srv/Empty")
+    assert called.error and called.lines == ["ros2 service call: service '/nobody_serves' is not available"]
 
 
 # -- ros2 interface ----------------------------------------------------------------

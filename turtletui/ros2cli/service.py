@@ -54,11 +54,12 @@ def _name_arguments(help_text: str):
 
 def _parameter_service(cli: Ros2Cli, name: str) -> Any:
     """A service rcl gives every node as ros2 shows it (e.g. get_type_description)
-    that turtletui's graph does not have, or None."""
+    that turtletui's graph does not have, or None. One that only clients wait
+    for (ros2 lists those too) is not served at all."""
     name = absolute(name)
     if name in cli.graph.services:
         return None
-    return next((s for s in ros_view(cli).services if s.name == name), None)
+    return next((s for s in ros_view(cli).services if s.name == name and s.server), None)
 
 
 def _shown_service(cli: Ros2Cli, args: Namespace, verb: str) -> ServiceInfo:
