@@ -125,7 +125,7 @@ class TopicEndpointInfo:
                 f"Topic type: {self.topic_type}",
                 f"Topic type hash: {self.topic_type_hash}",
                 f"Endpoint type: {self.endpoint_type.name}",
-                f"GID: {'.'.join(format(x, '02x') for x in self.endpoint_gid)}",
+                f"GID: {gid_text(self.endpoint_gid)}",
                 "QoS profile:",
                 f"  Reliability: {qos.reliability.name}",
                 f"  History (Depth): {history}",
@@ -160,6 +160,11 @@ def endpoints_info(
             )
         )
     return infos
+
+
+def gid_text(gid: Sequence[int]) -> str:
+    """A GID as rclpy and ros2 print it: its bytes in hex, dot-separated."""
+    return ".".join(format(x, "02x") for x in gid)
 
 
 def _gid(node: str, topic: str, kind: TopicEndpointTypeEnum, nth: int) -> list[int]:

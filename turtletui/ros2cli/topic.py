@@ -6,7 +6,7 @@ from argparse import ArgumentParser, Namespace
 from typing import TYPE_CHECKING, Any
 
 from turtletui.compat.distro import type_description_names
-from turtletui.compat.graph_info import TopicEndpointTypeEnum, endpoints_info
+from turtletui.compat.graph_info import TopicEndpointTypeEnum, endpoints_info, gid_text
 from turtletui.graph.core import NS_PER_S
 from turtletui.graph.introspection import TopicInfo
 from turtletui.graph.qos import policy_names
@@ -178,7 +178,7 @@ def _info(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
                 f"Topic type: {shown.type}",
                 *_hash_line(cli, shown.type),
                 f"Endpoint type: {kind.name}",
-                f"GID: {'.'.join(format(x, '02x') for x in info.endpoint_gid)}",
+                f"GID: {gid_text(info.endpoint_gid)}",
                 "QoS profile:",
                 f"  Reliability: {reliability}",
                 "  History (Depth): UNKNOWN",  # what Fast DDS shares of another endpoint
