@@ -46,7 +46,12 @@ DEFAULT_TIME_LIMIT = 300.0
 """Wall-clock seconds all the runs of one submission may take together, unless
 the lesson (``time_limit``) or the grader (``--time-limit``) says otherwise.
 An honest controller needs a few seconds; a run of each scenario may besides
-take at most its own simulated duration."""
+take at most its own simulated duration and :data:`RUN_GRACE` more."""
+RUN_GRACE = 3.0
+"""Wall seconds a run may take beyond its simulated duration: the pace rule's
+default lag (``Limits.realtime_lag``), so that a controller the pace rule lets
+fall that far behind real time (on a busy grading machine, with start-up) is
+not stopped first by its run's limit."""
 PROGRESS_EVERY = 10.0
 """Seconds between progress lines about a submission still being graded."""
 KILLED_RUN = "not judged: the process grading this run was killed (by the controller?)"
@@ -285,7 +290,8 @@ def grade_submissions(
     ``workdir`` may map a submission to a private copy to run (see integrity).
     ``time_limit``: wall seconds all the runs of one submission may take
     (default: the lesson's ``time_limit``, else :data:`DEFAULT_TIME_LIMIT`);
-    each run besides may take its simulated duration. ``on_progress(student,
+    each run besides may take its simulated duration and :data:`RUN_GRACE`
+    more. ``on_progress(student,
     text)`` is told every ``progress_every`` seconds about a submission still
     being graded. ``backend`` runs the runs instead of ``jobs`` local workers.
     KeyboardInterrupt propagates after the workers are stopped; every result
@@ -409,9 +415,11 @@ class _SubmissionClock:
         if left <= 0:
             return None
         duration = self.plan.runs[index].scenario.duration
-        if left < duration:
+        if left < duration + RUN_GRACE:
             return left, f"the submission's runs may take {self.limit:g} s of wall time in all (its time limit)"
-        return duration, f"a run may take its simulated duration ({duration:g} s) in wall time"
+        return duration + RUN_GRACE, (
+            f"a run may take its simulated duration ({duration:g} s) and {RUN_GRACE:g} s more in wall time"
+        )
 
     def spent(self, student: str) -> str:
         """Why a run of ``student`` was not run."""
