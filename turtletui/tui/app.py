@@ -301,6 +301,7 @@ class TurtleApp(App):
             from turtletui.runtime.replay import install_replay
 
             install_replay(self.session.sim, self._replay)
+            self.session.hold_at_ns = round(self._replay.duration * 1e9)
         self.cli = Ros2Cli(self.session.sim)
         self.terminal = Terminal(self.cli)
         if self.progress.warning:
@@ -339,9 +340,9 @@ class TurtleApp(App):
     def _tick(self, now: float) -> None:
         """One step of the simulation clock (the ticker's thread, holding session.lock)."""
         session = self.session
+        holding = session.hold_at_ns is not None
         session.advance(now)
-        if self._replay is not None and not session.paused and session.t >= self._replay.duration:
-            session.toggle_pause()  # the recording is over: hold its last frame
+        if holding and session.hold_at_ns is None:  # the recording is over: its last frame is held
             session.sim.graph.log("turtletui", INFO, "replay finished: space resumes the simulation")
 
     def _frame(self) -> None:

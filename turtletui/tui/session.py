@@ -176,6 +176,9 @@ class LiveSession:
         """Where turtles ran into walls and obstacles lately (the arena marks them)."""
         self._build(world)
         self.paused = False
+        self.hold_at_ns: int | None = None
+        """Simulated instant (ns) at which the clock pauses once it gets there
+        (a replay's end, so that its last frame is held exactly); then None."""
         self.speed = 1.0
         self._ros_args = list(ros_args)
         if self._ros_args and self._ros_args[0] != "--ros-args":
@@ -265,9 +268,7 @@ class LiveSession:
         if last is None or self.paused or not self._started:
             return
         elapsed = min(max(now - last, 0.0), MAX_CATCH_UP)
-        self._target_ns += round(elapsed * self.speed * 1e9)
-        self.sim.run_until(self._target_ns)
-        self._watch_controllers()
+        self._run_to(self._target_ns + round(elapsed * self.speed * 1e9))
 
     @_locked
     def toggle_pause(self) -> bool:
@@ -278,8 +279,14 @@ class LiveSession:
     def step(self) -> None:
         """One 16 ms step (pauses first)."""
         self.paused = True
-        self._target_ns = self.sim.graph.now_ns + round(DT * 1e9)
-        self.sim.run_until(self._target_ns)
+        self._run_to(self.sim.graph.now_ns + round(DT * 1e9))
+
+    def _run_to(self, target_ns: int) -> None:
+        hold = self.hold_at_ns
+        if hold is not None and target_ns >= hold:
+            target_ns, self.hold_at_ns, self.paused = hold, None, True
+        self._target_ns = target_ns
+        self.sim.run_until(target_ns)
         self._watch_controllers()
 
     @_locked
