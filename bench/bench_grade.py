@@ -26,7 +26,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "bench"))
 
-from bench_core import cpu_model  # noqa: E402
+from bench_core import as_installed, cpu_model  # noqa: E402
 
 REFERENCE = ROOT / "plugins" / "reference" / "turtle_controller.py"
 WRONG = ROOT / "tests" / "lessons" / "solutions" / "part6"
@@ -46,6 +46,7 @@ def main() -> None:
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--repeats", type=int, default=5, help="times one submission is graded (median shown)")
     args = parser.parse_args()
+    as_installed()
     same_user = ["--same-user"] if os.geteuid() == 0 else []
     print(f"machine: {os.cpu_count()} CPUs, {cpu_model()}, Python {sys.version.split()[0]}")
     with tempfile.TemporaryDirectory() as tmp:

@@ -36,7 +36,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "bench"))
 
-from bench_core import baseline_wall, cpu_model, median_of, ticks_for  # noqa: E402
+from bench_core import as_installed, baseline_wall, cpu_model, median_of, ticks_for  # noqa: E402
 
 from turtletui.api import run  # noqa: E402
 from turtletui.runtime.loader import ControllerSpec  # noqa: E402
@@ -103,6 +103,7 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeats", type=int, default=3)
     repeats = parser.parse_args().repeats
+    as_installed()
     print(f"machine: {platform.platform()}")
     print(f"cpu:     {cpu_model()} ({os.cpu_count()} cores), load {os.getloadavg()[0]:.1f}")
     print(f"python:  {sys.version.split()[0]} ({platform.python_implementation()})")
