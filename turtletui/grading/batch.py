@@ -291,11 +291,10 @@ def grade_submissions(
     ``time_limit``: wall seconds all the runs of one submission may take
     (default: the lesson's ``time_limit``, else :data:`DEFAULT_TIME_LIMIT`);
     each run besides may take its simulated duration and :data:`RUN_GRACE`
-    more. ``on_progress(student,
-    text)`` is told every ``progress_every`` seconds about a submission still
-    being graded. ``backend`` runs the runs instead of ``jobs`` local workers.
-    KeyboardInterrupt propagates after the workers are stopped; every result
-    finished before it is already saved.
+    more. ``on_progress(student, text)`` is told every ``progress_every``
+    seconds about a submission still being graded. ``backend`` runs the runs
+    instead of ``jobs`` local workers. KeyboardInterrupt propagates after the
+    workers are stopped; every result finished before it is already saved.
     """
     results: dict[str, SubmissionResult] = {}
     pending: dict[str, _Pending] = {}
