@@ -192,3 +192,19 @@ def test_min_clearance_counts_obstacles_too():
     t = trace([(5.0, 5.0), (6.0, 5.0)], obstacles=(Circle(8.0, 5.0, 1.5), Box(5.0, 6.0, 6.0, 7.0)))
     verdict = judge("min_clearance", t, min=0.6)
     assert not verdict.passed and "0.50 m" in verdict.measured  # circle at 6.5, 0.5 m from x = 6
+
+
+def test_a_turtle_no_command_reached_is_told_to_look_at_the_topic():
+    still = [(5.5, 5.5)] * 20
+    silent = trace(still)
+    silent.poses["turtle1"][:, 4] = 0.0  # standing: no forward speed
+    zero_twists = trace(still, commands={"turtle1": np.zeros((20, 4))})
+    zero_twists.poses["turtle1"][:, 4] = 0.0
+    note = "nothing was published on /turtle1/cmd_vel (is that the topic your node publishes on?)"
+    for name, thresholds in (("distance", {"min": 1.0}), ("time_moving", {"min": 0.5}), ("circle", {})):
+        verdict = judge(name, silent, **thresholds)
+        assert not verdict.passed and verdict.measured.endswith(note), (name, verdict.measured)
+        # zero Twists did reach it: the topic is right, the numbers are not
+        assert "nothing was published" not in judge(name, zero_twists, **thresholds).measured
+    # a turtle that moved was moved by something (a teleop driver, a teleport)
+    assert "nothing was published" not in judge("distance", trace([(5.0, 5.0), (5.5, 5.0)]), min=9.0).measured

@@ -107,7 +107,31 @@ def test_the_counter_is_read_by_the_pattern_not_the_first_number_of_a_line():
     verdict = judge("log_counter", trace(logs=lines), pattern="counter", min=4)
     assert verdict.passed  # from where "counter" matches on: the counter itself
     verdict = judge("log_counter", trace(logs=lines), min=4)
-    assert not verdict.passed and "went from 3 to 1" in verdict.measured
+    assert not verdict.passed and "went from 1 to 1" in verdict.measured
+
+
+def test_another_kind_of_line_ending_with_a_number_does_not_break_the_counter():
+    # a right node that also logs its uptime every tick ("uptime ms: 1000")
+    lines = [
+        record
+        for i in range(6)
+        for record in (log(f"Hello {i}", t=1.0 + i), log(f"uptime ms: {1000 * (i + 1)}", t=1.0 + i))
+    ]
+    assert judge("log_counter", trace(logs=lines), pattern=COUNTER, min=4).passed
+    verdict = judge("log_period", trace(logs=lines), pattern=COUNTER, min=4, max_period=2.0)
+    assert verdict.passed and "6 log lines" in verdict.measured
+
+
+def test_both_checks_judge_the_same_kind_so_two_halves_make_no_counter():
+    # a burst that counts from __init__, beside a timer whose numbers do not count
+    burst = [log(f"Hello {i}", t=0.0) for i in range(10)]
+    ticks = [log(f"tick {1000 * i}", t=1.0 + i) for i in range(8)]
+    logs = burst + ticks
+    assert judge("log_counter", trace(logs=logs), pattern=COUNTER, min=4).passed
+    verdict = judge("log_period", trace(logs=logs), pattern=COUNTER, min=4)
+    assert not verdict.passed and "in bursts" in verdict.measured
+    one = judge("log_period", trace(logs=[log("Hello 0", t=1.0)]), pattern=COUNTER, min=4)
+    assert "1 log line matching" in one.measured
 
 
 # -- log_pose ----------------------------------------------------------------------------

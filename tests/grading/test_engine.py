@@ -15,6 +15,7 @@ from turtletui.grading.engine import (
     prepare,
     random_start,
     scenario_runs,
+    twin_start,
 )
 from turtletui.lessons.loader import load_lesson
 from turtletui.runtime.loader import ControllerSpec
@@ -331,6 +332,62 @@ def test_a_scenario_can_drive_the_turtle_for_a_node_that_only_watches(tmp_path):
     assert by_name["distance"].passed, by_name["distance"].output  # 1 m/s for 2 s
     # the scenario's own commands are not the controller's
     assert by_name["commands_per_pose"].passed and "commands per pose: 0" in by_name["commands_per_pose"].output
+
+
+SLOW_LOOP = """\
+import rclpy
+from rclpy.node import Node
+from geometry_msgs.msg import Twist
+from turtlesim.msg import Pose
+
+
+class SlowAvoider(Node):
+    def __init__(self):
+        super().__init__("slow_avoider")
+        self.pose = None
+        self.pub = self.create_publisher(Twist, "/turtle1/cmd_vel", 10)
+        self.create_subscription(Pose, "/turtle1/pose", self.on_pose, 10)
+        self.create_timer(1.0, self.decide)
+
+    def on_pose(self, pose):
+        self.pose = pose
+
+    def decide(self):
+        if self.pose is None:
+            return
+        cmd = Twist()
+        if 2.0 < self.pose.x < 9.0 and 2.0 < self.pose.y < 9.0:
+            cmd.linear.x = 5.0
+        else:
+            cmd.linear.x, cmd.angular.z = 1.0, 1.5
+        self.pub.publish(cmd)
+
+
+def main():
+    rclpy.init()
+    rclpy.spin(SlowAvoider())
+"""
+
+
+def test_a_twin_run_starts_facing_a_wall_where_a_slow_closed_loop_reacts_at_once(tmp_path):
+    from turtletui.grading.engine import TWIN_WALL_DISTANCE
+    from turtletui.sim.constants import ARENA_SIZE
+
+    for seed in range(40):
+        x, y, theta = twin_start(seed, (5.5, 5.5, 0.0))
+        from_wall = min(x, y, ARENA_SIZE - x, ARENA_SIZE - y)
+        assert from_wall == pytest.approx(TWIN_WALL_DISTANCE)
+        wall = (x + TWIN_WALL_DISTANCE * math.cos(theta), y + TWIN_WALL_DISTANCE * math.sin(theta))
+        assert min(wall[0], wall[1], ARENA_SIZE - wall[0], ARENA_SIZE - wall[1]) < TWIN_WALL_DISTANCE / 2  # facing it
+    # one of two fixed Twists, chosen once a second from the latest pose: ten
+    # commands in the window, the same ten from a start in the open (6 of 9
+    # Part 6 runs called it an open loop), never from one facing a wall
+    path = tmp_path / "slow_loop.py"
+    path.write_text(SLOW_LOOP)
+    random_starts = '[[scenarios]]\nname = "r"\nstart = "random"\nseeds = [1, 2, 7, 101, 102, 103]\nduration = 10.0\n'
+    plan = prepare(load_lesson(lesson(tmp_path, random_starts + '[[checks]]\nname = "closed_loop"\n')))
+    result = grade_controllers(plan, [ControllerSpec(name="slow_loop", path=path)])
+    assert all(test.passed for test in result.tests), [t.output for t in result.tests]
 
 
 def test_a_twin_run_starts_elsewhere_with_the_same_seed(tmp_path):

@@ -409,3 +409,19 @@ def test_a_check_that_was_not_judged_is_not_shown_as_failed():
     assert "1 of 2 checks failed, 1 not judged" in text
     assert "✗ distance [centre]" in text and "- no_crash: not judged [centre]" in text
     assert "✗ no_crash" not in text
+
+
+def test_a_crash_is_not_hidden_behind_the_runs_where_its_check_was_not_judged():
+    # go-to-goal's math.atan(dy / dx): no goal reached in the first run (so
+    # no_crash is not judged there), a ZeroDivisionError in the second
+    waiting = "not judged: no_crash counts only in runs where time_to_goal passes; here it did not"
+    crash = "controller go.py crashed at t=0.100 s: ZeroDivisionError: float division by zero"
+    tests = [
+        make_test("no_crash", "goal to the left", 0.0, 0.5, output=waiting),
+        make_test("no_crash", "goal behind", 0.0, 0.5, output=crash),
+    ]
+    sub = SubmissionResult(submission="subs/atan.py", student="atan", score=0.0, max_score=1.0, tests=tests)
+    text = reports.render_table(single(sub), width=200)
+    assert "✗ no_crash [goal behind]" in text and "ZeroDivisionError" in text
+    assert "- no_crash: not judged [goal to the left]" in text and "counts only in runs" in text
+    assert "[goal to the left; goal behind]" not in text

@@ -52,3 +52,11 @@ def test_the_starter_runs_but_goes_nowhere(grade):
     failures = failed(result)
     assert "no_crash" not in failures and "wall_hits" not in failures
     assert set(failures) == {"time_to_goal", "final_error"}
+
+
+def test_an_error_never_wrapped_spins_when_the_goal_is_due_west(grade):
+    result = grade(LESSON, HERE / "no_wrap.py")
+    failures = failed(result)
+    assert failures["time_to_goal"] == {"goal due west"}
+    assert "math.atan2(math.sin(e), math.cos(e))" in feedback(result, "time_to_goal")
+    assert result.score < result.max_score

@@ -49,9 +49,9 @@ def test_the_part6_lesson_loads():
     assert "+++" not in lesson.body
     assert lesson.starter_path == PART6.parent / "part6_starter.py"
     assert lesson.starter_path.is_file()
-    assert [c.name for c in lesson.checks] == ["wall_hits", "no_crash", "closed_loop", "distance"]
+    assert [c.name for c in lesson.checks] == ["wall_hits", "no_crash", "closed_loop", "distance", "coverage"]
     assert lesson.checks[0].thresholds == {"max": 0} and lesson.checks[0].weight == 5.0
-    assert lesson.checks[0].requires == ("distance", "closed_loop")
+    assert lesson.checks[0].requires == ("distance", "coverage", "closed_loop")
     assert "/*/teleport_absolute" in lesson.forbidden_services
     assert lesson.checks[0].line > 1
     by_name = {s.name: s for s in lesson.scenarios}

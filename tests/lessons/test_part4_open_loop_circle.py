@@ -69,3 +69,11 @@ def test_the_starter_runs_without_crashing(grade):
     result = grade(LESSON, STARTER)
     assert "no_crash" not in failed_checks(result)
     assert "time_moving" in failed_checks(result)
+
+
+def test_a_misspelt_topic_is_named_as_the_likely_cause(grade):
+    result = grade(LESSON, HERE / "misspelt_topic.py")
+    assert failed_checks(result) == {"circle", "time_moving"}
+    text = feedback_of(result, "circle")[0]
+    assert "barely moved" in text and "nothing was published on /turtle1/cmd_vel" in text
+    assert result.score == 0.0

@@ -35,7 +35,7 @@ def test_an_open_loop_timer_fails_the_closed_loop_check(grade):
     text = feedback_of(result, "closed_loop")[0]
     assert "the same" in text and "at the same times" in text and "an open loop" in text
     assert "pose callback" in text
-    # running without a crash is not the task: only the distance it drove scores
+    # running without a crash is not the task: only driving round the arena scores
     assert "no_crash" in not_judged(result) and result.score == 1.0
 
 
@@ -51,3 +51,12 @@ def test_hidden_scenarios_are_graded_but_not_described(grade):
     hidden = [t for t in result.tests if t.hidden]
     assert hidden and all(t.scenario.startswith("hidden ") for t in hidden)
     assert not any("101" in t.name or "seed" in t.name for t in hidden)
+
+
+def test_turning_in_the_open_and_racing_near_the_walls_scores_little(grade):
+    # a closed loop (its twin, facing a wall, races where it circles here), and
+    # 60 m of driving, but round and round its start: it never crosses the arena
+    result = grade(LESSON, HERE / "turns_in_the_open.py")
+    assert "coverage" in failed_checks(result) and "closed_loop" not in failed_checks(result)
+    assert any("the condition is not the wrong way round" in text for text in feedback_of(result, "coverage"))
+    assert result.score <= 0.3 * result.max_score

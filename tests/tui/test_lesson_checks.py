@@ -213,3 +213,14 @@ def test_the_check_key_is_on_the_key_bar():
     assert "k" in [hint.key for hint in fit_keys(APP_KEYS, 80)]
 
 
+
+
+def test_describe_shows_a_runs_failure_not_another_runs_reason_for_not_judging():
+    waiting = "not judged: no_crash counts only in runs where time_to_goal passes; here it did not"
+    tests = [
+        {"check": "no_crash", "scenario": "left", "status": "failed", "output": waiting},
+        {"check": "no_crash", "scenario": "behind", "status": "failed", "output": "crashed: ZeroDivisionError"},
+    ]
+    text = describe_report(report(tests))
+    assert "- ✗ `no_crash`: failed in 1 of 2 runs (behind), not judged in 1 (left)" in text
+    assert "  > crashed: ZeroDivisionError" in text and "counts only in runs" not in text

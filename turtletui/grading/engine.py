@@ -181,17 +181,39 @@ def scenario_runs(
 
 TWIN_APART = 2.0
 """Metres at least between a run's start and its twin's."""
+TWIN_WALL_DISTANCE = 1.0
+"""Metres from a wall at which a twin run starts, facing it."""
+TWIN_HEADING_SPREAD = math.pi / 6
+"""Radians either side of straight at the wall that a twin's heading is drawn from."""
 
 
 def twin_start(
     seed: int, start: tuple[float, float, float], obstacles: Sequence[Any] = ()
 ) -> tuple[float, float, float]:
-    """Where the twin of a run with this seed and start begins: a random start
-    drawn from the seed, at least :data:`TWIN_APART` metres from ``start``."""
-    for attempt in range(1, 1000):
-        twin = random_start(seed * 1_000_003 + attempt, obstacles=obstacles)
-        if math.hypot(twin[0] - start[0], twin[1] - start[1]) >= TWIN_APART:
-            return twin
+    """Where the twin of a run with this seed and start begins: drawn from the
+    seed, :data:`TWIN_WALL_DISTANCE` from one of the walls and facing it, at
+    least :data:`TWIN_APART` metres from ``start`` (and clear of obstacles).
+
+    There any loop that watches the pose or the scan must react at once,
+    whatever its rate, gains or margins; from a start in the open, a slow loop
+    that sends one of two fixed Twists (a 1 Hz timer: ten commands in the
+    window) can happen to send the same ones and be called an open loop.
+    An open loop sends the same commands from anywhere."""
+    from turtletui.sim.constants import ARENA_SIZE
+    from turtletui.sim.obstacles import nearest_distance
+
+    rng = random.Random(seed * 1_000_003)
+    near, far = TWIN_WALL_DISTANCE, ARENA_SIZE - TWIN_WALL_DISTANCE
+    for _ in range(1000):
+        along = rng.uniform(RANDOM_START_MARGIN, ARENA_SIZE - RANDOM_START_MARGIN)
+        x, y, facing = rng.choice(
+            [(near, along, math.pi), (far, along, 0.0), (along, near, -math.pi / 2), (along, far, math.pi / 2)]
+        )
+        theta = math.remainder(facing + rng.uniform(-TWIN_HEADING_SPREAD, TWIN_HEADING_SPREAD), math.tau)
+        if math.hypot(x - start[0], y - start[1]) >= TWIN_APART and (
+            not obstacles or nearest_distance(obstacles, x, y) >= OBSTACLE_START_CLEARANCE
+        ):
+            return (x, y, theta)
     raise GradingError(f"no start {TWIN_APART} m from ({start[0]:.2f}, {start[1]:.2f}) for a twin run (seed {seed})")
 
 

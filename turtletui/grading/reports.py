@@ -519,10 +519,10 @@ def _table(report: GradeReport) -> Any:
         if sub.graded:
             summary.append(f" ({_printable(sub.graded)})", style="dim")
         table.add_row(Text(_printable(sub.student), style="bold"), score, summary)
-        for check, tests in _failed_by_check(sub.tests).items():
+        for (check, judged), tests in _failed_by_check(sub.tests).items():
             first = tests[0]
             where = "; ".join(t.scenario for t in tests)
-            if any(t.judged for t in tests):
+            if judged:
                 feedback = Text(f"✗ {_printable(check)} [{_printable(where)}]", style="red")
             else:  # it earned nothing, but it did not fail: the output says what it waits for
                 feedback = Text(f"- {_printable(check)}: not judged [{_printable(where)}]", style="yellow")
@@ -540,12 +540,17 @@ def _table(report: GradeReport) -> Any:
     return Group(table, summary)
 
 
-def _failed_by_check(tests: Sequence[TestResult]) -> dict[str, list[TestResult]]:
-    """Failed tests grouped by check, in the lesson's order."""
-    grouped: dict[str, list[TestResult]] = {}
-    for test in tests:
-        if not test.passed:
-            grouped.setdefault(test.check, []).append(test)
+def _failed_by_check(tests: Sequence[TestResult]) -> dict[tuple[str, bool], list[TestResult]]:
+    """Failed tests grouped by check, in the lesson's order, the runs where it
+    failed apart from those where it was not judged: each group's first output
+    then speaks for all of them (a crash is never hidden behind a "not judged")."""
+    failed = [test for test in tests if not test.passed]
+    grouped: dict[tuple[str, bool], list[TestResult]] = {}
+    for check in _checks_of(failed):
+        for judged in (True, False):
+            runs = [test for test in failed if test.check == check and test.judged is judged]
+            if runs:
+                grouped[check, judged] = runs
     return grouped
 
 

@@ -195,6 +195,10 @@ def graded_score(report: dict) -> tuple[str, float, float] | None:
         return None
 
 
+def _where(tests: list[dict]) -> str:
+    return "; ".join(t["scenario"] for t in tests)
+
+
 _UNREADABLE = "## Your checks\n\n**The checks could not run:** the grader's answer was not readable.\n"
 
 
@@ -218,13 +222,20 @@ def describe_report(report: dict) -> str:
         if not failed:
             lines.append(f"- ✓ `{check}`: passed in {'its only run' if len(group) == 1 else f'all {len(group)} runs'}")
             continue
-        where = "; ".join(t["scenario"] for t in failed)
-        if all(str(t.get("output", "")).startswith(NOT_JUDGED) for t in failed):
-            lines.append(f"- – `{check}`: not judged in {len(failed)} of {plural(len(group), 'run')} ({where})")
+        unjudged = [t for t in failed if str(t.get("output", "")).startswith(NOT_JUDGED)]
+        judged = [t for t in failed if t not in unjudged]
+        runs = plural(len(group), "run")
+        if judged:
+            line = f"- ✗ `{check}`: failed in {len(judged)} of {runs} ({_where(judged)})"
+            if unjudged:
+                line += f", not judged in {len(unjudged)} ({_where(unjudged)})"
         else:
-            lines.append(f"- ✗ `{check}`: failed in {len(failed)} of {plural(len(group), 'run')} ({where})")
+            line = f"- – `{check}`: not judged in {len(unjudged)} of {runs} ({_where(unjudged)})"
+        lines.append(line)
+        # what a run where it failed measured, not why another was not judged;
         # each line its own quoted paragraph: Markdown would run them together
-        lines.append("\n  >\n".join(f"  > {line}" for line in (failed[0].get("output") or "").splitlines()))
+        first = (judged or unjudged)[0]
+        lines.append("\n  >\n".join(f"  > {text}" for text in (first.get("output") or "").splitlines()))
     if submission.get("recordings"):
         lines += ["", "Watch a failed run again:", ""]
         lines += [f"- `turtletui replay {_short(path)}`" for path in submission["recordings"]]

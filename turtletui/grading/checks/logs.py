@@ -20,6 +20,7 @@ from turtletui.grading.checks.base import (
 )
 from turtletui.grading.trace import Trace
 from turtletui.graph.logs import LEVEL_NAMES
+from turtletui.messages import plural
 
 _LOG = {"pattern": "pattern", "node": "text", "level": "text"}
 
@@ -69,23 +70,56 @@ def _counter(pattern: re.Pattern[str], text: str) -> int | None:
     return int(found.group()) if found else None
 
 
+def _kind(text: str) -> str:
+    """A log line's words with its numbers left out: "Hello 3" and "Hello 4"
+    are lines of one kind, "uptime ms: 3000" of another."""
+    return _NUMBER.sub("#", text)
+
+
+def _counter_lines(trace: Trace, th: Mapping[str, Any]) -> list[Any]:
+    """The matching lines log_counter and log_period judge: the lines of one
+    kind, so that a node logging another line that ends with a number beside
+    its counter ("uptime ms: 3000") is judged on its counter. Of the kinds, the
+    one that counts up and comes one per period; else one that counts up (a
+    burst of "Hello 0..9" beside a timer's "tick 1000" is judged as a burst);
+    else one per period; else the one with the most lines."""
+    kinds: dict[str, list[Any]] = {}
+    for record in _matching_logs(trace, th):
+        kinds.setdefault(_kind(record.msg), []).append(record)
+    if not kinds:
+        return []
+    return max(
+        kinds.values(),
+        key=lambda lines: (_counts_up(lines, th).passed, _one_per_period(lines, th).passed, len(lines)),
+    )
+
+
+def _matching(th: Mapping[str, Any]) -> str:
+    return f" matching {th['pattern']!r}" if "pattern" in th else ""
+
+
 @check(
     "log_counter",
     "The matching log lines carry a counter that goes up by one each line (at least `min` lines); "
     "the counter is the first group of `pattern` (e.g. '(\\d+)\\W*$': the number that ends the "
-    "line), or else the first integer from where the pattern matches.",
+    "line), or else the first integer from where the pattern matches. Lines of one kind are judged "
+    "(the same words around the numbers): other lines with a number do not break the counter.",
     {**_LOG, "min": "number"},
 )
 def log_counter(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    return _counts_up(_counter_lines(trace, th), th)
+
+
+def _counts_up(records: list[Any], th: Mapping[str, Any]) -> Verdict:
     pattern = re.compile(th.get("pattern", ""))
     numbers = []
-    for record in _matching_logs(trace, th):
+    for record in records:
         number = _counter(pattern, record.msg)
         if number is not None:
             numbers.append(number)
     need = th.get("min", 3)
     if len(numbers) < need:
-        return Verdict(False, f"{len(numbers)} log lines with a number (needs >= {number_text(need)})")
+        return Verdict(False, f"{plural(len(numbers), 'log line')} with a number (needs >= {number_text(need)})")
     steps = [b - a for a, b in zip(numbers, numbers[1:], strict=False)]
     if any(step != 1 for step in steps):
         bad = next(i for i, step in enumerate(steps) if step != 1)
@@ -97,15 +131,20 @@ def log_counter(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     "log_period",
     "The matching log lines come one per period, as a timer's do: at least `min` of them "
     "(default 3), every gap within `tolerance` (a fraction, default 0.1) of the median gap, "
-    "which must lie between `min_period` and `max_period` seconds when given.",
+    "which must lie between `min_period` and `max_period` seconds when given. Lines of one kind "
+    "are judged, as by log_counter.",
     {**_LOG, "min": "number", "tolerance": "number", "min_period": "number", "max_period": "number"},
 )
 def log_period(trace: Trace, th: Mapping[str, Any]) -> Verdict:
-    times = np.array([record.t for record in _matching_logs(trace, th)], dtype=float)
+    return _one_per_period(_counter_lines(trace, th), th)
+
+
+def _one_per_period(records: list[Any], th: Mapping[str, Any]) -> Verdict:
+    times = np.array([record.t for record in records], dtype=float)
     need = th.get("min", 3)
-    what = f"log lines matching {th['pattern']!r}" if "pattern" in th else "log lines"
     if len(times) < max(need, 2):
-        return Verdict(False, f"{len(times)} {what} (needs >= {number_text(max(need, 2))})")
+        return Verdict(False, f"{plural(len(times), 'log line')}{_matching(th)} (needs >= {number_text(max(need, 2))})")
+    what = f"log lines{_matching(th)}"
     gaps = np.diff(times)
     period = float(np.median(gaps))
     if period <= 0.0:

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -56,9 +57,22 @@ def mean_speed(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     return measured("mean speed:", bounds(speed, th, " m/s"))
 
 
+def _unheard(trace: Trace, verdict: Verdict, turtle: str, moved: bool) -> Verdict:
+    """A failed verdict of a turtle that did not move and that no command
+    reached, told so: a node publishing on a misspelt topic (/turtle/cmd_vel)
+    raises no error, and "it barely moved" alone sends the student looking at
+    their numbers."""
+    if verdict.passed or moved or len(trace.command_array(turtle)):
+        return verdict
+    note = f"; nothing was published on /{turtle}/cmd_vel (is that the topic your node publishes on?)"
+    return replace(verdict, measured=verdict.measured + note)
+
+
 @check("distance", "Metres the turtle drove.", {**MINMAX, **TURTLE})
 def distance(trace: Trace, th: Mapping[str, Any]) -> Verdict:
-    return measured("distance driven:", bounds(_distance(trace, turtle_of(th)), th, " m"))
+    turtle = turtle_of(th)
+    driven = _distance(trace, turtle)
+    return _unheard(trace, measured("distance driven:", bounds(driven, th, " m")), turtle, driven > 0.0)
 
 
 @check(
@@ -89,7 +103,8 @@ def time_moving(trace: Trace, th: Mapping[str, Any]) -> Verdict:
         notes.append("turning in place does not count")
     need = f" ({'; '.join(notes)})" if notes else ""
     what = "moving" if th.get("turning", True) else "driving"
-    return Verdict(verdict.passed, f"{what} {share:.0%} of the run{need}")
+    moved = bool((poses[:, 4] > 1e-6).any() or (np.diff(poses[:, 1:4], axis=0) != 0).any())  # or turned
+    return _unheard(trace, Verdict(verdict.passed, f"{what} {share:.0%} of the run{need}"), turtle_of(th), moved)
 
 
 @check(
@@ -186,7 +201,7 @@ def circle(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     poses = trace.pose_array(turtle_of(th))
     moving = poses[poses[:, 4] > 1e-6] if len(poses) else poses
     if len(moving) < 10:
-        return Verdict(False, "the turtle barely moved: no circle to fit")
+        return _unheard(trace, Verdict(False, "the turtle barely moved: no circle to fit"), turtle_of(th), False)
     x, y = moving[:, 1], moving[:, 2]
     cx, cy, radius, rms = fit_circle(x, y)
     angles = np.unwrap(np.arctan2(y - cy, x - cx))
