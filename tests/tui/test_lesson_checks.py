@@ -213,8 +213,6 @@ def test_the_check_key_is_on_the_key_bar():
     assert "k" in [hint.key for hint in fit_keys(APP_KEYS, 80)]
 
 
-
-
 def test_describe_shows_a_runs_failure_not_another_runs_reason_for_not_judging():
     waiting = "not judged: no_crash counts only in runs where time_to_goal passes; here it did not"
     tests = [
