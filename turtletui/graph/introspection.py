@@ -222,6 +222,10 @@ def dangling_endpoints(graph: Graph, owner_prefix: str = "") -> list[str]:
     return sorted(set(warnings))
 
 
+NEVER_MATCH = "endpoints of different types never match, so nothing passes between them"
+"""How every warning of ``mistyped_endpoints`` ends (the grader finds them by it)."""
+
+
 def mistyped_endpoints(graph: Graph, owner_prefix: str = "") -> list[str]:
     """One warning per controller endpoint that uses a topic with another type
     than the other side's (a geometry_msgs/msg/Pose subscription on
@@ -244,8 +248,7 @@ def mistyped_endpoints(graph: Graph, owner_prefix: str = "") -> list[str]:
                     if endpoint.owner.startswith(owner_prefix) and endpoint.owner != "sim":
                         warnings.append(
                             f"{endpoint.node.fqn} {verb} {name} with type {topic.type_name}, but "
-                            f"{other.node.fqn} {their_verb} it with type {other_topic.type_name}: "
-                            "endpoints of different types never match, so nothing passes between them"
+                            f"{other.node.fqn} {their_verb} it with type {other_topic.type_name}: {NEVER_MATCH}"
                         )
     return sorted(set(warnings))
 
