@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from turtletui.graph.core import LOCKSTEP_EPOCH_NS, NS_PER_S, Graph, GraphError
+from turtletui.graph.core import LOCKSTEP_EPOCH_NS, NS_PER_S, Graph, GraphError, TopicTypeConflict
 from turtletui.graph.logs import INFO, WARN, LogRecord, parse_level
 from turtletui.interfaces import copier, interface_name
 from turtletui.interfaces.geometry_msgs import Twist, Vector3
@@ -88,11 +88,54 @@ def test_keep_last_depth_drops_the_oldest_messages():
     assert got == ["3", "4", "5"]
 
 
-def test_a_topic_has_one_type():
+def test_one_process_uses_a_topic_with_one_type():
+    # Fast DDS refuses a second type in one participant (rcl raises RCLError)
     graph = make_graph()
-    graph.topic("/turtle1/cmd_vel", Twist)
-    with pytest.raises(GraphError, match="geometry_msgs/msg/Twist.*turtlesim/msg/Pose"):
-        graph.topic("/turtle1/cmd_vel", Pose)
+    one = graph.add_node("one", owner="p")
+    other = graph.add_node("other", owner="p")
+    graph.add_publisher(one, "/turtle1/pose", Pose, 10)
+    with pytest.raises(TopicTypeConflict, match="used here with type turtlesim/msg/Pose, not geometry_msgs/msg/Twist"):
+        graph.add_subscription(other, "/turtle1/pose", Twist, 10, lambda msg: None)
+    with pytest.raises(TopicTypeConflict):
+        graph.add_publisher(one, "/turtle1/pose", Twist, 10)
+    assert graph.topic_names_and_types() == [("/turtle1/pose", ["turtlesim/msg/Pose"])]
+
+
+def test_processes_share_a_name_with_several_types_that_never_match():
+    graph = make_graph()
+    sim = graph.add_node("turtlesim", owner="sim")
+    student = graph.add_node("student", owner="student")
+    got: list[str] = []
+    pose = graph.add_publisher(sim, "/turtle1/pose", Pose, 10)
+    graph.add_subscription(student, "/turtle1/pose", Twist, 10, lambda m: got.append("twist"))
+    graph.add_subscription(student, "/other", Pose, 10, lambda m: got.append("pose"))
+    graph.publish(pose.topic, Pose(x=1.0), publisher=pose)
+    graph.run_ready()
+    assert got == []  # endpoints of different types never match
+    assert graph.topic_names_and_types() == [
+        ("/other", ["turtlesim/msg/Pose"]),
+        ("/turtle1/pose", ["geometry_msgs/msg/Twist", "turtlesim/msg/Pose"]),
+    ]
+    assert graph.count_publishers("/turtle1/pose") == 1 and graph.count_subscribers("/turtle1/pose") == 1
+    assert [s.topic.type_name for s in graph.subscriptions_of("/turtle1/pose")] == ["geometry_msgs/msg/Twist"]
+    assert graph.names_and_types_by_node(student, "subscriptions") == [
+        ("/other", ["turtlesim/msg/Pose"]),
+        ("/turtle1/pose", ["geometry_msgs/msg/Twist"]),
+    ]
+    assert graph.topics["/turtle1/pose"].msg_type is Pose  # the first type keeps the name
+
+
+def test_the_next_type_takes_the_name_when_the_first_leaves():
+    graph = make_graph()
+    a = graph.add_node("a", owner="a")
+    b = graph.add_node("b", owner="b")
+    first = graph.add_publisher(a, "/x", String, 10)
+    second = graph.add_publisher(b, "/x", Twist, 10)
+    graph.remove_endpoint(first)
+    assert graph.topics["/x"] is second.topic and graph.retyped == {}
+    assert graph.topic_names_and_types() == [("/x", ["geometry_msgs/msg/Twist"])]
+    graph.remove_node(b)
+    assert graph.topics == {} and graph.retyped == {}
 
 
 def test_a_topic_leaves_the_graph_with_its_last_endpoint_and_may_return_with_another_type():

@@ -38,6 +38,18 @@ def test_a_misspelt_topic_logs_nothing_and_is_told_to_check_the_name(grade):
     assert result.score == 0.0
 
 
+def test_a_pose_of_the_wrong_type_logs_nothing_and_is_told_which_types_differ(grade):
+    result = grade(LESSON, HERE / "wrong_pose_type.py")
+    assert failed_checks(result) == {"logs_the_pose", "logs_every_pose"}
+    mismatch = (
+        "/pose_subscriber subscribes to /turtle1/pose with type geometry_msgs/msg/Pose, but /turtlesim "
+        "publishes it with type turtlesim/msg/Pose: endpoints of different types never match"
+    )
+    judged = [t.output for t in result.tests if t.check in ("logs_the_pose", "logs_every_pose")]
+    assert judged and all(mismatch in text for text in judged)
+    assert result.score == 0.0
+
+
 def test_logging_every_100th_pose_fails_the_rate_but_not_the_content(grade):
     result = grade(LESSON, HERE / "every_100th_pose.py")
     outputs = failed_outputs(result)

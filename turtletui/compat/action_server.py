@@ -28,14 +28,9 @@ from turtletui.compat.qos import (
     qos_profile_action_status_default,
     qos_profile_services_default,
 )
+from turtletui.compat.rcl_error import RCLError
 from turtletui.graph import core
 from turtletui.interfaces import copier, interface_name
-
-
-class RCLError(RuntimeError):
-    """An error from rcl, as ``rclpy._rclpy_pybind11.RCLError`` (e.g. an invalid goal transition)."""
-
-    __module__ = "rclpy._rclpy_pybind11"  # as tracebacks name rclpy's
 
 
 class GoalResponse(Enum):

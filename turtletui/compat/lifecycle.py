@@ -22,6 +22,7 @@ from typing import Any, NamedTuple
 
 from turtletui.compat.logging import get_logger
 from turtletui.compat.node import Node, Publisher
+from turtletui.compat.rcl_error import RCLError
 from turtletui.graph.logs import WARN
 from turtletui.interfaces.lifecycle_msgs import (
     ChangeState,
@@ -32,10 +33,6 @@ from turtletui.interfaces.lifecycle_msgs import (
     TransitionDescription,
     TransitionEvent,
 )
-
-
-class RCLError(RuntimeError):
-    """rclpy's error from the rcl layer (``rclpy._rclpy_pybind11.RCLError``)."""
 
 
 class TransitionCallbackReturnType(Enum):

@@ -82,7 +82,7 @@ def match_mirror(graph: core.Graph, remote_owner: str) -> None:
     """The endpoints of other processes (owned by ``remote_owner``) a
     sandboxed controller has just heard of: its own endpoints they do not
     match warn, once for each."""
-    for topic in graph.topics.values():
+    for topic in graph.channels():
         theirs_pubs = [p for p in topic.publishers if p.owner == remote_owner]
         theirs_subs = [s for s in topic.subscriptions if s.owner == remote_owner]
         if not theirs_pubs and not theirs_subs:

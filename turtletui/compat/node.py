@@ -61,6 +61,7 @@ from turtletui.compat.qos import (
     qos_profile_rosout_default,
     qos_profile_services_default,
 )
+from turtletui.compat.rcl_error import topic_type_error
 from turtletui.compat.task import Future
 from turtletui.compat.time import Clock, ClockType, Duration, clock_for
 from turtletui.compat.time_source import TimeSource
@@ -560,9 +561,12 @@ class Node(Destroyable):
         self._require_alive()
         _check_msg_type(msg_type, "create_publisher()")
         depth = depth_of(qos_profile)
-        record = self._graph.add_publisher(
-            self._record, self.resolve_topic_name(topic), msg_type, depth, qos=qos_profile
-        )
+        try:
+            record = self._graph.add_publisher(
+                self._record, self.resolve_topic_name(topic), msg_type, depth, qos=qos_profile
+            )
+        except core.TopicTypeConflict as err:
+            raise topic_type_error("publisher", err.name, err.type_name) from None
         publisher = publisher_class(self, record, qos_profile)
         publisher._topic_as_given = topic
         self._entities.append(publisher)
@@ -588,15 +592,18 @@ class Node(Destroyable):
             raise TypeError(f"create_subscription() needs a callable callback, got {callback!r}")
         depth = depth_of(qos_profile)
         host = self._context.host
-        record = self._graph.add_subscription(
-            self._record,
-            self.resolve_topic_name(topic),
-            msg_type,
-            depth,
-            dispatcher(host, self._group(callback_group), callback),
-            qos=qos_profile,
-            copy=copier(msg_type),
-        )
+        try:
+            record = self._graph.add_subscription(
+                self._record,
+                self.resolve_topic_name(topic),
+                msg_type,
+                depth,
+                dispatcher(host, self._group(callback_group), callback),
+                qos=qos_profile,
+                copy=copier(msg_type),
+            )
+        except core.TopicTypeConflict as err:
+            raise topic_type_error("subscription", err.name, err.type_name) from None
         subscription = Subscription(self, record, callback, qos_profile)
         subscription._topic_as_given = topic
         self._entities.append(subscription)

@@ -26,6 +26,7 @@ from turtletui.grading.checks import Check, Verdict
 from turtletui.grading.pictures import picture_of_trace
 from turtletui.grading.results import FAILED, PASSED, Picture, SubmissionResult, TestResult
 from turtletui.grading.trace import Trace, TraceCollector
+from turtletui.graph.introspection import NEVER_MATCH
 from turtletui.graph.logs import LogRecord
 from turtletui.lessons.loader import display_path
 from turtletui.lessons.model import CheckSpec, Lesson, Scenario
@@ -372,7 +373,7 @@ def judge(check: Check, trace: Trace, thresholds: dict[str, Any]) -> Verdict:
         return Verdict(False, f"the check itself failed: {type(err).__name__}: {err}")
 
 
-def _output(spec: CheckSpec, verdict: Verdict, hidden: bool) -> str:
+def _output(spec: CheckSpec, verdict: Verdict, hidden: bool, warnings: Sequence[str] = ()) -> str:
     # a check that was not judged says why (never with a number in a hidden
     # run), and gives no advice about what it judges; what was measured in a
     # hidden run could tell where it starts
@@ -381,7 +382,16 @@ def _output(spec: CheckSpec, verdict: Verdict, hidden: bool) -> str:
     lines = [verdict.measured] if verdict.measured and not hidden else []
     if not verdict.passed and spec.feedback:
         lines.append(spec.feedback)
+    if not verdict.passed:
+        lines += warnings  # the likely cause, said by turtletui during the run
     return "\n".join(lines)
+
+
+def _type_warnings(trace: Trace) -> list[str]:
+    """turtletui's warnings in a run of endpoints whose types never match another's
+    (turtletui.graph.introspection.mistyped_endpoints): silent under ROS 2, and
+    the reason a turtle neither moves nor is heard."""
+    return [r.msg for r in trace.logs if r.node == "turtletui" and r.msg.endswith(NEVER_MATCH)]
 
 
 def forbidden_call(plan: GradingPlan, trace: Trace, *, hidden: bool = False) -> str | None:
@@ -472,7 +482,7 @@ def grade_run(
             trace.twin, _ = run_scenario(plan, run, controllers, limits=limits, start=run.twin_start, duration=window)
         return judge(check, trace, thresholds)
 
-    tests = _judge_run(plan, run, verdict_of, problem)
+    tests = _judge_run(plan, run, verdict_of, problem, _type_warnings(trace))
     failed = not all(test.passed for _, test in tests)
     if recorder is not None:
         recorder.close(keep=failed)
@@ -489,6 +499,7 @@ def _judge_run(
     run: ScenarioRun,
     verdict_of: Callable[[Check, dict[str, Any]], Verdict],
     problem: Callable[[Check], Verdict | None] = lambda check: None,
+    warnings: Sequence[str] = (),
 ) -> list[tuple[int, TestResult]]:
     """The tests of one run, each with the index of its check in the lesson.
     ``problem`` gives the verdict of a check the run itself cannot judge (a
@@ -533,7 +544,7 @@ def _judge_run(
             score=points if verdict.passed else 0.0,
             max_score=points,
             status=PASSED if verdict.passed else FAILED,
-            output=_output(spec, verdict, run.hidden),
+            output=_output(spec, verdict, run.hidden, warnings),
             hidden=run.hidden,
         )
         tests.append((index, test))

@@ -62,7 +62,21 @@ def _grouped(found: set[tuple[str, str]]) -> list[tuple[str, list[str]]]:
 
 
 class GraphError(TurtletuiError):
-    """A request the middleware refuses (wrong type on a topic, unknown service...)."""
+    """A request the middleware refuses (a service provided twice, an undeclared topic...)."""
+
+
+class TopicTypeConflict(GraphError):
+    """An endpoint of one process asked for a topic that process already uses
+    with another type: a DDS participant refuses that, as Fast DDS does (rcl
+    then raises RCLError). Other processes may use the name with any type."""
+
+    def __init__(self, name: str, type_name: str, used: str) -> None:
+        super().__init__(f"topic {name} is used here with type {used}, not {type_name}")
+        self.name = name
+        self.type_name = type_name
+        """The type asked for."""
+        self.used = used
+        """The type this process already uses on the name."""
 
 
 @dataclass(eq=False)
@@ -143,7 +157,11 @@ class Publisher:
 
 
 class Topic:
-    """A named channel with one message type, its endpoints and a measured rate."""
+    """A named channel with one message type, its endpoints and a measured rate.
+
+    Processes may use one name with several types, as in ROS 2: each type is a
+    channel of its own (Graph.topics holds the first, Graph.retyped the
+    others), and endpoints of different types never match."""
 
     __slots__ = (
         "name",
@@ -409,6 +427,11 @@ class Graph:
         self.epoch_ns = epoch_ns
         self.nodes: list[NodeRecord] = []
         self.topics: dict[str, Topic] = {}
+        """Every topic by name: the channel of the type that came first (the one
+        a name's tools show: echo, hz, the topic monitor, a recording)."""
+        self.retyped: dict[str, list[Topic]] = {}
+        """The channels of further types on names of ``topics``: endpoints of
+        other processes that used the name with another type (see Topic)."""
         self.services: dict[str, Service] = {}
         self.clients: list[ServiceClient] = []
         self.action_servers: dict[str, ActionServer] = {}
@@ -551,7 +574,7 @@ class Graph:
         node.alive = False
         if node in self.nodes:
             self.nodes.remove(node)
-        for topic in list(self.topics.values()):
+        for topic in self.channels():
             topic.publishers = [p for p in topic.publishers if p.node is not node]
             for sub in topic.subscriptions:
                 if sub.node is node:
@@ -604,9 +627,9 @@ class Graph:
         """The names and types of one kind of endpoint ``node`` has, sorted by name
         (with the hidden ones behind its actions: ``action_topic_endpoints``...)."""
         if kind == "publishers":
-            found = {(t.name, t.type_name) for t in self.topics.values() for p in t.publishers if p.node is node}
+            found = {(t.name, t.type_name) for t in self.channels() for p in t.publishers if p.node is node}
         elif kind == "subscriptions":
-            found = {(t.name, t.type_name) for t in self.topics.values() for s in t.subscriptions if s.node is node}
+            found = {(t.name, t.type_name) for t in self.channels() for s in t.subscriptions if s.node is node}
         else:
             records = {
                 "services": self.services.values(),
@@ -636,22 +659,46 @@ class Graph:
         return [endpoint for record in records for endpoint in service_endpoints(record)]
 
     # -- topics -------------------------------------------------------------
-    def topic(self, name: str, msg_type: type) -> Topic:
-        """The topic called ``name``, created with ``msg_type`` if new."""
-        topic = self.topics.get(name)
-        if topic is None:
-            topic = self.topics[name] = Topic(name, msg_type, self._type_name(msg_type))
-        elif topic.msg_type is not msg_type:
-            raise GraphError(
-                f"topic {name} carries {topic.type_name}, not {self._type_name(msg_type)}"
-            )
+    def channels(self) -> list[Topic]:
+        """Every topic channel, of every type, by name (first type first)."""
+        retyped = self.retyped
+        if not retyped:
+            return list(self.topics.values())
+        return [t for name, first in self.topics.items() for t in (first, *retyped.get(name, ()))]
+
+    def channels_of(self, name: str) -> list[Topic]:
+        """The channels of topic ``name``: one per type in use, first type first."""
+        first = self.topics.get(name)
+        return [] if first is None else [first, *self.retyped.get(name, ())]
+
+    def topic(self, name: str, msg_type: type, owner: str | None = None) -> Topic:
+        """The channel of topic ``name`` with type ``msg_type``, created if new.
+        Raises TopicTypeConflict when ``owner`` (a process; not the other part
+        of the graph, which stands for many) already uses the name with
+        another type."""
+        channels = self.channels_of(name)
+        found = None
+        for channel in channels:
+            if channel.msg_type is msg_type:
+                found = channel
+            elif owner is not None and (self.outbox is None or owner != self.outbox.remote_owner) and any(
+                e.owner == owner for e in (*channel.publishers, *channel.subscriptions)
+            ):
+                raise TopicTypeConflict(name, self._type_name(msg_type), channel.type_name)
+        if found is not None:
+            return found
+        topic = Topic(name, msg_type, self._type_name(msg_type))
+        if channels:
+            self.retyped.setdefault(name, []).append(topic)
+        else:
+            self.topics[name] = topic
         return topic
 
     def add_publisher(
         self, node: NodeRecord, name: str, msg_type: type, depth: int, *, qos: Any = None
     ) -> Publisher:
+        topic = self.topic(name, msg_type, node.owner)
         self.version += 1
-        topic = self.topic(name, msg_type)
         pub = Publisher(node, topic, depth, node.owner, qos, self.now_ns)
         topic.publishers.append(pub)
         topic.publisher_owners.add(node.owner)
@@ -674,8 +721,8 @@ class Graph:
     ) -> Subscription:
         """Subscribe ``callback`` to topic ``name``; with ``copy``, each message is
         queued as ``copy(msg)``, the subscription's own (see Subscription.copy)."""
+        topic = self.topic(name, msg_type, node.owner)
         self.version += 1
-        topic = self.topic(name, msg_type)
         sub = Subscription(node, topic, depth, callback, node.owner, qos, copy, self.now_ns)
         if name == ROSOUT:
             sub.ready_item = (sub.owner, self._counted_rosout_delivery(sub.deliver))
@@ -751,20 +798,32 @@ class Graph:
 
     def drop_unused_topics(self) -> None:
         """Every topic with no endpoints left leaves the graph (see _drop_if_unused)."""
-        for topic in list(self.topics.values()):
+        for topic in self.channels():
             self._drop_if_unused(topic)
 
     def _drop_if_unused(self, topic: Topic) -> None:
-        """A topic with no endpoints left leaves the graph, as in ROS 2: it may
-        come back with another type, and the topics of thousands of spawned and
-        killed turtles cost nothing."""
-        if not topic.publishers and not topic.subscriptions and self.topics.get(topic.name) is topic:
-            del self.topics[topic.name]
+        """A topic channel with no endpoints left leaves the graph, as in ROS 2:
+        it may come back with another type, and the topics of thousands of
+        spawned and killed turtles cost nothing. The next type on the name,
+        if any, becomes its first."""
+        if topic.publishers or topic.subscriptions:
+            return
+        name = topic.name
+        others = self.retyped.get(name)
+        if self.topics.get(name) is topic:
+            if others:
+                self.topics[name] = others.pop(0)
+            else:
+                del self.topics[name]
+        elif others and topic in others:
+            others.remove(topic)
+        if others is not None and not others:
+            del self.retyped[name]
 
     def topic_names_and_types(self) -> list[tuple[str, list[str]]]:
         """Every topic someone publishes or subscribes to, with its type, sorted by
         name; the hidden topics of actions included (``action_topic_endpoints``)."""
-        found = {(name, topic.type_name) for name, topic in self.topics.items() if topic.publishers or topic.subscriptions}
+        found = {(topic.name, topic.type_name) for topic in self.channels() if topic.publishers or topic.subscriptions}
         for kind in ("publishers", "subscriptions"):
             found.update((e.topic.name, e.topic.type_name) for e in self.action_topic_endpoints(kind))
         return _grouped(found)
@@ -781,8 +840,10 @@ class Graph:
 
     def _topic_endpoints(self, name: str, kind: Literal["publishers", "subscriptions"]) -> list[Any]:
         """A topic's publishers or subscriptions: its own, then those of actions."""
-        topic = self.topics.get(name)
-        own = list(getattr(topic, kind)) if topic is not None else []
+        channels = self.channels_of(name)
+        own = [e for topic in channels for e in getattr(topic, kind)]
+        if len(channels) > 1:
+            own.sort(key=lambda e: e.created_ns)  # oldest first, whatever their type
         return own + [e for e in self.action_topic_endpoints(kind) if e.topic.name == name]
 
     def discovered_at(self, one: Any, other: Any) -> int:

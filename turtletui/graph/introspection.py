@@ -43,6 +43,14 @@ class TopicInfo:
     """Messages per simulated second over the last 64 (0 when idle for 2 s)."""
     count: int
     """Messages published since the start."""
+    other_types: tuple[str, ...] = ()
+    """Further types some processes use the name with (``type`` is the first's;
+    rate and count are of ``type``'s messages): see turtletui.graph.core.Topic."""
+
+    @property
+    def types(self) -> list[str]:
+        """Every type in use on the name, sorted, as rcl's names-and-types lists give them."""
+        return sorted({self.type, *self.other_types})
 
 
 @dataclass(frozen=True)
@@ -119,20 +127,23 @@ def snapshot(graph: Graph, *, action_endpoints: bool = False) -> GraphSnapshot:
             per_node[id(node)][key].append(entry)
 
     topics: dict[str, TopicInfo] = {}
-    for name, topic in graph.topics.items():
-        if not topic.publishers and not topic.subscriptions:
+    for name, first in graph.topics.items():
+        channels = [t for t in graph.channels_of(name) if t.publishers or t.subscriptions]
+        if not channels:
             continue
-        for pub in topic.publishers:
-            add(pub.node, "pub", (name, topic.type_name))
-        for sub in topic.subscriptions:
-            add(sub.node, "sub", (name, topic.type_name))
+        for topic in channels:
+            for pub in topic.publishers:
+                add(pub.node, "pub", (name, topic.type_name))
+            for sub in topic.subscriptions:
+                add(sub.node, "sub", (name, topic.type_name))
         topics[name] = TopicInfo(
             name,
-            topic.type_name,
-            tuple(sorted(p.node.fqn for p in topic.publishers)),
-            tuple(sorted(s.node.fqn for s in topic.subscriptions)),
-            topic.rate(now),
-            topic.count,
+            first.type_name,
+            tuple(sorted(p.node.fqn for t in channels for p in t.publishers)),
+            tuple(sorted(s.node.fqn for t in channels for s in t.subscriptions)),
+            first.rate(now),
+            first.count,
+            tuple(t.type_name for t in channels if t is not first),
         )
     servers = [(name, service.type_name, service.node) for name, service in graph.services.items()]
     callers = [(c.name, c.type_name, c.node) for c in graph.clients]
@@ -193,8 +204,9 @@ def dangling_endpoints(graph: Graph, owner_prefix: str = "") -> list[str]:
     per controller publisher that nothing listens to, with the closest
     existing topic names: the usual sign of a typo in a topic name."""
     warnings = []
-    live = {name for name, t in graph.topics.items() if t.publishers or t.subscriptions}
-    for name, topic in sorted(graph.topics.items()):
+    live = {t.name for t in graph.channels() if t.publishers or t.subscriptions}
+    for topic in sorted(graph.channels(), key=lambda t: t.name):
+        name = topic.name
         for sub in topic.subscriptions:
             # (graph.count_*: an action's hidden endpoints count, though no view shows them)
             if sub.owner.startswith(owner_prefix) and sub.owner != "sim" and not graph.count_publishers(name) \
@@ -207,6 +219,37 @@ def dangling_endpoints(graph: Graph, owner_prefix: str = "") -> list[str]:
                 # when a topic of a very similar name exists.
                 if _close(name, live):
                     warnings.append(_dangling(pub.node.fqn, "publishes on", name, "subscribes to", live))
+    return sorted(set(warnings))
+
+
+NEVER_MATCH = "endpoints of different types never match, so nothing passes between them"
+"""How every warning of ``mistyped_endpoints`` ends (the grader finds them by it)."""
+
+
+def mistyped_endpoints(graph: Graph, owner_prefix: str = "") -> list[str]:
+    """One warning per controller endpoint that uses a topic with another type
+    than the other side's (a geometry_msgs/msg/Pose subscription on
+    turtlesim's /turtle1/pose): as in ROS 2 the two never match and nothing
+    arrives, which looks exactly like a silent robot."""
+    warnings = []
+    for name in sorted(graph.retyped):
+        channels = graph.channels_of(name)
+        for topic in channels:
+            others = [t for t in channels if t is not topic]
+            for mine, verb, side, their_verb in (
+                (topic.subscriptions, "subscribes to", "publishers", "publishes"),
+                (topic.publishers, "publishes on", "subscriptions", "subscribes to"),
+            ):
+                theirs = [(e, t) for t in others for e in getattr(t, side)]
+                if not theirs:
+                    continue
+                other, other_topic = min(theirs, key=lambda pair: pair[0].created_ns)
+                for endpoint in mine:
+                    if endpoint.owner.startswith(owner_prefix) and endpoint.owner != "sim":
+                        warnings.append(
+                            f"{endpoint.node.fqn} {verb} {name} with type {topic.type_name}, but "
+                            f"{other.node.fqn} {their_verb} it with type {other_topic.type_name}: {NEVER_MATCH}"
+                        )
     return sorted(set(warnings))
 
 

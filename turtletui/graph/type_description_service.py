@@ -52,7 +52,7 @@ def types_in_use(graph: Graph, node: NodeRecord) -> list[type]:
     """The interface classes ``node``'s endpoints on ``graph`` use, as rcl's type
     cache holds them: an action also brings the services and topics it is made of."""
     found: list[type] = []
-    for topic in graph.topics.values():
+    for topic in graph.channels():
         if any(p.node is node for p in topic.publishers) or any(s.node is node for s in topic.subscriptions):
             found.append(topic.msg_type)
     found += [s.srv_type for s in graph.services.values() if s.node is node]

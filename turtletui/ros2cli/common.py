@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING, Any, TypeVar
 from turtletui.compat.distro import lacks_package_of, missing_package_reason, ros_type_name
 from turtletui.graph.core import Graph, Topic
 from turtletui.graph.introspection import GraphSnapshot, NodeInfo, snapshot
-from turtletui.interfaces import Action, Service, get_interface, interface_name
+from turtletui.interfaces import Action, Message, Service, get_interface, interface_name
 
 if TYPE_CHECKING:
     from turtletui.ros2cli.cli import Ros2Cli
@@ -47,7 +47,12 @@ def name_list(entries: Sequence, *, count: bool, show_types: bool, hidden: bool 
     shown = [e for e in entries if hidden or not is_hidden(e.name)]
     if count:
         return CommandResult([str(len(shown))])
-    return CommandResult([f"{e.name} [{e.type}]" if show_types else e.name for e in shown])
+    return CommandResult([f"{e.name} [{', '.join(types_of(e))}]" if show_types else e.name for e in shown])
+
+
+def types_of(entry: Any) -> list[str]:
+    """The types of a listed topic, service or action (a topic may carry several)."""
+    return getattr(entry, "types", None) or [entry.type]
 
 
 def error(line: str) -> CommandResult:
@@ -99,6 +104,25 @@ def topic_or_error(graph: Graph, name: str, what: str) -> Topic:
     if topic is None:
         raise CommandError(f"topic '{name}' {what}{hint(name, live_topic_names(graph))}")
     return topic
+
+
+def one_typed_topic(cli: Any, name: str, what: str, message_type: str | None) -> Topic:
+    """The channel of live topic ``name`` that ``echo`` or ``hz`` listens to:
+    the one of ``message_type`` when given, else its only type (ros2topic
+    refuses a name with several: which would it choose?)."""
+    first = topic_or_error(cli.graph, name, what)
+    channels = [t for t in cli.graph.channels_of(name) if t.publishers or t.subscriptions]
+    if message_type is None:
+        if len(channels) > 1:
+            types = ", ".join(sorted(t.type_name for t in channels))
+            raise CommandError(f"Cannot echo topic '{name}', as it contains more than one type: [{types}]")
+        return first
+    cls = interface_or_error(cli, message_type, Message, "message")
+    wanted = type_name(cli, cls)
+    for channel in channels:
+        if channel.type_name == wanted:
+            return channel
+    raise CommandError(f"topic '{name}' has type {', '.join(sorted(t.type_name for t in channels))}, not {wanted}")
 
 
 def ros_view(cli: Any) -> GraphSnapshot:

@@ -35,6 +35,7 @@ from turtletui.ros2cli.common import (
     live_topic,
     live_topic_names,
     name_list,
+    one_typed_topic,
     ros_view,
     topic_or_error,
     type_name,
@@ -85,9 +86,7 @@ def _echo(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
         path = _field_path(cli, Log, args.field) if args.field is not None else []
         return cli.start(RosoutEchoStream(cli, line, None, args.once, path))
     _refuse_action_topic(cli, name)
-    topic = topic_or_error(cli.graph, name, "does not appear to be published yet")
-    if args.message_type is not None:
-        check_type(cli, interface_or_error(cli, args.message_type, Message, "message"), topic.type_name, f"topic '{name}'")
+    topic = one_typed_topic(cli, name, "does not appear to be published yet", args.message_type)
     path = _field_path(cli, topic.msg_type, args.field) if args.field is not None else []
     return cli.start(EchoStream(cli, line, topic, args.once, path))
 
@@ -118,7 +117,7 @@ def _hz_arguments(parser: ArgumentParser) -> None:
 def _hz(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
     name = absolute(args.topic_name)
     _refuse_action_topic(cli, name)
-    topic = topic_or_error(cli.graph, name, "does not appear to be published yet")
+    topic = one_typed_topic(cli, name, "does not appear to be published yet", None)
     return cli.start(HzStream(cli, line, topic, args.window_size))
 
 
@@ -162,10 +161,12 @@ def _info(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
     shown = _shown_topic(cli, name)
     graph = cli.graph
     publishers, subscriptions = graph.publishers_of(name), graph.subscriptions_of(name)
+    types = shown.types
+    type_line = f"Type: {types[0] if len(types) == 1 else types}"  # several: as a Python list, as ros2topic
     if not args.verbose or not (publishers or subscriptions):
-        return CommandResult([f"Type: {shown.type}", f"Publisher count: {len(shown.publishers)}",
+        return CommandResult([type_line, f"Publisher count: {len(shown.publishers)}",
                               f"Subscription count: {len(shown.subscribers)}"])
-    lines = [f"Type: {shown.type}", ""]
+    lines = [type_line, ""]
     for title, kind, endpoints in (("Publisher", TopicEndpointTypeEnum.PUBLISHER, publishers),
                                    ("Subscription", TopicEndpointTypeEnum.SUBSCRIPTION, subscriptions)):
         lines += [f"{title} count: {len(endpoints)}", ""]
@@ -175,8 +176,8 @@ def _info(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
             lines += [
                 f"Node name: {endpoint.node.name}",
                 f"Node namespace: {endpoint.node.namespace or '/'}",
-                f"Topic type: {shown.type}",
-                *_hash_line(cli, shown.type),
+                f"Topic type: {endpoint.topic.type_name}",
+                *_hash_line(cli, endpoint.topic.type_name),
                 f"Endpoint type: {kind.name}",
                 f"GID: {gid_text(info.endpoint_gid)}",
                 "QoS profile:",
@@ -209,7 +210,7 @@ def _type(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
     shown = _shown_topic(cli, name)
     if is_hidden(name) and not args.include_hidden_topics:
         raise hidden_error("topic", "type", name)
-    return CommandResult([shown.type])
+    return CommandResult(shown.types)
 
 
 def _find_arguments(parser: ArgumentParser) -> None:
@@ -220,7 +221,7 @@ def _find_arguments(parser: ArgumentParser) -> None:
 
 def _find(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
     wanted = type_name(cli, interface_or_error(cli, args.topic_type, Message, "message"))
-    found = [t for t in ros_view(cli).topics if t.type == wanted]
+    found = [t for t in ros_view(cli).topics if wanted in t.types]
     return name_list(found, count=args.count_topics, show_types=False, hidden=args.include_hidden_topics)
 
 
@@ -250,9 +251,9 @@ def _pub(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
     name = absolute(args.topic_name)
     _refuse_action_topic(cli, name)
     cls = interface_or_error(cli, args.message_type, Message, "message")
-    topic = live_topic(cli.graph, name)
-    if topic is not None:
-        check_type(cli, cls, topic.type_name, f"topic '{name}'")
+    topic = None
+    if live_topic(cli.graph, name) is not None:
+        topic = one_typed_topic(cli, name, "", args.message_type)  # a type the topic has
     msg = message_values(args.values, cls, "message")
     rate = args.rate
     notes = []

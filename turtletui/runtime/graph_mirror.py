@@ -22,7 +22,6 @@ from turtletui.graph.core import (
     ActionClientRecord,
     ActionServer,
     Graph,
-    GraphError,
     NodeRecord,
     Publisher,
     Service,
@@ -181,7 +180,7 @@ def snapshot(graph: Graph, owner: str, own_ids: Mapping[int, int]) -> GraphMirro
         tuple(nodes),
         tuple(
             MirrorTopic(t.name, t.type_name, endpoints(t.publishers), endpoints(t.subscriptions))
-            for t in graph.topics.values()
+            for t in graph.channels()
             if t.publishers or t.subscriptions
         ),
         others(graph.services.values()),
@@ -203,8 +202,8 @@ def apply(graph: Graph, mirror: GraphMirror, own: Mapping[int, Any]) -> None:
     for t in mirror.topics:
         try:
             topic = graph.topic(t.name, get_interface(t.type_name))
-        except (GraphError, InterfaceError):
-            continue  # the child's own topic of another type: the parent refuses that
+        except InterfaceError:
+            continue  # a type the child cannot import: its endpoints stay out of the child's view
         topic.publishers = _ordered(
             topic.publishers,
             [
@@ -249,7 +248,7 @@ def apply(graph: Graph, mirror: GraphMirror, own: Mapping[int, Any]) -> None:
 def _forget(graph: Graph) -> None:
     """Take the last mirror's records off ``graph``."""
     graph.nodes = [n for n in graph.nodes if n.owner != MIRROR_OWNER]
-    for topic in graph.topics.values():
+    for topic in graph.channels():
         topic.publishers = [p for p in topic.publishers if p.owner != MIRROR_OWNER]
         topic.subscriptions = [s for s in topic.subscriptions if s.owner != MIRROR_OWNER]
     for name in [n for n, s in graph.services.items() if s.owner == MIRROR_OWNER]:

@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from turtletui.graph.core import NS_PER_S
+from turtletui.graph.core import NS_PER_S, TopicTypeConflict
 from turtletui.graph.introspection import is_plumbing_topic
 from turtletui.graph.logs import INFO
 from turtletui.interfaces import from_dict, get_interface
@@ -126,6 +126,12 @@ def _check_input(path: Path, number: int | str, event: dict[str, Any]) -> None:
         raise RecordingError(f"{path}:{number}: cannot replay this {kind} event ({err})") from None
 
 
+def _simulator_type(graph: Any, event: dict[str, Any]) -> bool:
+    """Whether a recorded topic event has the type the simulator uses on its topic."""
+    topic = graph.topics.get(event.get("topic"))
+    return topic is not None and topic.type_name == event.get("type")
+
+
 def install_replay(sim: Simulation, recording: Recording) -> None:
     """Put the recorded start pose in place and schedule every recorded input.
 
@@ -142,20 +148,28 @@ def install_replay(sim: Simulation, recording: Recording) -> None:
     if start is not None and "turtle1" in sim.world.turtles:
         sim.world.place("turtle1", *start)
     node = rosbag2_node(graph, PLAYER, PLAYER)
-    publishers: dict[str, Any] = {}
-    for event in recording.inputs:
+    publishers: dict[tuple[str, str], Any] = {}
+    for event in sorted(recording.inputs, key=lambda event: not _simulator_type(graph, event)):
         name = event.get("topic")
-        if name is not None and name not in publishers:
+        key = (name, event.get("type"))
+        if name is not None and key not in publishers:
             offer = adapted_offer(recording.offers.get(name, [])) or DEFAULT
             msg_type = get_interface(event["type"])
-            publishers[name] = graph.add_publisher(node, name, msg_type, 10, qos=offer.policies())
+            try:
+                publishers[key] = graph.add_publisher(node, name, msg_type, 10, qos=offer.policies())
+            except TopicTypeConflict:
+                # One player publishes one type per name (as one DDS participant):
+                # the simulator's type comes first (see _simulator_type_first), so
+                # what is left reached none of the simulator's endpoints.
+                publishers[key] = None
     graph.log("turtletui", INFO, f"replaying {recording.path.name}: {len(recording.inputs)} recorded inputs")
 
     def send(event: dict[str, Any]) -> Callable[[], None]:
         def fire() -> None:
             if "topic" in event:
-                publisher = publishers[event["topic"]]
-                graph.publish(publisher.topic, from_dict(publisher.topic.msg_type, event["msg"]), None, publisher)
+                publisher = publishers[event["topic"], event["type"]]
+                if publisher is not None:
+                    graph.publish(publisher.topic, from_dict(publisher.topic.msg_type, event["msg"]), None, publisher)
             elif "service" in event:
                 service = graph.services.get(event["service"])
                 if service is not None:
