@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from typing import Any
 
 from turtletui.compat.callback_groups import (
@@ -222,13 +222,19 @@ class Subscription(Destroyable):
 class Client(Destroyable):
     """A service client: ``call_async(request)`` returns a Future of the response."""
 
-    def __init__(self, node: Node, record: core.ServiceClient, callback_group: CallbackGroup) -> None:
+    def __init__(self, node: Node, record: core.ServiceClient, callback_group: CallbackGroup, srv_name: str) -> None:
         self._node = node
         self._record = record
         self.srv_type = record.srv_type
-        self.srv_name = record.name
+        self.srv_name = srv_name
+        """The name as given to create_client, as rclpy keeps it (service_name: resolved)."""
         self.callback_group = callback_group
         self._told_undiscovered = False
+
+    @property
+    def service_name(self) -> str:
+        """The fully qualified name of the service (rcl's)."""
+        return self._record.name
 
     def call_async(self, request: Any) -> Future:
         """Send ``request``; the Future completes when the response arrives
@@ -236,23 +242,23 @@ class Client(Destroyable):
         self._require_alive()
         if type(request) is not self.srv_type.Request:
             raise TypeError(
-                f"call_async() on {self.srv_name} expects a {self._record.type_name}.Request, got "
+                f"call_async() on {self.service_name} expects a {self._record.type_name}.Request, got "
                 + _describe(request)
             )
         future = Future()
         host = self._node.context.host
         graph = host.graph
-        if self.srv_name in graph.services and not graph.service_matched(self._record):
+        if self.service_name in graph.services and not graph.service_matched(self._record):
             self._tell_request_lost()  # and never answered, as in ROS 2
             return future
-        graph.call(self.srv_name, request, dispatcher(host, self.callback_group, future.set_result), host.owner)
+        graph.call(self.service_name, request, dispatcher(host, self.callback_group, future.set_result), host.owner)
         return future
 
     def _tell_request_lost(self) -> None:
         if not self._told_undiscovered:
             self._told_undiscovered = True
             node = self._node.get_fully_qualified_name()
-            self._node._graph.log("turtletui", WARN, _UNDISCOVERED_SERVICE.format(node=node, service=self.srv_name))
+            self._node._graph.log("turtletui", WARN, _UNDISCOVERED_SERVICE.format(node=node, service=self.service_name))
 
     def call(self, request: Any, timeout_sec: float | None = None) -> Any:
         """Call and wait for the response; TimeoutError after ``timeout_sec``.
@@ -264,7 +270,7 @@ class Client(Destroyable):
         hang = self._why_call_hangs(inside)
         if hang:
             raise RuntimeError(
-                f"{self.srv_name}: Client.call() {hang}: in ROS 2 it would wait for ever. "
+                f"{self.service_name}: Client.call() {hang}: in ROS 2 it would wait for ever. "
                 + (_FIX_INSIDE if inside else _FIX_OUTSIDE)
             )
         future = self.call_async(request)
@@ -297,7 +303,7 @@ class Client(Destroyable):
                 "callback group as the callback that waits (the node's default group, if you gave none), "
                 "so its response cannot be handled until that callback returns"
             )
-        service = self._node._graph.services.get(self.srv_name)
+        service = self._node._graph.services.get(self.service_name)
         if service is not None and busy_exclusive_group(getattr(service.handler, "group", None)):
             return (
                 "inside a callback would deadlock in ROS 2: the service it calls is in the same mutually "
@@ -315,7 +321,7 @@ class Client(Destroyable):
         discovered it, as a graph event wakes rclpy's wait; False on timeout."""
         graph = self._node._graph
         return wait_for_server(
-            self._node.context.host, self._record, lambda: graph.services.get(self.srv_name),
+            self._node.context.host, self._record, lambda: graph.services.get(self.service_name),
             self.service_is_ready, timeout_sec,
         )
 
@@ -351,12 +357,18 @@ def wait_for_server(
 class Service(Destroyable):
     """A service server calling ``callback(request, response) -> response``."""
 
-    def __init__(self, node: Node, record: core.Service, callback: Callable) -> None:
+    def __init__(self, node: Node, record: core.Service, callback: Callable, srv_name: str) -> None:
         self._node = node
         self._record = record
         self.srv_type = record.srv_type
-        self.srv_name = record.name
+        self.srv_name = srv_name
+        """The name as given to create_service, as rclpy keeps it (service_name: resolved)."""
         self.callback = callback
+
+    @property
+    def service_name(self) -> str:
+        """The fully qualified name of the service (rcl's)."""
+        return self._record.name
 
     def destroy(self) -> None:
         self._node.destroy_service(self)
@@ -478,6 +490,30 @@ class Node(Destroyable):
     def add_callback_group(self, callback_group: CallbackGroup) -> None:
         if callback_group not in self._callback_groups:
             self._callback_groups.append(callback_group)
+
+    # -- the node's entities, as rclpy's properties list them (created first, first) --
+    @property
+    def publishers(self) -> Iterator[Publisher]:
+        """The publishers made on this node (/parameter_events' too, as rclpy's)."""
+        yield from [e for e in self._entities if isinstance(e, Publisher)]
+
+    @property
+    def subscriptions(self) -> Iterator[Subscription]:
+        yield from [e for e in self._entities if isinstance(e, Subscription)]
+
+    @property
+    def clients(self) -> Iterator[Client]:
+        yield from [e for e in self._entities if isinstance(e, Client)]
+
+    @property
+    def services(self) -> Iterator[Service]:
+        """The services made on this node (its parameter services too, as rclpy's)."""
+        yield from [e for e in self._entities if isinstance(e, Service)]
+
+    @property
+    def timers(self) -> Iterator[Timer]:
+        """The timers made on this node (those of its rates too, as rclpy's)."""
+        yield from [e for e in self._entities if isinstance(e, Timer)]
 
     def _group(self, callback_group: CallbackGroup | None) -> CallbackGroup:
         """The group an entity's callbacks run in (the node's default if None)."""
@@ -654,7 +690,7 @@ class Node(Destroyable):
         self._require_alive()
         _check_srv_type(srv_type, "create_client()")
         record = self._graph.add_client(self._record, self._resolve(srv_name, True), srv_type)
-        client = Client(self, record, self._group(callback_group))
+        client = Client(self, record, self._group(callback_group), srv_name)
         self._entities.append(client)
         return client
 
@@ -685,7 +721,7 @@ class Node(Destroyable):
         record = self._graph.add_service(
             self._record, name, srv_type, dispatcher(host, self._group(callback_group), handler)
         )
-        service = Service(self, record, callback)
+        service = Service(self, record, callback, srv_name)
         self._entities.append(service)
         return service
 
