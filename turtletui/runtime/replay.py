@@ -159,7 +159,7 @@ def install_replay(sim: Simulation, recording: Recording) -> None:
                 publishers[key] = graph.add_publisher(node, name, msg_type, 10, qos=offer.policies())
             except TopicTypeConflict:
                 # One player publishes one type per name (as one DDS participant):
-                # the simulator's type comes first (see _simulator_type_first), so
+                # the simulator's type comes first (sorted by _simulator_type), so
                 # what is left reached none of the simulator's endpoints.
                 publishers[key] = None
     graph.log("turtletui", INFO, f"replaying {recording.path.name}: {len(recording.inputs)} recorded inputs")
