@@ -492,28 +492,31 @@ class Node(Destroyable):
             self._callback_groups.append(callback_group)
 
     # -- the node's entities, as rclpy's properties list them (created first, first) --
+    def _made(self, kind: type) -> Iterator[Any]:
+        yield from [e for e in self._entities if isinstance(e, kind)]
+
     @property
     def publishers(self) -> Iterator[Publisher]:
         """The publishers made on this node (/parameter_events' too, as rclpy's)."""
-        yield from [e for e in self._entities if isinstance(e, Publisher)]
+        return self._made(Publisher)
 
     @property
     def subscriptions(self) -> Iterator[Subscription]:
-        yield from [e for e in self._entities if isinstance(e, Subscription)]
+        return self._made(Subscription)
 
     @property
     def clients(self) -> Iterator[Client]:
-        yield from [e for e in self._entities if isinstance(e, Client)]
+        return self._made(Client)
 
     @property
     def services(self) -> Iterator[Service]:
         """The services made on this node (its parameter services too, as rclpy's)."""
-        yield from [e for e in self._entities if isinstance(e, Service)]
+        return self._made(Service)
 
     @property
     def timers(self) -> Iterator[Timer]:
         """The timers made on this node (those of its rates too, as rclpy's)."""
-        yield from [e for e in self._entities if isinstance(e, Timer)]
+        return self._made(Timer)
 
     def _group(self, callback_group: CallbackGroup | None) -> CallbackGroup:
         """The group an entity's callbacks run in (the node's default if None)."""
