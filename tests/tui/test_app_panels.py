@@ -12,13 +12,14 @@ from support.pilot import SIZE, log_text, pilot_test, type_command, wait_for
 from textual.widgets import DataTable
 from textual.widgets._markdown import MarkdownFence
 
+from turtletui.graph.introspection import TopicInfo
 from turtletui.lessons.loader import find_lesson
 from turtletui.runtime.loader import ControllerSpec
 from turtletui.runtime.resolve import resolve_controllers
 from turtletui.tui.app import TurtleApp
 from turtletui.tui.screens.help import HelpScreen
 from turtletui.tui.widgets.keybar import KeyBar
-from turtletui.tui.widgets.panels import ConsolePanel, graph_text
+from turtletui.tui.widgets.panels import ConsolePanel, graph_text, topic_columns
 from turtletui.tui.widgets.textlog import TextLog
 
 SMALL = (80, 24)
@@ -322,3 +323,15 @@ def test_the_graph_panel_leaves_out_what_every_node_has() -> None:
         TopicInfo("/rosout", "rcl_interfaces/msg/Log", ("/alone", "/talker", "/turtlesim"), (), 0.0, 0),
     ), (), ())
     assert graph_text(graph) == "/talker -> /chatter -> (no subscriber)\n\nnot connected: /alone, /turtlesim"
+
+
+def test_the_topics_table_lists_every_type_a_name_is_used_with() -> None:
+    # as ros2 topic list -t: a student's geometry_msgs Pose subscription on
+    # turtlesim's /turtle1/pose is a second type, not hidden behind the first
+    pose = TopicInfo("/turtle1/pose", "turtlesim_msgs/msg/Pose", ("/turtlesim",), ("/pose_subscriber",), 62.5, 10,
+                     ("geometry_msgs/msg/Pose",))
+    headers, rows = topic_columns((pose,), 200)
+    assert headers[1] == "type"
+    assert rows[0][1] == "geometry_msgs/msg/Pose, turtlesim_msgs/msg/Pose"
+    _, rows = topic_columns((pose,), 45)
+    assert rows[0][1] == "Pose, Pose"

@@ -148,14 +148,18 @@ class TopicsPanel(Vertical):
 
 def topic_columns(topics: tuple[TopicInfo, ...], width: int) -> tuple[tuple[str, ...], tuple]:
     """(headers, rows) of the topics table for ``width`` columns: full types
-    when they fit, else their last part (``Pose``), else no type column;
+    (every one a name is used with) when they fit, else their last part
+    (``Pose``), else no type column;
     names too long for what is left are cut in the middle."""
     counts = [(str(len(t.publishers)), str(len(t.subscribers)), f"{t.rate_hz:.1f}") for t in topics]
     fixed = sum(max(len(h), *(len(c[i]) for c in counts)) + 2 for i, h in enumerate(("pub", "sub", "Hz"))) \
         if counts else 0
     names = [t.name for t in topics]
     name_width = max(map(len, names), default=5)
-    for types in ([t.type for t in topics], [t.type.rsplit("/", 1)[-1] for t in topics], None):
+    # a name some process uses with another type lists them all, as ros2 topic list -t
+    full = [", ".join(t.types) for t in topics]
+    short = [", ".join(ty.rsplit("/", 1)[-1] for ty in t.types) for t in topics]
+    for types in (full, short, None):
         type_width = 0 if types is None else max(map(len, types), default=4) + 2
         if types is None or name_width + 2 + type_width + fixed <= width:
             break
