@@ -788,6 +788,10 @@ def define_action(full_name: str, text: str, namespace: dict | None = None) -> t
     return cls
 
 
+_SHOWN: dict[str, tuple[str, str, int]] = {}
+"""What show_package_as last did for a package, and the registry's size then."""
+
+
 def show_package_as(package: str, shown: str) -> None:
     """Make the interfaces of ``package`` look as ``shown``'s do: the distro of
     a run decides (from Kilted on turtlesim's ``Pose`` prints as
@@ -795,6 +799,10 @@ def show_package_as(package: str, shown: str) -> None:
     ``turtlesim_msgs.msg._pose.Pose``, and nested turtlesim types are
     ``turtlesim_msgs/...`` in ``get_fields_and_field_types()``). Their full
     names (the registry's) stay as defined."""
+    done = (package, shown, len(_REGISTRY))
+    if _SHOWN.get(package) == done:
+        return  # every process that runs a controller asks again: nothing changed since
+    _SHOWN[package] = done
     prefix = f'{package}/'
     for name, cls in _REGISTRY.items():
         if name.startswith(prefix):

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import json
 import os
+import select
 import signal
 import socket
 import subprocess
@@ -33,7 +34,7 @@ from turtletui.runtime.processes import kill_tree, reap_zombie_children
 
 _SERVER = (
     "import sys; sys.path.insert(0, {root!r}); "
-    "from turtletui.runtime.forkserver import serve; serve(int(sys.argv[1]), int(sys.argv[2]))"
+    "from turtletui.runtime.forkserver import serve; serve(int(sys.argv[1]), int(sys.argv[2]), sys.argv[3] or None)"
 )
 _real_sleep = time.sleep  # an in-process controller may get a simulated one
 _PR_SET_PDEATHSIG = 1
@@ -53,11 +54,11 @@ def _prctl(option: int, value: int) -> bool:
 # -- the server process ---------------------------------------------------------
 
 
-def serve(sock_fd: int, parent: int) -> None:
+def serve(sock_fd: int, parent: int, distro: str | None = None) -> None:
     """The server's loop: one request (a JSON config and three descriptors:
-    the child's input, its answers, its output) forks one run child. It ends
-    with the process that started it (``parent``), killed by the kernel then
-    if it is still busy, not only when its socket closes."""
+    the child's input, its answers, its output) forks one run child of
+    ROS 2 ``distro``. It ends with the process that started it (``parent``),
+    killed by the kernel then if it is still busy, not only when its socket closes."""
     _prctl(_PR_SET_PDEATHSIG, signal.SIGKILL)
     if os.getppid() != parent:
         return  # the parent died before the line above
@@ -73,6 +74,7 @@ def serve(sock_fd: int, parent: int) -> None:
     import turtletui.runtime.virtual_time  # noqa: F401
     from turtletui.runtime import child, fastpath  # noqa: F401  (its copy of the simulation: numpy)
 
+    _warm(distro)
     _prctl(_PR_SET_DUMPABLE, 0)  # the runs (same user) cannot trace or read it
     sock = socket.socket(fileno=sock_fd)
     while True:
@@ -94,6 +96,39 @@ def serve(sock_fd: int, parent: int) -> None:
             sock.send(str(pid).encode())
         except OSError:
             return
+
+
+def _warm(distro: str | None) -> None:
+    """Do once what every run child of ``distro`` does first: import turtletui's
+    rclpy and the course's message packages, numpy's random module (seeded in
+    every run), and build the message classes a run's simulation uses. Nothing
+    of the controller's runs here: these are turtletui's own modules, as a
+    fresh child would import them, and every run still starts from a clean
+    context (turtletui.runtime.child.main)."""
+    import importlib
+    import resource  # noqa: F401  (the child's limits)
+
+    import numpy.random  # noqa: F401  (turtletui.runtime.loader.seed_numpy)
+
+    from turtletui import compat
+    from turtletui.compat.distro import package_renames, resolve_distro
+    from turtletui.interfaces import copier, get_interface, trusted_from_values
+    from turtletui.runtime.simulation import Simulation
+
+    try:
+        distro = resolve_distro(distro)
+        compat.install(distro)
+        turtlesim = package_renames(distro).get("turtlesim", "turtlesim")
+        for name in ("rclpy", "rclpy.node", "geometry_msgs.msg", "std_msgs.msg", f"{turtlesim}.msg"):
+            importlib.import_module(name)
+        topics = Simulation(distro=distro).graph.topics.values()
+        every_node = ("rcl_interfaces/msg/ParameterEvent", "rcl_interfaces/msg/SetParametersResult")
+        for cls in {*(topic.msg_type for topic in topics), *map(get_interface, every_node)}:
+            copier(cls)  # what publishing and delivering one needs
+            trusted_from_values(cls)  # what a Report's or Tick's message needs
+        compat.install(distro)  # again, as each child does: now with every interface these registered
+    except Exception:  # noqa: BLE001 - a run child meets the same error and reports it
+        pass
 
 
 def _fork(request: dict[str, Any], fds: list[int], sock: socket.socket, main: Any) -> int:
@@ -178,6 +213,8 @@ class ForkedChild:
         return self.returncode
 
     def wait(self, timeout: float | None = None) -> int:
+        if self.poll() is None:
+            _await_exit(self.pid, timeout)
         deadline = None if timeout is None else time.monotonic() + timeout
         pause = 0.0005
         while self.poll() is None:
@@ -189,15 +226,35 @@ class ForkedChild:
         return self.returncode
 
 
+def _await_exit(pid: int, timeout: float | None) -> None:
+    """Sleep until process ``pid`` has ended or ``timeout`` has passed (Linux's
+    pidfd; returns at once where there is none, and the caller polls)."""
+    try:
+        fd = os.pidfd_open(pid)
+    except (AttributeError, OSError):
+        return
+    try:
+        select.select([fd], [], [], timeout)
+    except OSError:
+        pass
+    finally:
+        os.close(fd)
+
+
 class ForkServer:
     """One warm interpreter and the socket to ask it for run children."""
 
-    def __init__(self, root: str, env: dict[str, str], token: str, credentials: dict[str, Any]) -> None:
+    def __init__(
+        self, root: str, env: dict[str, str], token: str, credentials: dict[str, Any], distro: str | None = None
+    ) -> None:
         self.token = token
         mine, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_SEQPACKET)
         try:
             self.proc = subprocess.Popen(
-                [sys.executable, "-s", "-c", _SERVER.format(root=root), str(theirs.fileno()), str(os.getpid())],
+                [
+                    sys.executable, "-s", "-c", _SERVER.format(root=root), str(theirs.fileno()), str(os.getpid()),
+                    distro or "",
+                ],
                 stdin=subprocess.DEVNULL,
                 stdout=subprocess.DEVNULL,
                 stderr=subprocess.DEVNULL,
@@ -257,7 +314,7 @@ def _is_my_child(pid: int) -> bool:
 
 class ForkServers:
     """The fork server of the submission a grading worker runs now: a new
-    controller file (or user) gets a new server and the old one is stopped."""
+    controller file (or user, or distro) gets a new server and the old one is stopped."""
 
     def __init__(self) -> None:
         self._key: tuple[Any, ...] | None = None

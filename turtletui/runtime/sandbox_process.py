@@ -162,9 +162,11 @@ class ChildProcess:
 
         def start() -> forkserver.ForkServer:
             token = _new_token()
-            return forkserver.ForkServer(_PACKAGE_ROOT, _child_environment(token), token, self._credentials())
+            return forkserver.ForkServer(
+                _PACKAGE_ROOT, _child_environment(token), token, self._credentials(), config.get("distro")
+            )
 
-        key = (str(self.spec.path.resolve()), self.limits.run_as)
+        key = (str(self.spec.path.resolve()), self.limits.run_as, config.get("distro"))
         forked = servers.spawn(key, start, config, cwd, fds, self.limits.start_timeout)
         if forked is None:
             return None
