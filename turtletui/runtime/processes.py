@@ -32,13 +32,21 @@ def _processes() -> Iterator[tuple[int, bytes, int]]:
         yield int(entry), state, ppid
 
 
-def _sandboxed(root: int, token: bytes) -> set[int]:
+_HALTED = frozenset({b"T", b"t", b"Z", b"X"})
+"""Process states in which a process cannot start another: stopped, traced, dead."""
+
+
+def _sandboxed(root: int, token: bytes) -> tuple[set[int], bool]:
     """Processes the child ``root`` started (Linux /proc; empty elsewhere): its
-    descendants, and any process whose environment holds ``token``."""
+    descendants, and any process whose environment holds ``token``; and
+    whether ``root`` is halted (stopped or dead) or gone."""
     children: dict[int, list[int]] = {}
     marked: set[int] = set()
     me = os.getpid()
-    for pid, _, ppid in _processes():
+    halted = True
+    for pid, state, ppid in _processes():
+        if pid == root:
+            halted = state in _HALTED
         children.setdefault(ppid, []).append(pid)
         try:
             with open(f"/proc/{pid}/environ", "rb") as f:
@@ -56,7 +64,7 @@ def _sandboxed(root: int, token: bytes) -> set[int]:
                 stack.append(pid)
     marked.discard(me)
     marked.discard(1)
-    return marked
+    return marked, halted
 
 
 def _signal(pid: int, sig: int, group: bool = False) -> None:
@@ -82,10 +90,11 @@ def kill_tree(pid: int, token: str, *, reaped: bool = False, spare: int | None =
         if not reaped:
             _signal(pid, signal.SIGSTOP)
         for _ in range(8):
-            fresh = _sandboxed(-1 if reaped else pid, marker) - stopped
+            found, halted = _sandboxed(-1 if reaped else pid, marker)
+            fresh = found - stopped
             fresh.discard(spare)
-            if not fresh:
-                break
+            if not fresh or (not reaped and halted and fresh == {pid}):
+                break  # the child alone and stopped (killed below): nothing can have started since
             for child in fresh:
                 _signal(child, signal.SIGSTOP)
             stopped |= fresh
