@@ -101,6 +101,37 @@ def test_the_runs_of_one_submission_share_a_server_and_others_get_their_own(tmp_
     assert tokens[0] != tokens[1] and tokens[0] not in ada + bob
 
 
+DISTRO_PROBE = """\
+import importlib
+
+import rclpy
+
+
+def main():
+    found = []
+    for package in ("turtlesim", "turtlesim_msgs"):
+        try:
+            importlib.import_module(package + ".msg")
+            found.append(package)
+        except ImportError:
+            pass
+    with open("found", "a") as f:
+        f.write(",".join(found) + "\\n")
+    rclpy.init()
+"""
+
+
+def test_a_server_warmed_for_one_distro_never_serves_another(tmp_path: Path) -> None:
+    """The server imports a distro's packages before it forks: a run of another
+    distro must not find them (Kilted has only turtlesim_msgs, Jazzy only turtlesim)."""
+    probe = tmp_path / "probe.py"
+    probe.write_text(DISTRO_PROBE)
+    with forkserver.serving():
+        for distro in ("jazzy", "kilted", "jazzy", "kilted"):
+            run([probe], duration=0.2, distro=distro)
+    assert noted(tmp_path, "found") == ["turtlesim", "turtlesim_msgs", "turtlesim", "turtlesim_msgs"]
+
+
 def _processes_with(token: str) -> set[int]:
     """Processes whose environment holds the sandbox token (those this user may read)."""
     found = set()
