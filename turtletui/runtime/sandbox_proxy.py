@@ -18,7 +18,7 @@ from typing import Any
 from turtletui.compat.matching import warn_others
 from turtletui.graph.core import GoalHandle, Graph, GraphError, NodeRecord, Publisher
 from turtletui.graph.logs import ERROR
-from turtletui.interfaces import from_values, get_interface, to_values
+from turtletui.interfaces import build_from_values, from_values, get_interface, to_values
 from turtletui.runtime import graph_mirror
 from turtletui.runtime.budget import CALLS, WAKE, Pace, size_text
 from turtletui.runtime.protocol import (
@@ -82,7 +82,7 @@ class GraphProxy:
         self.values: Callable[[Any], Any] = to_values
         """A delivered message's values for the child (a replay, whose Ticks
         nobody reads, may skip them)."""
-        self.build: Callable[[Any, list], Any] = from_values
+        self.build: Callable[[Any, list], Any] = build_from_values
         """Builds a published message from the child's values, checking every one
         (a copy of the simulation in the child itself may trust its own)."""
         self._logs_kept = 0
