@@ -18,6 +18,7 @@ own child. A run that cannot be forked (the server died) starts the usual way.
 
 from __future__ import annotations
 
+import gc
 import json
 import os
 import select
@@ -75,6 +76,7 @@ def serve(sock_fd: int, parent: int, distro: str | None = None) -> None:
     from turtletui.runtime import child, fastpath  # noqa: F401  (its copy of the simulation: numpy)
 
     _warm(distro)
+    gc.collect()  # the warm-up's throwaway simulation: no child inherits it
     _prctl(_PR_SET_DUMPABLE, 0)  # the runs (same user) cannot trace or read it
     sock = socket.socket(fileno=sock_fd)
     while True:
