@@ -23,6 +23,11 @@ _running = threading.local()
 """The groups whose callbacks the calling thread is running, innermost last."""
 
 
+def in_callback() -> bool:
+    """Whether the calling thread is running a callback (an executor dispatched it)."""
+    return bool(getattr(_running, "groups", None))
+
+
 def running_groups() -> list[CallbackGroup]:
     """The callback groups the calling thread is inside, innermost last."""
     stack = getattr(_running, "groups", None)

@@ -12,6 +12,7 @@ import sys
 from enum import IntEnum
 from typing import Any
 
+from turtletui.compat.dispatch import in_callback
 from turtletui.graph.logs import parse_level
 
 __all__ = [
@@ -108,7 +109,13 @@ class RcutilsLogger:
             if not _SHOULD_LOG[kind](context):
                 return False
         graph = (_current_host or _bind_current_host())().graph
-        graph.log(name, int(severity), _text(message), _origin(caller) if graph.hears_rosout() else None)
+        graph.log(
+            name,
+            int(severity),
+            _text(message),
+            _origin(caller) if graph.hears_rosout() else None,
+            in_callback=in_callback(),
+        )
         return True
 
     def debug(self, message: str, **kwargs: Any) -> bool:
@@ -139,7 +146,7 @@ class RcutilsLogger:
             return False
         text = message if message.__class__ is str else _text(message)
         graph = (_current_host or _bind_current_host())().graph
-        graph.log(self.name, severity, text, _origin(_caller()) if graph.hears_rosout() else None)
+        graph.log(self.name, severity, text, _origin(_caller()) if graph.hears_rosout() else None, in_callback=in_callback())
         return True
 
     def error(self, message: str, **kwargs: Any) -> bool:

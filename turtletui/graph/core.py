@@ -1204,11 +1204,20 @@ class Graph:
         ready.append((handle.action.owner, lambda: handle.request_cancel(answer)))
 
     # -- logs ---------------------------------------------------------------
-    def log(self, node: str, level: int, msg: str, origin: tuple[str, str, int] | None = None) -> LogRecord:
+    def log(
+        self,
+        node: str,
+        level: int,
+        msg: str,
+        origin: tuple[str, str, int] | None = None,
+        *,
+        in_callback: bool = True,
+    ) -> LogRecord:
         """Log ``msg`` as the logger ``node``; ``origin`` is the call site
-        (file, function, line) that /rosout subscriptions see (see ``hears_rosout``)."""
+        (file, function, line) that /rosout subscriptions see (see ``hears_rosout``);
+        ``in_callback`` whether an executor's callback logged it (LogRecord)."""
         now = self.now_ns
-        record = _new_tuple(LogRecord, (self.epoch_ns + now, now / NS_PER_S, level, node, msg))
+        record = _new_tuple(LogRecord, (self.epoch_ns + now, now / NS_PER_S, level, node, msg, in_callback))
         # Taps (the recorder) first: a line a Ctrl-C cuts short after it was
         # shown (sinks print it) is in the record too.
         if self.taps:

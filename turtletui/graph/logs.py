@@ -24,6 +24,9 @@ class LogRecord(NamedTuple):
     level: int
     node: str
     msg: str
+    in_callback: bool = True
+    """Whether a callback the executor ran logged it (a timer's, a subscription's...),
+    not code outside spin such as a loop in main() that sleeps between lines."""
 
     @property
     def level_name(self) -> str:

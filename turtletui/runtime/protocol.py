@@ -158,6 +158,8 @@ class Log(NamedTuple):
     level: int
     node: str
     text: str
+    in_callback: bool = True
+    """Whether a callback the executor ran logged it (turtletui.graph.logs.LogRecord)."""
 
 
 class Publish(NamedTuple):
@@ -617,7 +619,7 @@ _FIELDS: dict[type, tuple[Callable[[Any], Any], ...]] = {
     DeclareActionServer: (_int, _str, _str),
     RemoveRecord: (_removable, _int, _str),
     SetParameter: (_int, _str, _parameter_value, _bool),
-    Log: (_int, _str, _str),
+    Log: (_int, _str, _str, _bool),
     Publish: (_str, _values, _int, _bool),
     CallService: (_int, _str, _values),
     SendGoal: (_int, _str, _values),
