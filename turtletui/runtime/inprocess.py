@@ -83,17 +83,25 @@ class InProcessHost(CallbackTracking):
             return self.end_ns
         return min(self.graph.now_ns + max(timeout_ns, 0), self.end_ns)
 
-    def _check_end(self) -> None:
-        if self.graph.now_ns >= self.end_ns:
+    def _check_end(self, deadline_ns: int | None = None) -> None:
+        """The run is over once time is at its end and the controller waits
+        for a later moment (``deadline_ns``; None: for ever). A wait that ends
+        at the last instant itself returns with the run still going, as in
+        the sandbox: the timers due then fire, and code after the wait runs."""
+        if self.graph.now_ns >= self.end_ns and (deadline_ns is None or deadline_ns > self.end_ns):
             self.running = False
+
+    def _deadline(self, timeout_ns: int | None) -> int | None:
+        return None if timeout_ns is None else self.graph.now_ns + max(timeout_ns, 0)
 
     def spin_once(self, timeout_ns: int | None) -> bool:
         self._one_thread()
         if not self.running:
             return False
+        deadline = self._deadline(timeout_ns)
         outcome = self.sim.pump(self.owner, self.end_ns if timeout_ns is None else self._limit(timeout_ns))
-        if self.graph.now_ns >= self.end_ns:
-            self.running = False
+        if outcome != "own":
+            self._check_end(deadline)
         return outcome == "own" or self.running
 
     def spin_until(self, done: Callable[[], bool], timeout_ns: int | None, *, callbacks: bool = True) -> bool:
@@ -108,19 +116,19 @@ class InProcessHost(CallbackTracking):
             due = self.graph.next_due()
             self.sleep_until(self.end_ns if due is None else due)
         limit = self._limit(timeout_ns)
+        deadline = self._deadline(timeout_ns)
         while not done():
             if not self.running or self.graph.now_ns >= limit:
-                self._check_end()
+                self._check_end(deadline)
                 return False
             self.sim.pump(self.owner, limit, run_own=callbacks, until=done)
-            self._check_end()
         return True
 
     def sleep_until(self, t_ns: int) -> bool:
         self._one_thread()
         if self.running:
             self.sim.pump(self.owner, min(t_ns, self.end_ns), run_own=False)
-            self._check_end()
+            self._check_end(t_ns)
         return self.running
 
 
