@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
 from support.lessons import SOLUTIONS, failed_checks, feedback_of, not_judged
 
 LESSON = "part3-first-node"
@@ -45,6 +46,16 @@ def test_logging_once_from_init_fails_the_timer_check(grade):
     assert "1 log line matching" in text and "from a timer callback" in text and "__init__ runs once" in text
     # it did not crash, but running without a timer is not the task: no points for it
     assert "no_crash" not in failed_checks(result) and "no_crash" in not_judged(result)
+    assert result.score == 0.0
+
+
+@pytest.mark.parametrize("in_process", [False, True], ids=["sandboxed", "in-process"])
+@pytest.mark.parametrize("solution", ["sleep_loop_in_main.py", "spin_once_loop.py"])
+def test_a_counter_logged_by_a_loop_in_main_is_not_a_timer(grade, solution, in_process):
+    result = grade(LESSON, HERE / solution, in_process=in_process)
+    assert failed_checks(result) == {"log_period"}
+    (text,) = feedback_of(result, "log_period")
+    assert "were logged outside any callback" in text and "time.sleep(1.0) prints the same lines" in text
     assert result.score == 0.0
 
 

@@ -132,11 +132,22 @@ def _counts_up(records: list[Any], th: Mapping[str, Any]) -> Verdict:
     "The matching log lines come one per period, as a timer's do: at least `min` of them "
     "(default 3), every gap within `tolerance` (a fraction, default 0.1) of the median gap, "
     "which must lie between `min_period` and `max_period` seconds when given. Lines of one kind "
-    "are judged, as by log_counter.",
-    {**_LOG, "min": "number", "tolerance": "number", "min_period": "number", "max_period": "number"},
+    "are judged, as by log_counter. With `in_callback = true` they must also come from "
+    "callbacks the executor ran (a timer's), not from a loop outside spin (time.sleep in main()).",
+    {**_LOG, "min": "number", "tolerance": "number", "min_period": "number", "max_period": "number",
+     "in_callback": "boolean"},
 )
 def log_period(trace: Trace, th: Mapping[str, Any]) -> Verdict:
-    return _one_per_period(_counter_lines(trace, th), th)
+    lines = _counter_lines(trace, th)
+    outside = [record for record in lines if not record.in_callback] if th.get("in_callback") else []
+    if outside and len(lines) >= max(th.get("min", 3), 2):  # too few lines: that is said first
+        return Verdict(
+            False,
+            f"{len(outside)} of the {plural(len(lines), 'log line')}{_matching(th)} were logged outside any "
+            f"callback (the first at t={outside[0].t:.3f} s): from a loop that sleeps between lines, not "
+            "from a timer callback that rclpy.spin runs",
+        )
+    return _one_per_period(lines, th)
 
 
 def _one_per_period(records: list[Any], th: Mapping[str, Any]) -> Verdict:
