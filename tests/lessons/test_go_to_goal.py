@@ -60,3 +60,14 @@ def test_an_error_never_wrapped_spins_when_the_goal_is_due_west(grade):
     assert failures["time_to_goal"] == {"goal due west"}
     assert "math.atan2(math.sin(e), math.cos(e))" in feedback(result, "time_to_goal")
     assert result.score < result.max_score
+
+
+def test_a_plan_made_from_the_first_pose_and_driven_by_the_clock_is_lost_when_the_turtle_is_moved(grade):
+    result = grade(LESSON, HERE / "timed_from_first_pose.py")
+    failures = failed(result)
+    # undisturbed, the plan arrives: the default goal and the one to the left are reached
+    assert "default goal" not in failures.get("time_to_goal", set())
+    assert "goal to the left" not in failures.get("time_to_goal", set())
+    # the hidden runs teleport the turtle halfway: the plan drives on and misses
+    assert {"hidden 1", "hidden 2"} <= failures["time_to_goal"] & failures["final_error"]
+    assert "never from a plan made from the first pose" in feedback(result, "time_to_goal")

@@ -344,6 +344,26 @@ def test_forbidden_services_and_a_scenarios_drive(tmp_path):
     )
 
 
+@pytest.mark.parametrize(
+    ("teleport", "expected"),
+    [
+        ("{at = 2.0, x = 3.0, y = 4.0}", (2.0, 3.0, 4.0, 0.0)),
+        ("{at = 2.0, x = 3.0, y = 4.0, theta = 1.5}", (2.0, 3.0, 4.0, 1.5)),
+        ("{x = 3.0, y = 4.0}", "teleport must be a table {at = s, x = m, y = m, theta = rad}, got {'x': 3.0, 'y': 4.0}"),
+        ("{at = 2.0, x = 3.0, y = 4.0, z = 1.0}", "teleport must be a table {at = s, x = m, y = m, theta = rad}"),
+        ('{at = "soon", x = 3.0, y = 4.0}', "teleport must be a table {at = s, x = m, y = m, theta = rad} of numbers"),
+        ("{at = 60.0, x = 3.0, y = 4.0}", "teleport at must lie within the run (0 to 10 s), got 60"),
+        ("{at = 2.0, x = 12.0, y = 4.0}", "teleport x must be a number of metres in the arena (0 to 11.09), got 12"),
+    ],
+)
+def test_a_scenarios_teleport(tmp_path, teleport, expected):
+    path = write(tmp_path, "x.md", GOOD_FRONT + f'[[scenarios]]\nname = "a"\nduration = 10.0\nteleport = {teleport}\n')
+    if isinstance(expected, tuple):
+        assert load_lesson(path).scenarios[0].teleport == expected
+    else:
+        assert error_of(path).startswith(f"{path}:8: scenarios[0].{expected}")
+
+
 def test_a_missing_starter_file(tmp_path):
     path = write(tmp_path, "x.md", GOOD_FRONT + 'starter = "nope.py"\n')
     assert error_of(path).startswith(

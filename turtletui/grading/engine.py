@@ -321,6 +321,8 @@ def run_scenario(
     steps = [Step("turtletui.grading.scenario_steps:place_turtle", (tuple(start), run.label))]
     if scenario.drive is not None:
         steps.append(Step("turtletui.grading.scenario_steps:ScenarioDriver", (tuple(scenario.drive),)))
+    if scenario.teleport is not None:
+        steps.append(Step("turtletui.grading.scenario_steps:ScenarioTeleport", (tuple(scenario.teleport), run.label)))
 
     def observe(sim: Simulation) -> None:
         # the sandboxed child's copy redoes the steps; what observes stays here
@@ -341,6 +343,8 @@ def run_scenario(
                 sim, scenario=run.label, seed=run.seed, duration=duration, scripted=driver and driver.msg
             )
         )
+        if scenario.teleport is not None:
+            setup.results[-1].on_jump.append(collector[-1].teleported)
 
     setup = ReplicableSetup(steps, observe)
     try:

@@ -34,6 +34,27 @@ class ScenarioDriver:
         sim.graph.add_timer(teleop.node, self.PERIOD_NS, lambda: teleop.publish(self.msg))
 
 
+class ScenarioTeleport:
+    """Teleports turtle1 once, at a scenario's ``teleport`` (at, x, y, theta), as
+    ``ros2 service call /turtle1/teleport_absolute`` from a terminal would (the
+    jump shows at turtlesim's next step); ``on_jump`` hears of it (the trace)."""
+
+    def __init__(self, sim: Simulation, teleport: tuple[float, float, float, float], label: str) -> None:
+        at, x, y, theta = teleport
+        self.sim = sim
+        self.on_jump: list = []
+
+        def jump() -> None:
+            if "turtle1" not in sim.world.turtles:
+                return
+            sim.world.teleport_absolute("turtle1", x, y, theta)
+            sim.graph.log("turtletui", INFO, f"scenario {label}: turtle1 teleported to x=[{x:f}], y=[{y:f}], theta=[{theta:f}]")
+            for listener in self.on_jump:
+                listener("turtle1")
+
+        sim.graph.call_later(sim.turtlesim.node, round(at * 1e9) - sim.graph.now_ns, jump)
+
+
 def place_turtle(sim: Simulation, start: tuple[float, float, float], label: str) -> None:
     """Put turtle1 at a scenario's start before anything has run (nothing drawn)."""
     sim.world.place("turtle1", *start)

@@ -147,6 +147,11 @@ class TraceCollector:
             name, goal = payload
             self._goals.append(GoalSent(self.sim.t, name, goal))
 
+    def teleported(self, turtle: str) -> None:
+        """``turtle`` jumped without a service call (a scenario's teleport): its
+        next pose is marked as a teleport's."""
+        self._jumped.add(turtle)
+
     def _pose(self, name: str, msg: Any) -> None:
         if not self.sim.turtlesim.published(name, msg):
             return

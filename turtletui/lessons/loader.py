@@ -50,9 +50,12 @@ LESSON_FIELDS = (
     "overlays",
     "forbidden_services",
 )
-SCENARIO_FIELDS = ("name", "start", "duration", "seed", "seeds", "hidden", "world", "ros_args", "drive")
+SCENARIO_FIELDS = (
+    "name", "start", "duration", "seed", "seeds", "hidden", "world", "ros_args", "drive", "teleport",
+)
 START_FIELDS = ("x", "y", "theta")
 DRIVE_FIELDS = ("linear", "angular")
+TELEPORT_FIELDS = ("at", "x", "y", "theta")
 CHECK_FIELDS = ("name", "label", "weight", "feedback", "thresholds", "scenarios", "requires")
 OVERLAY_FIELDS = ("x0", "y0", "x1", "y1", "color")
 
@@ -450,6 +453,7 @@ class _Validator:
             ):
                 raise bad("drive", f"must be a table {{linear = m/s, angular = rad/s}}, got {_show(drive)}")
             drive = (float(drive.get("linear", 0.0)), float(drive.get("angular", 0.0)))
+        teleport = self._teleport(item.get("teleport"), float(duration), bad)
         return Scenario(
             name=name,
             start=start,
@@ -459,7 +463,25 @@ class _Validator:
             world=world,
             ros_args=tuple(ros_args),
             drive=drive,
+            teleport=teleport,
         )
+
+    @staticmethod
+    def _teleport(value: Any, duration: float, bad: Any) -> tuple[float, float, float, float] | None:
+        if value is None:
+            return None
+        shape = "a table {at = s, x = m, y = m, theta = rad}"
+        if not isinstance(value, dict) or set(value) - set(TELEPORT_FIELDS) or not {"at", "x", "y"} <= set(value):
+            raise bad("teleport", f"must be {shape}, got {_show(value)}")
+        if not all(_is_number(v) for v in value.values()):
+            raise bad("teleport", f"must be {shape} of numbers, got {_show(value)}")
+        at = float(value["at"])
+        if not 0.0 < at < duration:
+            raise bad("teleport", f"at must lie within the run (0 to {duration:g} s), got {at:g}")
+        for key in ("x", "y"):
+            if not 0.0 <= value[key] <= 11.09:
+                raise bad("teleport", f"{key} must be a number of metres in the arena (0 to 11.09), got {value[key]:g}")
+        return at, float(value["x"]), float(value["y"]), float(value.get("theta", 0.0))
 
     def _overlay(self, i: int, item: dict[str, Any]) -> ArenaOverlay:
         where = f"overlays[{i}]"

@@ -32,6 +32,11 @@ class Scenario:
     """(linear.x m/s, angular.z rad/s) the scenario itself drives turtle1 with,
     as a person at turtle_teleop_key would, for lessons whose node only watches;
     None: only the controller moves the turtle."""
+    teleport: tuple[float, float, float, float] | None = None
+    """(at s, x m, y m, theta rad): at ``at`` simulated seconds someone teleports
+    turtle1 there, as ``ros2 service call /turtle1/teleport_absolute`` from a
+    terminal would, so that a node that planned its way once, from the start
+    pose, loses it; None: nobody does."""
 
     @property
     def seed(self) -> int:
