@@ -631,15 +631,18 @@ class Node(Destroyable):
             raise TypeError(f"create_subscription() needs a callable callback, got {callback!r}")
         depth = depth_of(qos_profile)
         host = self._context.host
+        name = self.resolve_topic_name(topic)
+        run = dispatcher(host, self._group(callback_group), callback)
         try:
             record = self._graph.add_subscription(
                 self._record,
-                self.resolve_topic_name(topic),
+                name,
                 msg_type,
                 depth,
-                dispatcher(host, self._group(callback_group), callback),
+                run,
                 qos=qos_profile,
                 copy=copier(msg_type),
+                delivery=run.delivery,
             )
         except core.TopicTypeConflict as err:
             raise topic_type_error("subscription", err.name, err.type_name) from None

@@ -718,14 +718,21 @@ class Graph:
         *,
         qos: Any = None,
         copy: Callable[[Any], Any] | None = None,
+        delivery: Callable[[Subscription], Callable[[], None]] | None = None,
     ) -> Subscription:
         """Subscribe ``callback`` to topic ``name``; with ``copy``, each message is
-        queued as ``copy(msg)``, the subscription's own (see Subscription.copy)."""
+        queued as ``copy(msg)``, the subscription's own (see Subscription.copy).
+        ``delivery(sub)``, if given, makes what hands ``sub``'s queue to the
+        callback in place of Subscription.deliver: the same steps fused with
+        the callback's own layers (it clears ``sub.pending`` first, then
+        takes the messages oldest first)."""
         topic = self.topic(name, msg_type, node.owner)
         self.version += 1
         sub = Subscription(node, topic, depth, callback, node.owner, qos, copy, self.now_ns)
+        deliver = sub.deliver if delivery is None else delivery(sub)
         if name == ROSOUT:
-            sub.ready_item = (sub.owner, self._counted_rosout_delivery(sub.deliver))
+            deliver = self._counted_rosout_delivery(deliver)
+        sub.ready_item = (sub.owner, deliver)
         topic.subscriptions.append(sub)
         if self.outbox is not None:
             self.outbox.declared(sub)
