@@ -125,7 +125,7 @@ class Publisher(Destroyable):
         graph = self._graph
         if record.created_ns + graph.discovery_ns > graph.now_ns:  # not graph.known_to_others(record)
             self._tell_if_lost()
-        self._publish(self._topic, msg, None, record)
+        self._publish(self._topic, msg, None, record, fresh=True)
 
     def _tell_if_lost(self) -> None:
         """Say once why a message reached no one in another process, if someone

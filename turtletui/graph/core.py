@@ -171,7 +171,6 @@ class Topic:
         "subscriptions",
         "count",
         "_stamps",
-        "last",
         "publisher_owners",
     )
 
@@ -182,7 +181,6 @@ class Topic:
         self.publishers: list[Publisher] = []
         self.subscriptions: list[Subscription] = []
         self.count = 0
-        self.last: Any = None
         self._stamps: deque[int] = deque(maxlen=_RATE_WINDOW)
         self.publisher_owners: set[str] = set()
         """Every owner that ever had a publisher here (kept after it is gone)."""
@@ -882,13 +880,20 @@ class Graph:
         publisher: Publisher | None = None,
         *,
         young: bool | None = None,
+        fresh: bool = False,
     ) -> None:
         """Deliver ``msg`` to every subscription of ``topic`` that has discovered
         ``publisher`` (see ``discovery_ns``; without one, the subscription's own
         age decides) and whose QoS matches its own, except those owned by
         ``source`` (a sandboxed host already delivered to its own subscribers).
         ``young`` says whether the other processes have yet to discover the
-        publisher, when the caller knows better (the sandboxed host decided)."""
+        publisher, when the caller knows better (the sandboxed host decided).
+
+        ``fresh`` says the caller made ``msg`` for this call and will not
+        change it: when the topic's one subscription would get a copy of its
+        own and nothing else keeps ``msg`` (no tap, no transient-local
+        history, no other part of the graph), it gets ``msg`` itself, a copy
+        saved on every pose turtlesim publishes."""
         outbox = self.outbox
         if outbox is not None:
             source = outbox.remote_owner  # the outbox delivers to those
@@ -904,10 +909,14 @@ class Graph:
                 publisher.kept.append((now, msg))
         if not young:  # others count only what reaches them (a sandboxed host forwards nothing young)
             topic.count += 1
-            topic.last = msg
             topic._stamps.append(now)
+        subscriptions = topic.subscriptions
+        if fresh and (
+            len(subscriptions) != 1 or self.taps or outbox is not None or (publisher is not None and publisher.kept is not None)
+        ):
+            fresh = False  # msg may be kept or shared: every subscription gets a copy
         ready = None
-        for sub in topic.subscriptions:
+        for sub in subscriptions:
             if (
                 (source is not None and sub.owner == source)
                 or (sub.owner != owner and (young or sub.created_ns > settled))
@@ -915,7 +924,7 @@ class Graph:
             ):
                 continue
             copy = sub.copy
-            sub.queue.append(msg if copy is None else copy(msg))
+            sub.queue.append(msg if copy is None or fresh else copy(msg))
             if not sub.pending:
                 sub.pending = True
                 if ready is None:

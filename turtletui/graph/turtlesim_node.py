@@ -161,6 +161,11 @@ class TurtlesimNode:
         self._poses: dict[str, Any] = {}
         """The Pose message last published for each turtle."""
         self._goals: dict[int, GoalHandle] = {}
+        self._pose_plan: list[tuple[Any, str, Publisher, Publisher]] = []
+        self._colour_heard = False
+        self._plan_version = -1
+        """The graph version ``_pose_plan`` and ``_colour_heard`` were worked out for (see ``_plan``)."""
+        self._plan_turtles: list | None = None
         self.event_sinks: list[Callable[[Event], None]] = []
         """Called with every event of the world as it is handled (e.g. the app
         marks wall hits on the arena)."""
@@ -188,38 +193,47 @@ class TurtlesimNode:
     # -- the 16 ms update timer ---------------------------------------------
     def _update(self) -> None:
         world = self.world
-        turtles = self._turtles
         graph = self.graph
-        sense = False
-        for ends in turtles.values():
-            color = ends.color
-            if color and color.topic.subscriptions:
-                sense = True
-                break
-        else:
-            sense = graph.record_everything
+        if graph.version != self._plan_version or world.turtles_in_order is not self._plan_turtles:
+            self._plan()
+        sense = self._colour_heard or graph.record_everything
         if not world.step(sense_color=sense):
             return
         if world.events:
             self._handle_events()
+            if graph.version != self._plan_version or world.turtles_in_order is not self._plan_turtles:
+                self._plan()
         publish = graph.publish
         trusted_pose = Pose._trusted
         poses = self._poses
-        for turtle in world.turtles_in_order:
-            ends = turtles[turtle.name]
+        for turtle, name, pose, colour in self._pose_plan:
             vx, vy = turtle.vx, turtle.vy
             speed = (vx * vx + vy * vy) ** 0.5
             try:
                 fields = _F32_unpack(_F32_pack(turtle.x, turtle.y, turtle.theta, speed, turtle.wz))
             except OverflowError:
                 fields = _float32(turtle.x, turtle.y, turtle.theta, speed, turtle.wz)
-            pose = poses[turtle.name] = trusted_pose(*fields)
+            msg = poses[name] = trusted_pose(*fields)
             # young=False: the trace sees every pose; QoS mismatches still mute
-            publish(ends.pose.topic, pose, None, ends.pose, young=False)
+            publish(pose.topic, msg, None, pose, young=False, fresh=True)
             if sense:
-                publish(ends.color.topic, Color._trusted(*turtle.color), None, ends.color, young=False)
+                publish(colour.topic, Color._trusted(*turtle.color), None, colour, young=False, fresh=True)
         if self._scan_period and world.ticks % self._scan_period == 0:
             self._publish_scans()
+
+    def _plan(self) -> None:
+        """What each tick publishes for whom, worked out again only when the
+        graph or the turtles changed: (turtle, name, pose publisher, colour
+        publisher) in update order, and whether anyone hears a colour sensor."""
+        turtles = self._turtles
+        self._pose_plan = [
+            (turtle, turtle.name, ends.pose, ends.color)
+            for turtle in self.world.turtles_in_order
+            if (ends := turtles.get(turtle.name)) is not None
+        ]
+        self._colour_heard = any(ends.color and ends.color.topic.subscriptions for ends in turtles.values())
+        self._plan_version = self.graph.version
+        self._plan_turtles = self.world.turtles_in_order
 
     def _publish_scans(self) -> None:
         world, graph = self.world, self.graph
