@@ -509,9 +509,8 @@ class Graph:
         due then. Returns False, leaving time at ``until_ns``, when none is due."""
         timers = self._timers
         while timers:
-            head = timers[0]
-            timer = head[2]
-            if timer.canceled or head[0] != timer.next_due:
+            due, seq, timer = timers[0]
+            if timer.canceled or due != timer.next_due:
                 heapq.heappop(timers)
                 continue
             break
@@ -519,7 +518,6 @@ class Graph:
             if until_ns is not None and until_ns > self.now_ns:
                 self.now_ns = until_ns
             return False
-        due = head[0]
         if until_ns is not None and due > until_ns:
             if until_ns > self.now_ns:
                 self.now_ns = until_ns
@@ -527,16 +525,21 @@ class Graph:
         now = self.now_ns
         if due > now:
             self.now_ns = now = due
-        ready = self.ready
-        heappop = heapq.heappop
+        # The head is live and due: fire it, then any other timer due now.
         heapreplace = heapq.heapreplace
-        while timers and timers[0][0] <= now:
-            due, _, timer = timers[0]
+        ready = self.ready
+        timer.next_due = next_due = due + timer.period_ns
+        heapreplace(timers, (next_due, seq, timer))  # pop and push in one
+        ready.append(timer.ready_item)
+        while timers[0][0] <= now:
+            due, seq, timer = timers[0]
             if timer.canceled or due != timer.next_due:
-                heappop(timers)
+                heapq.heappop(timers)
+                if not timers:
+                    break
                 continue
             timer.next_due = next_due = due + timer.period_ns
-            heapreplace(timers, (next_due, timer.seq, timer))  # pop and push in one
+            heapreplace(timers, (next_due, seq, timer))
             ready.append(timer.ready_item)
         return True
 
@@ -899,27 +902,29 @@ class Graph:
             source = outbox.remote_owner  # the outbox delivers to those
         now = self.now_ns
         settled = now - self.discovery_ns  # endpoints made by then: discovered by all
-        owner = source if publisher is None else publisher.owner
-        if young is None:
-            young = publisher is not None and publisher.created_ns > settled
-        muted = ()
-        if publisher is not None:
+        if publisher is None:
+            owner = source
+            muted = ()
+            young = bool(young)
+        else:
+            owner = publisher.owner
             muted = publisher.muted
+            if young is None:
+                young = publisher.created_ns > settled
             if publisher.kept is not None:
                 publisher.kept.append((now, msg))
+                fresh = False  # kept for late joiners: every subscription gets a copy
         if not young:  # others count only what reaches them (a sandboxed host forwards nothing young)
             topic.count += 1
             topic._stamps.append(now)
         subscriptions = topic.subscriptions
-        if fresh and (
-            len(subscriptions) != 1 or self.taps or outbox is not None or (publisher is not None and publisher.kept is not None)
-        ):
-            fresh = False  # msg may be kept or shared: every subscription gets a copy
-        ready = None
+        if fresh and (len(subscriptions) != 1 or self.taps or outbox is not None):
+            fresh = False  # msg may be shared or kept: every subscription gets a copy
+        ready = self.ready
         for sub in subscriptions:
             if (
-                (source is not None and sub.owner == source)
-                or (sub.owner != owner and (young or sub.created_ns > settled))
+                (sub.owner != owner and (young or sub.created_ns > settled))
+                or (source is not None and sub.owner == source)
                 or (muted and sub in muted)
             ):
                 continue
@@ -927,8 +932,6 @@ class Graph:
             sub.queue.append(msg if copy is None or fresh else copy(msg))
             if not sub.pending:
                 sub.pending = True
-                if ready is None:
-                    ready = self.ready
                 ready.append(sub.ready_item)
         if self.taps and not young:
             for tap in self.taps:
