@@ -360,6 +360,47 @@ def test_a_fresh_message_with_one_subscription_and_nobody_else_is_that_subscript
     assert own[0] is msg and own[1].linear.x == 2.0
 
 
+@pytest.mark.parametrize("keeper", ["shared subscription", "copying subscription", "tap", "transient local"])
+def test_a_snapshot_publish_gives_every_keeper_the_message_as_it_was(keeper):
+    graph = make_graph()
+    node = graph.add_node("n")
+    kept: list[Twist] = []
+    qos = Policies.named("reliable", "transient_local") if keeper == "transient local" else None
+    pub = graph.add_publisher(node, "/cmd", Twist, 7, qos=qos)
+    if keeper == "shared subscription":
+        graph.add_subscription(node, "/cmd", Twist, 7, kept.append)
+    elif keeper == "copying subscription":
+        graph.add_subscription(node, "/cmd", Twist, 7, kept.append, copy=copier(Twist))
+    elif keeper == "tap":
+        graph.taps.append(lambda kind, payload: kept.append(payload[1]))
+    msg = Twist(linear=Vector3(x=1.0))
+    graph.publish(pub.topic, msg, None, pub, snapshot=copier(Twist))
+    msg.linear.x = 3.0  # the publisher's: changed after publish
+    graph.run_ready()
+    if keeper == "transient local":
+        kept = [m for _, m in pub.kept]
+    assert [m.linear.x for m in kept] == [1.0] and kept[0] is not msg
+
+
+def test_a_snapshot_publish_copies_nothing_for_a_subscription_that_takes_its_values():
+    graph = make_graph()
+    node = graph.add_node("n")
+    got: list[tuple] = []
+    pub = graph.add_publisher(node, "/cmd", Twist, 7)
+    copies: list[Twist] = []
+
+    def snapshot(msg: Twist) -> Twist:
+        copies.append(msg)
+        return copier(Twist)(msg)
+
+    graph.add_subscription(node, "/cmd", Twist, 7, got.append, copy=lambda m: (m.linear.x, m.angular.z))
+    msg = Twist(linear=Vector3(x=1.0))
+    graph.publish(pub.topic, msg, None, pub, snapshot=snapshot)
+    msg.linear.x = 3.0
+    graph.run_ready()
+    assert got == [(1.0, 0.0)] and copies == []
+
+
 def test_endpoints_come_off_the_graph_once():
     graph = make_graph()
     node = graph.add_node("n")

@@ -1076,7 +1076,7 @@ def test_cmd_vel_subscription_keeps_only_the_last_7_messages():
     seen: list[float] = []
     sub = sim.graph.topics["/turtle1/cmd_vel"].subscriptions[0]
     original = sub.callback
-    sub.callback = lambda msg: (seen.append(msg.linear.x), original(msg))
+    sub.callback = lambda velocities: (seen.append(velocities[0]), original(velocities))  # (linear x, y, angular z)
     topic = sim.graph.topics["/turtle1/cmd_vel"]
     for i in range(10):
         sim.graph.publish(topic, Twist(linear=Vector3(x=float(i))))

@@ -120,12 +120,11 @@ class Publisher(Destroyable):
                 f"publish() on {self._topic.name} expects a {self._topic.type_name} message, got "
                 + (_describe(msg))
             )
-        msg = self._copy(msg)
         record = self._record
         graph = self._graph
         if record.created_ns + graph.discovery_ns > graph.now_ns:  # not graph.known_to_others(record)
             self._tell_if_lost()
-        self._publish(self._topic, msg, None, record, fresh=True)
+        self._publish(self._topic, msg, None, record, snapshot=self._copy)
 
     def _tell_if_lost(self) -> None:
         """Say once why a message reached no one in another process, if someone

@@ -884,6 +884,7 @@ class Graph:
         *,
         young: bool | None = None,
         fresh: bool = False,
+        snapshot: Callable[[Any], Any] | None = None,
     ) -> None:
         """Deliver ``msg`` to every subscription of ``topic`` that has discovered
         ``publisher`` (see ``discovery_ns``; without one, the subscription's own
@@ -896,7 +897,14 @@ class Graph:
         change it: when the topic's one subscription would get a copy of its
         own and nothing else keeps ``msg`` (no tap, no transient-local
         history, no other part of the graph), it gets ``msg`` itself, a copy
-        saved on every pose turtlesim publishes."""
+        saved on every pose turtlesim publishes.
+
+        ``snapshot`` says ``msg`` stays the caller's, who may change it after
+        this call (rclpy's publish()): ``snapshot(msg)`` copies it once for
+        whatever keeps it (a tap, a transient-local history, the other part
+        of the graph, a subscription without a copy function of its own),
+        and nothing is copied when nothing keeps it (turtlesim takes only
+        the values it reads of a Twist: TurtlesimNode)."""
         outbox = self.outbox
         if outbox is not None:
             source = outbox.remote_owner  # the outbox delivers to those
@@ -912,11 +920,15 @@ class Graph:
             if young is None:
                 young = publisher.created_ns > settled
             if publisher.kept is not None:
+                if snapshot is not None:
+                    msg, snapshot = snapshot(msg), None
                 publisher.kept.append((now, msg))
                 fresh = False  # kept for late joiners: every subscription gets a copy
         if not young:  # others count only what reaches them (a sandboxed host forwards nothing young)
             topic.count += 1
             topic._stamps.append(now)
+        if snapshot is not None and (self.taps or outbox is not None):
+            msg, snapshot = snapshot(msg), None
         subscriptions = topic.subscriptions
         if fresh and (len(subscriptions) != 1 or self.taps or outbox is not None):
             fresh = False  # msg may be shared or kept: every subscription gets a copy
@@ -929,7 +941,12 @@ class Graph:
             ):
                 continue
             copy = sub.copy
-            sub.queue.append(msg if copy is None or fresh else copy(msg))
+            if copy is None:
+                if snapshot is not None:
+                    msg, snapshot = snapshot(msg), None
+                sub.queue.append(msg)
+            else:
+                sub.queue.append(msg if fresh else copy(msg))
             if not sub.pending:
                 sub.pending = True
                 ready.append(sub.ready_item)

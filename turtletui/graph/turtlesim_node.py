@@ -19,6 +19,7 @@ from turtletui.graph.core import (
 )
 from turtletui.graph.logs import ERROR, INFO, WARN
 from turtletui.graph.simulated_node import SimulatedNode
+from turtletui.interfaces import fields_getter
 from turtletui.interfaces.builtin_interfaces import Time
 from turtletui.interfaces.geometry_msgs import Twist
 from turtletui.interfaces.rcl_interfaces import (
@@ -58,6 +59,8 @@ from turtletui.sim.obstacles import RayCaster
 QOS_DEPTH = 7
 """turtlesim's topics: keep last 7, reliable (qos.hpp)."""
 
+_TWIST_VELOCITIES = fields_getter(Twist, "linear.x", "linear.y", "angular.z")
+"""What turtlesim reads of a velocity command."""
 _F32 = struct.Struct("5f")
 _F32_pack = _F32.pack
 _F32_unpack = _F32.unpack
@@ -353,13 +356,17 @@ class TurtlesimNode:
         if world.lidar is not None:
             ends.scan = graph.add_publisher(node, f"/{name}/scan", LaserScan, QOS_DEPTH)
 
-        def on_cmd_vel(msg: Twist) -> None:
+        def on_cmd_vel(velocities: tuple[float, float, float]) -> None:
             if name in world.turtles:
-                world.command_velocity(name, msg.linear.x, msg.linear.y, msg.angular.z)
+                world.command_velocity(name, *velocities)
                 if world.events:
                     self._handle_events()
 
-        ends.cmd_vel = graph.add_subscription(node, f"/{name}/cmd_vel", Twist, QOS_DEPTH, on_cmd_vel)
+        # The subscription keeps only what turtlesim reads of each Twist: a
+        # publisher then need not copy the whole message (Graph.publish's snapshot).
+        ends.cmd_vel = graph.add_subscription(
+            node, f"/{name}/cmd_vel", Twist, QOS_DEPTH, on_cmd_vel, copy=_TWIST_VELOCITIES
+        )
         services = {
             "set_pen": (SetPen, lambda t, r: world.set_pen(t, r.r, r.g, r.b, r.width, r.off)),
             "teleport_absolute": (
