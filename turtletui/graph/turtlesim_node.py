@@ -362,10 +362,31 @@ class TurtlesimNode:
                 if world.events:
                     self._handle_events()
 
+        def cmd_vel_delivery(sub: Subscription) -> Callable[[], None]:
+            queue = sub.queue
+
+            def deliver() -> None:
+                # Subscription.deliver with on_cmd_vel written in: a frame less a command.
+                sub.pending = False
+                while queue:
+                    velocities = queue.popleft()
+                    if name in world.turtles:
+                        world.command_velocity(name, *velocities)
+                        if world.events:
+                            self._handle_events()
+
+            return deliver
+
         # The subscription keeps only what turtlesim reads of each Twist: a
         # publisher then need not copy the whole message (Graph.publish's snapshot).
         ends.cmd_vel = graph.add_subscription(
-            node, f"/{name}/cmd_vel", Twist, QOS_DEPTH, on_cmd_vel, copy=_TWIST_VELOCITIES
+            node,
+            f"/{name}/cmd_vel",
+            Twist,
+            QOS_DEPTH,
+            on_cmd_vel,
+            copy=_TWIST_VELOCITIES,
+            delivery=cmd_vel_delivery,
         )
         services = {
             "set_pen": (SetPen, lambda t, r: world.set_pen(t, r.r, r.g, r.b, r.width, r.off)),
