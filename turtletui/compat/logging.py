@@ -15,6 +15,7 @@ from typing import Any
 
 from turtletui.compat import context as _context
 from turtletui.compat.dispatch import in_callback
+from turtletui.graph import core
 from turtletui.graph.logs import parse_level
 
 __all__ = [
@@ -81,9 +82,7 @@ def _severity_method(name: str, severity: LoggingSeverity, doc: str | None = Non
             return False
         text = message if message.__class__ is str else _text(message)
         graph = (_context._current_host or _context.current_host()).graph
-        graph.log(
-            self.name, level, text, _origin(_caller()) if graph.hears_rosout() else None, in_callback=in_callback()
-        )
+        graph.log(self.name, level, text, _call_site, in_callback=in_callback())
         return True
 
     method.__name__ = name
@@ -174,6 +173,21 @@ def _caller() -> tuple:
         frame = frame.f_back
     code = frame.f_code
     return (code.co_name, code.co_filename, frame.f_lineno, frame.f_lasti)
+
+
+def _call_site() -> tuple[str, str, int]:
+    """The call site of the logging call Graph.log is handling, as /rosout's
+    Log has it (file, function, line): the graph asks only when a /rosout
+    subscription will see the line, which saves a look-up on every other."""
+    frame = sys._getframe(1)
+    while frame.f_code.co_filename in _LOGGING_FILES and frame.f_back is not None:
+        frame = frame.f_back
+    code = frame.f_code
+    return (code.co_filename, code.co_name, frame.f_lineno)
+
+
+_LOGGING_FILES = frozenset({__file__, core.__file__})
+"""Where a logging call passes through on its way to Graph.log."""
 
 
 def _origin(caller: tuple) -> tuple[str, str, int]:

@@ -1245,13 +1245,14 @@ class Graph:
         node: str,
         level: int,
         msg: str,
-        origin: tuple[str, str, int] | None = None,
+        origin: tuple[str, str, int] | Callable[[], tuple[str, str, int]] | None = None,
         *,
         in_callback: bool = True,
     ) -> LogRecord:
         """Log ``msg`` as the logger ``node``; ``origin`` is the call site
-        (file, function, line) that /rosout subscriptions see (see ``hears_rosout``);
-        ``in_callback`` whether an executor's callback logged it (LogRecord)."""
+        (file, function, line) that /rosout subscriptions see, or what finds
+        it, called only when one will (see ``hears_rosout``); ``in_callback``
+        whether an executor's callback logged it (LogRecord)."""
         now = self.now_ns
         record = _new_tuple(LogRecord, (self.epoch_ns + now, now / NS_PER_S, level, node, msg, in_callback))
         # Taps (the recorder) first: a line a Ctrl-C cuts short after it was
@@ -1265,7 +1266,7 @@ class Graph:
             self.outbox.logged(record)
         rosout = self.topics.get(ROSOUT)
         if rosout is not None and rosout.subscriptions:
-            self._to_rosout(rosout, record, origin)
+            self._to_rosout(rosout, record, origin() if callable(origin) else origin)
         return record
 
     def hears_rosout(self) -> bool:
