@@ -1,4 +1,4 @@
-"""One turtle: its state, queued teleports, rotate_absolute goal and obstacle stops (World.step moves it)."""
+"""One turtle: its state and turtlesim's ``Turtle::update`` step."""
 
 from __future__ import annotations
 
@@ -9,13 +9,14 @@ from dataclasses import dataclass, field
 
 from turtletui.sim.constants import (
     ARENA_SIZE,
+    COMMAND_TIMEOUT,
     PEN_COLOR,
     PEN_WIDTH,
     ROTATE_SPEED,
     ROTATE_TOLERANCE,
     normalize_angle,
 )
-from turtletui.sim.events import Event, ObstacleHit, RotationFeedback, RotationFinished
+from turtletui.sim.events import Event, ObstacleHit, RotationFeedback, RotationFinished, WallHit
 from turtletui.sim.obstacles import Obstacle, first_entry
 
 _cos = math.cos
@@ -71,11 +72,50 @@ class Turtle:
     color: tuple[int, int, int] = (0, 0, 0)
     """Last colour sensed under the turtle (set by World.step when asked)."""
 
-    def block(
+    def update(
+        self, now: float, dt: float, events: list[Event], obstacles: Sequence[Obstacle] = ()
+    ) -> None:
+        """Advance this turtle by ``dt`` seconds at simulated time ``now``.
+
+        Follows turtlesim's order after the queued teleports (``apply_teleports``,
+        called first by World.step): rotate_absolute goal, command timeout,
+        semi-implicit heading update, move, clamp. With ``obstacles`` (not in
+        turtlesim) a move that would enter one stops where it meets the
+        surface, before the clamp at the walls. Pose publishing and the
+        step's pen segment happen in the caller, as in turtlesim: the colour
+        sensor reads the image before this step's line is drawn.
+        """
+        if self.rotation is not None:
+            self._advance_rotation(now, events)
+        if now - self.last_command_time > COMMAND_TIMEOUT:
+            self.vx = self.vy = self.wz = 0.0
+        theta = self.theta + self.wz * dt
+        if not -_PI <= theta < _PI:
+            theta = normalize_angle(theta)
+        self.theta = theta
+        vx = self.vx
+        vy = self.vy
+        c = _cos(theta)
+        s = _sin(theta)
+        x = self.x + (c * vx - s * vy) * dt
+        y = self.y + (s * vx + c * vy) * dt
+        if obstacles:
+            x, y = self._block(x, y, obstacles, events)
+        if x < 0.0 or x > ARENA_SIZE or y < 0.0 or y > ARENA_SIZE:
+            events.append(WallHit(self.name, x, y))
+            if not self.touching_wall:
+                self.touching_wall = True
+                self.wall_hits += 1
+            x = min(max(x, 0.0), ARENA_SIZE)
+            y = min(max(y, 0.0), ARENA_SIZE)
+        elif self.touching_wall:
+            self.touching_wall = False
+        self.x = x
+        self.y = y
+
+    def _block(
         self, x: float, y: float, obstacles: Sequence[Obstacle], events: list[Event]
     ) -> tuple[float, float]:
-        """Where a move from the turtle's position to (x, y) ends: where it
-        first meets an obstacle (an ObstacleHit), else (x, y)."""
         stop = first_entry(obstacles, self.x, self.y, x - self.x, y - self.y)
         if stop is None:
             self.touching_obstacle = False
@@ -104,8 +144,7 @@ class Turtle:
                 draw(old_x, old_y, self.x, self.y, self.pen_color, self.pen_width)
         self.teleports.clear()
 
-    def advance_rotation(self, now: float, events: list[Event]) -> None:
-        """One tick of the rotate_absolute goal (before the move), as turtle.cpp."""
+    def _advance_rotation(self, now: float, events: list[Event]) -> None:
         # turtle.cpp: a cancel ends the goal with the result of the previous
         # tick (delta not recomputed); otherwise the heading is compared as a
         # float, and delta is normalize(float(start - heading)).

@@ -11,32 +11,20 @@ import numpy as np
 
 from turtletui.errors import TurtletuiError
 from turtletui.sim.canvas import PenCanvas
-from turtletui.sim.constants import (
-    ARENA_SIZE,
-    BACKGROUND,
-    CENTER,
-    COMMAND_TIMEOUT,
-    DT,
-    QT_DEFAULT_PEN_WIDTH,
-    normalize_angle,
-)
+from turtletui.sim.constants import BACKGROUND, CENTER, DT, QT_DEFAULT_PEN_WIDTH
 from turtletui.sim.events import (
     Cleared,
     Event,
     Killed,
     RotationFinished,
     Spawned,
-    WallHit,
     Warning_,
 )
 from turtletui.sim.obstacles import Box, Circle, Lidar, Obstacle
 from turtletui.sim.turtle import RotationGoal, Turtle
 
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*\Z")
-_cos = math.cos
 _isfinite = math.isfinite
-_PI = math.pi
-_sin = math.sin
 _hypot = math.hypot
 _F32 = struct.Struct("3f")
 
@@ -117,12 +105,6 @@ class World:
         """Advance one 16 ms tick. Returns False for the first tick, which only
         records the time (turtles start moving on the second).
 
-        Each turtle moves as turtlesim's ``Turtle::update`` (written in here:
-        this runs every tick): queued teleports, the rotate_absolute goal,
-        command timeout, semi-implicit heading update, move, clamp. With
-        ``obstacles`` (not in turtlesim) a move that would enter one stops
-        where it meets the surface, before the clamp at the walls.
-
         With ``sense_color`` each turtle's ``color`` is set to the pixel under
         it after moving and before drawing this step's segment, which is what
         turtlesim's color_sensor publishes.
@@ -131,7 +113,6 @@ class World:
         if self.ticks == 1:
             return False
         now = self.ticks * DT
-        dt = DT
         events = self.events
         canvas = self.canvas
         draw = canvas.draw_segment
@@ -140,35 +121,11 @@ class World:
             if turtle.teleports:
                 # turtlesim takes old_pos for the step's segment after teleports.
                 turtle.apply_teleports(draw)
-            if turtle.rotation is not None:
-                turtle.advance_rotation(now, events)
-            if now - turtle.last_command_time > COMMAND_TIMEOUT:
-                turtle.vx = turtle.vy = turtle.wz = 0.0
-            theta = turtle.theta + turtle.wz * dt
-            if not -_PI <= theta < _PI:
-                theta = normalize_angle(theta)
-            turtle.theta = theta
-            vx = turtle.vx
-            vy = turtle.vy
-            c = _cos(theta)
-            s = _sin(theta)
             old_x = turtle.x
             old_y = turtle.y
-            x = old_x + (c * vx - s * vy) * dt
-            y = old_y + (s * vx + c * vy) * dt
-            if obstacles:
-                x, y = turtle.block(x, y, obstacles, events)
-            if x < 0.0 or x > ARENA_SIZE or y < 0.0 or y > ARENA_SIZE:
-                events.append(WallHit(turtle.name, x, y))
-                if not turtle.touching_wall:
-                    turtle.touching_wall = True
-                    turtle.wall_hits += 1
-                x = min(max(x, 0.0), ARENA_SIZE)
-                y = min(max(y, 0.0), ARENA_SIZE)
-            elif turtle.touching_wall:
-                turtle.touching_wall = False
-            turtle.x = x
-            turtle.y = y
+            turtle.update(now, DT, events, obstacles)
+            x = turtle.x
+            y = turtle.y
             moved = x != old_x or y != old_y
             if moved:
                 turtle.distance += _hypot(x - old_x, y - old_y)
