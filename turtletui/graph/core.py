@@ -113,7 +113,8 @@ class Subscription:
     """The QoS the creator asked for, as it gave it (the graph keeps only ``depth``)."""
     copy: Callable[[Any], Any] | None = None
     """Makes the subscription's own copy of each message it queues, as a middleware
-    that deserialises per subscription would; None to queue the published object."""
+    that deserialises per subscription would, or takes only what its callback
+    reads of it (turtlesim's velocity commands); None to queue the published object."""
     created_ns: int = 0
     """When it was made, in simulated ns (for discovery: Graph.discovery_ns)."""
     queue: deque = field(init=False)
