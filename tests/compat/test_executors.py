@@ -201,3 +201,83 @@ def main():
     ) in [r.msg for r in result.logs if r.node == "turtlesim"]
     assert {(x, y) for _, x, y, _ in result.poses["turtle1"]} == {(result.poses["turtle1"][0][1], result.poses["turtle1"][0][2])}
 
+
+
+@pytest.mark.parametrize("sandbox", HOSTS)
+def test_subscriptions_honour_their_groups_and_get_copies_of_their_own(tmp_path, sandbox):
+    """A message for a busy MutuallyExclusive group waits for it (in order),
+    a Reentrant group's runs at once, an async callback holds its group until
+    it ends, and each subscription has its own copy of what was published."""
+    path = write(tmp_path, "groups.py", """
+import rclpy
+from rclpy.callback_groups import MutuallyExclusiveCallbackGroup, ReentrantCallbackGroup
+from rclpy.executors import MultiThreadedExecutor
+from rclpy.node import Node
+from std_msgs.msg import String
+from std_srvs.srv import SetBool
+
+
+class Groups(Node):
+    def __init__(self):
+        super().__init__("groups")
+        group = MutuallyExclusiveCallbackGroup()
+        self.pub = self.create_publisher(String, "chat", 10)
+        self.create_subscription(String, "chat", self.in_group, 10, callback_group=group)
+        self.create_subscription(String, "chat", self.reentrant, 10, callback_group=ReentrantCallbackGroup())
+        self.create_subscription(String, "chat", self.awaits, 10)
+        self.create_service(SetBool, "wait", self.on_wait, callback_group=ReentrantCallbackGroup())
+        self.client = self.create_client(SetBool, "wait", callback_group=ReentrantCallbackGroup())
+        self.create_timer(0.5, self.tick, callback_group=group)
+        self.ticks = 0
+
+    def say(self, text):
+        self.get_logger().info(text)
+
+    def tick(self):
+        self.ticks += 1
+        if self.ticks > 1:
+            return
+        for data in ("a", "b"):
+            msg = String(data=data)
+            self.pub.publish(msg)
+            msg.data = "changed after publish"
+        self.say("tick waits")
+        self.client.call(SetBool.Request(data=True))
+        self.say("tick done")
+
+    def on_wait(self, request, response):
+        response.success = request.data
+        return response
+
+    def in_group(self, msg):
+        self.say(f"in_group {msg.data}")
+
+    def reentrant(self, msg):
+        self.say(f"reentrant {msg.data}")
+        msg.data = "changed by reentrant"
+
+    async def awaits(self, msg):
+        self.say(f"awaits {msg.data} starts")
+        await self.client.call_async(SetBool.Request(data=True))
+        self.say(f"awaits {msg.data} ends")
+
+
+def main():
+    rclpy.init()
+    executor = MultiThreadedExecutor()
+    executor.add_node(Groups())
+    executor.spin()
+
+
+if __name__ == "__main__":
+    main()
+""")
+    result = run([path], duration=1.0, sandbox=sandbox)
+    assert result.ok, result.crashes
+    said = [r.msg for r in result.logs if r.node == "groups"]
+    assert sorted(said) == sorted([
+        "tick waits", "tick done", "reentrant a", "reentrant b", "in_group a", "in_group b",
+        "awaits a starts", "awaits a ends", "awaits b starts", "awaits b ends",
+    ])
+    assert said.index("reentrant b") < said.index("tick done") < said.index("in_group a") < said.index("in_group b")
+    assert said.index("awaits a starts") < said.index("awaits a ends") < said.index("awaits b starts")

@@ -195,6 +195,20 @@ def test_copier_copies_everything_mutable_and_nothing_more():
         I.copier(int)
 
 
+def test_fields_getter_reads_the_named_fields_as_a_tuple():
+    twist = Twist(linear=Vector3(x=1.5, y=-2.0), angular=Vector3(z=0.25))
+    assert I.fields_getter(Twist, "linear.x", "linear.y", "angular.z")(twist) == (1.5, -2.0, 0.25)
+    assert I.fields_getter(Twist, "angular.z")(twist) == (0.25,)
+    assert I.fields_getter(Twist, "linear")(twist) == (twist.linear,)
+    scan = LaserScan(range_max=10.0)
+    assert I.fields_getter(LaserScan, "range_max", "header.stamp.sec")(scan) == (10.0, 0)
+    for path in ("linear.w", "ranges", "speed"):
+        with pytest.raises(I.InterfaceError, match=f"no scalar field '{path}'"):
+            I.fields_getter(LaserScan if path == "ranges" else Twist, path)
+    with pytest.raises(I.InterfaceError, match="needs a message class"):
+        I.fields_getter(dict, "x")
+
+
 # ---------------------------------------------------------------------------
 # type checks on assignment and construction
 # ---------------------------------------------------------------------------

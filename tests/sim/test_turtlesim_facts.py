@@ -1074,9 +1074,9 @@ def test_turtlesims_topics_keep_the_last_7():
 def test_cmd_vel_subscription_keeps_only_the_last_7_messages():
     sim, _ = make_sim()
     seen: list[float] = []
-    sub = sim.graph.topics["/turtle1/cmd_vel"].subscriptions[0]
-    original = sub.callback
-    sub.callback = lambda msg: (seen.append(msg.linear.x), original(msg))
+    world = sim.world
+    original = world.command_velocity
+    world.command_velocity = lambda name, vx, vy, wz: (seen.append(vx), original(name, vx, vy, wz))
     topic = sim.graph.topics["/turtle1/cmd_vel"]
     for i in range(10):
         sim.graph.publish(topic, Twist(linear=Vector3(x=float(i))))

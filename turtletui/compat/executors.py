@@ -108,7 +108,11 @@ class Executor:
         return host
 
     def _stopped(self) -> bool:
-        return self._is_shutdown or not self._context.ok()
+        # Context.ok() inline: spin checks this each time the ready callbacks
+        # run out, once a tick.
+        context = self._context
+        host = context._host
+        return self._is_shutdown or not (context._ok and host is not None and host.running)
 
     def spin(self) -> None:
         host = self._guard("spin()")

@@ -9,10 +9,13 @@ severity, logger name, filters or filter parameters between calls.
 from __future__ import annotations
 
 import sys
+from collections.abc import Callable
 from enum import IntEnum
 from typing import Any
 
+from turtletui.compat import context as _context
 from turtletui.compat.dispatch import in_callback
+from turtletui.graph import core
 from turtletui.graph.logs import parse_level
 
 __all__ = [
@@ -65,6 +68,29 @@ def _effective_level(name: str) -> LoggingSeverity:
     return LoggingSeverity(_LEVELS.get("") or _DEFAULT_LEVEL)
 
 
+def _severity_method(name: str, severity: LoggingSeverity, doc: str | None = None) -> Callable[..., bool]:
+    """``logger.info`` (debug, warning...) at ``severity``. A call with no
+    filters, the common case on the per-tick hot path of many controllers,
+    has only the level to check (no call-site state to keep) and is handled
+    here in one call; filters go through RcutilsLogger.log."""
+    level = int(severity)
+
+    def method(self: RcutilsLogger, message: str, **kwargs: Any) -> bool:
+        if kwargs:
+            return self.log(message, severity, **kwargs)
+        if level < (_effective_level(self.name) if _LEVELS else _DEFAULT_LEVEL):
+            return False
+        text = message if message.__class__ is str else _text(message)
+        graph = (_context._current_host or _context.current_host()).graph
+        graph.log(self.name, level, text, _call_site, in_callback=in_callback())
+        return True
+
+    method.__name__ = name
+    method.__qualname__ = f"RcutilsLogger.{name}"
+    method.__doc__ = doc
+    return method
+
+
 class RcutilsLogger:
     """A named logger; records go to the graph of the host running the code."""
 
@@ -108,7 +134,7 @@ class RcutilsLogger:
         for kind in filters:
             if not _SHOULD_LOG[kind](context):
                 return False
-        graph = (_current_host or _bind_current_host())().graph
+        graph = (_context._current_host or _context.current_host()).graph
         graph.log(
             name,
             int(severity),
@@ -118,46 +144,12 @@ class RcutilsLogger:
         )
         return True
 
-    def debug(self, message: str, **kwargs: Any) -> bool:
-        if kwargs:
-            return self.log(message, LoggingSeverity.DEBUG, **kwargs)
-        return self._plain(message, 10)
-
-    def info(self, message: str, **kwargs: Any) -> bool:
-        if kwargs:
-            return self.log(message, LoggingSeverity.INFO, **kwargs)
-        return self._plain(message, 20)
-
-    def warning(self, message: str, **kwargs: Any) -> bool:
-        if kwargs:
-            return self.log(message, LoggingSeverity.WARN, **kwargs)
-        return self._plain(message, 30)
-
-    def warn(self, message: str, **kwargs: Any) -> bool:
-        """Deprecated in rclpy in favour of ``warning``; still works."""
-        if kwargs:
-            return self.log(message, LoggingSeverity.WARN, **kwargs)
-        return self._plain(message, 30)
-
-    def _plain(self, message: Any, severity: int) -> bool:
-        # The common case, a call with no filters, on the per-tick hot path:
-        # only the level decides (there is no call-site state to keep).
-        if severity < (_effective_level(self.name) if _LEVELS else _DEFAULT_LEVEL):
-            return False
-        text = message if message.__class__ is str else _text(message)
-        graph = (_current_host or _bind_current_host())().graph
-        graph.log(self.name, severity, text, _origin(_caller()) if graph.hears_rosout() else None, in_callback=in_callback())
-        return True
-
-    def error(self, message: str, **kwargs: Any) -> bool:
-        if kwargs:
-            return self.log(message, LoggingSeverity.ERROR, **kwargs)
-        return self._plain(message, 40)
-
-    def fatal(self, message: str, **kwargs: Any) -> bool:
-        if kwargs:
-            return self.log(message, LoggingSeverity.FATAL, **kwargs)
-        return self._plain(message, 50)
+    debug = _severity_method("debug", LoggingSeverity.DEBUG)
+    info = _severity_method("info", LoggingSeverity.INFO)
+    warning = _severity_method("warning", LoggingSeverity.WARN)
+    warn = _severity_method("warn", LoggingSeverity.WARN, "Deprecated in rclpy in favour of ``warning``; still works.")
+    error = _severity_method("error", LoggingSeverity.ERROR)
+    fatal = _severity_method("fatal", LoggingSeverity.FATAL)
 
 
 def _text(message: Any) -> str:
@@ -181,6 +173,21 @@ def _caller() -> tuple:
         frame = frame.f_back
     code = frame.f_code
     return (code.co_name, code.co_filename, frame.f_lineno, frame.f_lasti)
+
+
+def _call_site() -> tuple[str, str, int]:
+    """The call site of the logging call Graph.log is handling, as /rosout's
+    Log has it (file, function, line): the graph asks only when a /rosout
+    subscription will see the line, which saves a look-up on every other."""
+    frame = sys._getframe(1)
+    while frame.f_code.co_filename in _LOGGING_FILES and frame.f_back is not None:
+        frame = frame.f_back
+    code = frame.f_code
+    return (code.co_filename, code.co_name, frame.f_lineno)
+
+
+_LOGGING_FILES = frozenset({__file__, core.__file__})
+"""Where a logging call passes through on its way to Graph.log."""
 
 
 def _origin(caller: tuple) -> tuple[str, str, int]:
@@ -244,7 +251,7 @@ def _check_unchanged(
 
 def _throttle(context: dict) -> bool:
     clock = context["params"].get("throttle_time_source_type")
-    now = clock.now().nanoseconds if clock is not None else (_current_host or _bind_current_host())().graph.stamp_ns
+    now = clock.now().nanoseconds if clock is not None else (_context._current_host or _context.current_host()).graph.stamp_ns
     if now >= context["throttle_last_logged"] + context["params"]["throttle_duration_sec"] * _NS:
         context["throttle_last_logged"] = now
         return True
@@ -266,18 +273,6 @@ def _once(context: dict) -> bool:
 
 
 _SHOULD_LOG = {"throttle": _throttle, "skip_first": _skip_first, "once": _once}
-
-_current_host = None
-
-
-def _bind_current_host():
-    # Imported on first use: turtletui.compat.context may import this module.
-    global _current_host
-    from turtletui.compat.context import current_host
-
-    _current_host = current_host
-    return current_host
-
 
 def get_logger(name: str) -> RcutilsLogger:
     """A logger called ``name`` (``rclpy.logging.get_logger``); a new object each call, as in

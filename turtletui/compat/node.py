@@ -120,12 +120,11 @@ class Publisher(Destroyable):
                 f"publish() on {self._topic.name} expects a {self._topic.type_name} message, got "
                 + (_describe(msg))
             )
-        msg = self._copy(msg)
         record = self._record
         graph = self._graph
         if record.created_ns + graph.discovery_ns > graph.now_ns:  # not graph.known_to_others(record)
             self._tell_if_lost()
-        self._publish(self._topic, msg, None, record)
+        self._publish(self._topic, msg, None, record, snapshot=self._copy)
 
     def _tell_if_lost(self) -> None:
         """Say once why a message reached no one in another process, if someone
@@ -631,15 +630,18 @@ class Node(Destroyable):
             raise TypeError(f"create_subscription() needs a callable callback, got {callback!r}")
         depth = depth_of(qos_profile)
         host = self._context.host
+        name = self.resolve_topic_name(topic)
+        run = dispatcher(host, self._group(callback_group), callback)
         try:
             record = self._graph.add_subscription(
                 self._record,
-                self.resolve_topic_name(topic),
+                name,
                 msg_type,
                 depth,
-                dispatcher(host, self._group(callback_group), callback),
+                run,
                 qos=qos_profile,
                 copy=copier(msg_type),
+                delivery=run.delivery,
             )
         except core.TopicTypeConflict as err:
             raise topic_type_error("subscription", err.name, err.type_name) from None

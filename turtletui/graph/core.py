@@ -113,7 +113,8 @@ class Subscription:
     """The QoS the creator asked for, as it gave it (the graph keeps only ``depth``)."""
     copy: Callable[[Any], Any] | None = None
     """Makes the subscription's own copy of each message it queues, as a middleware
-    that deserialises per subscription would; None to queue the published object."""
+    that deserialises per subscription would, or takes only what its callback
+    reads of it (turtlesim's velocity commands); None to queue the published object."""
     created_ns: int = 0
     """When it was made, in simulated ns (for discovery: Graph.discovery_ns)."""
     queue: deque = field(init=False)
@@ -171,7 +172,6 @@ class Topic:
         "subscriptions",
         "count",
         "_stamps",
-        "last",
         "publisher_owners",
     )
 
@@ -182,7 +182,6 @@ class Topic:
         self.publishers: list[Publisher] = []
         self.subscriptions: list[Subscription] = []
         self.count = 0
-        self.last: Any = None
         self._stamps: deque[int] = deque(maxlen=_RATE_WINDOW)
         self.publisher_owners: set[str] = set()
         """Every owner that ever had a publisher here (kept after it is gone)."""
@@ -511,9 +510,8 @@ class Graph:
         due then. Returns False, leaving time at ``until_ns``, when none is due."""
         timers = self._timers
         while timers:
-            head = timers[0]
-            timer = head[2]
-            if timer.canceled or head[0] != timer.next_due:
+            due, seq, timer = timers[0]
+            if timer.canceled or due != timer.next_due:
                 heapq.heappop(timers)
                 continue
             break
@@ -521,7 +519,6 @@ class Graph:
             if until_ns is not None and until_ns > self.now_ns:
                 self.now_ns = until_ns
             return False
-        due = head[0]
         if until_ns is not None and due > until_ns:
             if until_ns > self.now_ns:
                 self.now_ns = until_ns
@@ -529,16 +526,21 @@ class Graph:
         now = self.now_ns
         if due > now:
             self.now_ns = now = due
-        ready = self.ready
-        heappop = heapq.heappop
+        # The head is live and due: fire it, then any other timer due now.
         heapreplace = heapq.heapreplace
-        while timers and timers[0][0] <= now:
-            due, _, timer = timers[0]
+        ready = self.ready
+        timer.next_due = next_due = due + timer.period_ns
+        heapreplace(timers, (next_due, seq, timer))  # pop and push in one
+        ready.append(timer.ready_item)
+        while timers[0][0] <= now:
+            due, seq, timer = timers[0]
             if timer.canceled or due != timer.next_due:
-                heappop(timers)
+                heapq.heappop(timers)
+                if not timers:
+                    break
                 continue
             timer.next_due = next_due = due + timer.period_ns
-            heapreplace(timers, (next_due, timer.seq, timer))  # pop and push in one
+            heapreplace(timers, (next_due, seq, timer))
             ready.append(timer.ready_item)
         return True
 
@@ -718,14 +720,21 @@ class Graph:
         *,
         qos: Any = None,
         copy: Callable[[Any], Any] | None = None,
+        delivery: Callable[[Subscription], Callable[[], None]] | None = None,
     ) -> Subscription:
         """Subscribe ``callback`` to topic ``name``; with ``copy``, each message is
-        queued as ``copy(msg)``, the subscription's own (see Subscription.copy)."""
+        queued as ``copy(msg)``, the subscription's own (see Subscription.copy).
+        ``delivery(sub)``, if given, makes what hands ``sub``'s queue to the
+        callback in place of Subscription.deliver: the same steps fused with
+        the callback's own layers (it clears ``sub.pending`` first, then
+        takes the messages oldest first)."""
         topic = self.topic(name, msg_type, node.owner)
         self.version += 1
         sub = Subscription(node, topic, depth, callback, node.owner, qos, copy, self.now_ns)
+        deliver = sub.deliver if delivery is None else delivery(sub)
         if name == ROSOUT:
-            sub.ready_item = (sub.owner, self._counted_rosout_delivery(sub.deliver))
+            deliver = self._counted_rosout_delivery(deliver)
+        sub.ready_item = (sub.owner, deliver)
         topic.subscriptions.append(sub)
         if self.outbox is not None:
             self.outbox.declared(sub)
@@ -875,44 +884,72 @@ class Graph:
         publisher: Publisher | None = None,
         *,
         young: bool | None = None,
+        fresh: bool = False,
+        snapshot: Callable[[Any], Any] | None = None,
     ) -> None:
         """Deliver ``msg`` to every subscription of ``topic`` that has discovered
         ``publisher`` (see ``discovery_ns``; without one, the subscription's own
         age decides) and whose QoS matches its own, except those owned by
         ``source`` (a sandboxed host already delivered to its own subscribers).
         ``young`` says whether the other processes have yet to discover the
-        publisher, when the caller knows better (the sandboxed host decided)."""
+        publisher, when the caller knows better (the sandboxed host decided).
+
+        ``fresh`` says the caller made ``msg`` for this call and will not
+        change it: when the topic's one subscription would get a copy of its
+        own and nothing else keeps ``msg`` (no tap, no transient-local
+        history, no other part of the graph), it gets ``msg`` itself, a copy
+        saved on every pose turtlesim publishes.
+
+        ``snapshot`` says ``msg`` stays the caller's, who may change it after
+        this call (rclpy's publish()): ``snapshot(msg)`` copies it once for
+        whatever keeps it (a tap, a transient-local history, the other part
+        of the graph, a subscription without a copy function of its own),
+        and nothing is copied when nothing keeps it (turtlesim takes only
+        the values it reads of a Twist: TurtlesimNode)."""
         outbox = self.outbox
         if outbox is not None:
             source = outbox.remote_owner  # the outbox delivers to those
         now = self.now_ns
         settled = now - self.discovery_ns  # endpoints made by then: discovered by all
-        owner = source if publisher is None else publisher.owner
-        if young is None:
-            young = publisher is not None and publisher.created_ns > settled
-        muted = ()
-        if publisher is not None:
+        if publisher is None:
+            owner = source
+            muted = ()
+            young = bool(young)
+        else:
+            owner = publisher.owner
             muted = publisher.muted
+            if young is None:
+                young = publisher.created_ns > settled
             if publisher.kept is not None:
+                if snapshot is not None:
+                    msg, snapshot = snapshot(msg), None
                 publisher.kept.append((now, msg))
+                fresh = False  # kept for late joiners: every subscription gets a copy
         if not young:  # others count only what reaches them (a sandboxed host forwards nothing young)
             topic.count += 1
-            topic.last = msg
             topic._stamps.append(now)
-        ready = None
-        for sub in topic.subscriptions:
+        if snapshot is not None and (self.taps or outbox is not None):
+            msg, snapshot = snapshot(msg), None
+        subscriptions = topic.subscriptions
+        if fresh and (len(subscriptions) != 1 or self.taps or outbox is not None):
+            fresh = False  # msg may be shared or kept: every subscription gets a copy
+        ready = self.ready
+        for sub in subscriptions:
             if (
-                (source is not None and sub.owner == source)
-                or (sub.owner != owner and (young or sub.created_ns > settled))
+                (sub.owner != owner and (young or sub.created_ns > settled))
+                or (source is not None and sub.owner == source)
                 or (muted and sub in muted)
             ):
                 continue
             copy = sub.copy
-            sub.queue.append(msg if copy is None else copy(msg))
+            if copy is None:
+                if snapshot is not None:
+                    msg, snapshot = snapshot(msg), None
+                sub.queue.append(msg)
+            else:
+                sub.queue.append(msg if fresh else copy(msg))
             if not sub.pending:
                 sub.pending = True
-                if ready is None:
-                    ready = self.ready
                 ready.append(sub.ready_item)
         if self.taps and not young:
             for tap in self.taps:
@@ -1209,13 +1246,14 @@ class Graph:
         node: str,
         level: int,
         msg: str,
-        origin: tuple[str, str, int] | None = None,
+        origin: tuple[str, str, int] | Callable[[], tuple[str, str, int]] | None = None,
         *,
         in_callback: bool = True,
     ) -> LogRecord:
         """Log ``msg`` as the logger ``node``; ``origin`` is the call site
-        (file, function, line) that /rosout subscriptions see (see ``hears_rosout``);
-        ``in_callback`` whether an executor's callback logged it (LogRecord)."""
+        (file, function, line) that /rosout subscriptions see, or what finds
+        it, called only when one will (see ``hears_rosout``); ``in_callback``
+        whether an executor's callback logged it (LogRecord)."""
         now = self.now_ns
         record = _new_tuple(LogRecord, (self.epoch_ns + now, now / NS_PER_S, level, node, msg, in_callback))
         # Taps (the recorder) first: a line a Ctrl-C cuts short after it was
@@ -1229,7 +1267,7 @@ class Graph:
             self.outbox.logged(record)
         rosout = self.topics.get(ROSOUT)
         if rosout is not None and rosout.subscriptions:
-            self._to_rosout(rosout, record, origin)
+            self._to_rosout(rosout, record, origin() if callable(origin) else origin)
         return record
 
     def hears_rosout(self) -> bool:

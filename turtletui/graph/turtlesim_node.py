@@ -19,6 +19,7 @@ from turtletui.graph.core import (
 )
 from turtletui.graph.logs import ERROR, INFO, WARN
 from turtletui.graph.simulated_node import SimulatedNode
+from turtletui.interfaces import fields_getter
 from turtletui.interfaces.builtin_interfaces import Time
 from turtletui.interfaces.geometry_msgs import Twist
 from turtletui.interfaces.rcl_interfaces import (
@@ -58,6 +59,8 @@ from turtletui.sim.obstacles import RayCaster
 QOS_DEPTH = 7
 """turtlesim's topics: keep last 7, reliable (qos.hpp)."""
 
+_TWIST_VELOCITIES = fields_getter(Twist, "linear.x", "linear.y", "angular.z")
+"""What turtlesim reads of a velocity command."""
 _F32 = struct.Struct("5f")
 _F32_pack = _F32.pack
 _F32_unpack = _F32.unpack
@@ -161,6 +164,11 @@ class TurtlesimNode:
         self._poses: dict[str, Any] = {}
         """The Pose message last published for each turtle."""
         self._goals: dict[int, GoalHandle] = {}
+        self._pose_plan: list[tuple[Any, str, Publisher, Publisher]] = []
+        self._colour_heard = False
+        self._plan_version = -1
+        """The graph version ``_pose_plan`` and ``_colour_heard`` were worked out for (see ``_plan``)."""
+        self._plan_turtles: list | None = None
         self.event_sinks: list[Callable[[Event], None]] = []
         """Called with every event of the world as it is handled (e.g. the app
         marks wall hits on the arena)."""
@@ -188,38 +196,47 @@ class TurtlesimNode:
     # -- the 16 ms update timer ---------------------------------------------
     def _update(self) -> None:
         world = self.world
-        turtles = self._turtles
         graph = self.graph
-        sense = False
-        for ends in turtles.values():
-            color = ends.color
-            if color and color.topic.subscriptions:
-                sense = True
-                break
-        else:
-            sense = graph.record_everything
+        if graph.version != self._plan_version or world.turtles_in_order is not self._plan_turtles:
+            self._plan()
+        sense = self._colour_heard or graph.record_everything
         if not world.step(sense_color=sense):
             return
         if world.events:
             self._handle_events()
+            if graph.version != self._plan_version or world.turtles_in_order is not self._plan_turtles:
+                self._plan()
         publish = graph.publish
         trusted_pose = Pose._trusted
         poses = self._poses
-        for turtle in world.turtles_in_order:
-            ends = turtles[turtle.name]
+        for turtle, name, pose, colour in self._pose_plan:
             vx, vy = turtle.vx, turtle.vy
             speed = (vx * vx + vy * vy) ** 0.5
             try:
                 fields = _F32_unpack(_F32_pack(turtle.x, turtle.y, turtle.theta, speed, turtle.wz))
             except OverflowError:
                 fields = _float32(turtle.x, turtle.y, turtle.theta, speed, turtle.wz)
-            pose = poses[turtle.name] = trusted_pose(*fields)
+            msg = poses[name] = trusted_pose(*fields)
             # young=False: the trace sees every pose; QoS mismatches still mute
-            publish(ends.pose.topic, pose, None, ends.pose, young=False)
+            publish(pose.topic, msg, None, pose, young=False, fresh=True)
             if sense:
-                publish(ends.color.topic, Color._trusted(*turtle.color), None, ends.color, young=False)
+                publish(colour.topic, Color._trusted(*turtle.color), None, colour, young=False, fresh=True)
         if self._scan_period and world.ticks % self._scan_period == 0:
             self._publish_scans()
+
+    def _plan(self) -> None:
+        """What each tick publishes for whom, worked out again only when the
+        graph or the turtles changed: (turtle, name, pose publisher, colour
+        publisher) in update order, and whether anyone hears a colour sensor."""
+        turtles = self._turtles
+        self._pose_plan = [
+            (turtle, turtle.name, ends.pose, ends.color)
+            for turtle in self.world.turtles_in_order
+            if (ends := turtles.get(turtle.name)) is not None
+        ]
+        self._colour_heard = any(ends.color and ends.color.topic.subscriptions for ends in turtles.values())
+        self._plan_version = self.graph.version
+        self._plan_turtles = self.world.turtles_in_order
 
     def _publish_scans(self) -> None:
         world, graph = self.world, self.graph
@@ -339,13 +356,38 @@ class TurtlesimNode:
         if world.lidar is not None:
             ends.scan = graph.add_publisher(node, f"/{name}/scan", LaserScan, QOS_DEPTH)
 
-        def on_cmd_vel(msg: Twist) -> None:
+        def on_cmd_vel(velocities: tuple[float, float, float]) -> None:
             if name in world.turtles:
-                world.command_velocity(name, msg.linear.x, msg.linear.y, msg.angular.z)
+                world.command_velocity(name, *velocities)
                 if world.events:
                     self._handle_events()
 
-        ends.cmd_vel = graph.add_subscription(node, f"/{name}/cmd_vel", Twist, QOS_DEPTH, on_cmd_vel)
+        def cmd_vel_delivery(sub: Subscription) -> Callable[[], None]:
+            queue = sub.queue
+
+            def deliver() -> None:
+                # Subscription.deliver with on_cmd_vel written in: a frame less a command.
+                sub.pending = False
+                while queue:
+                    velocities = queue.popleft()
+                    if name in world.turtles:
+                        world.command_velocity(name, *velocities)
+                        if world.events:
+                            self._handle_events()
+
+            return deliver
+
+        # The subscription keeps only what turtlesim reads of each Twist: a
+        # publisher then need not copy the whole message (Graph.publish's snapshot).
+        ends.cmd_vel = graph.add_subscription(
+            node,
+            f"/{name}/cmd_vel",
+            Twist,
+            QOS_DEPTH,
+            on_cmd_vel,
+            copy=_TWIST_VELOCITIES,
+            delivery=cmd_vel_delivery,
+        )
         services = {
             "set_pen": (SetPen, lambda t, r: world.set_pen(t, r.r, r.g, r.b, r.width, r.off)),
             "teleport_absolute": (

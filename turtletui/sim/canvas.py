@@ -33,6 +33,7 @@ _SEGMENT = struct.Struct("6d")
 float64 (packing six numbers costs half what array("d").extend does)."""
 _pack_segment = _SEGMENT.pack
 _unpack_segment = _SEGMENT.unpack_from
+_FLUSH_BYTES = _FLUSH_AT * _SEGMENT.size
 """Queued segments (3 MB) that are rasterised even if nobody reads the image."""
 _RASTER_CHUNK = 512
 """Segments rasterised at once."""
@@ -178,7 +179,7 @@ class PenCanvas:
             self._pen = color
         pending = self._pending
         pending += _pack_segment(x0, y0, x1, y1, packed, width)
-        if len(pending) >= _FLUSH_AT * _SEGMENT.size:
+        if len(pending) >= _FLUSH_BYTES:
             self._flush()
 
     def color_at(self, x: float, y: float) -> tuple[int, int, int]:
