@@ -13,6 +13,16 @@ class _ThreadDepth(threading.local):
     n = 0
 
 
+class Depth:
+    """A plain depth counter, for a host whose callbacks run on one thread
+    (slots: bumped twice for every delivery)."""
+
+    __slots__ = ("n",)
+
+    def __init__(self) -> None:
+        self.n = 0
+
+
 class CallbackTracking:
     """Counts how deep the calling thread is inside controller callbacks, so
     a call that would deadlock ROS (spinning inside a callback) can say so

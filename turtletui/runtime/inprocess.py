@@ -11,12 +11,11 @@ import random
 import sys
 import threading
 from collections.abc import Callable
-from types import SimpleNamespace
 
 from turtletui import compat
 from turtletui.compat import context as compat_context
 from turtletui.compat import logging as compat_logging
-from turtletui.runtime.host import CallbackTracking
+from turtletui.runtime.host import CallbackTracking, Depth
 from turtletui.runtime.loader import (
     ControllerError,
     ControllerSpec,
@@ -44,7 +43,7 @@ class InProcessHost(CallbackTracking):
         self._reads_instant = -1
         self._reads = 0
         self._thread = threading.get_ident()
-        self._depth = SimpleNamespace(n=0)
+        self._depth = Depth()
 
     @property
     def callback_depth(self) -> int:
