@@ -13,6 +13,7 @@ Every problem raises :class:`LessonError` with a one-line message that starts
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Iterable, Sequence
 from pathlib import Path
@@ -470,18 +471,27 @@ class _Validator:
     def _teleport(value: Any, duration: float, bad: Any) -> tuple[float, float, float, float] | None:
         if value is None:
             return None
-        shape = "a table {at = s, x = m, y = m, theta = rad}"
-        if not isinstance(value, dict) or set(value) - set(TELEPORT_FIELDS) or not {"at", "x", "y"} <= set(value):
-            raise bad("teleport", f"must be {shape}, got {_show(value)}")
-        if not all(_is_number(v) for v in value.values()):
-            raise bad("teleport", f"must be {shape} of numbers, got {_show(value)}")
-        at = float(value["at"])
+        if not isinstance(value, dict):
+            raise bad("teleport", f"must be a table {{at = s, x = m, y = m, theta = rad}}, got {_show(value)}")
+        for key in value:
+            if key not in TELEPORT_FIELDS:
+                raise bad("teleport", f"has unknown field {key!r}{did_you_mean(key, TELEPORT_FIELDS)}")
+        numbers = {}
+        for key in TELEPORT_FIELDS:
+            number = value.get(key, 0.0 if key == "theta" else None)
+            if number is None:
+                raise bad("teleport", f"is missing {key!r}")
+            # inf or nan would reach turtlesim's teleport mid-run, and stop the grading there
+            if not _is_number(number) or not math.isfinite(number):
+                raise bad("teleport", f"{key} must be a number, got {_show(number)}")
+            numbers[key] = float(number)
+        at, x, y, theta = (numbers[key] for key in TELEPORT_FIELDS)
         if not 0.0 < at < duration:
-            raise bad("teleport", f"at must lie within the run (0 to {duration:g} s), got {at:g}")
+            raise bad("teleport", f"at must lie within the run (after 0 and before {duration:g} s), got {at:g}")
         for key in ("x", "y"):
-            if not 0.0 <= value[key] <= 11.09:
-                raise bad("teleport", f"{key} must be a number of metres in the arena (0 to 11.09), got {value[key]:g}")
-        return at, float(value["x"]), float(value["y"]), float(value.get("theta", 0.0))
+            if not 0.0 <= numbers[key] <= 11.09:
+                raise bad("teleport", f"{key} must be a number of metres in the arena (0 to 11.09), got {numbers[key]:g}")
+        return at, x, y, theta
 
     def _overlay(self, i: int, item: dict[str, Any]) -> ArenaOverlay:
         where = f"overlays[{i}]"
