@@ -71,6 +71,8 @@ def test_a_plan_made_from_the_first_pose_and_driven_by_the_clock_is_lost_when_th
     # the hidden runs teleport the turtle on its way: the plan drives on and misses
     assert {"hidden 1", "hidden 2"} <= failures["time_to_goal"] & failures["final_error"]
     assert "never from a plan made from the first pose" in feedback(result, "time_to_goal")
+    # it stops where its plan ends: the hidden runs' final_error says why, not only "circling"
+    assert "ends where the plan ends" in feedback(result, "final_error")
 
 
 def test_a_node_that_stops_for_good_at_the_goal_is_moved_before_it_arrives(grade):
