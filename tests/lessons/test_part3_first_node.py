@@ -56,6 +56,7 @@ def test_a_counter_logged_by_a_loop_in_main_is_not_a_timer(grade, solution, in_p
     assert failed_checks(result) == {"log_period"}
     (text,) = feedback_of(result, "log_period")
     assert "were logged outside any callback" in text and "time.sleep(1.0) prints the same lines" in text
+    assert "sleeps or calls spin_once between lines" in text  # the spin_once loop is told of too
     assert result.score == 0.0
 
 
