@@ -204,6 +204,7 @@ duration = -5
         ('name = "s"\nstart = {x = 1, y = "a"}', "scenarios[0].start y must be a number, got 'a'"),
         ('name = "s"\nstart = {x = 1}', "scenarios[0].start is missing 'y'"),
         ('name = "s"\nstart = {x = 1, y = 2, z = 3}', "scenarios[0].start has unknown field 'z'"),
+        ('name = "s"\nstart = {x = 1, y = 2, theta = nan}', "scenarios[0].start theta must be a number, got nan"),
         (
             'name = "s"\ndurration = 3',
             "scenarios[0]: unknown field 'durration' (did you mean 'duration'?)",

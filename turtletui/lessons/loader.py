@@ -134,6 +134,24 @@ def _is_number(value: Any) -> bool:
     return isinstance(value, (int, float)) and not isinstance(value, bool)
 
 
+def _pose_numbers(value: dict[str, Any], fields: Sequence[str], field: str, bad: Any) -> dict[str, float]:
+    """A table of ``fields`` (start's, teleport's), each a finite number;
+    ``theta`` may be left out (0.0). ``bad(field, message)`` makes the error."""
+    for key in value:
+        if key not in fields:
+            raise bad(field, f"has unknown field {key!r}{did_you_mean(key, fields)}")
+    numbers: dict[str, float] = {}
+    for key in fields:
+        number = value.get(key, 0.0 if key == "theta" else None)
+        if number is None:
+            raise bad(field, f"is missing {key!r}")
+        # inf or nan would reach turtlesim mid-run and stop the grading there
+        if not _is_number(number) or not math.isfinite(number):
+            raise bad(field, f"{key} must be a number, got {_show(number)}")
+        numbers[key] = float(number)
+    return numbers
+
+
 def _is_int(value: Any) -> bool:
     return isinstance(value, int) and not isinstance(value, bool)
 
@@ -473,18 +491,7 @@ class _Validator:
             return None
         if not isinstance(value, dict):
             raise bad("teleport", f"must be a table {{at = s, x = m, y = m, theta = rad}}, got {_show(value)}")
-        for key in value:
-            if key not in TELEPORT_FIELDS:
-                raise bad("teleport", f"has unknown field {key!r}{did_you_mean(key, TELEPORT_FIELDS)}")
-        numbers = {}
-        for key in TELEPORT_FIELDS:
-            number = value.get(key, 0.0 if key == "theta" else None)
-            if number is None:
-                raise bad("teleport", f"is missing {key!r}")
-            # inf or nan would reach turtlesim's teleport mid-run, and stop the grading there
-            if not _is_number(number) or not math.isfinite(number):
-                raise bad("teleport", f"{key} must be a number, got {_show(number)}")
-            numbers[key] = float(number)
+        numbers = _pose_numbers(value, TELEPORT_FIELDS, "teleport", bad)
         at, x, y, theta = (numbers[key] for key in TELEPORT_FIELDS)
         if not 0.0 < at < duration:
             raise bad("teleport", f"at must lie within the run (after 0 and before {duration:g} s), got {at:g}")
@@ -536,18 +543,7 @@ class _Validator:
                 "start",
                 f'must be a table {{x = ..., y = ..., theta = ...}} or "random", got {_show(value)}',
             )
-        for key in value:
-            if key not in START_FIELDS:
-                raise bad("start", f"has unknown field {key!r}{did_you_mean(key, START_FIELDS)}")
-        pose: dict[str, float] = {}
-        for key in START_FIELDS:
-            number = value.get(key, 0.0 if key == "theta" else None)
-            if number is None:
-                raise bad("start", f"is missing {key!r}")
-            if not _is_number(number):
-                raise bad("start", f"{key} must be a number, got {_show(number)}")
-            pose[key] = float(number)
-        return pose
+        return _pose_numbers(value, START_FIELDS, "start", bad)
 
     def _check(self, i: int, item: dict[str, Any], scenario_names: dict[str, int]) -> CheckSpec:
         bad, name = self._named_table("checks", i, item, CHECK_FIELDS)
