@@ -68,6 +68,17 @@ def test_a_plan_made_from_the_first_pose_and_driven_by_the_clock_is_lost_when_th
     # undisturbed, the plan arrives: the default goal and the one to the left are reached
     assert "default goal" not in failures.get("time_to_goal", set())
     assert "goal to the left" not in failures.get("time_to_goal", set())
-    # the hidden runs teleport the turtle halfway: the plan drives on and misses
+    # the hidden runs teleport the turtle on its way: the plan drives on and misses
     assert {"hidden 1", "hidden 2"} <= failures["time_to_goal"] & failures["final_error"]
     assert "never from a plan made from the first pose" in feedback(result, "time_to_goal")
+    # it stops where its plan ends: the hidden runs' final_error says why, not only "circling"
+    assert "ends where the plan ends" in feedback(result, "final_error")
+
+
+def test_a_node_that_stops_for_good_at_the_goal_is_moved_before_it_arrives(grade):
+    # brisk gains reach hidden 1's goal (1.6 m off) in about 1.3 s; the
+    # scenario's teleport must come before that, or it moves a turtle whose
+    # node has rightly stopped for good
+    result = grade(LESSON, HERE / "latched_brisk_gains.py")
+    assert failed(result) == {}
+    assert result.score == result.max_score

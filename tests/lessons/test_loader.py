@@ -204,6 +204,7 @@ duration = -5
         ('name = "s"\nstart = {x = 1, y = "a"}', "scenarios[0].start y must be a number, got 'a'"),
         ('name = "s"\nstart = {x = 1}', "scenarios[0].start is missing 'y'"),
         ('name = "s"\nstart = {x = 1, y = 2, z = 3}', "scenarios[0].start has unknown field 'z'"),
+        ('name = "s"\nstart = {x = 1, y = 2, theta = nan}', "scenarios[0].start theta must be a number, got nan"),
         (
             'name = "s"\ndurration = 3',
             "scenarios[0]: unknown field 'durration' (did you mean 'duration'?)",
@@ -349,10 +350,16 @@ def test_forbidden_services_and_a_scenarios_drive(tmp_path):
     [
         ("{at = 2.0, x = 3.0, y = 4.0}", (2.0, 3.0, 4.0, 0.0)),
         ("{at = 2.0, x = 3.0, y = 4.0, theta = 1.5}", (2.0, 3.0, 4.0, 1.5)),
-        ("{x = 3.0, y = 4.0}", "teleport must be a table {at = s, x = m, y = m, theta = rad}, got {'x': 3.0, 'y': 4.0}"),
-        ("{at = 2.0, x = 3.0, y = 4.0, z = 1.0}", "teleport must be a table {at = s, x = m, y = m, theta = rad}"),
-        ('{at = "soon", x = 3.0, y = 4.0}', "teleport must be a table {at = s, x = m, y = m, theta = rad} of numbers"),
-        ("{at = 60.0, x = 3.0, y = 4.0}", "teleport at must lie within the run (0 to 10 s), got 60"),
+        ("[2.0, 3.0, 4.0]", "teleport must be a table {at = s, x = m, y = m, theta = rad}, got [2.0, 3.0, 4.0]"),
+        ("{x = 3.0, y = 4.0}", "teleport is missing 'at'"),
+        ("{at = 2.0, x = 3.0, y = 4.0, z = 1.0}", "teleport has unknown field 'z'"),
+        ("{at = 2.0, x = 3.0, y = 4.0, thetta = 1.0}", "teleport has unknown field 'thetta' (did you mean 'theta'?)"),
+        ('{at = "soon", x = 3.0, y = 4.0}', "teleport at must be a number, got 'soon'"),
+        ("{at = 2.0, x = true, y = 4.0}", "teleport x must be a number, got True"),
+        ("{at = 2.0, x = 3.0, y = 4.0, theta = inf}", "teleport theta must be a number, got inf"),
+        ("{at = nan, x = 3.0, y = 4.0}", "teleport at must be a number, got nan"),
+        ("{at = 60.0, x = 3.0, y = 4.0}", "teleport at must lie within the run (after 0 and before 10 s), got 60"),
+        ("{at = 10.0, x = 3.0, y = 4.0}", "teleport at must lie within the run (after 0 and before 10 s), got 10"),
         ("{at = 2.0, x = 12.0, y = 4.0}", "teleport x must be a number of metres in the arena (0 to 11.09), got 12"),
     ],
 )

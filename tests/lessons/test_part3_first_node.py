@@ -56,6 +56,7 @@ def test_a_counter_logged_by_a_loop_in_main_is_not_a_timer(grade, solution, in_p
     assert failed_checks(result) == {"log_period"}
     (text,) = feedback_of(result, "log_period")
     assert "were logged outside any callback" in text and "time.sleep(1.0) prints the same lines" in text
+    assert "sleeps or calls spin_once between lines" in text  # the spin_once loop is told of too
     assert result.score == 0.0
 
 
@@ -65,3 +66,22 @@ def test_the_starter_runs_without_crashing_but_scores_nothing(grade):
     assert failed_checks(result) == {"log_period", "log_counter"}
     assert "0 log lines" in feedback_of(result, "log_period")[0]
     assert result.score == 0.0
+
+
+@pytest.mark.parametrize(
+    "solution",
+    [
+        "right_rclpy_logging_in_timer.py",
+        "right_multithreaded_executor.py",
+        "right_spin_in_a_thread.py",
+        "right_async_timer_callback.py",
+        "right_spin_once_loop_timer_logs.py",
+        "right_task_from_timer.py",
+    ],
+)
+def test_a_timer_callback_logs_from_any_executor_thread_or_task(grade, solution):
+    # log_period's in_callback must hold wherever an executor runs the callback:
+    # worker threads, a spin thread, a task's steps, a spin_once loop
+    result = grade(LESSON, HERE / solution)
+    assert failed_checks(result) == set()
+    assert result.score == result.max_score

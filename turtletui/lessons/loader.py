@@ -13,6 +13,7 @@ Every problem raises :class:`LessonError` with a one-line message that starts
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Iterable, Sequence
 from pathlib import Path
@@ -131,6 +132,24 @@ def _show(value: Any) -> str:
 
 def _is_number(value: Any) -> bool:
     return isinstance(value, (int, float)) and not isinstance(value, bool)
+
+
+def _pose_numbers(value: dict[str, Any], fields: Sequence[str], field: str, bad: Any) -> dict[str, float]:
+    """A table of ``fields`` (start's, teleport's), each a finite number;
+    ``theta`` may be left out (0.0). ``bad(field, message)`` makes the error."""
+    for key in value:
+        if key not in fields:
+            raise bad(field, f"has unknown field {key!r}{did_you_mean(key, fields)}")
+    numbers: dict[str, float] = {}
+    for key in fields:
+        number = value.get(key, 0.0 if key == "theta" else None)
+        if number is None:
+            raise bad(field, f"is missing {key!r}")
+        # inf or nan would reach turtlesim mid-run and stop the grading there
+        if not _is_number(number) or not math.isfinite(number):
+            raise bad(field, f"{key} must be a number, got {_show(number)}")
+        numbers[key] = float(number)
+    return numbers
 
 
 def _is_int(value: Any) -> bool:
@@ -470,18 +489,16 @@ class _Validator:
     def _teleport(value: Any, duration: float, bad: Any) -> tuple[float, float, float, float] | None:
         if value is None:
             return None
-        shape = "a table {at = s, x = m, y = m, theta = rad}"
-        if not isinstance(value, dict) or set(value) - set(TELEPORT_FIELDS) or not {"at", "x", "y"} <= set(value):
-            raise bad("teleport", f"must be {shape}, got {_show(value)}")
-        if not all(_is_number(v) for v in value.values()):
-            raise bad("teleport", f"must be {shape} of numbers, got {_show(value)}")
-        at = float(value["at"])
+        if not isinstance(value, dict):
+            raise bad("teleport", f"must be a table {{at = s, x = m, y = m, theta = rad}}, got {_show(value)}")
+        numbers = _pose_numbers(value, TELEPORT_FIELDS, "teleport", bad)
+        at, x, y, theta = (numbers[key] for key in TELEPORT_FIELDS)
         if not 0.0 < at < duration:
-            raise bad("teleport", f"at must lie within the run (0 to {duration:g} s), got {at:g}")
+            raise bad("teleport", f"at must lie within the run (after 0 and before {duration:g} s), got {at:g}")
         for key in ("x", "y"):
-            if not 0.0 <= value[key] <= 11.09:
-                raise bad("teleport", f"{key} must be a number of metres in the arena (0 to 11.09), got {value[key]:g}")
-        return at, float(value["x"]), float(value["y"]), float(value.get("theta", 0.0))
+            if not 0.0 <= numbers[key] <= 11.09:
+                raise bad("teleport", f"{key} must be a number of metres in the arena (0 to 11.09), got {numbers[key]:g}")
+        return at, x, y, theta
 
     def _overlay(self, i: int, item: dict[str, Any]) -> ArenaOverlay:
         where = f"overlays[{i}]"
@@ -526,18 +543,7 @@ class _Validator:
                 "start",
                 f'must be a table {{x = ..., y = ..., theta = ...}} or "random", got {_show(value)}',
             )
-        for key in value:
-            if key not in START_FIELDS:
-                raise bad("start", f"has unknown field {key!r}{did_you_mean(key, START_FIELDS)}")
-        pose: dict[str, float] = {}
-        for key in START_FIELDS:
-            number = value.get(key, 0.0 if key == "theta" else None)
-            if number is None:
-                raise bad("start", f"is missing {key!r}")
-            if not _is_number(number):
-                raise bad("start", f"{key} must be a number, got {_show(number)}")
-            pose[key] = float(number)
-        return pose
+        return _pose_numbers(value, START_FIELDS, "start", bad)
 
     def _check(self, i: int, item: dict[str, Any], scenario_names: dict[str, int]) -> CheckSpec:
         bad, name = self._named_table("checks", i, item, CHECK_FIELDS)

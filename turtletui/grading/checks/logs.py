@@ -144,8 +144,8 @@ def log_period(trace: Trace, th: Mapping[str, Any]) -> Verdict:
         return Verdict(
             False,
             f"{len(outside)} of the {plural(len(lines), 'log line')}{_matching(th)} were logged outside any "
-            f"callback (the first at t={outside[0].t:.3f} s): from a loop that sleeps between lines, not "
-            "from a timer callback that rclpy.spin runs",
+            f"callback (the first at t={outside[0].t:.3f} s): from code the executor did not call, such as a "
+            "loop that sleeps or calls spin_once between lines, not from a timer callback that rclpy.spin runs",
         )
     return _one_per_period(lines, th)
 
