@@ -85,3 +85,13 @@ def test_a_timer_callback_logs_from_any_executor_thread_or_task(grade, solution)
     result = grade(LESSON, HERE / solution)
     assert failed_checks(result) == set()
     assert result.score == result.max_score
+
+
+def test_printed_lines_do_not_count_as_a_timers_log(grade):
+    # sandboxed, a printed line becomes a log line of "<name>:stdout", and a
+    # pipe cannot say which callback printed it: only the logger's lines count
+    result = grade(LESSON, HERE / "print_sleep_loop.py")
+    assert failed_checks(result) == {"log_period"}
+    (text,) = feedback_of(result, "log_period")
+    assert "printed lines do not count" in text and "self.get_logger().info" in text
+    assert result.score == 0.0

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Mapping
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -19,7 +20,7 @@ from turtletui.grading.checks.base import (
     turtle_of,
 )
 from turtletui.grading.trace import Trace
-from turtletui.graph.logs import LEVEL_NAMES
+from turtletui.graph.logs import LEVEL_NAMES, OUTPUT_SUFFIX
 from turtletui.messages import plural
 
 _LOG = {"pattern": "pattern", "node": "text", "level": "text"}
@@ -133,11 +134,29 @@ def _counts_up(records: list[Any], th: Mapping[str, Any]) -> Verdict:
     "(default 3), every gap within `tolerance` (a fraction, default 0.1) of the median gap, "
     "which must lie between `min_period` and `max_period` seconds when given. Lines of one kind "
     "are judged, as by log_counter. With `in_callback = true` they must also come from "
-    "callbacks the executor ran (a timer's), not from a loop outside spin (time.sleep in main()).",
+    "callbacks the executor ran (a timer's), not from a loop outside spin (time.sleep in main()), "
+    "and only the logger's lines count (a printed line cannot say where it was printed).",
     {**_LOG, "min": "number", "tolerance": "number", "min_period": "number", "max_period": "number",
      "in_callback": "boolean"},
 )
 def log_period(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    if th.get("in_callback"):
+        # A printed line cannot say where it was printed (the sandbox reads it
+        # from a pipe), so only the node's logger's lines are judged here.
+        printed = [r for r in _matching_logs(trace, th) if r.node.endswith(OUTPUT_SUFFIX)]
+        trace = replace(trace, logs=[r for r in trace.logs if not r.node.endswith(OUTPUT_SUFFIX)])
+        verdict = _log_period(trace, th)
+        if printed and not verdict.passed:
+            return Verdict(
+                False,
+                f"{verdict.measured}; {plural(len(printed), 'printed line')} do not count: print() cannot "
+                "say which callback printed it, log with self.get_logger().info(...)",
+            )
+        return verdict
+    return _log_period(trace, th)
+
+
+def _log_period(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     lines = _counter_lines(trace, th)
     outside = [record for record in lines if not record.in_callback] if th.get("in_callback") else []
     if outside and len(lines) >= max(th.get("min", 3), 2):  # too few lines: that is said first
