@@ -181,10 +181,13 @@ def _settled(look, expected, seconds: float = 30.0):
 
 def test_the_server_and_everything_it_started_end_with_the_block(tmp_path: Path) -> None:
     path = controller(tmp_path, before="""
+        noted, written = os.pipe()
         if os.fork() == 0:
             os.setsid()
             note("grandchild", os.getpid())
+            os.write(written, b"x")
             signal.pause()
+        os.read(noted, 1)  # the run goes on (and ends) once the grandchild is noted
     """)
     with forkserver.serving():
         run([path], duration=0.5)
