@@ -652,10 +652,13 @@ def test_fork_then_exit_is_reported_promptly(tmp_path: Path) -> None:
     """A grandchild holding the reply pipe open does not hide the child's death."""
     path = write(tmp_path, """
         def misbehave(node):
+            noted, written = os.pipe()
             if os.fork() == 0:
                 note("grandchild_pid", os.getpid())
+                os.write(written, b"x")
                 time.sleep(60)
                 os._exit(0)
+            os.read(noted, 1)  # exit once the grandchild is noted, not before it ran
             os._exit(4)
     """)
     result = go(path, step_timeout=60.0)
