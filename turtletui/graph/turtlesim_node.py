@@ -197,6 +197,7 @@ class TurtlesimNode:
     def _update(self) -> None:
         world = self.world
         graph = self.graph
+        # checked here, not in _plan: a call less on every tick
         if graph.version != self._plan_version or world.turtles_in_order is not self._plan_turtles:
             self._plan()
         sense = self._colour_heard or graph.record_everything
@@ -362,21 +363,6 @@ class TurtlesimNode:
                 if world.events:
                     self._handle_events()
 
-        def cmd_vel_delivery(sub: Subscription) -> Callable[[], None]:
-            queue = sub.queue
-
-            def deliver() -> None:
-                # Subscription.deliver with on_cmd_vel written in: a frame less a command.
-                sub.pending = False
-                while queue:
-                    velocities = queue.popleft()
-                    if name in world.turtles:
-                        world.command_velocity(name, *velocities)
-                        if world.events:
-                            self._handle_events()
-
-            return deliver
-
         # The subscription keeps only what turtlesim reads of each Twist: a
         # publisher then need not copy the whole message (Graph.publish's snapshot).
         ends.cmd_vel = graph.add_subscription(
@@ -386,7 +372,6 @@ class TurtlesimNode:
             QOS_DEPTH,
             on_cmd_vel,
             copy=_TWIST_VELOCITIES,
-            delivery=cmd_vel_delivery,
         )
         services = {
             "set_pen": (SetPen, lambda t, r: world.set_pen(t, r.r, r.g, r.b, r.width, r.off)),
