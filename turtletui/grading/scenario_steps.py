@@ -7,6 +7,8 @@ child imports it.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 from turtletui.graph.logs import INFO
 from turtletui.runtime.simulation import Simulation
 
@@ -41,8 +43,7 @@ class ScenarioTeleport:
 
     def __init__(self, sim: Simulation, teleport: tuple[float, float, float, float], label: str) -> None:
         at, x, y, theta = teleport
-        self.sim = sim
-        self.on_jump: list = []
+        self.on_jump: list[Callable[[str], None]] = []
 
         def jump() -> None:
             if "turtle1" not in sim.world.turtles:
