@@ -203,10 +203,15 @@ def test_the_server_and_everything_it_started_end_with_the_block(tmp_path: Path)
 
 def test_a_controller_that_kills_its_server_only_slows_its_own_later_runs(tmp_path: Path) -> None:
     killer = controller(tmp_path / "killer", before=f"""
+        def _parent_of(pid):
+            with open(f"/proc/{{pid}}/stat", "rb") as f:
+                return int(f.read().rpartition(b")")[2].split()[1])
+
         for entry in os.listdir("/proc"):
             try:
                 with open(f"/proc/{{entry}}/cmdline", "rb") as f:
-                    if {SERVER_MARK!r}.encode() in f.read() and int(entry) != os.getpid():
+                    mine = _parent_of(entry) == os.getppid()  # not another pytest worker's server
+                    if {SERVER_MARK!r}.encode() in f.read() and int(entry) != os.getpid() and mine:
                         os.kill(int(entry), signal.SIGKILL)
                         note("killed", entry)
             except (OSError, ValueError):

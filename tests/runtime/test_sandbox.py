@@ -146,11 +146,22 @@ def _kill_leftovers(tmp_path: Path):
             pid = int(file.read_text())
         except ValueError:
             continue
-        if pid > 1 and pid != os.getpid():
+        if pid > 1 and pid != os.getpid() and _works_in(pid, tmp_path):
             try:
                 os.kill(pid, signal.SIGKILL)
             except (ProcessLookupError, PermissionError):
                 pass
+
+
+def _works_in(pid: int, folder: Path) -> bool:
+    """Whether process ``pid`` is still one this test started (a controller's
+    processes work in its folder). A noted pid whose process ended may belong
+    to another test's process by now (pids wrap at 32768 on many machines):
+    killing it would kill a run of another pytest worker."""
+    try:
+        return Path(os.readlink(f"/proc/{pid}/cwd")).is_relative_to(folder.resolve())
+    except OSError:
+        return False
 
 
 class Hang(Exception):
