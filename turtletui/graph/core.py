@@ -388,7 +388,9 @@ class GraphOutbox(Protocol):
     def published(self, topic: Topic, msg: Any, publisher: Publisher | None, young: bool) -> None:
         """``msg`` was published (and delivered to this graph's subscriptions)
         by ``publisher``, which the other part has discovered unless
-        ``young`` (then only kept: it is transient local)."""
+        ``young`` (then only kept: it is transient local). ``msg`` may be the
+        publisher's own, which it may change once publish() returns: take
+        what is sent of it now."""
 
     def call(self, service: Service, request: Any, on_response: Callable[[Any], None]) -> None:
         """A remote ``service`` is called; ``on_response`` is for its answer."""
@@ -902,10 +904,11 @@ class Graph:
 
         ``snapshot`` says ``msg`` stays the caller's, who may change it after
         this call (rclpy's publish()): ``snapshot(msg)`` copies it once for
-        whatever keeps it (a tap, a transient-local history, the other part
-        of the graph, a subscription without a copy function of its own),
-        and nothing is copied when nothing keeps it (turtlesim takes only
-        the values it reads of a Twist: TurtlesimNode)."""
+        whatever keeps it (a tap, a transient-local history, a subscription
+        without a copy function of its own), and nothing is copied when
+        nothing keeps it (turtlesim takes only the values it reads of a
+        Twist: TurtlesimNode; the outbox to the other part of the graph
+        takes the values it sends)."""
         outbox = self.outbox
         if outbox is not None:
             source = outbox.remote_owner  # the outbox delivers to those
@@ -928,7 +931,7 @@ class Graph:
         if not young:  # others count only what reaches them (a sandboxed host forwards nothing young)
             topic.count += 1
             topic._stamps.append(now)
-        if snapshot is not None and (self.taps or outbox is not None):
+        if snapshot is not None and self.taps:
             msg, snapshot = snapshot(msg), None
         subscriptions = topic.subscriptions
         if fresh and (len(subscriptions) != 1 or self.taps or outbox is not None):

@@ -66,11 +66,12 @@ class ChildHost(CallbackTracking):
             return bool(ready) or stop()
 
         while self.running:
-            while ready:
-                ready.popleft()[1]()
-                if stop():
-                    return
-            if stop():
+            if ready:
+                while ready:
+                    ready.popleft()[1]()
+                    if stop():
+                        return
+            elif stop():  # (after a callback it was just asked)
                 return
             if scheduler.alone():
                 self.exchange(graph.next_due())  # what wait() does then, on the hottest path

@@ -125,20 +125,18 @@ class Loopback(SandboxHost):
 
     def ask(self, report: protocol.Report) -> protocol.Tick | protocol.End:
         """What ChildHost.ask does in lockstep: the answer to ``report``."""
-        if not self._begun:
+        if self._begun:
+            tick = self.answer(report)
+        else:
             # The first report goes to the parent as in lockstep (it says the
             # child started; nobody reads it). Then the copy's first Tick.
             self._begun = True
             wire.write_frame(self.fd_out, protocol.encode_report(report))
-            return self._roundtrip(self._next_tick())
-        return self._roundtrip(self.answer(report))
-
-    @staticmethod
-    def _roundtrip(tick: protocol.Tick | protocol.End) -> protocol.Tick | protocol.End:
-        """The Tick as the controller would have read it from the pipe. The pipe's
-        encoding (marshal) gives back the same values; only the graph's
-        mirror, which the copy's GraphProxy keeps to compare with the next
-        one, goes through it, so that the child has its own."""
+            tick = self._next_tick()
+        # The Tick as the controller would have read it from the pipe. The pipe's
+        # encoding (marshal) gives back the same values; only the graph's
+        # mirror, which the copy's GraphProxy keeps to compare with the next
+        # one, goes through it, so that the child has its own.
         if type(tick) is protocol.Tick and tick.graph is not None:
             return protocol.decode_from_parent(protocol.encode_tick(tick))
         return tick
@@ -180,7 +178,8 @@ class Loopback(SandboxHost):
         return tick
 
     def _record(self, payload: bytes) -> None:
-        seconds = _perf_counter() - self._asked
+        now = _perf_counter()
+        seconds = now - self._asked
         digest, self._digest = self._digest, b""
         if len(payload) > wire.MAX_REPLY_BYTES:
             # the parent says what lockstep says of a step this large
@@ -200,7 +199,7 @@ class Loopback(SandboxHost):
         self._index += 1
         if (
             self._records >= _BATCH_RECORDS
-            or _perf_counter() - self._last_flush > _FLUSH_SECONDS
+            or now - self._last_flush > _FLUSH_SECONDS
             or self._seq == 0  # the answer that ends the start: the parent waits for it with the start's timeout
         ):
             self.flush()

@@ -487,8 +487,26 @@ _SERVED_TAGS: dict[type, str] = {
     FinishServedGoal: "result",
     AnswerServedCancel: "cancel",
 }
-_ENCODE_JSON = json.JSONEncoder(separators=(",", ":"), allow_nan=True).encode
-"""``json.dumps(obj, separators=(",", ":"), allow_nan=True)`` without building an encoder each call."""
+
+
+def _json_encoder() -> Callable[[Any], str]:
+    """``json.dumps(obj, separators=(",", ":"), allow_nan=True)`` as one call
+    of the C encoder built once: json.dumps builds one per call, and checks
+    for circular references a Report (fresh lists of values) cannot have."""
+    python = json.JSONEncoder(separators=(",", ":"), allow_nan=True, check_circular=False)
+    make = json.encoder.c_make_encoder
+    if make is None:  # an interpreter without the C accelerator
+        return python.encode
+    encode = make(None, python.default, json.encoder.encode_basestring_ascii, None, ":", ",", False, False, True)
+    join = "".join
+
+    def dumps(obj: Any) -> str:
+        return join(encode(obj, 0))
+
+    return dumps
+
+
+_ENCODE_JSON = _json_encoder()
 
 
 def encode_report(report: Report) -> bytes:

@@ -146,7 +146,11 @@ class Simulation:
 
     def _exchange(self) -> bool:
         now = self.graph.now_ns
-        busy = [remote for remote in self.remotes if remote.wants_exchange(now)]
+        remotes = self.remotes
+        if len(remotes) == 1:  # one sandboxed controller: most runs, every tick
+            remote = remotes[0]
+            return remote.wants_exchange(now) and remote.exchange()
+        busy = [remote for remote in remotes if remote.wants_exchange(now)]
         progressed = False
         for remote in busy:
             if remote.exchange():
