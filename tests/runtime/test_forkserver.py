@@ -267,6 +267,73 @@ def test_a_pid_that_is_not_the_graders_own_new_child_is_refused(answer: str) -> 
             theirs.close()
 
 
+def test_a_new_child_that_ended_already_is_the_graders_own_with_its_status() -> None:
+    """A controller that exits at once (on a busy machine, before the grader
+    reads the server's answer) is still the new run child: refused, its run
+    would start a second child on the same pipes, and its status be lost."""
+    mine, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_SEQPACKET)
+    server = forkserver.ForkServer.__new__(forkserver.ForkServer)
+    server.sock, server.proc, server.token = mine, _FakeProcess(os.getpid() + 1), "x"
+    ended = os.fork()
+    if ended == 0:
+        os._exit(3)
+    while _state(ended) != "Z":  # ended, and not reaped
+        time.sleep(0.01)
+
+    def fake_server() -> None:
+        _, fds, _, _ = socket.recv_fds(theirs, 1 << 20, 3)
+        for fd in fds:
+            os.close(fd)
+        theirs.send(str(ended).encode())
+
+    thread = threading.Thread(target=fake_server)
+    thread.start()
+    to_child_r, to_child_w = os.pipe()
+    from_child_r, from_child_w = os.pipe()
+    try:
+        child = server.spawn({}, None, (to_child_r, from_child_w), timeout=5.0)
+        assert child is not None and child.pid == ended
+        assert child.wait(timeout=5) == 3
+        child.stdout.close()
+    finally:
+        thread.join()
+        for fd in (to_child_r, to_child_w, from_child_r, from_child_w):
+            os.close(fd)
+        mine.close()
+        theirs.close()
+
+
+def _state(pid: int) -> str:
+    with open(f"/proc/{pid}/stat", "rb") as f:
+        return f.read().rpartition(b")")[2].split()[0].decode()
+
+
+@pytest.mark.parametrize("lockstep", [False, True], ids=["fast", "lockstep"])
+def test_what_a_child_forked_too_late_wrote_is_not_read_as_the_runs(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, lockstep: bool
+) -> None:
+    """A server that answers too late is given up and the run starts the usual
+    way, on the same pipes: a child it forked anyway wrote its first answer
+    there (and on the fast path, records in the journal) before it was killed."""
+    from turtletui.runtime import protocol, wire
+    from turtletui.runtime.sandbox import Limits
+
+    def late(self, config, cwd, fds, timeout):
+        wire.write_frame(fds[1], protocol.encode_report(protocol.Report()))
+        if len(fds) > 2:
+            os.pwrite(fds[2], b"\x07" * 4096, 0)  # a journal head no batch has
+        return None
+
+    monkeypatch.setattr(forkserver.ForkServer, "spawn", late)
+    node = controller(tmp_path / "late")
+    expected = run([node], duration=2.0, seed=5, keep_poses=True, limits=Limits(lockstep=lockstep))
+    with forkserver.serving():
+        got = run([node], duration=2.0, seed=5, keep_poses=True, limits=Limits(lockstep=lockstep))
+    assert got.crashes == []
+    assert got.poses["turtle1"] == expected.poses["turtle1"]
+    assert got.turtles["turtle1"].distance > 1.0
+
+
 def test_two_controllers_of_one_run_both_run_the_second_started_afresh(tmp_path: Path) -> None:
     """A server forks one run at a time: a second child alive at once starts the usual way."""
     first, second = controller(tmp_path / "first"), controller(tmp_path / "second", name="other.py")

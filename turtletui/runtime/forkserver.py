@@ -308,8 +308,12 @@ class ForkServer:
 
 
 def _is_my_child(pid: int) -> bool:
+    """Whether ``pid`` is this process's child, running or ended (not reaped:
+    a controller that ends at once may have ended already, and its status
+    says how)."""
     try:
-        return os.waitpid(pid, os.WNOHANG) == (0, 0)  # running, and mine to wait for
+        os.waitid(os.P_PID, pid, os.WEXITED | os.WNOHANG | os.WNOWAIT)
+        return True
     except ChildProcessError:
         return False
 

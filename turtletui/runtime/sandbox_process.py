@@ -114,7 +114,12 @@ class ChildProcess:
         if self.journal_fd is not None:
             fds += (self.journal_fd,)
             config["fd_journal"] = self.journal_fd
-        self.proc = self._fork(config, cwd, fds) or self._exec(config, cwd, fds)
+        self.proc = self._fork(config, cwd, fds)
+        if self.proc is None:
+            # A server that did not answer in time (then stopped with all it
+            # started) may have forked the child late: what it wrote is not ours.
+            _forget_writes(from_child_r, self.journal_fd)
+            self.proc = self._exec(config, cwd, fds)
         os.close(to_child_r)
         os.close(from_child_w)
         if self.journal_fd is not None:
@@ -372,6 +377,24 @@ class ChildProcess:
         if proc.stdout:
             proc.stdout.close()
         self.proc = None
+
+
+def _forget_writes(answers: int, journal: int | None) -> None:
+    """Empty the answers pipe (read end ``answers``) and the journal (a memfd)
+    of whatever a process that had them wrote."""
+    blocking = os.get_blocking(answers)
+    os.set_blocking(answers, False)
+    try:
+        while os.read(answers, 1 << 16):
+            pass
+    except BlockingIOError:
+        pass
+    finally:
+        os.set_blocking(answers, blocking)
+    if journal is not None:
+        size = os.fstat(journal).st_size
+        os.ftruncate(journal, 0)  # all zeros again, as new
+        os.ftruncate(journal, size)
 
 
 def _widen(fd: int, size: int = 1 << 20) -> None:
