@@ -57,6 +57,7 @@ from turtletui.compat.qos import (
     QoSProfile,
     depth_of,
     incompatible_policy,
+    profile_of,
     qos_profile_parameter_events,
     qos_profile_rosout_default,
     qos_profile_services_default,
@@ -598,6 +599,7 @@ class Node(Destroyable):
     ) -> Publisher:
         self._require_alive()
         _check_msg_type(msg_type, "create_publisher()")
+        qos_profile = profile_of(qos_profile)
         depth = depth_of(qos_profile)
         try:
             record = self._graph.add_publisher(
@@ -626,6 +628,7 @@ class Node(Destroyable):
     ) -> Subscription:
         self._require_alive()
         _check_msg_type(msg_type, "create_subscription()")
+        qos_profile = profile_of(qos_profile)
         if not callable(callback):
             raise TypeError(f"create_subscription() needs a callable callback, got {callback!r}")
         depth = depth_of(qos_profile)
