@@ -66,7 +66,7 @@ from turtletui.compat.rcl_error import topic_type_error
 from turtletui.compat.task import Future
 from turtletui.compat.time import Clock, ClockType, Duration, clock_for
 from turtletui.compat.time_source import TimeSource
-from turtletui.compat.timer import Rate, Timer
+from turtletui.compat.timer import Rate, Timer, timer_info_parameter, with_timer_info
 from turtletui.compat.type_description_service import TypeDescriptionService
 from turtletui.graph import core
 from turtletui.graph.logs import WARN
@@ -672,6 +672,10 @@ class Node(Destroyable):
             raise TypeError(f"create_timer() needs an rclpy.clock.Clock as clock, got {clock!r}")
         host = self._context.host
         group = self._group(callback_group)
+        made: list[Timer] = []
+        info_parameter = timer_info_parameter(callback)
+        if info_parameter is not None:
+            callback = with_timer_info(callback, info_parameter, made)
         record = self._graph.add_timer(
             self._record,
             max(1, int(round(timer_period_sec * _NS))),
@@ -680,6 +684,7 @@ class Node(Destroyable):
             autostart=autostart and not self._destroyed,
         )
         timer = Timer(self, record, self._clock if clock is None else clock)
+        made.append(timer)
         timer.callback_group = group
         self._entities.append(timer)
         return timer

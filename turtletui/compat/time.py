@@ -26,6 +26,13 @@ class ClockType(IntEnum):
     SYSTEM_TIME = 2
     STEADY_TIME = 3
 
+    # rclpy's is a pybind11 enum: it prints as ClockType.ROS_TIME, not as its number.
+    def __str__(self) -> str:
+        return f"ClockType.{self.name}"
+
+    def __format__(self, spec: str) -> str:
+        return format(str(self), spec)
+
 
 class Duration:
     """A span of time in nanoseconds, as ``rclpy.duration.Duration``."""
