@@ -476,7 +476,15 @@ class Node(Destroyable):
 
     @executor.setter
     def executor(self, value: Any) -> None:
+        """As rclpy: a node is in one executor at a time; joining another leaves the first."""
+        current = getattr(self, "_executor", None)
+        if current is value:
+            return
+        if current is not None:
+            current.remove_node(self)
         self._executor = value
+        if value is not None:
+            value.add_node(self)
 
     @property
     def default_callback_group(self) -> CallbackGroup:
