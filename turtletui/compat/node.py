@@ -39,6 +39,7 @@ from turtletui.compat.graph_info import (
     TopicEndpointTypeEnum,
     endpoints_info,
 )
+from turtletui.compat.guard_condition import GuardCondition
 from turtletui.compat.logging import RcutilsLogger, get_logger
 from turtletui.compat.matching import match_publisher, match_subscription, watch_mismatches
 from turtletui.compat.parameter import (
@@ -526,6 +527,10 @@ class Node(Destroyable):
         """The timers made on this node (those of its rates too, as rclpy's)."""
         return self._made(Timer)
 
+    @property
+    def guards(self) -> Iterator[GuardCondition]:
+        return self._made(GuardCondition)
+
     def _group(self, callback_group: CallbackGroup | None) -> CallbackGroup:
         """The group an entity's callbacks run in (the node's default if None)."""
         if callback_group is None:
@@ -697,6 +702,17 @@ class Node(Destroyable):
         self._entities.append(timer)
         return timer
 
+    def create_guard_condition(
+        self, callback: Callable[[], Any] | None, callback_group: CallbackGroup | None = None
+    ) -> GuardCondition:
+        """A condition ``trigger()`` sets; the executor spinning this node then runs ``callback``."""
+        self._require_alive()
+        group = self._group(callback_group)
+        run = dispatcher(self._context.host, group, callback) if callback is not None else None
+        guard = GuardCondition(self, callback, group, run)
+        self._entities.append(guard)
+        return guard
+
     def create_rate(self, frequency: float, clock: Clock | None = None) -> Rate:
         return Rate(self, frequency, clock)
 
@@ -764,6 +780,13 @@ class Node(Destroyable):
 
     def destroy_service(self, service: Service) -> bool:
         return self._destroy_entity(service, self._graph.remove_service)
+
+    def destroy_guard_condition(self, guard: GuardCondition) -> bool:
+        if guard not in self._entities:
+            return False
+        self._entities.remove(guard)
+        guard._destroyed = True
+        return True
 
     def destroy_rate(self, rate: Rate) -> bool:
         rate.destroy()
