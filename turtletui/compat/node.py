@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Callable, Iterator, Sequence
 from typing import Any
 
@@ -19,6 +20,7 @@ from turtletui.compat.exceptions import (  # noqa: F401  (re-exported: rclpy.nod
     InvalidHandle,
     InvalidParameterTypeException,
     InvalidParameterValueException,
+    NameValidationException,
     NotInitializedException,
     ParameterAlreadyDeclaredException,
     ParameterNotDeclaredException,
@@ -75,6 +77,9 @@ from turtletui.interfaces import copier, interface_name
 from turtletui.interfaces.rcl_interfaces import Log, ParameterEvent
 
 _NS = 1_000_000_000
+_RCL_EXPAND_AT = "at /project/src/rcl/expand_topic_name.c:"
+"""Where rcl's errors for a name it cannot expand say they come from (the Kilted wheels' build)."""
+_SUBSTITUTION = re.compile(r"\{[^}]*\}")
 
 
 def _check_msg_type(msg_type: Any, what: str) -> str:
@@ -576,9 +581,20 @@ class Node(Destroyable):
         """Expand ``~``, relative names and (unless ``only_expand``) remappings, as rcl does."""
         return self._resolve(topic, only_expand=only_expand)
 
-    def _expand_topic_name(self, topic: str) -> str:
-        """``topic`` as a fully qualified name, not remapped (what graph queries use)."""
-        return self._resolve(topic, only_expand=True)
+    def _expand_topic_name(self, topic: str, *, is_service: bool = False) -> str:
+        """``topic`` as a fully qualified name, not remapped (what graph queries use). A name
+        rcl cannot expand is a ValueError with rcl's text, as rclpy's expand_topic_name raises."""
+        if isinstance(topic, str):
+            try:
+                validate_topic_name(topic)
+            except NameValidationException as err:
+                raise ValueError(f"topic name '{topic}' is invalid: {err._error_msg}, {_RCL_EXPAND_AT}73") from None
+            for substitution in _SUBSTITUTION.findall(topic):
+                if substitution not in ("{node}", "{ns}", "{namespace}"):
+                    raise ValueError(
+                        f"topic name '{topic}' is invalid: unknown substitution: {substitution}, {_RCL_EXPAND_AT}164"
+                    )
+        return self._resolve(topic, is_service, only_expand=True)
 
     def _resolve(self, topic: str, is_service: bool = False, *, only_expand: bool = False) -> str:
         self._require_alive()
@@ -825,11 +841,11 @@ class Node(Destroyable):
 
     def count_clients(self, service_name: str) -> int:
         self._require_alive()
-        return self._graph.count_clients(self._expand_topic_name(service_name))
+        return self._graph.count_clients(self._expand_topic_name(service_name, is_service=True))
 
     def count_services(self, service_name: str) -> int:
         self._require_alive()
-        return self._graph.count_services(self._expand_topic_name(service_name))
+        return self._graph.count_services(self._expand_topic_name(service_name, is_service=True))
 
     def get_publishers_info_by_topic(self, topic_name: str, no_mangle: bool = False) -> list[TopicEndpointInfo]:
         """A TopicEndpointInfo per publisher on the topic."""
@@ -909,10 +925,8 @@ class Node(Destroyable):
         self._require_alive()
         record = self._graph.find_node(node_name, node_namespace)
         if record is None:
-            raise NodeNameNonExistentError(
-                f"cannot get {noun} names and types for nonexistent node: "
-                f"{node_namespace.rstrip('/')}/{node_name}"
-            )
+            # rclpy's text, which rcl leaves without the node's name
+            raise NodeNameNonExistentError(f"cannot get {noun} names and types for nonexistent node: error not set")
         return self._graph.names_and_types_by_node(record, kind)
 
     # -- parameters ----------------------------------------------------------------
