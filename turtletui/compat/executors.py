@@ -95,7 +95,13 @@ class Executor:
 
     def create_task(self, callback: Callable | Any, *args: Any, **kwargs: Any) -> Task:
         """Run ``callback(*args)`` (or a coroutine) soon, as a Task of this executor."""
-        return start_task(self._context.host, ReentrantCallbackGroup(), callback, args, kwargs, now=False)
+        return start_task(
+            self._context.host, ReentrantCallbackGroup(), callback, args, kwargs, now=False, executor=self
+        )
+
+    def create_future(self) -> Future:
+        """A Future whose done callbacks this executor runs."""
+        return Future(executor=self)
 
     def _guard(self, what: str) -> Any:
         host = self._context.host

@@ -257,7 +257,14 @@ class Client(Destroyable):
         if self.service_name in graph.services and not graph.service_matched(self._record):
             self._tell_request_lost()  # and never answered, as in ROS 2
             return future
-        graph.call(self.service_name, request, dispatcher(host, self.callback_group, future.set_result), host.owner)
+        node = self._node
+
+        def take_response(response: Any) -> None:
+            # As rclpy's executor taking a response: the future's done callbacks become its tasks.
+            future._set_executor(node.executor)
+            future.set_result(response)
+
+        graph.call(self.service_name, request, dispatcher(host, self.callback_group, take_response), host.owner)
         return future
 
     def _tell_request_lost(self) -> None:
