@@ -24,6 +24,7 @@ from turtletui.compat.exceptions import (  # noqa: F401  (re-exported: rclpy.nod
     NotInitializedException,
     ParameterAlreadyDeclaredException,
     ParameterNotDeclaredException,
+    ParameterUninitializedException,
     validate_full_topic_name,
     validate_namespace,
     validate_node_name,
@@ -1004,16 +1005,25 @@ class Node(Destroyable):
         return name in self._parameters
 
     def get_parameter(self, name: str) -> Parameter:
+        """The parameter; a statically typed one declared without a value is uninitialized."""
         if name in self._parameters:
-            return self._parameters[name]
+            parameter = self._parameters[name]
+            descriptor = self._descriptors.get(name)
+            if parameter.type_ is not Parameter.Type.NOT_SET or descriptor is None or descriptor.dynamic_typing:
+                return parameter
+            raise ParameterUninitializedException(name)
         if self._allow_undeclared:
             return Parameter(name, Parameter.Type.NOT_SET, None)
         raise ParameterNotDeclaredException(name)
 
     def get_parameter_or(self, name: str, alternative_value: Parameter | None = None) -> Parameter:
+        """The parameter, or ``alternative_value`` if it is undeclared or has no value yet."""
         if alternative_value is None:
             alternative_value = Parameter(name, Parameter.Type.NOT_SET)
-        return self._parameters.get(name, alternative_value)
+        parameter = self._parameters.get(name)
+        if parameter is None or parameter.type_ is Parameter.Type.NOT_SET:
+            return alternative_value
+        return parameter
 
     def get_parameters(self, names: list[str]) -> list[Parameter]:
         return [self.get_parameter(name) for name in names]
