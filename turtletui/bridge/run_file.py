@@ -61,7 +61,7 @@ def spin_nodes(classes: list) -> None:
 def run(path: str) -> int:
     with open(path, encoding="utf-8") as f:
         source = f.read()
-    code = compile(source, path, "exec")
+    code = compile(source, path, "exec", dont_inherit=True)  # not this module's __future__ imports
     inits = _count_inits()
     module = types.ModuleType("__main__")
     module.__file__ = path

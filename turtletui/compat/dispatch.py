@@ -154,13 +154,14 @@ def start_task(
     *,
     now: bool,
     release: Callable[[Task], None] | None = None,
+    executor: Any = None,
 ) -> Task:
     """Run ``handler`` (a coroutine, or a function called with ``args``) as a
     Task: its first step now or queued, the next ones queued each time the
     Future it awaits is done. With ``release``, the caller holds ``group`` for
     the task and ``release(task)`` runs when it ends; else each step runs
     under ``group``'s rules."""
-    task = Task(handler, args, kwargs)
+    task = Task(handler, args, kwargs, executor=executor)
     ready = host.graph.ready
     owner = host.owner
     if release is None:
@@ -171,7 +172,7 @@ def start_task(
         def step() -> None:
             _in_group(group, counted)
 
-        task.add_done_callback(release)
+        task._add_done_hook(release)
     task._resume = lambda: ready.append((owner, step))
     if now:
         step()

@@ -62,6 +62,8 @@ class NameValidationException(Exception):
 
     def __init__(self, name_type: str, name: str, error_msg: str, invalid_index: int) -> None:
         super().__init__(f"Invalid {name_type}: {error_msg}:\n  '{name}'\n   {' ' * invalid_index}^")
+        self._error_msg = error_msg
+        """Why, without the name (what rcl's own errors say)."""
 
 
 class InvalidNamespaceException(NameValidationException):

@@ -19,9 +19,15 @@ from typing import Any
 from turtletui.compat.callback_groups import MutuallyExclusiveCallbackGroup, ReentrantCallbackGroup
 from turtletui.compat.context import Context, get_default_context
 from turtletui.compat.dispatch import running_groups, start_task
+from turtletui.compat.rcl_error import RCLError
 from turtletui.compat.task import Future, Task
 
 _NS = 1_000_000_000
+
+_CONTEXT_INVALID = (
+    "the given context is not valid, either rcl_init() was not called or rcl_shutdown() was called."
+)
+"""rcl's reason for refusing a timer or a wait set on a context not (or no longer) initialized."""
 
 DEFAULT_THREADS = 4
 """Threads of a MultiThreadedExecutor made without ``num_threads`` (rclpy
@@ -58,6 +64,9 @@ class Executor:
 
     def __init__(self, *, context: Context | None = None) -> None:
         self._context = context or get_default_context()
+        if not self._context._ok:
+            # rclpy's executor makes a guard condition, which needs an initialized context
+            raise RuntimeError("Context must be initialized a GuardCondition can be created")
         self._nodes: list[Any] = []
         self._spinning = 0
         """Threads inside this executor's spin calls now."""
@@ -95,7 +104,13 @@ class Executor:
 
     def create_task(self, callback: Callable | Any, *args: Any, **kwargs: Any) -> Task:
         """Run ``callback(*args)`` (or a coroutine) soon, as a Task of this executor."""
-        return start_task(self._context.host, ReentrantCallbackGroup(), callback, args, kwargs, now=False)
+        return start_task(
+            self._context.host, ReentrantCallbackGroup(), callback, args, kwargs, now=False, executor=self
+        )
+
+    def create_future(self) -> Future:
+        """A Future whose done callbacks this executor runs."""
+        return Future(executor=self)
 
     def _guard(self, what: str) -> Any:
         host = self._context.host
@@ -120,6 +135,13 @@ class Executor:
             self._run(host, lambda: host.spin(self._stopped))
 
     def spin_once(self, timeout_sec: float | None = None) -> None:
+        if not self._context._ok:
+            # rclpy makes a timer for the timeout, then a wait set: rcl refuses both after shutdown
+            if timeout_sec is not None and timeout_sec > 0:
+                raise RCLError(f"failed to create timer: {_CONTEXT_INVALID}, at /project/src/rcl/guard_condition.c:65")
+            if not self._is_shutdown:
+                raise RCLError(f"failed to initialize wait set: {_CONTEXT_INVALID}, at /project/src/rcl/wait.c:105")
+            return
         host = self._guard("spin_once()")
         if not self._stopped():
             with self._counted():
@@ -255,6 +277,8 @@ _global_executor: Executor | None = None
 
 def get_global_executor() -> Executor:
     global _global_executor
-    if _global_executor is None or _global_executor.context is not get_default_context():
+    context = get_default_context()
+    # rclpy drops its global executor at shutdown; making another needs rclpy.init() again
+    if _global_executor is None or _global_executor.context is not context or not context._ok:
         _global_executor = SingleThreadedExecutor()
     return _global_executor

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Callable, Iterator, Sequence
 from typing import Any
 
@@ -19,9 +20,11 @@ from turtletui.compat.exceptions import (  # noqa: F401  (re-exported: rclpy.nod
     InvalidHandle,
     InvalidParameterTypeException,
     InvalidParameterValueException,
+    NameValidationException,
     NotInitializedException,
     ParameterAlreadyDeclaredException,
     ParameterNotDeclaredException,
+    ParameterUninitializedException,
     validate_full_topic_name,
     validate_namespace,
     validate_node_name,
@@ -39,6 +42,7 @@ from turtletui.compat.graph_info import (
     TopicEndpointTypeEnum,
     endpoints_info,
 )
+from turtletui.compat.guard_condition import GuardCondition
 from turtletui.compat.logging import RcutilsLogger, get_logger
 from turtletui.compat.matching import match_publisher, match_subscription, watch_mismatches
 from turtletui.compat.parameter import (
@@ -57,6 +61,7 @@ from turtletui.compat.qos import (
     QoSProfile,
     depth_of,
     incompatible_policy,
+    profile_of,
     qos_profile_parameter_events,
     qos_profile_rosout_default,
     qos_profile_services_default,
@@ -65,7 +70,7 @@ from turtletui.compat.rcl_error import topic_type_error
 from turtletui.compat.task import Future
 from turtletui.compat.time import Clock, ClockType, Duration, clock_for
 from turtletui.compat.time_source import TimeSource
-from turtletui.compat.timer import Rate, Timer
+from turtletui.compat.timer import Rate, Timer, timer_info_parameter, with_timer_info
 from turtletui.compat.type_description_service import TypeDescriptionService
 from turtletui.graph import core
 from turtletui.graph.logs import WARN
@@ -73,6 +78,9 @@ from turtletui.interfaces import copier, interface_name
 from turtletui.interfaces.rcl_interfaces import Log, ParameterEvent
 
 _NS = 1_000_000_000
+_RCL_EXPAND_AT = "at /project/src/rcl/expand_topic_name.c:"
+"""Where rcl's errors for a name it cannot expand say they come from (the Kilted wheels' build)."""
+_SUBSTITUTION = re.compile(r"\{[^}]*\}")
 
 
 def _check_msg_type(msg_type: Any, what: str) -> str:
@@ -250,7 +258,14 @@ class Client(Destroyable):
         if self.service_name in graph.services and not graph.service_matched(self._record):
             self._tell_request_lost()  # and never answered, as in ROS 2
             return future
-        graph.call(self.service_name, request, dispatcher(host, self.callback_group, future.set_result), host.owner)
+        node = self._node
+
+        def take_response(response: Any) -> None:
+            # As rclpy's executor taking a response: the future's done callbacks become its tasks.
+            future._set_executor(node.executor)
+            future.set_result(response)
+
+        graph.call(self.service_name, request, dispatcher(host, self.callback_group, take_response), host.owner)
         return future
 
     def _tell_request_lost(self) -> None:
@@ -475,7 +490,15 @@ class Node(Destroyable):
 
     @executor.setter
     def executor(self, value: Any) -> None:
+        """As rclpy: a node is in one executor at a time; joining another leaves the first."""
+        current = getattr(self, "_executor", None)
+        if current is value:
+            return
+        if current is not None:
+            current.remove_node(self)
         self._executor = value
+        if value is not None:
+            value.add_node(self)
 
     @property
     def default_callback_group(self) -> CallbackGroup:
@@ -516,6 +539,10 @@ class Node(Destroyable):
     def timers(self) -> Iterator[Timer]:
         """The timers made on this node (those of its rates too, as rclpy's)."""
         return self._made(Timer)
+
+    @property
+    def guards(self) -> Iterator[GuardCondition]:
+        return self._made(GuardCondition)
 
     def _group(self, callback_group: CallbackGroup | None) -> CallbackGroup:
         """The group an entity's callbacks run in (the node's default if None)."""
@@ -562,9 +589,20 @@ class Node(Destroyable):
         """Expand ``~``, relative names and (unless ``only_expand``) remappings, as rcl does."""
         return self._resolve(topic, only_expand=only_expand)
 
-    def _expand_topic_name(self, topic: str) -> str:
-        """``topic`` as a fully qualified name, not remapped (what graph queries use)."""
-        return self._resolve(topic, only_expand=True)
+    def _expand_topic_name(self, topic: str, *, is_service: bool = False) -> str:
+        """``topic`` as a fully qualified name, not remapped (what graph queries use). A name
+        rcl cannot expand is a ValueError with rcl's text, as rclpy's expand_topic_name raises."""
+        if isinstance(topic, str):
+            try:
+                validate_topic_name(topic)
+            except NameValidationException as err:
+                raise ValueError(f"topic name '{topic}' is invalid: {err._error_msg}, {_RCL_EXPAND_AT}73") from None
+            for substitution in _SUBSTITUTION.findall(topic):
+                if substitution not in ("{node}", "{ns}", "{namespace}"):
+                    raise ValueError(
+                        f"topic name '{topic}' is invalid: unknown substitution: {substitution}, {_RCL_EXPAND_AT}164"
+                    )
+        return self._resolve(topic, is_service, only_expand=True)
 
     def _resolve(self, topic: str, is_service: bool = False, *, only_expand: bool = False) -> str:
         self._require_alive()
@@ -598,6 +636,7 @@ class Node(Destroyable):
     ) -> Publisher:
         self._require_alive()
         _check_msg_type(msg_type, "create_publisher()")
+        qos_profile = profile_of(qos_profile)
         depth = depth_of(qos_profile)
         try:
             record = self._graph.add_publisher(
@@ -626,6 +665,7 @@ class Node(Destroyable):
     ) -> Subscription:
         self._require_alive()
         _check_msg_type(msg_type, "create_subscription()")
+        qos_profile = profile_of(qos_profile)
         if not callable(callback):
             raise TypeError(f"create_subscription() needs a callable callback, got {callback!r}")
         depth = depth_of(qos_profile)
@@ -669,6 +709,10 @@ class Node(Destroyable):
             raise TypeError(f"create_timer() needs an rclpy.clock.Clock as clock, got {clock!r}")
         host = self._context.host
         group = self._group(callback_group)
+        made: list[Timer] = []
+        info_parameter = timer_info_parameter(callback)
+        if info_parameter is not None:
+            callback = with_timer_info(callback, info_parameter, made)
         record = self._graph.add_timer(
             self._record,
             max(1, int(round(timer_period_sec * _NS))),
@@ -677,9 +721,21 @@ class Node(Destroyable):
             autostart=autostart and not self._destroyed,
         )
         timer = Timer(self, record, self._clock if clock is None else clock)
+        made.append(timer)
         timer.callback_group = group
         self._entities.append(timer)
         return timer
+
+    def create_guard_condition(
+        self, callback: Callable[[], Any] | None, callback_group: CallbackGroup | None = None
+    ) -> GuardCondition:
+        """A condition ``trigger()`` sets; the executor spinning this node then runs ``callback``."""
+        self._require_alive()
+        group = self._group(callback_group)
+        run = dispatcher(self._context.host, group, callback) if callback is not None else None
+        guard = GuardCondition(self, callback, group, run)
+        self._entities.append(guard)
+        return guard
 
     def create_rate(self, frequency: float, clock: Clock | None = None) -> Rate:
         return Rate(self, frequency, clock)
@@ -749,6 +805,13 @@ class Node(Destroyable):
     def destroy_service(self, service: Service) -> bool:
         return self._destroy_entity(service, self._graph.remove_service)
 
+    def destroy_guard_condition(self, guard: GuardCondition) -> bool:
+        if guard not in self._entities:
+            return False
+        self._entities.remove(guard)
+        guard._destroyed = True
+        return True
+
     def destroy_rate(self, rate: Rate) -> bool:
         rate.destroy()
         return True
@@ -786,11 +849,11 @@ class Node(Destroyable):
 
     def count_clients(self, service_name: str) -> int:
         self._require_alive()
-        return self._graph.count_clients(self._expand_topic_name(service_name))
+        return self._graph.count_clients(self._expand_topic_name(service_name, is_service=True))
 
     def count_services(self, service_name: str) -> int:
         self._require_alive()
-        return self._graph.count_services(self._expand_topic_name(service_name))
+        return self._graph.count_services(self._expand_topic_name(service_name, is_service=True))
 
     def get_publishers_info_by_topic(self, topic_name: str, no_mangle: bool = False) -> list[TopicEndpointInfo]:
         """A TopicEndpointInfo per publisher on the topic."""
@@ -870,10 +933,8 @@ class Node(Destroyable):
         self._require_alive()
         record = self._graph.find_node(node_name, node_namespace)
         if record is None:
-            raise NodeNameNonExistentError(
-                f"cannot get {noun} names and types for nonexistent node: "
-                f"{node_namespace.rstrip('/')}/{node_name}"
-            )
+            # rclpy's text, which rcl leaves without the node's name
+            raise NodeNameNonExistentError(f"cannot get {noun} names and types for nonexistent node: error not set")
         return self._graph.names_and_types_by_node(record, kind)
 
     # -- parameters ----------------------------------------------------------------
@@ -944,16 +1005,25 @@ class Node(Destroyable):
         return name in self._parameters
 
     def get_parameter(self, name: str) -> Parameter:
+        """The parameter; a statically typed one declared without a value is uninitialized."""
         if name in self._parameters:
-            return self._parameters[name]
+            parameter = self._parameters[name]
+            descriptor = self._descriptors.get(name)
+            if parameter.type_ is not Parameter.Type.NOT_SET or descriptor is None or descriptor.dynamic_typing:
+                return parameter
+            raise ParameterUninitializedException(name)
         if self._allow_undeclared:
             return Parameter(name, Parameter.Type.NOT_SET, None)
         raise ParameterNotDeclaredException(name)
 
     def get_parameter_or(self, name: str, alternative_value: Parameter | None = None) -> Parameter:
+        """The parameter, or ``alternative_value`` if it is undeclared or has no value yet."""
         if alternative_value is None:
             alternative_value = Parameter(name, Parameter.Type.NOT_SET)
-        return self._parameters.get(name, alternative_value)
+        parameter = self._parameters.get(name)
+        if parameter is None or parameter.type_ is Parameter.Type.NOT_SET:
+            return alternative_value
+        return parameter
 
     def get_parameters(self, names: list[str]) -> list[Parameter]:
         return [self.get_parameter(name) for name in names]

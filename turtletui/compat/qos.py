@@ -5,7 +5,7 @@ with rclpy's checks: a profile needs a history or a depth, and fields are valida
 from __future__ import annotations
 
 import warnings
-from enum import IntEnum
+from enum import Enum, IntEnum
 from typing import Any
 
 from turtletui.compat.time import Duration
@@ -284,8 +284,59 @@ qos_profile_rosout_default = QoSProfile(
     liveliness=LivelinessPolicy.SYSTEM_DEFAULT,
 )
 
+qos_profile_unknown = QoSProfile(
+    history=HistoryPolicy.UNKNOWN,
+    depth=0,
+    reliability=ReliabilityPolicy.UNKNOWN,
+    durability=DurabilityPolicy.UNKNOWN,
+    liveliness=LivelinessPolicy.UNKNOWN,
+)
+qos_profile_best_available = _preset(
+    HistoryPolicy.KEEP_LAST, 10, ReliabilityPolicy.BEST_AVAILABLE, DurabilityPolicy.BEST_AVAILABLE
+)
+qos_profile_best_available.liveliness = LivelinessPolicy.BEST_AVAILABLE
+# rmw's RMW_QOS_DEADLINE_BEST_AVAILABLE and RMW_QOS_LIVELINESS_LEASE_DURATION_BEST_AVAILABLE
+qos_profile_best_available.deadline = Duration(nanoseconds=2**63 - 2)
+qos_profile_best_available.liveliness_lease_duration = Duration(nanoseconds=2**63 - 2)
+
+
+class QoSPresetProfiles(Enum):
+    """The presets by name, as rclpy's (presets equal to an earlier one are its aliases)."""
+
+    UNKNOWN = qos_profile_unknown
+    DEFAULT = qos_profile_default
+    SYSTEM_DEFAULT = qos_profile_system_default
+    SENSOR_DATA = qos_profile_sensor_data
+    SERVICES_DEFAULT = qos_profile_services_default
+    PARAMETERS = qos_profile_parameters
+    PARAMETER_EVENTS = qos_profile_parameter_events
+    ACTION_STATUS_DEFAULT = qos_profile_action_status_default
+    BEST_AVAILABLE = qos_profile_best_available
+    ROSOUT_DEFAULT = qos_profile_rosout_default
+
+    @classmethod
+    def short_keys(cls) -> list[str]:
+        return [k.lower() for k in cls.__members__ if not k.startswith("RMW")]
+
+    @classmethod
+    def get_from_short_key(cls, name: str) -> QoSProfile:
+        return cls[name.upper()].value
+
+
 KEEP_ALL_DEPTH = 10_000
 """Queue length standing in for KEEP_ALL (unbounded in DDS, up to its resource limits)."""
+
+
+def profile_of(qos_or_depth: QoSProfile | int) -> QoSProfile:
+    """The QoSProfile a ``create_publisher``/``create_subscription`` argument stands for (an
+    int is a KEEP_LAST depth), with rclpy's errors (Node._validate_qos_or_depth_parameter)."""
+    if isinstance(qos_or_depth, QoSProfile):
+        return qos_or_depth
+    if isinstance(qos_or_depth, int):
+        if qos_or_depth < 0:
+            raise ValueError("history depth must be greater than or equal to zero")
+        return QoSProfile(depth=qos_or_depth)
+    raise TypeError(f"Expected QoSProfile or int, but received {type(qos_or_depth)!r}")
 
 
 def depth_of(qos_profile: QoSProfile | int) -> int:
@@ -293,14 +344,7 @@ def depth_of(qos_profile: QoSProfile | int) -> int:
 
     KEEP_ALL keeps (nearly) everything; SYSTEM_DEFAULT history, and a depth of 0, mean the
     DDS default, which keeps the last message."""
-    if isinstance(qos_profile, bool) or not isinstance(qos_profile, (int, QoSProfile)):
-        raise TypeError(
-            f"qos_profile must be a QoSProfile or an int history depth, got {qos_profile!r}"
-        )
-    if isinstance(qos_profile, int):
-        if qos_profile < 0:
-            raise ValueError(f"history depth must be >= 0, got {qos_profile}")
-        return max(qos_profile, 1)
+    qos_profile = profile_of(qos_profile)
     if qos_profile.history == HistoryPolicy.KEEP_ALL:
         return KEEP_ALL_DEPTH
     if qos_profile.history == HistoryPolicy.KEEP_LAST:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import inspect
+import warnings
 from collections.abc import Callable
 from typing import Any
 
@@ -10,13 +11,21 @@ from typing import Any
 class Future:
     """Represents the outcome of a task (a service call, an action goal...).
 
-    As in rclpy, a cancelled future is ``cancelled()`` but not ``done()``."""
+    As in rclpy, a cancelled future is ``cancelled()`` but not ``done()``, and
+    its done callbacks run as tasks of its executor (the one that made it, or
+    that took a service's response for it), on a later spin, or at once when it
+    has none."""
+
+    __module__ = "rclpy.task"  # as it prints in rclpy
 
     def __init__(self, *, executor: Any = None) -> None:
         self._state = "PENDING"
         self._result: Any = None
         self._exception: BaseException | None = None
         self._callbacks: list[Callable[[Future], None]] = []
+        self._hooks: list[Callable[[Future], None]] = []
+        """turtletui's own callbacks (a task resuming, a group released): run at once."""
+        self._executor = executor
 
     def __await__(self):
         # Yields itself: the Task awaiting it resumes when it is done.
@@ -57,11 +66,24 @@ class Future:
         self._run_callbacks()
 
     def add_done_callback(self, callback: Callable[[Future], None]) -> None:
-        """Call ``callback(future)`` when done (at once if it already is, or was cancelled)."""
-        if self._state != "PENDING":
-            callback(self)
-        else:
+        """Call ``callback(future)`` when done; if it already is (or was cancelled), as a task
+        of the future's executor, or at once without one."""
+        if self._state == "PENDING":
             self._callbacks.append(callback)
+        elif self._executor is not None:
+            self._executor.create_task(callback, self)
+        else:
+            callback(self)
+
+    def _add_done_hook(self, hook: Callable[[Future], None]) -> None:
+        """Call ``hook(future)`` as soon as it is done (at once if it is)."""
+        if self._state == "PENDING":
+            self._hooks.append(hook)
+        else:
+            hook(self)
+
+    def _set_executor(self, executor: Any) -> None:
+        self._executor = executor
 
     def remove_done_callback(self, callback: Callable[[Future], None]) -> bool:
         """Remove a callback added earlier; False if it is not (or no longer) waiting."""
@@ -72,9 +94,19 @@ class Future:
         return True
 
     def _run_callbacks(self) -> None:
+        hooks, self._hooks = self._hooks, []
+        for hook in hooks:
+            hook(self)
         callbacks, self._callbacks = self._callbacks, []
+        if self._executor is not None:
+            for callback in callbacks:
+                self._executor.create_task(callback, self)
+            return
         for callback in callbacks:
-            callback(self)
+            try:
+                callback(self)
+            except Exception as err:  # noqa: BLE001 - rclpy warns and runs the other callbacks
+                warnings.warn(f"Unhandled exception in done callback: {err}", stacklevel=2)
 
 
 class Task(Future):
@@ -119,6 +151,6 @@ class Task(Future):
             self.set_exception(exc)
             raise
         if isinstance(awaited, Future) and self._resume is not None:
-            awaited.add_done_callback(lambda _future: self._resume())
+            awaited._add_done_hook(lambda _future: self._resume())
         elif self._resume is not None:
             self._resume()

@@ -26,6 +26,13 @@ class ClockType(IntEnum):
     SYSTEM_TIME = 2
     STEADY_TIME = 3
 
+    # rclpy's is a pybind11 enum: it prints as ClockType.ROS_TIME, not as its number.
+    def __str__(self) -> str:
+        return f"ClockType.{self.name}"
+
+    def __format__(self, spec: str) -> str:
+        return format(str(self), spec)
+
 
 class Duration:
     """A span of time in nanoseconds, as ``rclpy.duration.Duration``."""
@@ -46,6 +53,8 @@ class Duration:
         return f"Duration(nanoseconds={self._nanoseconds})"
 
     def __str__(self) -> str:
+        if self._nanoseconds == _INT64 - 1:
+            return "Infinite"
         return f"{self._nanoseconds} nanoseconds"
 
     def __add__(self, other: Duration) -> Duration:
@@ -68,7 +77,7 @@ class Duration:
                 # rclpy returns its Infinite duration (RMW_DURATION_INFINITE) for +inf.
                 if other < 0:
                     raise ValueError("Can't multiply duration with -inf")
-                return Duration(nanoseconds=_INT64 - 1)
+                return Infinite
             return Duration(nanoseconds=int(self._nanoseconds * other))
         return NotImplemented
 
@@ -117,6 +126,10 @@ class Duration:
         if not isinstance(msg, DurationMsg):
             raise TypeError("Must pass a builtin_interfaces.msg.Duration object")
         return cls(seconds=msg.sec, nanoseconds=msg.nanosec)
+
+
+Infinite = Duration(nanoseconds=_INT64 - 1)
+"""``rclpy.duration.Infinite``: rmw's RMW_DURATION_INFINITE, the longest Duration."""
 
 
 class Time:

@@ -13,7 +13,10 @@ rcl's "time credit" does. With nothing publishing /clock it never fires.
 
 from __future__ import annotations
 
+import functools
+import inspect
 import math
+from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
 from turtletui.compat.destroyable import Destroyable
@@ -27,10 +30,12 @@ from turtletui.compat.time import (
     _SOURCE_CHANGES,
     Clock,
     ClockChange,
+    ClockType,
     Duration,
     JumpHandle,
     JumpThreshold,
     ROSClock,
+    Time,
     TimeJump,
 )
 
@@ -41,6 +46,49 @@ if TYPE_CHECKING:
 _NS = 1_000_000_000
 _TIMER_THRESHOLD = JumpThreshold(min_forward=Duration(nanoseconds=1), min_backward=Duration(nanoseconds=-1))
 """What rcl_timer_init registers on a ROS clock: every jump, and ROS time switched on or off."""
+
+
+class TimerInfo:
+    """When a timer's call was due and when it was made, as ``rclpy.timer.TimerInfo``: what a
+    timer callback gets for a parameter annotated ``TimerInfo``."""
+
+    def __init__(
+        self, *, expected_call_time: int = 0, actual_call_time: int = 0, clock_type: ClockType = ClockType.SYSTEM_TIME
+    ) -> None:
+        if not isinstance(clock_type, ClockType):
+            raise TypeError("Clock type must be a ClockType enum")
+        if expected_call_time < 0 or actual_call_time < 0:
+            raise ValueError("call time values must not be negative")
+        self._expected_call_time = Time(nanoseconds=expected_call_time, clock_type=clock_type)
+        self._actual_call_time = Time(nanoseconds=actual_call_time, clock_type=clock_type)
+
+    @property
+    def expected_call_time(self) -> Time:
+        return self._expected_call_time
+
+    @property
+    def actual_call_time(self) -> Time:
+        return self._actual_call_time
+
+
+def timer_info_parameter(callback: Callable) -> str | None:
+    """The first parameter of ``callback`` annotated ``TimerInfo`` (rclpy's executor passes it
+    the call's TimerInfo by that name), or None."""
+    try:
+        parameters = inspect.signature(callback).parameters.values()
+    except (TypeError, ValueError):
+        return None
+    return next((p.name for p in parameters if p.annotation is TimerInfo), None)
+
+
+def with_timer_info(callback: Callable, parameter: str, timer: list[Timer]) -> Callable[[], Any]:
+    """``callback`` called with the TimerInfo of each call of ``timer[0]`` as ``parameter``."""
+
+    @functools.wraps(callback)
+    def call() -> Any:
+        return callback(**{parameter: timer[0]._info()})
+
+    return call
 
 
 class Timer(Destroyable):
@@ -57,6 +105,8 @@ class Timer(Destroyable):
         self._next_call = self._last_call = self._credit = 0
         self._pending = False
         """Whether a call is queued on the graph and not yet taken."""
+        self._expected = 0
+        """While /clock drives it, when the call being made was due."""
         self._jump_handle: _TimerJumps | None = None
         if isinstance(clock, ROSClock):
             self._jump_handle = _TimerJumps(self)
@@ -105,6 +155,14 @@ class Timer(Destroyable):
 
     def destroy(self) -> None:
         self._node.destroy_timer(self)
+
+    def _info(self) -> TimerInfo:
+        """The TimerInfo of the call being made (rcl_timer_call_with_info): when it was due
+        (a period before the next call), and now."""
+        expected = self._expected if self._on_clock else self._next_call_ns() - self._record.period_ns
+        return TimerInfo(
+            expected_call_time=max(expected, 0), actual_call_time=self._now(), clock_type=self._clock.clock_type
+        )
 
     # -- rcl's bookkeeping ---------------------------------------------------------------------
     def _now(self) -> int:
@@ -185,6 +243,7 @@ class Timer(Destroyable):
             return
         period = self._record.period_ns
         self._last_call = now
+        self._expected = self._next_call
         next_call = self._next_call + period
         if next_call <= now:  # missed calls are skipped, not made up
             next_call += (1 + (now - next_call) // period) * period

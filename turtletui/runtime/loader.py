@@ -77,7 +77,7 @@ def run_controller(spec: ControllerSpec) -> None:
     assert spec.path is not None
     path = spec.path.resolve()
     source = check_source(path)
-    code = compile(source, str(path), "exec")  # see load_module
+    code = compile(source, str(path), "exec", dont_inherit=True)  # see load_module
     module = types.ModuleType("__main__")
     module.__file__ = str(path)
     packages = _import_packages(path)
@@ -133,7 +133,9 @@ def load_module(spec: ControllerSpec) -> types.ModuleType:
     # Compiled from the text just checked, never from a cached .pyc: a file
     # edited twice within a second at the same size would look unchanged to
     # the bytecode cache, and a hot reload would run the old code.
-    code = compile(check_source(path), str(path), "exec")
+    # dont_inherit: the program gets its own __future__ imports, not this module's
+    # (annotations stay objects, as under python itself).
+    code = compile(check_source(path), str(path), "exec", dont_inherit=True)
     packages = _import_packages(path)
     if packages:
         name = ".".join([*packages, path.stem])

@@ -1,1 +1,1 @@
-from turtletui.compat.time import Duration  # noqa: F401
+from turtletui.compat.time import Duration, Infinite  # noqa: F401

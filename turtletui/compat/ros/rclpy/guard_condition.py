@@ -1,0 +1,1 @@
+from turtletui.compat.guard_condition import GuardCondition  # noqa: F401
