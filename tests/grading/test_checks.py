@@ -117,6 +117,21 @@ def test_pen_colour_by_side_and_calls_per_side_change():
     assert not verdict.passed and "same colour" in verdict.measured
 
 
+def test_pen_colour_by_side_fails_a_colour_that_changes_before_the_line():
+    # split at x = 5.0, not 5.5, back and forth across the arena 6 times: the
+    # miscoloured poses are too few for the shares, but every crossing to the
+    # right is red 0.3 m before the line already
+    red, green = (255, 0, 0), (0, 255, 0)
+    there = [(x, 5.0, 0.0, red if x > 5.0 else green) for x in np.linspace(1, 10, 400)]
+    verdict = judge("pen_colour_by_side", trace((there + list(reversed(there))) * 3))
+    assert "right (255, 0, 0) on 100% of poses" in verdict.measured
+    assert not verdict.passed and "before reaching x = 5.5 at 3 of 6 crossings" in verdict.measured
+    # a colour that changes just after the line (the service's answer) passes
+    late = [(x, 5.0, 0.0, red if x > 5.6 else green) for x in np.linspace(1, 10, 400)]
+    verdict = judge("pen_colour_by_side", trace((late + [(x, y, t, red if x > 5.4 else green) for x, y, t, _ in reversed(late)]) * 3))
+    assert verdict.passed and "at 0 of 6 crossings" in verdict.measured
+
+
 def test_pen_colour_by_side_counts_only_where_the_turtle_drew():
     # It waits at its start with turtlesim's pen (its node has not yet
     # discovered turtlesim) for 10 of the 60 poses on the right: nothing drawn.

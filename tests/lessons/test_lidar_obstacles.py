@@ -5,6 +5,7 @@ from __future__ import annotations
 import dataclasses
 from pathlib import Path
 
+import pytest
 from support.lessons import SOLUTIONS, failed, failed_checks, feedback_of, not_judged
 
 from turtletui.grading.engine import grade_controllers
@@ -104,3 +105,12 @@ def test_the_starter_runs_and_logs_but_drives_blind(grade):
     assert "distance" in failures
     assert {"closed_loop", "no_crash"} <= set(not_judged(result))
     assert result.score == 0.0
+
+
+@pytest.mark.parametrize("solution", ["left_half_of_the_front.py", "stops_at_twenty_centimetres.py"])
+def test_shaving_past_obstacles_costs_as_much_as_a_crash_would(grade, solution):
+    # half a front sector, or a 0.2 m stop distance: the point turtle never
+    # hits anything, but comes within 0.1 m, where a real robot would have
+    result = grade(LESSON, HERE / solution)
+    assert failed_checks(result) == {"min_clearance"}
+    assert result.score < 7.0

@@ -48,3 +48,13 @@ def test_the_starter_runs_with_speed_done_and_the_rest_to_do(grade):
     failures = failed(result)
     assert set(failures) == {"min_clearance"}
     assert result.score <= 3.0  # the points are for the parameters it leaves to do
+
+
+def test_a_box_applied_to_x_only_fails_the_small_box(grade):
+    # the small box starts on a diagonal: a box checked on one axis only lets
+    # the turtle run as close to the other axis's walls as with Part 6's numbers
+    result = grade(LESSON, HERE / "box_in_x_only.py")
+    assert set(failed(result)) == {"min_clearance"}
+    assert failed(result)["min_clearance"] == {"small box"}
+    assert "Compare pose.x and pose.y with the box_min and box_max" in feedback(result, "min_clearance")
+    assert result.score < 7.0

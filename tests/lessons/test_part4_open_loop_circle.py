@@ -77,3 +77,9 @@ def test_a_misspelt_topic_is_named_as_the_likely_cause(grade):
     text = feedback_of(result, "circle")[0]
     assert "barely moved" in text and "nothing was published on /turtle1/cmd_vel" in text
     assert result.score == 0.0
+
+
+def test_a_loop_on_create_rate_beside_a_spinning_thread_passes_too(grade):
+    # sandboxed only: the in-process host runs no threads of a controller
+    result = grade(LESSON, HERE / "right_rate_in_a_thread.py")
+    assert result.score == result.max_score

@@ -63,7 +63,8 @@ def calls_per_side_change(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     "pen_colour_by_side",
     "The pen draws one colour right of x = `split_x` and another left of it (`right` and "
     "`left` optionally name them); `min` is the fraction of the poses where the turtle moved "
-    "(drew) that must agree (default 0.95).",
+    "(drew) that must agree (default 0.95), and the share of crossings of the line where the "
+    "colour did not change `margin` m or more before it.",
     {**TURTLE, "split_x": "number", "margin": "number", "right": "colour", "left": "colour", "min": "number"},
 )
 def pen_colour_by_side(trace: Trace, th: Mapping[str, Any]) -> Verdict:
@@ -86,11 +87,35 @@ def pen_colour_by_side(trace: Trace, th: Mapping[str, Any]) -> Verdict:
         wanted = tuple(th[side]) if side in th else max(set(side_colours), key=side_colours.count)
         found[side] = wanted
         shares[side] = side_colours.count(wanted) / len(side_colours)
-    passed = all(share >= need for share in shares.values()) and found["right"] != found["left"]
+    early, crossings = _early_crossings(poses[:, 1], colours, split, margin, found)
+    passed = (
+        all(share >= need for share in shares.values())
+        and found["right"] != found["left"]
+        and crossings - early >= need * crossings
+    )
     detail = ", ".join(f"{side} {found[side]} on {shares[side]:.0%} of poses" for side in ("right", "left"))
     if found["right"] == found["left"]:
         detail += ": the same colour on both sides"
+    else:
+        detail += f"; changed colour {margin} m or more before reaching x = {split} at {early} of {crossings} crossings"
     return Verdict(passed, f"pen colour {detail} (needs {need:.0%})")
+
+
+def _early_crossings(
+    x: np.ndarray, colours: np.ndarray, split: float, margin: float, found: Mapping[str, tuple[int, int, int]]
+) -> tuple[int, int]:
+    """(early, all) crossings of x = ``split``: an early one already drew the new side's colour
+    ``margin`` before the line. Whole-run shares hide a pen that changes at the wrong place
+    (x = 5.0 for 5.5: on one way across it is late, which shares see only a little, and on
+    the other it is early, which this sees at every crossing). A late colour is left to the
+    shares: a service's answer takes a moment."""
+    outside = np.flatnonzero(np.abs(x - split) > margin)
+    early = crossings = 0
+    for before, after in zip(outside[:-1].tolist(), outside[1:].tolist(), strict=True):
+        if (x[before] > split) != (x[after] > split):
+            crossings += 1
+            early += tuple(colours[before]) == found["right" if x[after] > split else "left"]
+    return early, crossings
 
 
 @check(
