@@ -83,3 +83,15 @@ def test_a_loop_on_create_rate_beside_a_spinning_thread_passes_too(grade):
     # sandboxed only: the in-process host runs no threads of a controller
     result = grade(LESSON, HERE / "right_rate_in_a_thread.py")
     assert result.score == result.max_score
+
+
+@pytest.mark.parametrize("in_process", [False, True], ids=["sandboxed", "in-process"])
+def test_a_twist_stamped_on_cmd_vel_moves_nothing_and_feedback_says_why(grade, in_process):
+    # As in ROS: endpoints of different types never match; nothing crashes the grader
+    result = grade(LESSON, HERE / "twist_stamped.py", in_process=in_process)
+    assert "no_crash" not in failed_checks(result)
+    assert {"circle", "time_moving"} <= failed_checks(result)
+    assert result.score == 0.0
+    text = " ".join(feedback_of(result, "circle"))
+    assert "with type geometry_msgs/msg/TwistStamped" in text and "never match" in text
+    assert "cannot accept" not in " ".join(t.output for t in result.tests)

@@ -94,6 +94,10 @@ class Trace:
         return self.commands.get(turtle, np.empty((0, 4)))
 
 
+_TWIST = "geometry_msgs/msg/Twist"
+"""What turtlesim's cmd_vel carries: the commands a trace keeps."""
+
+
 class TraceCollector:
     """Taps a simulation's graph and builds the :class:`Trace` of the run."""
 
@@ -123,7 +127,8 @@ class TraceCollector:
             name = topic.name
             if name.endswith("/pose"):
                 self._pose(name[1:-5], msg)
-            elif name.endswith("/cmd_vel") and msg is not self._scripted:
+            elif name.endswith("/cmd_vel") and topic.type_name == _TWIST and msg is not self._scripted:
+                # (a TwistStamped on cmd_vel reaches no turtle: endpoints of other types never match)
                 turtle = name[1:-8]
                 self._commands.setdefault(turtle, []).append(
                     (self.sim.t, msg.linear.x, msg.linear.y, msg.angular.z)
