@@ -10,6 +10,7 @@ import pytest
 
 from turtletui.api import run
 from turtletui.runtime.loader import ControllerSpec
+from turtletui.runtime.sandbox import Limits
 
 LOOPS = {
     "sleep": """
@@ -85,3 +86,84 @@ def test_a_run_ends_alike_in_both_hosts_and_says_where_each_line_came_from(tmp_p
         "timer": [(0.0, "started", False), (1.0, "line 0", True), (2.0, "line 1", True), (3.0, "line 2", True)],
     }[kind]
     assert in_process == expected
+
+
+SLEEPS_IN_A_CALLBACK = """
+import time
+import rclpy
+from rclpy.node import Node
+
+
+class Looper(Node):
+    def __init__(self):
+        super().__init__("looper")
+        self.create_timer(0.5, self.loop)
+
+    def loop(self):
+        n = 0
+        while True:  # never returns: on a robot it runs until the node is stopped
+            self.get_logger().info(f"line {n}")
+            n += 1
+            time.sleep(1.0)
+
+
+def main():
+    rclpy.init()
+    node = Looper()
+    try:
+        rclpy.spin(node)
+    except KeyboardInterrupt:
+        node.get_logger().info("stopped")
+"""
+
+
+@pytest.mark.parametrize("host", ["in-process", "fast", "lockstep"])
+@pytest.mark.parametrize("caught", [True, False], ids=["caught", "uncaught"])
+def test_a_callback_still_sleeping_at_the_end_is_stopped_as_ctrl_c_stops_a_node(
+    tmp_path: Path, host: str, caught: bool
+) -> None:
+    # Its sleeps return at once once the run is over: the loop would never end.
+    source = SLEEPS_IN_A_CALLBACK
+    if not caught:
+        source = source.replace("    try:\n        rclpy.spin(node)\n    except KeyboardInterrupt:\n", "    rclpy.spin(node)\n    if 0:\n")
+    path = tmp_path / "looper.py"
+    path.write_text(source)
+    spec = ControllerSpec("looper", path, trusted=host == "in-process")
+    result = run([spec], duration=3.0, limits=None if host == "in-process" else Limits(lockstep=host == "lockstep"))
+    assert result.ok, result.crashes
+    logged = [(r.t, r.msg) for r in result.logs if r.node == "looper"]
+    expected = [(0.5, "line 0"), (1.5, "line 1"), (2.5, "line 2")]
+    assert logged == expected + ([(3.0, "stopped")] if caught else [])
+    assert not [r.msg for r in result.logs if "still busy" in r.msg]
+
+
+def test_a_thread_still_looping_at_the_end_is_stopped_without_failing_the_run(tmp_path: Path) -> None:
+    path = tmp_path / "driver.py"
+    path.write_text("""
+import threading, time
+import rclpy
+from rclpy.node import Node
+from geometry_msgs.msg import Twist
+
+
+def main():
+    rclpy.init()
+    node = Node("driver")
+    pub = node.create_publisher(Twist, "/turtle1/cmd_vel", 10)
+
+    def drive():
+        while True:  # not a daemon: the program never ends by itself
+            msg = Twist()
+            msg.linear.x = 1.0
+            pub.publish(msg)
+            time.sleep(0.1)
+
+    threading.Thread(target=drive).start()
+    rclpy.spin(node)
+""")
+    result = run([path], duration=3.0)
+    assert result.ok, result.crashes
+    assert result.turtles["turtle1"].distance > 2.0
+    assert [r.msg for r in result.logs if r.node == "turtletui" and "still busy" in r.msg] == [
+        f"{path}: still busy 1 s after the run ended (a loop in a callback or a thread that never returns?): stopped"
+    ]

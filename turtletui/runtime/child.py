@@ -277,6 +277,8 @@ def main(config: dict[str, Any] | None = None) -> None:
             seed_numpy(config.get("seed", 0))
             run_controller(spec)
         host.scheduler.join_threads()  # as Python does before it exits
+    except virtual_time.RunEnded:
+        pass  # a callback still waiting when the run ended: stopped, as with Ctrl-C
     except ControllerError as err:
         crash = protocol.Crash("load", str(err), ())
     except SystemExit as exc:

@@ -285,6 +285,7 @@ class FastHost(SandboxHost):
     def close(self) -> Any:
         if not self.finished and self.graph.now_ns >= self.recipe.end_ns:
             # the copy ended the run at the same instant: its answer to End is next
+            self._ending = True
             try:
                 self._replay(1.0, replica.digest(self.sim), True)
             except _Stop:

@@ -25,7 +25,7 @@ from turtletui.runtime.loader import (
 from turtletui.runtime.report import CrashReport, crash_from_exception, stop_turtles
 from turtletui.runtime.scheduler import CLOCK_READS_PER_STEP, CLOCK_STEP_NS
 from turtletui.runtime.simulation import MAX_ROUNDS_PER_INSTANT, Simulation
-from turtletui.runtime.virtual_time import simulated_time
+from turtletui.runtime.virtual_time import RunEnded, simulated_time
 
 
 class InProcessHost(CallbackTracking):
@@ -155,6 +155,8 @@ def run_in_process(
             with simulated_time(host, clocks=not sim.realtime):
                 seed_numpy(seed)
                 run_controller(spec)
+    except RunEnded:
+        pass  # a callback still waiting when the run ended: stopped, as with Ctrl-C
     except (ControllerError, KeyboardInterrupt):
         raise
     except SystemExit as exc:
