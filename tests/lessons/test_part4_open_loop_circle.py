@@ -95,3 +95,12 @@ def test_a_twist_stamped_on_cmd_vel_moves_nothing_and_feedback_says_why(grade, i
     text = " ".join(feedback_of(result, "circle"))
     assert "with type geometry_msgs/msg/TwistStamped" in text and "never match" in text
     assert "cannot accept" not in " ".join(t.output for t in result.tests)
+
+
+def test_a_node_stopped_without_a_traceback_is_not_told_to_read_one(grade):
+    result = grade(LESSON, HERE / "blocks_in_a_callback.py")
+    assert "no_crash" in failed_checks(result)
+    text = "\n".join(feedback_of(result, "no_crash"))
+    assert "did not answer within" in text
+    assert "traceback" not in text.lower()
+    assert "the lines above say why" in text
