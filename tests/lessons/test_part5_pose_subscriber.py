@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from support.lessons import SOLUTIONS, failed_checks, not_judged
+from support.lessons import SOLUTIONS, failed_checks, feedback_of, not_judged
 
 LESSON = "part5-pose-subscriber"
 HERE = SOLUTIONS / "part5"
@@ -71,3 +71,10 @@ def test_the_starter_runs_without_crashing_but_scores_nothing(grade):
     result = grade(LESSON, STARTER)
     assert "no_crash" not in failed_checks(result)
     assert result.score == 0.0
+
+
+def test_a_sleep_in_the_callback_is_named_as_why_the_lines_lag(grade):
+    result = grade(LESSON, HERE / "sleeps_in_the_callback.py")
+    assert "logs_the_pose" in failed_checks(result)
+    text = " ".join(feedback_of(result, "logs_the_pose"))
+    assert "the lines lag behind the poses, as when the callback sleeps or blocks" in text

@@ -249,4 +249,24 @@ def log_pose(trace: Trace, th: Mapping[str, Any]) -> Verdict:
         record, pose = wrong
         where = f"the turtle was at x={pose[1]:.3f}, y={pose[2]:.3f}" if pose is not None else "no pose yet"
         text += f"; at t={record.t:.3f} s the line said {record.msg[:80]!r} but {where}"
+        lag = _lag(poses, record.t, max_age, _logged_numbers(record.msg))
+        if lag is not None:
+            text += (
+                f" (it was there {lag:.2f} s before: the lines lag behind the poses, as when the callback "
+                "sleeps or blocks and the poses wait in its queue)"
+            )
     return Verdict(verdict.passed, text)
+
+
+_LAG_LOOKBACK_S = 10.0
+
+
+def _lag(poses: Any, t: float, max_age: float, numbers: list[tuple[float, float]]) -> float | None:
+    """How long before ``t`` (seconds) the turtle was where ``numbers`` say,
+    more than ``max_age`` and at most _LAG_LOOKBACK_S before; None if it was not."""
+    times = poses[:, 0]
+    earlier = poses[(times < t - max_age - 1e-9) & (times >= t - _LAG_LOOKBACK_S)]
+    for when, x, y in reversed(earlier[:, 0:3].tolist()):
+        if _shows(numbers, x, y):
+            return t - when
+    return None
