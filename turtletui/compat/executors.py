@@ -206,12 +206,15 @@ class MultiThreadedExecutor(Executor):
             super()._run(host, spin)
             return
         finished: list[bool] = []
+        interrupted: list[KeyboardInterrupt] = []
 
         def stop() -> bool:
             return bool(finished) or self._stopped()
 
         workers = [
-            threading.Thread(target=self._work, args=(host, stop), name=f"MultiThreadedExecutor-{n}", daemon=True)
+            threading.Thread(
+                target=self._work, args=(host, stop, finished, interrupted), name=f"MultiThreadedExecutor-{n}", daemon=True
+            )
             for n in range(1, self._num_threads)
         ]
         for worker in workers:
@@ -222,10 +225,20 @@ class MultiThreadedExecutor(Executor):
             finished.append(True)
             for worker in workers:
                 worker.join()
+        if interrupted:
+            raise interrupted[0]
 
-    def _work(self, host: Any, stop: Callable[[], bool]) -> None:
+    def _work(
+        self, host: Any, stop: Callable[[], bool], finished: list[bool], interrupted: list[KeyboardInterrupt]
+    ) -> None:
         with self._counted():
-            host.spin(stop)
+            try:
+                host.spin(stop)
+            except KeyboardInterrupt as interrupt:
+                # the run's end stopping a callback here (turtletui.runtime.host.RunEnded):
+                # the thread that spins gets it, as Ctrl-C goes to the main thread
+                interrupted.append(interrupt)
+                finished.append(True)
 
     def shutdown(self, timeout_sec: float | None = None, *, wait_for_threads: bool = True) -> bool:
         return super().shutdown(timeout_sec)

@@ -22,6 +22,7 @@ import json
 import os
 import random
 import sys
+import threading
 import traceback
 from collections.abc import Callable
 from select import select as _select
@@ -30,7 +31,7 @@ from typing import Any
 
 from turtletui.graph.core import Graph
 from turtletui.runtime import protocol, wire
-from turtletui.runtime.host import CallbackTracking
+from turtletui.runtime.host import CallbackTracking, RunEnded
 from turtletui.runtime.outbox import OWNER, ParentOutbox
 from turtletui.runtime.scheduler import Scheduler
 
@@ -55,6 +56,7 @@ class ChildHost(CallbackTracking):
         sleeps (a blocking read when 0)."""
         self.running = True
         self.scheduler = Scheduler(graph, self.exchange, lambda: self.running)
+        self.controller_thread = threading.get_ident()
 
     def spin(self, stop: Callable[[], bool]) -> None:
         """Run every callback as it becomes ready until ``stop()`` or the end."""
@@ -110,7 +112,7 @@ class ChildHost(CallbackTracking):
         if ready and self.running:
             ready.popleft()[1]()
             return True
-        return False
+        return self.running or self.waited_after_end()
 
     def spin_until(self, done: Callable[[], bool], timeout_ns: int | None, *, callbacks: bool = True) -> bool:
         graph = self.graph
@@ -134,7 +136,13 @@ class ChildHost(CallbackTracking):
             self.scheduler.wait(None, t_ns)  # after the run: passes at once
         elif self.running:
             self.scheduler.pause()  # time.sleep(0): let the other threads run
-        return self.running
+        return self.running or self.waited_after_end()
+
+    def clock_read(self) -> None:
+        """A reading of a simulated clock (Scheduler.clock_read); a loop that
+        polls the clock after the run is over waits like a sleep."""
+        if self.scheduler.clock_read() and not self.running:
+            self.waited_after_end()
 
 
 def _out_of_memory(exc: BaseException) -> bool:
@@ -253,7 +261,7 @@ def main(config: dict[str, Any] | None = None) -> None:
     virtual_time.install_simulated_sleep(host)
     virtual_time.install_simulated_select(host)
     if not config.get("realtime"):
-        virtual_time.patch_clocks(graph, host.scheduler.clock_read)
+        virtual_time.patch_clocks(graph, host.clock_read)
     spec = ControllerSpec(
         name=config["name"],
         path=None if config.get("path") is None else __import__("pathlib").Path(config["path"]),
@@ -268,17 +276,18 @@ def main(config: dict[str, Any] | None = None) -> None:
         memory_limit = config.get("limits", {}).get("memory_bytes")
         if memory_limit and _address_space() > memory_limit:
             raise MemoryError  # forked warm: a fresh interpreter would not have started
-        if config.get("factory"):
-            sys.path[1:1] = [p for p in config.get("sys_path", []) if p]
-            factory = resolve_factory(config["factory"])
-            seed_numpy(config.get("seed", 0))
-            spin_nodes(list(factory()))
-        else:
-            seed_numpy(config.get("seed", 0))
-            run_controller(spec)
+        try:
+            if config.get("factory"):
+                sys.path[1:1] = [p for p in config.get("sys_path", []) if p]
+                factory = resolve_factory(config["factory"])
+                seed_numpy(config.get("seed", 0))
+                spin_nodes(list(factory()))
+            else:
+                seed_numpy(config.get("seed", 0))
+                run_controller(spec)
+        except RunEnded:
+            pass  # still waiting when the run ended: stopped, as with Ctrl-C
         host.scheduler.join_threads()  # as Python does before it exits
-    except virtual_time.RunEnded:
-        pass  # a callback still waiting when the run ended: stopped, as with Ctrl-C
     except ControllerError as err:
         crash = protocol.Crash("load", str(err), ())
     except SystemExit as exc:

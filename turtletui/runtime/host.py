@@ -9,6 +9,21 @@ from typing import Any
 from turtletui.compat.dispatch import callback_label
 
 
+class RunEnded(KeyboardInterrupt):
+    """Raised in a controller that still waits once its run is over, as Ctrl-C
+    stops a node in ROS: in a callback (whose loop of sleeps would otherwise
+    never end, each returning at once), or in its main thread after
+    POST_RUN_WAITS such waits (a loop in main() without ``rclpy.ok()``).
+    The hosts take it for the run's end, not a crash; ``except
+    KeyboardInterrupt`` catches it as it would Ctrl-C. Threads the controller
+    started are left alone, as Ctrl-C leaves them."""
+
+
+POST_RUN_WAITS = 1000
+"""Waits the controller's main thread may make once the run is over (its way
+out: a node destroyed, a last sleep) before it is stopped."""
+
+
 class _ThreadDepth(threading.local):
     n = 0
 
@@ -33,9 +48,24 @@ class CallbackTracking:
     in a callback deadlocks in ROS; another thread spinning meanwhile does not).
     A host whose callbacks all run on one thread may keep a plain counter."""
 
+    controller_thread: int = 0
+    """The thread the controller's main() runs on (threading.get_ident())."""
+    _waits_after_end = 0
+
     @property
     def callback_depth(self) -> int:
         return self._depth.n
+
+    def waited_after_end(self) -> bool:
+        """What a wait that returned because the run is over returns (False),
+        unless the waiter is stopped (:class:`RunEnded`)."""
+        if self.callback_depth:
+            raise RunEnded("the run ended")
+        if threading.get_ident() == self.controller_thread:
+            self._waits_after_end += 1
+            if self._waits_after_end > POST_RUN_WAITS:
+                raise RunEnded("the run ended")
+        return False
 
     @property
     def callback_counter(self) -> Any:

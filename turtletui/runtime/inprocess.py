@@ -15,7 +15,7 @@ from collections.abc import Callable
 from turtletui import compat
 from turtletui.compat import context as compat_context
 from turtletui.compat import logging as compat_logging
-from turtletui.runtime.host import CallbackTracking, Depth
+from turtletui.runtime.host import CallbackTracking, Depth, RunEnded
 from turtletui.runtime.loader import (
     ControllerError,
     ControllerSpec,
@@ -25,7 +25,7 @@ from turtletui.runtime.loader import (
 from turtletui.runtime.report import CrashReport, crash_from_exception, stop_turtles
 from turtletui.runtime.scheduler import CLOCK_READS_PER_STEP, CLOCK_STEP_NS
 from turtletui.runtime.simulation import MAX_ROUNDS_PER_INSTANT, Simulation
-from turtletui.runtime.virtual_time import RunEnded, simulated_time
+from turtletui.runtime.virtual_time import simulated_time
 
 
 class InProcessHost(CallbackTracking):
@@ -42,7 +42,7 @@ class InProcessHost(CallbackTracking):
         self._rounds = 0
         self._reads_instant = -1
         self._reads = 0
-        self._thread = threading.get_ident()
+        self._thread = self.controller_thread = threading.get_ident()
         self._depth = Depth()
 
     @property
@@ -96,7 +96,7 @@ class InProcessHost(CallbackTracking):
     def spin_once(self, timeout_ns: int | None) -> bool:
         self._one_thread()
         if not self.running:
-            return False
+            return self.waited_after_end()
         deadline = self._deadline(timeout_ns)
         outcome = self.sim.pump(self.owner, self.end_ns if timeout_ns is None else self._limit(timeout_ns))
         if outcome != "own":
@@ -128,7 +128,7 @@ class InProcessHost(CallbackTracking):
         if self.running:
             self.sim.pump(self.owner, min(t_ns, self.end_ns), run_own=False)
             self._check_end(t_ns)
-        return self.running
+        return self.running or self.waited_after_end()
 
 
 def run_in_process(

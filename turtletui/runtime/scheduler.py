@@ -148,12 +148,15 @@ class Scheduler:
         if self._forks == _forks and self._running():
             self._advance(self.graph.now_ns)
 
-    def clock_read(self) -> None:
-        """Count a reading of the clock (see :data:`CLOCK_READS_PER_STEP`)."""
+    def clock_read(self) -> bool:
+        """Count a reading of the clock (see :data:`CLOCK_READS_PER_STEP`);
+        whether it let time pass (waited)."""
         self._clock_reads += 1
         if self._clock_reads >= CLOCK_READS_PER_STEP:
             self._clock_reads = 0
             self.wait(None, self.graph.now_ns + CLOCK_STEP_NS)
+            return True
+        return False
 
     def _advance(self, wake: int | None) -> None:
         self._clock_reads = 0

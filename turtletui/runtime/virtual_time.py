@@ -22,7 +22,6 @@ from __future__ import annotations
 
 import math
 import os
-import threading
 import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
@@ -37,16 +36,8 @@ SELECT_STEP_NS = 10_000_000
 time: nothing in the simulation writes to them, so it cannot know when."""
 
 
-class RunEnded(KeyboardInterrupt):
-    """Raised in a controller's callback that waits once the run is over, as
-    Ctrl-C stops a node in ROS: a loop of sleeps in a callback would otherwise
-    never end (each returns at once then). The hosts take it for the run's end,
-    not a crash; ``except KeyboardInterrupt`` around spin catches it."""
-
-
 def _simulated_sleep(host: Any):
     pid = os.getpid()
-    controller_thread = threading.get_ident()
 
     def sleep(seconds: float) -> None:
         if os.getpid() != pid:
@@ -59,14 +50,9 @@ def _simulated_sleep(host: Any):
             raise ValueError("sleep length must be non-negative")
         if math.isnan(seconds):
             raise ValueError("Invalid value NaN (not a number)")
-        # Once the run is over, this returns at once: the program is on its way out.
-        # From a callback on the controller's thread it stops the callback instead.
-        if (
-            not host.sleep_until(host.graph.now_ns + seconds_to_ns(seconds))
-            and host.callback_depth
-            and threading.get_ident() == controller_thread
-        ):
-            raise RunEnded("the run ended")
+        # Once the run is over, this returns at once: the program is on its way
+        # out (a callback still running is stopped: turtletui.runtime.host.RunEnded).
+        host.sleep_until(host.graph.now_ns + seconds_to_ns(seconds))
 
     sleep.__doc__ = _real_sleep.__doc__
     return sleep
@@ -106,6 +92,7 @@ def patch_clocks(graph: Any, note: Callable[[], None]) -> Callable[[], None]:
     real ones back."""
     import datetime
     import queue
+    import threading
 
     saved = [(time, name, getattr(time, name)) for name in _CLOCKS]
     saved += [(threading, "_time", threading._time), (queue, "time", queue.time)]
