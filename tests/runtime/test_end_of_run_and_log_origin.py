@@ -165,5 +165,119 @@ def main():
     assert result.ok, result.crashes
     assert result.turtles["turtle1"].distance > 2.0
     assert [r.msg for r in result.logs if r.node == "turtletui" and "still busy" in r.msg] == [
-        f"{path}: still busy 1 s after the run ended (a loop in a callback or a thread that never returns?): stopped"
+        f"{path}: still busy 1 s after the run ended (a loop in a thread that never returns?): stopped"
     ]
+
+
+WAITS_IN_A_CALLBACK = {
+    # each way a callback can wait in simulated time
+    "rclpy clock": "self.get_clock().sleep_for(Duration(seconds=1.0))",
+    "clock polling": "start = time.time()\n            while time.time() - start < 1.0:\n                pass",
+}
+
+
+@pytest.mark.parametrize("host", ["in-process", "fast", "lockstep"])
+@pytest.mark.parametrize("wait", sorted(WAITS_IN_A_CALLBACK))
+def test_a_callback_waiting_any_way_at_the_end_is_stopped_alike(tmp_path: Path, host: str, wait: str) -> None:
+    source = SLEEPS_IN_A_CALLBACK.replace("time.sleep(1.0)", WAITS_IN_A_CALLBACK[wait]).replace(
+        "import rclpy\n", "import rclpy\nfrom rclpy.duration import Duration\n", 1
+    )
+    path = tmp_path / "looper.py"
+    path.write_text(source)
+    spec = ControllerSpec("looper", path, trusted=host == "in-process")
+    result = run([spec], duration=3.0, limits=None if host == "in-process" else Limits(lockstep=host == "lockstep"))
+    assert result.ok, result.crashes
+    logged = [r.msg for r in result.logs if r.node == "looper"]
+    assert logged[-1] == "stopped" and len(logged) >= 3, logged
+    assert not [r.msg for r in result.logs if "still busy" in r.msg]
+
+
+@pytest.mark.parametrize("host", ["in-process", "sandboxed"])
+def test_a_multithreaded_executors_callback_is_stopped_as_the_main_threads(tmp_path: Path, host: str) -> None:
+    path = tmp_path / "looper.py"
+    path.write_text(SLEEPS_IN_A_CALLBACK.replace(
+        "        rclpy.spin(node)\n",
+        "        from rclpy.executors import MultiThreadedExecutor\n        rclpy.spin(node, executor=MultiThreadedExecutor())\n",
+    ))
+    result = run([ControllerSpec("looper", path, trusted=host == "in-process")], duration=3.0)
+    assert result.ok, result.crashes
+    assert [r.msg for r in result.logs if r.node == "looper"][-1] == "stopped"
+    assert not [r.msg for r in result.logs if "still busy" in r.msg]
+
+
+@pytest.mark.parametrize("host", ["in-process", "fast", "lockstep"])
+def test_a_loop_in_main_that_never_looks_at_rclpy_ok_ends_after_the_run(tmp_path: Path, host: str) -> None:
+    path = tmp_path / "driver.py"
+    path.write_text("""
+import time
+import rclpy
+from rclpy.node import Node
+from geometry_msgs.msg import Twist
+
+
+def main():
+    rclpy.init()
+    node = Node("driver")
+    pub = node.create_publisher(Twist, "/turtle1/cmd_vel", 10)
+    msg = Twist()
+    msg.linear.x = 1.0
+    try:
+        while True:
+            pub.publish(msg)
+            time.sleep(0.1)
+    finally:
+        node.get_logger().info("stopped")
+""")
+    spec = ControllerSpec("driver", path, trusted=host == "in-process")
+    result = run([spec], duration=3.0, limits=None if host == "in-process" else Limits(lockstep=host == "lockstep"))
+    assert result.ok, result.crashes
+    assert [(r.t, r.msg) for r in result.logs if r.node == "driver"] == [(3.0, "stopped")]
+    assert not [r.msg for r in result.logs if "still busy" in r.msg]
+
+
+@pytest.mark.parametrize("caught", [True, False], ids=["caught", "uncaught"])
+def test_threads_still_run_to_their_end_after_the_run_ended_the_main_thread(tmp_path: Path, caught: bool) -> None:
+    # as Python joins non-daemon threads after a KeyboardInterrupt too
+    source = SLEEPS_IN_A_CALLBACK.replace(
+        "    node = Looper()\n",
+        "    node = Looper()\n"
+        "    import threading\n"
+        "    def last_words():\n"
+        "        while rclpy.ok():\n"
+        "            time.sleep(0.5)\n"
+        "        node.get_logger().info('thread done')\n"
+        "    threading.Thread(target=last_words).start()\n",
+    )
+    if not caught:
+        source = source.replace("    try:\n        rclpy.spin(node)\n    except KeyboardInterrupt:\n", "    rclpy.spin(node)\n    if 0:\n")
+    path = tmp_path / "looper.py"
+    path.write_text(source)
+    result = run([path], duration=3.0)
+    assert result.ok, result.crashes
+    assert "thread done" in [r.msg for r in result.logs if r.node == "looper"]
+
+
+def test_a_timeout_the_child_reports_itself_at_the_end_stays_its_crash(tmp_path: Path) -> None:
+    # only the parent's own wait for the last report may end a run quietly
+    path = tmp_path / "forger.py"
+    path.write_text("""
+import rclpy
+from rclpy.node import Node
+from turtletui.runtime import outbox, protocol
+
+
+def main():
+    rclpy.init()
+    rclpy.spin(Node("forger"))
+    real = outbox.ParentOutbox.report
+
+    def report(self, wake_ns, *, done=False, crash=None):
+        if done:
+            crash = protocol.Crash("timeout", "made up", ())
+        return real(self, wake_ns, done=done, crash=crash)
+
+    outbox.ParentOutbox.report = report
+""")
+    result = run([path], duration=1.0)
+    assert [(c.kind, c.message) for c in result.crashes] == [("timeout", "made up")]
+    assert not [r.msg for r in result.logs if "still busy" in r.msg]

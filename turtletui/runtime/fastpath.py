@@ -256,6 +256,8 @@ class FastHost(SandboxHost):
         """Bytes of the batch numbered ``_seq`` already taken from the journal."""
         self._failure: ChildFailed | None = None
         """Why the child is gone, said once what it wrote before is replayed."""
+        self._ending = False
+        """The run is over: the next record is the child's answer to its end."""
 
     def _terminate(self) -> None:
         super()._terminate()
@@ -335,7 +337,10 @@ class FastHost(SandboxHost):
                 if failure.kind != "timeout":
                     self._failure = failure  # said when the replay gets there
                 continue  # a timeout with new records: it is slow, not stuck
-            self._fail(failure.kind, failure.message)
+            if self._ending and failure.kind == "timeout":
+                self._busy_at_end()  # its own answer to the run's end never came
+            else:
+                self._fail(failure.kind, failure.message)
             raise _Stop
         return records.popleft()
 

@@ -92,8 +92,7 @@ class SandboxHost:
         self.wake_ns: int | None = None
         self.crash: CrashReport | None = None
         self.finished = False
-        self._ending = False
-        """The run is over and the child was asked for its last report."""
+
         spin = wire.default_spin_seconds() if limits.spin_seconds is None else limits.spin_seconds
         self.process = ChildProcess(spec, limits, self.graph.log, spin=spin)
         self._pace = Pace(start_ns=0)
@@ -172,16 +171,33 @@ class SandboxHost:
         if not self.finished and self._awaiting is not None:
             self._collect(self.limits.step_timeout)
         if not self.finished:
-            self._ending = True
             try:
                 self.process.send(protocol.encode_end(), 1.0)
-                self._receive(1.0)
+                payload = self.process.receive(1.0)
             except ChildFailed as failed:
-                self._fail(failed.kind, failed.message)
-            except _Stop:
-                pass
+                if failed.kind == "timeout":
+                    self._busy_at_end()
+                else:
+                    self._fail(failed.kind, failed.message)
+            else:
+                try:
+                    self._apply(self._decode(payload))
+                except _Stop:
+                    pass
         self._terminate()
         return self.crash
+
+    def _busy_at_end(self) -> None:
+        """The child did not answer End in time. What a controller does once the
+        run is over counts for nothing (as after Ctrl-C in ROS, where a thread
+        that never returns keeps a node's process alive): not a fault of the run."""
+        self.graph.log(
+            "turtletui",
+            WARN,
+            f"{self.spec.label}: still busy 1 s after the run ended (a loop in a thread that never "
+            "returns?): stopped",
+        )
+        self._terminate()
 
     def _terminate(self) -> None:
         self.finished = True
@@ -200,19 +216,6 @@ class SandboxHost:
         self.graph.remove_owner(self.owner)
 
     def _fail(self, kind: str, message: str, frames: list[str] | None = None) -> None:
-        if self._ending and kind == "timeout":
-            # What a controller does once the run is over counts for nothing, as
-            # a node stopped with Ctrl-C: a callback or a thread that never
-            # returns is no fault of the run (a callback waiting in simulated
-            # time was interrupted already: turtletui.runtime.virtual_time).
-            self.graph.log(
-                "turtletui",
-                WARN,
-                f"{self.spec.label}: still busy 1 s after the run ended (a loop in a callback or a thread "
-                "that never returns?): stopped",
-            )
-            self._terminate()
-            return
         if self.crash is None:
             message = " ".join(message.splitlines())  # the summary stays one line
             self.crash = CrashReport(self.spec.label, self.sim.t, kind, message, frames or [])
