@@ -348,3 +348,17 @@ def test_the_wait_hook_may_give_up(pipe):
     reader = wire.FrameReader(r, wait=wait)
     with pytest.raises(ChildGone):
         reader.read_frame(time.monotonic() + 60)
+
+
+def test_a_reports_json_is_what_json_dumps_writes() -> None:
+    # the C encoder built once (protocol._json_encoder) must write what json.dumps does
+    values = {
+        "log": [protocol.Log(20, "n\u00e9", 'a "quoted"\nline \u2713', True)],
+        "pub": [protocol.Publish("/x", [[1.5, -0.0, 1e300], [float("inf"), float("-inf"), float("nan")]], 3, False)],
+        "wake": 2**70,
+        "done": None,
+    }
+    encoded = protocol._ENCODE_JSON(values)
+    assert encoded == json.dumps(values, separators=(",", ":"), allow_nan=True)
+    with pytest.raises(TypeError, match="not JSON serializable"):
+        protocol._ENCODE_JSON({"x": {1, 2}})

@@ -495,9 +495,11 @@ def _json_encoder() -> Callable[[Any], str]:
     for circular references a Report (fresh lists of values) cannot have."""
     python = json.JSONEncoder(separators=(",", ":"), allow_nan=True, check_circular=False)
     make = json.encoder.c_make_encoder
-    if make is None:  # an interpreter without the C accelerator
+    try:
+        # (markers, default, encoder, indent, key separator, item separator, sort_keys, skipkeys, allow_nan)
+        encode = make(None, python.default, json.encoder.encode_basestring_ascii, None, ":", ",", False, False, True)
+    except TypeError:  # no C accelerator (None), or another signature than CPython 3.10-3.13's
         return python.encode
-    encode = make(None, python.default, json.encoder.encode_basestring_ascii, None, ":", ",", False, False, True)
     join = "".join
 
     def dumps(obj: Any) -> str:
