@@ -315,16 +315,9 @@ def test_what_a_child_forked_too_late_wrote_is_not_read_as_the_runs(
     """A server that answers too late is given up and the run starts the usual
     way, on the same pipes: a child it forked anyway wrote its first answer
     there (and on the fast path, records in the journal) before it was killed."""
-    from turtletui.runtime import protocol, wire
     from turtletui.runtime.sandbox import Limits
 
-    def late(self, config, cwd, fds, timeout):
-        wire.write_frame(fds[1], protocol.encode_report(protocol.Report()))
-        if len(fds) > 2:
-            os.pwrite(fds[2], b"\x07" * 4096, 0)  # a journal head no batch has
-        return None
-
-    monkeypatch.setattr(forkserver.ForkServer, "spawn", late)
+    monkeypatch.setattr(forkserver.ForkServer, "spawn", _late)
     node = controller(tmp_path / "late")
     expected = run([node], duration=2.0, seed=5, keep_poses=True, limits=Limits(lockstep=lockstep))
     with forkserver.serving():
@@ -332,6 +325,33 @@ def test_what_a_child_forked_too_late_wrote_is_not_read_as_the_runs(
     assert got.crashes == []
     assert got.poses["turtle1"] == expected.poses["turtle1"]
     assert got.turtles["turtle1"].distance > 1.0
+
+
+def _late(self, config, cwd, fds, timeout):
+    """A server's spawn that gave up while its late child had written its
+    start report and (fast path) a first batch into the journal."""
+    from turtletui.runtime import fastpath, protocol, wire
+
+    wire.write_frame(fds[1], protocol.encode_report(protocol.Report()))
+    if len(fds) > 2:
+        payload = protocol.encode_report(protocol.Report())
+        record = fastpath._RECORD.pack(123_000_000, 0.0, 0, 0, len(payload)) + payload
+        os.pwrite(fds[2], fastpath._HEADER.pack(0, len(record)) + record, 0)
+    return None
+
+
+def test_a_late_childs_journal_is_not_replayed_for_a_child_that_exits_at_once(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The run's own child ends before its first record: the journal the parent
+    then reads must not hold the late child's."""
+    from turtletui.runtime.sandbox import Limits
+
+    monkeypatch.setattr(forkserver.ForkServer, "spawn", _late)
+    node = controller(tmp_path / "quits", before="os._exit(0)")
+    with forkserver.serving():
+        got = run([node], duration=2.0, limits=Limits(lockstep=False))
+    assert [(c.kind, c.message) for c in got.crashes] == [("exit", "exited with status 0 without finishing its run")]
 
 
 def test_two_controllers_of_one_run_both_run_the_second_started_afresh(tmp_path: Path) -> None:
