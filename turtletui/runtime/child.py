@@ -112,7 +112,7 @@ class ChildHost(CallbackTracking):
         if ready and self.running:
             ready.popleft()[1]()
             return True
-        return self.running or self.waited_after_end()
+        return False if self.running else self.waited_after_end()
 
     def spin_until(self, done: Callable[[], bool], timeout_ns: int | None, *, callbacks: bool = True) -> bool:
         graph = self.graph
