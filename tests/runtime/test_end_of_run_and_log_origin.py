@@ -281,3 +281,15 @@ def main():
     result = run([path], duration=1.0)
     assert [(c.kind, c.message) for c in result.crashes] == [("timeout", "made up")]
     assert not [r.msg for r in result.logs if "still busy" in r.msg]
+
+
+@pytest.mark.parametrize("host", ["fast", "lockstep"])
+def test_a_child_that_dies_on_its_way_out_after_the_run_is_no_crash(tmp_path: Path, host: str) -> None:
+    # its last report never comes; what it does once the run is over counts for nothing
+    path = tmp_path / "quitter.py"
+    path.write_text(SLEEPS_IN_A_CALLBACK.replace(
+        '        node.get_logger().info("stopped")\n', '        import os\n        os._exit(3)\n'
+    ))
+    result = run([path], duration=3.0, limits=Limits(lockstep=host == "lockstep"))
+    assert result.ok, result.crashes
+    assert [r.msg for r in result.logs if r.node == "looper"] == ["line 0", "line 1", "line 2"]

@@ -337,8 +337,8 @@ class FastHost(SandboxHost):
                 if failure.kind != "timeout":
                     self._failure = failure  # said when the replay gets there
                 continue  # a timeout with new records: it is slow, not stuck
-            if self._ending and failure.kind == "timeout":
-                self._busy_at_end()  # its own answer to the run's end never came
+            if self._ending:
+                self._no_last_report(failure)  # its answer to the run's end never came
             else:
                 self._fail(failure.kind, failure.message)
             raise _Stop

@@ -92,7 +92,6 @@ class SandboxHost:
         self.wake_ns: int | None = None
         self.crash: CrashReport | None = None
         self.finished = False
-
         spin = wire.default_spin_seconds() if limits.spin_seconds is None else limits.spin_seconds
         self.process = ChildProcess(spec, limits, self.graph.log, spin=spin)
         self._pace = Pace(start_ns=0)
@@ -175,10 +174,7 @@ class SandboxHost:
                 self.process.send(protocol.encode_end(), 1.0)
                 payload = self.process.receive(1.0)
             except ChildFailed as failed:
-                if failed.kind == "timeout":
-                    self._busy_at_end()
-                else:
-                    self._fail(failed.kind, failed.message)
+                self._no_last_report(failed)
             else:
                 try:
                     self._apply(self._decode(payload))
@@ -187,16 +183,18 @@ class SandboxHost:
         self._terminate()
         return self.crash
 
-    def _busy_at_end(self) -> None:
-        """The child did not answer End in time. What a controller does once the
-        run is over counts for nothing (as after Ctrl-C in ROS, where a thread
-        that never returns keeps a node's process alive): not a fault of the run."""
-        self.graph.log(
-            "turtletui",
-            WARN,
-            f"{self.spec.label}: still busy 1 s after the run ended (a loop in a thread that never "
-            "returns?): stopped",
-        )
+    def _no_last_report(self, failed: ChildFailed) -> None:
+        """The child did not answer the run's end with its last report. What a
+        controller does once the run is over counts for nothing (after Ctrl-C
+        in ROS, a thread that never returns keeps a node's process alive):
+        not a fault of the run. One still busy is told so."""
+        if failed.kind == "timeout":
+            self.graph.log(
+                "turtletui",
+                WARN,
+                f"{self.spec.label}: still busy 1 s after the run ended (a loop in a thread that never "
+                "returns?): stopped",
+            )
         self._terminate()
 
     def _terminate(self) -> None:
