@@ -642,17 +642,20 @@ def test_daemonised_grandchild_of_a_dead_controller_is_killed(tmp_path: Path) ->
     is in no group, session or tree of the child's any more."""
     path = write(tmp_path, """
         def misbehave(node):
+            noted, written = os.pipe()
             if os.fork() == 0:
                 os.setsid()
                 if os.fork() == 0:
                     note("grandchild_pid", os.getpid())
+                    os.write(written, b"x")
                     time.sleep(60)
                 os._exit(0)
-            while not os.path.exists("grandchild_pid"):
-                threading.Event().wait(0.01)
+            # wait in wall time (a simulated wait could outlast the run on a busy
+            # machine, and what it does after the run counts for nothing)
+            os.read(noted, 1)
             os._exit(1)
     """)
-    result = go(path)
+    result = go(path, step_timeout=60.0)
     crash = only_crash(result, "exit", path)
     assert "status 1" in crash.message
     assert_gone(read_pid(tmp_path))
