@@ -42,19 +42,19 @@ class InProcessHost(CallbackTracking):
         self._rounds = 0
         self._reads_instant = -1
         self._reads = 0
-        self._thread = self.controller_thread = threading.get_ident()
+        self.controller_thread = threading.get_ident()
         self._depth = Depth()
 
     @property
     def callback_depth(self) -> int:
         # Callbacks run on the controller's thread only (see _one_thread): a
         # plain counter (see CallbackTracking) costs less per delivery.
-        return self._depth.n if threading.get_ident() == self._thread else 0
+        return self._depth.n if threading.get_ident() == self.controller_thread else 0
 
     def _one_thread(self) -> None:
         """Only the thread that runs the controller may wait here: threads that
         take turns need a process of their own (the sandbox)."""
-        if threading.get_ident() != self._thread:
+        if threading.get_ident() != self.controller_thread:
             raise RuntimeError(
                 "a controller run in-process can spin and sleep on its main thread only; "
                 "run it sandboxed (without --in-process) to use threads"

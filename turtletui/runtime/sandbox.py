@@ -187,7 +187,7 @@ class SandboxHost:
         """The child did not answer the run's end with its last report. What a
         controller does once the run is over counts for nothing (after Ctrl-C
         in ROS, a thread that never returns keeps a node's process alive):
-        not a fault of the run. One still busy is told so."""
+        not a fault of the run. One still busy is told so; the caller ends it."""
         if failed.kind == "timeout":
             self.graph.log(
                 "turtletui",
@@ -195,7 +195,6 @@ class SandboxHost:
                 f"{self.spec.label}: still busy 1 s after the run ended (a loop in a thread that never "
                 "returns?): stopped",
             )
-        self._terminate()
 
     def _terminate(self) -> None:
         self.finished = True
