@@ -195,8 +195,10 @@ def test_the_server_and_everything_it_started_end_with_the_block(tmp_path: Path)
         grandchild = int(noted(tmp_path, "grandchild")[0])
         # the killed grandchild (a fork of the server: its command line) goes first
         servers = _servers_of(os.getpid()) - {grandchild}
-        assert len(servers) == 1, "the server waits for the submission's next run"
-        assert grandchild not in _settled(lambda: _processes_with(token), servers), "killed with its run"
+        serving = servers & _processes_with(token)
+        assert len(serving) == 1, "the server waits for the submission's next run"
+        assert len(servers - serving) == 1, "the template waits for the next submission"
+        assert grandchild not in _settled(lambda: _processes_with(token), serving), "killed with its run"
     assert _settled(lambda: _servers_of(os.getpid()), set()) == set()
     assert _settled(lambda: _processes_with(token), set()) == set()
 
@@ -225,6 +227,140 @@ def test_a_controller_that_kills_its_server_only_slows_its_own_later_runs(tmp_pa
         assert result.crashes == [] and result.turtles["turtle1"].distance > 1.0
     tokens = noted(tmp_path / "killer", "token")
     assert tokens[0] != tokens[1], "the second run started afresh"
+
+
+def _template_of(parent: int, *tokens: str) -> int:
+    """The one fork server of ``parent`` that holds none of ``tokens``: the template."""
+    held = set().union(*map(_processes_with, tokens))
+    (template,) = _servers_of(parent) - held
+    return template
+
+
+def test_each_submission_gets_a_server_of_its_own_forked_from_one_template(tmp_path: Path) -> None:
+    """A submission's server is forked (not started afresh) from a template
+    that never runs a controller: its token, process and session are new."""
+    names = ("ada", "bob", "cy")
+    paths = [controller(tmp_path / name) for name in names]
+    templates = []
+    with forkserver.serving():
+        for path in paths:
+            run([path], duration=0.5)
+            templates.append(_template_of(os.getpid(), noted(path.parent, "token")[0]))
+    tokens = [noted(tmp_path / name, "token")[0] for name in names]
+    assert len(set(tokens)) == 3
+    assert len(set(templates)) == 1, "one template served every submission"
+    for name in names:
+        assert noted(tmp_path / name, "parent")[0] == str(os.getpid())
+        assert noted(tmp_path / name, "group") == ["True"]
+
+
+@pytest.mark.parametrize("signal_name", ["SIGSTOP", "SIGKILL"])
+def test_a_controller_that_stops_or_kills_the_template_slows_only_the_next_servers_start(
+    tmp_path: Path, signal_name: str
+) -> None:
+    """The template runs as the same user as the runs: one that stops it
+    must not hang the next submission, nor one that kills it fail it."""
+    tamperer = controller(tmp_path / "tamperer", before=f"""
+        mine = os.environ["TURTLETUI_SANDBOX"]
+        for entry in os.listdir("/proc"):
+            try:
+                with open(f"/proc/{{entry}}/cmdline", "rb") as f:
+                    command = f.read()
+                with open(f"/proc/{{entry}}/stat", "rb") as f:
+                    parent = int(f.read().rpartition(b")")[2].split()[1])
+                if {SERVER_MARK!r}.encode() in command and parent == os.getppid():
+                    with open(f"/proc/{{entry}}/environ", "rb") as f:
+                        theirs = f.read()
+                    if f"TURTLETUI_SANDBOX={{mine}}".encode() not in theirs.split(b"\\0"):
+                        os.kill(int(entry), signal.{signal_name})
+                        note("hit", entry)
+            except (OSError, ValueError, IndexError):
+                pass
+    """)
+    honest = controller(tmp_path / "honest")
+    with forkserver.serving():
+        run([tamperer], duration=0.5)
+        after = run([honest], duration=0.5, seed=5, keep_poses=True)
+        again = run([controller(tmp_path / "again")], duration=0.5)
+    assert len(noted(tmp_path / "tamperer", "hit")) == 1, "it found the template"
+    fresh = run([honest], duration=0.5, seed=5, keep_poses=True)
+    assert after.crashes == [] == again.crashes
+    assert after.poses["turtle1"] == fresh.poses["turtle1"]
+
+
+def test_where_templates_cannot_fork_servers_one_is_tried_once(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A new template that forks no server (a system where the token cannot be
+    set so) is not started again for every submission: servers start afresh."""
+    started = []
+    real_init = forkserver.ForkServer.__init__
+
+    def counting_init(self, *args, template: bool = False, **kwargs) -> None:
+        started.append(template)
+        real_init(self, *args, template=template, **kwargs)
+
+    monkeypatch.setattr(forkserver.ForkServer, "__init__", counting_init)
+    monkeypatch.setattr(forkserver.ForkServer, "fork_server", lambda self, timeout: None)
+    paths = [controller(tmp_path / name) for name in ("ada", "bob", "cy")]
+    with forkserver.serving():
+        results = [run([path], duration=0.5) for path in paths]
+    assert [result.crashes for result in results] == [[], [], []]
+    assert started == [True, False, False, False], "one template, then a server started afresh per submission"
+
+
+def test_a_stopped_template_is_not_asked() -> None:
+    """A stopped template would keep the next submission waiting for its
+    answer: it is given up at once."""
+    import signal
+
+    mine, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_SEQPACKET)
+    stopped = os.fork()
+    if stopped == 0:
+        time.sleep(600)
+        os._exit(0)
+    os.kill(stopped, signal.SIGSTOP)
+    while _state(stopped) != "T":
+        time.sleep(0.01)
+    template = forkserver.ForkServer.__new__(forkserver.ForkServer)
+    template.sock, template.proc, template.token = mine, _FakeProcess(stopped), "x" * 8
+    try:
+        assert template.fork_server(timeout=5.0) is None
+        with pytest.raises(BlockingIOError):
+            theirs.recv(4096, socket.MSG_DONTWAIT)
+    finally:
+        os.kill(stopped, signal.SIGKILL)
+        os.waitpid(stopped, 0)
+        mine.close()
+        theirs.close()
+
+
+def test_a_template_that_answers_a_child_that_never_says_ready_is_refused() -> None:
+    """The server a template forks says it is ready once it holds its own
+    token; one that does not (a template a run tampered with) is not used."""
+    mine, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_SEQPACKET)
+    template = forkserver.ForkServer.__new__(forkserver.ForkServer)
+    template.sock, template.proc, template.token = mine, _FakeProcess(os.getpid()), "x" * 8
+    silent = os.fork()
+    if silent == 0:
+        time.sleep(600)
+        os._exit(0)
+
+    def fake_template() -> None:
+        _, fds, _, _ = socket.recv_fds(theirs, 4096, 1)
+        for fd in fds:
+            os.close(fd)  # the new server's socket: closed, never a "ready"
+        theirs.send(str(silent).encode())
+
+    thread = threading.Thread(target=fake_template)
+    thread.start()
+    try:
+        assert template.fork_server(timeout=5.0) is None
+        assert not _running(silent), "and the child it named is stopped"
+    finally:
+        thread.join()
+        mine.close()
+        theirs.close()
 
 
 class _FakeProcess:
@@ -401,6 +537,49 @@ def test_a_server_ends_with_the_process_that_started_it(tmp_path: Path) -> None:
         while _running(server) and time.monotonic() < deadline:
             time.sleep(0.05)
         assert not _running(server)
+    finally:
+        os.kill(holder, signal.SIGKILL)
+
+
+def test_a_server_forked_by_a_template_ends_with_the_process_that_started_them(tmp_path: Path) -> None:
+    """As a server started afresh: the forked one is the starter's child and
+    dies with it (PR_SET_PDEATHSIG set once it is), and the template too."""
+    import signal
+    import subprocess
+    import sys
+
+    import turtletui
+
+    root = str(Path(turtletui.__file__).resolve().parents[1])
+    starter = subprocess.Popen(
+        [sys.executable, "-c", textwrap.dedent(f"""\
+            import os, sys, time
+            sys.path.insert(0, {root!r})
+            from turtletui.runtime import forkserver
+            forkserver.enable()  # the starter is a child subreaper, as a grading worker
+            template = forkserver.ForkServer({root!r}, dict(os.environ, TURTLETUI_SANDBOX="t" * 20), "t" * 20, {{}},
+                                             template=True)
+            server = template.fork_server(timeout=30)
+            holder = os.fork()
+            if holder == 0:
+                time.sleep(600)
+                os._exit(0)
+            print(template.proc.pid, server.proc.pid, os.getppid() and server.token, holder, flush=True)
+            time.sleep(600)
+        """)],
+        stdout=subprocess.PIPE, text=True,
+    )
+    template, server, token, holder = starter.stdout.readline().split()
+    template, server, holder = int(template), int(server), int(holder)
+    try:
+        assert _running(template) and _running(server)
+        assert _processes_with(token) == {server}, "its own token, as long as the template's"
+        starter.kill()
+        starter.wait()
+        deadline = time.monotonic() + 30  # generous: a busy machine is not a leak
+        while (_running(server) or _running(template)) and time.monotonic() < deadline:
+            time.sleep(0.05)
+        assert not _running(server) and not _running(template)
     finally:
         os.kill(holder, signal.SIGKILL)
 

@@ -14,6 +14,13 @@ to the caller (double fork; the caller is a child subreaper), so it is the
 caller's child as one started by subprocess is: waited for, its parent is the
 caller, and the pid the server reports is accepted only if it is the caller's
 own child. A run that cannot be forked (the server died) starts the usual way.
+
+Starting a server costs what starting a run child did, ~0.3 s of imports, so
+each submission's server is itself forked from a template: a warm server
+that never forks a run, only a new server for each submission, with a
+sandbox token of its own (:func:`_retoken`). Nothing of a run reaches the
+template: it is not dumpable either, and no run holds its socket. A run that
+stops or kills it (same user) only makes the next server start the usual way.
 """
 
 from __future__ import annotations
@@ -29,13 +36,15 @@ import sys
 import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
+from functools import partial
 from typing import Any
 
-from turtletui.runtime.processes import kill_tree, reap_zombie_children
+from turtletui.runtime.processes import TOKEN_VAR, kill_tree, reap_zombie_children
 
 _SERVER = (
     "import sys; sys.path.insert(0, {root!r}); "
-    "from turtletui.runtime.forkserver import serve; serve(int(sys.argv[1]), int(sys.argv[2]), sys.argv[3] or None)"
+    "from turtletui.runtime.forkserver import serve; "
+    "serve(int(sys.argv[1]), int(sys.argv[2]), sys.argv[3] or None, sys.argv[4:] == ['template'])"
 )
 _real_sleep = time.sleep  # an in-process controller may get a simulated one
 _PR_SET_PDEATHSIG = 1
@@ -55,10 +64,11 @@ def _prctl(option: int, value: int) -> bool:
 # -- the server process ---------------------------------------------------------
 
 
-def serve(sock_fd: int, parent: int, distro: str | None = None) -> None:
+def serve(sock_fd: int, parent: int, distro: str | None = None, template: bool = False) -> None:
     """The server's loop: one request (a JSON config and three descriptors:
     the child's input, its answers, its output) forks one run child of
-    ROS 2 ``distro``. It ends with the process that started it (``parent``),
+    ROS 2 ``distro``; a ``template``'s request (a token and a socket) forks a
+    server instead. It ends with the process that started it (``parent``),
     killed by the kernel then if it is still busy, not only when its socket closes."""
     _prctl(_PR_SET_PDEATHSIG, signal.SIGKILL)
     if os.getppid() != parent:
@@ -79,6 +89,13 @@ def serve(sock_fd: int, parent: int, distro: str | None = None) -> None:
     gc.collect()  # the warm-up's throwaway simulation: no child inherits it
     _prctl(_PR_SET_DUMPABLE, 0)  # the runs (same user) cannot trace or read it
     sock = socket.socket(fileno=sock_fd)
+    if template:
+        _make_servers(sock, parent, child.main)
+    else:
+        _serve_runs(sock, child.main)
+
+
+def _serve_runs(sock: socket.socket, main: Callable[[dict[str, Any]], None]) -> None:
     while True:
         try:
             data, fds, _, _ = socket.recv_fds(sock, 1 << 20, 4)
@@ -88,7 +105,7 @@ def serve(sock_fd: int, parent: int, distro: str | None = None) -> None:
             return  # the caller went away
         try:
             request = json.loads(data)
-            pid = _fork(request, fds, sock, child.main) if len(fds) in (3, 4) else 0
+            pid = _fork(request, fds, sock, main) if len(fds) in (3, 4) else 0
         except (OSError, ValueError):
             pid = 0
         finally:
@@ -133,9 +150,95 @@ def _warm(distro: str | None) -> None:
         pass
 
 
+def _make_servers(sock: socket.socket, parent: int, main: Callable[[dict[str, Any]], None]) -> None:
+    """The template's loop: each request (a JSON token and the new server's
+    socket) forks a server that serves runs on that socket."""
+    while True:
+        try:
+            data, fds, _, _ = socket.recv_fds(sock, 4096, 1)
+        except OSError:
+            return
+        if not data:
+            return  # the caller went away
+        try:
+            token = json.loads(data)["token"]
+            valid = len(fds) == 1 and isinstance(token, str)
+            pid = _handed_over(partial(_become_server, token, fds[0], sock, parent, main)) if valid else 0
+        except (OSError, ValueError, KeyError, TypeError):
+            pid = 0
+        finally:
+            for fd in fds:
+                os.close(fd)
+        try:
+            sock.send(str(pid).encode())
+        except OSError:
+            return
+
+
+def _become_server(
+    token: str, sock_fd: int, template_sock: socket.socket, parent: int, main: Callable[[dict[str, Any]], None],
+    middle: int,
+) -> None:
+    """In a server forked by the template: become what a server started afresh
+    is (a session of its own, the caller's child, dying with it, its own
+    token), say so on its socket, then serve runs."""
+    try:
+        template_sock.close()
+        os.setsid()
+        _wait_for_new_parent(middle)
+        _prctl(_PR_SET_PDEATHSIG, signal.SIGKILL)
+        if os.getppid() != parent or not _retoken(token):
+            return
+        sock = socket.socket(fileno=sock_fd)
+        sock.send(b"ready")
+        _serve_runs(sock, main)
+    except BaseException:  # noqa: BLE001 - nothing may return into the template's loop
+        pass
+    finally:
+        os._exit(0)
+
+
+def _retoken(token: str) -> bool:
+    """Give this process (and what it forks and starts) the sandbox ``token``
+    in place of the one it was started with, where the kernel shows a
+    process's environment (/proc/PID/environ, the block it was started with:
+    the new token must be as long) and in os.environ (for what it starts).
+    Whether /proc now shows it."""
+    import ctypes
+
+    prefix = f"{TOKEN_VAR}=".encode()
+    new = token.encode()
+    try:
+        environ = ctypes.POINTER(ctypes.c_void_p).in_dll(ctypes.CDLL(None), "environ")
+        i = 0
+        while environ[i]:
+            entry = ctypes.string_at(environ[i])
+            if entry.startswith(prefix) and len(entry) == len(prefix) + len(new):
+                ctypes.memmove(environ[i] + len(prefix), new, len(new))
+            i += 1
+        os.environ[TOKEN_VAR] = token
+        with open("/proc/self/environ", "rb") as f:
+            return prefix + new in f.read().split(b"\0")
+    except (OSError, ValueError, AttributeError):
+        return False
+
+
+def _wait_for_new_parent(middle: int) -> None:
+    """Until the middle process has exited, this process would see it as its
+    parent instead of the caller (a child subreaper)."""
+    deadline = time.monotonic() + 5.0
+    while os.getppid() == middle and time.monotonic() < deadline:
+        _real_sleep(0.0002)
+
+
 def _fork(request: dict[str, Any], fds: list[int], sock: socket.socket, main: Any) -> int:
-    """Fork the run child through a middle process that exits at once, so that
-    the child is re-parented to the caller (a subreaper). Its pid, or 0."""
+    """Fork the run child (handed over to the caller). Its pid, or 0."""
+    return _handed_over(lambda middle: _run(request, fds, sock, main, middle))
+
+
+def _handed_over(body: Callable[[int], None]) -> int:
+    """Fork a process that runs ``body(middle)`` through a middle process that
+    exits at once, so that it is re-parented to the caller (a subreaper). Its pid, or 0."""
     report_r, report_w = os.pipe()
     middle = os.fork()
     if middle == 0:
@@ -145,7 +248,7 @@ def _fork(request: dict[str, Any], fds: list[int], sock: socket.socket, main: An
             pid = os.fork()
             if pid == 0:
                 os.close(report_w)
-                _run(request, fds, sock, main, me)
+                body(me)
             os.write(report_w, str(pid).encode())
         finally:
             os._exit(0)
@@ -178,12 +281,9 @@ def _run(request: dict[str, Any], fds: list[int], sock: socket.socket, main: Any
         if journal:
             config["fd_journal"] = journal[0]  # the fast path's (turtletui.runtime.fastpath)
         sys.argv = ["-c", json.dumps(config)]
-        # The middle process exits at once; until it has, the controller would
-        # see it as its parent (os.getppid(), a signal to its parent) instead
-        # of the caller, as a child started by subprocess sees it.
-        deadline = time.monotonic() + 5.0
-        while os.getppid() == middle and time.monotonic() < deadline:
-            _real_sleep(0.0002)
+        # the controller sees the caller as its parent (os.getppid(), a signal
+        # to its parent), as a child started by subprocess does
+        _wait_for_new_parent(middle)
         main(config)
         code = 0
     except BaseException:  # noqa: BLE001 - nothing may return into the server's loop
@@ -196,12 +296,13 @@ def _run(request: dict[str, Any], fds: list[int], sock: socket.socket, main: Any
 
 
 class ForkedChild:
-    """A run child forked by a server, seen like a subprocess.Popen of it."""
+    """A run child (or a server) forked by a server (a template), seen like a
+    subprocess.Popen of it."""
 
-    def __init__(self, pid: int, output_fd: int) -> None:
+    def __init__(self, pid: int, output_fd: int | None = None) -> None:
         self.pid = pid
         self.returncode: int | None = None
-        self.stdout = os.fdopen(output_fd, "rb", buffering=0)
+        self.stdout = None if output_fd is None else os.fdopen(output_fd, "rb", buffering=0)
 
     def poll(self) -> int | None:
         if self.returncode is None:
@@ -246,8 +347,11 @@ def _await_exit(pid: int, timeout: float | None) -> None:
 class ForkServer:
     """One warm interpreter and the socket to ask it for run children."""
 
+    proc: subprocess.Popen | ForkedChild
+
     def __init__(
-        self, root: str, env: dict[str, str], token: str, credentials: dict[str, Any], distro: str | None = None
+        self, root: str, env: dict[str, str], token: str, credentials: dict[str, Any], distro: str | None = None,
+        *, template: bool = False,
     ) -> None:
         self.token = token
         mine, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_SEQPACKET)
@@ -255,7 +359,7 @@ class ForkServer:
             self.proc = subprocess.Popen(
                 [
                     sys.executable, "-s", "-c", _SERVER.format(root=root), str(theirs.fileno()), str(os.getpid()),
-                    distro or "",
+                    distro or "", *(["template"] if template else []),
                 ],
                 stdin=subprocess.DEVNULL,
                 stdout=subprocess.DEVNULL,
@@ -297,6 +401,38 @@ class ForkServer:
     def alive(self) -> bool:
         return self.proc.poll() is None
 
+    def fork_server(self, timeout: float) -> ForkServer | None:
+        """A new server forked by this template, with a token of its own; None
+        if the template did not answer with a ready child of this process
+        within ``timeout`` (the caller then starts one the usual way)."""
+        if _state(self.proc.pid) in ("T", "t", "Z", "X", ""):
+            return None  # stopped (a run of the last submission?) or gone
+        token = os.urandom(len(self.token)).hex()[: len(self.token)]  # as long: see _retoken
+        mine, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_SEQPACKET)
+        try:
+            self.sock.settimeout(timeout)
+            socket.send_fds(self.sock, [json.dumps({"token": token}).encode()], [theirs.fileno()])
+            answer = self.sock.recv(64)
+            pid = int(answer) if answer else 0
+        except (OSError, ValueError):
+            pid = 0
+        finally:
+            theirs.close()
+        if pid <= 0 or pid == self.proc.pid or not _is_my_child(pid):
+            mine.close()
+            return None
+        server = ForkServer.__new__(ForkServer)
+        server.token, server.sock, server.proc = token, mine, ForkedChild(pid)
+        try:
+            mine.settimeout(timeout)
+            ready = mine.recv(16) == b"ready"
+        except OSError:
+            ready = False
+        if not ready:
+            server.close()
+            return None
+        return server
+
     def close(self) -> None:
         """Stop the server and whatever it started."""
         self.sock.close()
@@ -305,6 +441,15 @@ class ForkServer:
             self.proc.wait(timeout=5)
         except subprocess.TimeoutExpired:
             pass
+
+
+def _state(pid: int) -> str:
+    """A process's state letter (R, S, T...), "" if there is none."""
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as f:
+            return f.read().rpartition(b")")[2].split()[0].decode()
+    except (OSError, IndexError, UnicodeDecodeError):
+        return ""
 
 
 def _is_my_child(pid: int) -> bool:
@@ -327,15 +472,21 @@ class ForkServers:
         self._server: ForkServer | None = None
         self._given_up: set[tuple[Any, ...]] = set()
         self._child: ForkedChild | None = None
+        self._template: ForkServer | None = None
+        self._template_key: tuple[Any, ...] | None = None
+        self._no_template: set[tuple[Any, ...]] = set()
         _prctl(_PR_SET_CHILD_SUBREAPER, 1)
 
     def spawn(
-        self, key: tuple[Any, ...], start: Callable[[], ForkServer], config: dict[str, Any], cwd: str | None,
+        self, key: tuple[Any, ...], start: Callable[..., ForkServer], config: dict[str, Any], cwd: str | None,
         fds: tuple[int, ...], timeout: float,
     ) -> tuple[ForkedChild, ForkServer] | None:
-        """A run child forked by ``key``'s server (started with ``start()`` if
-        needed), and that server; None if the run must start the usual way: a
-        run is under way already, or the server failed (then for good)."""
+        """A run child forked by ``key``'s server, and that server; None if the
+        run must start the usual way: a run is under way already, or the server
+        failed (then for good). ``key`` is the submission (its controller file)
+        and then what its server's template is for (user, distro): a server
+        is forked from the template (``start(template=True)``, started once),
+        or else started afresh (``start()``)."""
         if self._child is not None and self._child.returncode is None:
             return None  # one at a time: a server is stopped when the submission changes
         if key != self._key:
@@ -347,7 +498,7 @@ class ForkServers:
             return None
         if self._server is None:
             try:
-                self._server = start()
+                self._server = self._from_template(key[1:], start, timeout) or start()
             except OSError:
                 self._given_up.add(key)
                 return None
@@ -358,6 +509,37 @@ class ForkServers:
         self._child = child
         return child, self._server
 
+    def _from_template(
+        self, key: tuple[Any, ...], start: Callable[..., ForkServer], timeout: float
+    ) -> ForkServer | None:
+        if key != self._template_key:
+            self._close_template()
+            self._template_key = key
+        if key in self._no_template:
+            return None
+        fresh = self._template is None or not self._template.alive()
+        if fresh:
+            self._close_template()
+            try:
+                self._template = start(template=True)
+            except OSError:
+                self._no_template.add(key)
+                return None
+        assert self._template is not None
+        server = self._template.fork_server(timeout)
+        if server is None:
+            # one a run stopped or killed is started again for the next
+            # submission; a new one that fails says templates fail here
+            self._close_template()
+            if fresh:
+                self._no_template.add(key)
+        return server
+
+    def _close_template(self) -> None:
+        if self._template is not None:
+            self._template.close()
+            self._template = None
+
     def _give_up(self) -> None:
         assert self._key is not None
         self._given_up.add(self._key)
@@ -365,12 +547,14 @@ class ForkServers:
             self._server.close()
             self._server = None
 
-    def close(self) -> None:
-        """Stop the server and what is left of its runs."""
+    def close(self, *, template: bool = False) -> None:
+        """Stop the server and what is left of its runs (and the ``template``)."""
         if self._server is not None:
             self._server.close()
             self._server = None
         self._key = None
+        if template:
+            self._close_template()
         reap_zombie_children()  # the killed orphans of the submission's runs
 
 
@@ -402,7 +586,7 @@ def serving() -> Iterator[None]:
     try:
         yield
     finally:
-        _servers.close()
+        _servers.close(template=True)
         _servers = None
         _prctl(_PR_SET_CHILD_SUBREAPER, 0)
 

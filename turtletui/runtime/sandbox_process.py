@@ -165,10 +165,11 @@ class ChildProcess:
         if servers is None or self.spec.path is None:
             return None
 
-        def start() -> forkserver.ForkServer:
+        def start(template: bool = False) -> forkserver.ForkServer:
             token = _new_token()
             return forkserver.ForkServer(
-                _PACKAGE_ROOT, _child_environment(token), token, self._credentials(), config.get("distro")
+                _PACKAGE_ROOT, _child_environment(token), token, self._credentials(), config.get("distro"),
+                template=template,
             )
 
         key = (str(self.spec.path.resolve()), self.limits.run_as, config.get("distro"))
