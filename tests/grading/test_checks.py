@@ -223,3 +223,15 @@ def test_a_turtle_no_command_reached_is_told_to_look_at_the_topic():
         assert "nothing was published" not in judge(name, zero_twists, **thresholds).measured
     # a turtle that moved was moved by something (a teleop driver, a teleport)
     assert "nothing was published" not in judge("distance", trace([(5.0, 5.0), (5.5, 5.0)]), min=9.0).measured
+
+
+def test_coordinate_range_names_the_side_that_went_too_far():
+    t = trace([(5.0, 5.0), (2.5, 6.0), (6.0, 8.4)])
+    high = judge("coordinate_range", t, max=7.5)
+    assert not high.passed and high.measured == "highest x or y: 8.40 m (needs <= 7.50 m)"
+    low = judge("coordinate_range", t, min=3.0)
+    assert not low.passed and low.measured == "lowest x or y: 2.50 m (needs >= 3 m)"
+    both = judge("coordinate_range", t, min=2.0, max=9.0)
+    assert both.passed and both.measured == "lowest x or y: 2.50 m (needs >= 2 m); highest x or y: 8.40 m (needs <= 9 m)"
+    assert judge("coordinate_range", t).measured == "x and y between 2.50 m and 8.40 m"
+    assert not judge("coordinate_range", trace([]), max=7.0).passed
