@@ -65,3 +65,16 @@ def test_the_starter_runs_without_crashing(grade):
     result = grade(LESSON, STARTER)
     assert "no_crash" not in failed_checks(result)
     assert {"calls_per_side_change", "pen_colour_by_side"} <= failed_checks(result)
+
+
+
+def test_skipping_wait_for_service_loses_every_request_and_is_told_so(grade):
+    # a new client per call, as in the course's code, without its wait: each
+    # request goes out before discovery and is lost, as in ROS 2
+    result = grade(LESSON, HERE / "skips_wait_for_service.py")
+    assert failed_checks(result) == {"calls_per_side_change", "pen_colour_by_side"}
+    assert result.score == 0.0
+    for check in ("calls_per_side_change", "pen_colour_by_side"):
+        text = feedback_of(result, check)[0]
+        assert "before it had discovered the service's server, so the request was lost" in text
+        assert text.count("Wait with client.wait_for_service() before the first call.") == 1  # said once
