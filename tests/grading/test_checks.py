@@ -132,6 +132,20 @@ def test_pen_colour_by_side_fails_a_colour_that_changes_before_the_line():
     assert verdict.passed and "at 0 of 6 crossings" in verdict.measured
 
 
+def test_pen_colour_by_side_says_when_the_pen_was_off():
+    # set_pen with off = 1 (width and off swapped: off = 3) lifts the pen and
+    # turtlesim keeps its old colour: not "the same colour on both sides"
+    default, green = (179, 184, 255), (0, 255, 0)
+    t = trace([(x, 5.0, 0.0, default if x > 5.5 else green) for x in np.linspace(9, 2, 100)])
+    t.poses["turtle1"][:, POSE_COLUMNS.index("pen_off")] = [1.0 if x > 5.5 else 0.0 for x in np.linspace(9, 2, 100)]
+    verdict = judge("pen_colour_by_side", t)
+    assert not verdict.passed
+    assert verdict.measured == (
+        "the pen was off wherever the turtle drove on the right side of x = 5.5: "
+        "it drew nothing there (set_pen's off must be 0 to draw)"
+    )
+
+
 def test_pen_colour_by_side_counts_only_where_the_turtle_drew():
     # It waits at its start with turtlesim's pen (its node has not yet
     # discovered turtlesim) for 10 of the 60 poses on the right: nothing drawn.

@@ -78,3 +78,12 @@ def test_skipping_wait_for_service_loses_every_request_and_is_told_so(grade):
         text = feedback_of(result, check)[0]
         assert "before it had discovered the service's server, so the request was lost" in text
         assert text.count("Wait with client.wait_for_service() before the first call.") == 1  # said once
+
+
+def test_width_and_off_swapped_lifts_the_pen_and_is_told_so(grade):
+    result = grade(LESSON, HERE / "width_and_off_swapped.py")
+    assert failed_checks(result) == {"pen_colour_by_side"}
+    assert result.score == 0.0
+    text = feedback_of(result, "pen_colour_by_side")[0]
+    assert "the pen was off wherever the turtle drove" in text and "off must be 0" in text
+    assert "same colour" not in text
