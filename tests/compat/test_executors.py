@@ -281,3 +281,80 @@ if __name__ == "__main__":
     ])
     assert said.index("reentrant b") < said.index("tick done") < said.index("in_group a") < said.index("in_group b")
     assert said.index("awaits a starts") < said.index("awaits a ends") < said.index("awaits b starts")
+
+
+WORKER_RAISES = """
+import rclpy
+from rclpy.callback_groups import MutuallyExclusiveCallbackGroup, ReentrantCallbackGroup
+from rclpy.executors import MultiThreadedExecutor
+from rclpy.node import Node
+from std_srvs.srv import SetBool
+
+
+class Fragile(Node):
+    def __init__(self):
+        super().__init__("fragile")
+        self.create_service(SetBool, "check", self.on_check, callback_group=ReentrantCallbackGroup())
+        self.client = self.create_client(SetBool, "check", callback_group=MutuallyExclusiveCallbackGroup())
+        self.asking = self.create_timer(0.1, self.ask, callback_group=MutuallyExclusiveCallbackGroup())
+        self.create_timer(0.05, lambda: None, callback_group=MutuallyExclusiveCallbackGroup())
+
+    def on_check(self, request, response):
+        raise ValueError("cannot check")  # RAISES HERE
+
+    def ask(self):
+        self.asking.cancel()
+        try:
+            self.client.call(SetBool.Request(data=True), timeout_sec=0.5)
+        except TimeoutError:
+            self.get_logger().info("no answer in time")
+
+
+def main():
+    rclpy.init()
+    node = Fragile()
+    executor = MultiThreadedExecutor(num_threads=4)
+    executor.add_node(node)
+"""
+
+
+@pytest.mark.parametrize("sandbox", HOSTS)
+def test_an_error_in_a_callback_beside_the_spinning_thread_leaves_spin_and_kills_the_node(tmp_path, sandbox):
+    # As rclpy's MultiThreadedExecutor: not the end of one worker thread while the
+    # node spins on, but spin() raising it in main(), so the program dies of it.
+    path = write(tmp_path, "uncaught.py", WORKER_RAISES + """
+    executor.spin()  # SPINS HERE
+""")
+    result = run([path], duration=3.0, sandbox=sandbox)
+    crash = only_crash(result)
+    assert crash.kind == "exception"
+    assert crash.message.startswith("ValueError: cannot check")
+    frames = "\n".join(crash.frames)
+    assert "SPINS HERE" in frames and "RAISES HERE" in frames
+    if sandbox:
+        assert crash.t == pytest.approx(0.1)  # as soon as the main thread gets its turn
+    else:
+        # in-process the handler ran inside ask()'s wait, which it did not end
+        assert [r.msg for r in result.logs if r.node == "fragile"] == ["no answer in time"]
+        assert crash.t == pytest.approx(0.6)
+
+
+@pytest.mark.parametrize("sandbox", HOSTS)
+def test_after_a_callbacks_error_left_spin_the_executor_spins_on_and_shutdown_waits(tmp_path, sandbox):
+    path = write(tmp_path, "caught.py", WORKER_RAISES + """
+    try:
+        executor.spin()
+    except ValueError as err:
+        node.get_logger().info(f"spin raised {err}")
+    executor.spin_once(timeout_sec=0.1)
+    node.get_logger().info(f"shut down: {executor.shutdown()}")
+""")
+    result = run([path], duration=3.0, sandbox=sandbox)
+    assert result.ok, result.crashes
+    said = [(r.t, r.msg) for r in result.logs if r.node == "fragile"]
+    if sandbox:
+        # spin_once runs the 0.15 s timer, shutdown() waits for ask() to time out
+        assert said == [(0.1, "spin raised cannot check"), (0.6, "no answer in time"), (0.6, "shut down: True")]
+    else:
+        # in-process the handler ran inside ask()'s wait, so spin() raises after it
+        assert said == [(0.6, "no answer in time"), (0.6, "spin raised cannot check"), (0.65, "shut down: True")]

@@ -132,6 +132,20 @@ def test_pen_colour_by_side_fails_a_colour_that_changes_before_the_line():
     assert verdict.passed and "at 0 of 6 crossings" in verdict.measured
 
 
+def test_pen_colour_by_side_says_when_the_pen_was_off():
+    # set_pen with off = 1 (width and off swapped: off = 3) lifts the pen and
+    # turtlesim keeps its old colour: not "the same colour on both sides"
+    default, green = (179, 184, 255), (0, 255, 0)
+    t = trace([(x, 5.0, 0.0, default if x > 5.5 else green) for x in np.linspace(9, 2, 100)])
+    t.poses["turtle1"][:, POSE_COLUMNS.index("pen_off")] = [1.0 if x > 5.5 else 0.0 for x in np.linspace(9, 2, 100)]
+    verdict = judge("pen_colour_by_side", t)
+    assert not verdict.passed
+    assert verdict.measured == (
+        "the pen was off wherever the turtle drove on the right side of x = 5.5: "
+        "it drew nothing there (set_pen's off must be 0 to draw)"
+    )
+
+
 def test_pen_colour_by_side_counts_only_where_the_turtle_drew():
     # It waits at its start with turtlesim's pen (its node has not yet
     # discovered turtlesim) for 10 of the 60 poses on the right: nothing drawn.
@@ -223,3 +237,15 @@ def test_a_turtle_no_command_reached_is_told_to_look_at_the_topic():
         assert "nothing was published" not in judge(name, zero_twists, **thresholds).measured
     # a turtle that moved was moved by something (a teleop driver, a teleport)
     assert "nothing was published" not in judge("distance", trace([(5.0, 5.0), (5.5, 5.0)]), min=9.0).measured
+
+
+def test_coordinate_range_names_the_side_that_went_too_far():
+    t = trace([(5.0, 5.0), (2.5, 6.0), (6.0, 8.4)])
+    high = judge("coordinate_range", t, max=7.5)
+    assert not high.passed and high.measured == "highest x or y: 8.40 m (needs <= 7.50 m)"
+    low = judge("coordinate_range", t, min=3.0)
+    assert not low.passed and low.measured == "lowest x or y: 2.50 m (needs >= 3 m)"
+    both = judge("coordinate_range", t, min=2.0, max=9.0)
+    assert both.passed and both.measured == "lowest x or y: 2.50 m (needs >= 2 m); highest x or y: 8.40 m (needs <= 9 m)"
+    assert judge("coordinate_range", t).measured == "x and y between 2.50 m and 8.40 m"
+    assert not judge("coordinate_range", trace([]), max=7.0).passed

@@ -82,3 +82,39 @@ def test_a_node_that_stops_for_good_at_the_goal_is_moved_before_it_arrives(grade
     result = grade(LESSON, HERE / "latched_brisk_gains.py")
     assert failed(result) == {}
     assert result.score == result.max_score
+
+
+HEADING_ERROR = "math.atan2(dy, dx) - pose.theta"
+
+
+def test_atan2_with_its_arguments_swapped_is_told_dy_comes_first(grade):
+    result = grade(LESSON, HERE / "atan2_arguments_swapped.py")
+    assert "default goal" in failed(result)["time_to_goal"]
+    assert result.score == 0.0
+    assert "atan2 takes dy first" in feedback(result, "time_to_goal")
+
+
+def test_a_heading_error_the_wrong_way_round_steers_away_and_is_told_so(grade):
+    result = grade(LESSON, HERE / "error_sign_flipped.py")
+    assert "default goal" in failed(result)["time_to_goal"]
+    assert result.score == 0.0
+    text = feedback(result, "time_to_goal")
+    assert HEADING_ERROR in text and "pose.theta - math.atan2(dy, dx) steers away from the goal" in text
+
+
+def test_the_heading_from_the_wrong_pose_field_is_told_which_field(grade):
+    result = grade(LESSON, HERE / "angular_velocity_for_theta.py")
+    assert "default goal" in failed(result)["time_to_goal"]
+    assert result.score == 0.0
+    assert "pose.angular_velocity only how fast it turns" in feedback(result, "time_to_goal")
+
+
+def test_goal_parameters_declared_but_ignored_reach_only_the_default_goal(grade):
+    result = grade(LESSON, HERE / "goal_parameters_ignored.py")
+    failures = failed(result)
+    assert "default goal" not in failures["time_to_goal"]
+    assert {"goal to the left", "goal behind", "goal due west"} <= failures["time_to_goal"]
+    assert result.score < 2.0
+    text = feedback(result, "time_to_goal")
+    assert "This run sets the goal with -p goal_x:=2.0 -p goal_y:=6.0" in text
+    assert 'self.get_parameter("goal_x").value' in text

@@ -46,15 +46,35 @@ def test_an_integer_default_refuses_a_float_override(grade):
 def test_the_starter_runs_with_speed_done_and_the_rest_to_do(grade):
     result = grade(LESSON, STARTER)
     failures = failed(result)
-    assert set(failures) == {"min_clearance"}
+    assert set(failures) == {"min_clearance", "coordinate_range"}
     assert result.score <= 3.0  # the points are for the parameters it leaves to do
 
 
-def test_a_box_applied_to_x_only_fails_the_small_box(grade):
+def test_a_box_applied_to_x_only_fails_every_box(grade):
     # the small box starts on a diagonal: a box checked on one axis only lets
     # the turtle run as close to the other axis's walls as with Part 6's numbers
+    # (and past both bounds of the boxes off the middle)
     result = grade(LESSON, HERE / "box_in_x_only.py")
-    assert set(failed(result)) == {"min_clearance"}
-    assert failed(result)["min_clearance"] == {"small box"}
+    assert failed(result) == {"min_clearance": {"small box"}, "coordinate_range": {"low box", "high box"}}
     assert "Compare pose.x and pose.y with the box_min and box_max" in feedback(result, "min_clearance")
     assert result.score < 7.0
+
+
+def test_a_box_max_worked_out_from_box_min_fails_the_low_box(grade):
+    # box_max = 11 - box_min holds for every symmetric box: only a box off the
+    # middle shows that the box_max parameter is never used
+    result = grade(LESSON, HERE / "box_max_from_box_min.py")
+    assert failed(result) == {"coordinate_range": {"low box"}}
+    text = feedback(result, "coordinate_range")
+    assert text.startswith("highest x or y: ")
+    assert "did not respect the box's upper bound, box_max" in text and "not 11 - box_min" in text
+    assert result.score < 9.0
+
+
+def test_a_box_min_worked_out_from_box_max_fails_the_high_box(grade):
+    result = grade(LESSON, HERE / "box_min_from_box_max.py")
+    assert failed(result) == {"coordinate_range": {"high box"}}
+    text = feedback(result, "coordinate_range")
+    assert text.startswith("lowest x or y: ")
+    assert "did not respect the box's lower bound, box_min" in text and "not 11 - box_max" in text
+    assert result.score < 9.0

@@ -104,3 +104,14 @@ def test_a_node_stopped_without_a_traceback_is_not_told_to_read_one(grade):
     assert "did not answer within" in text
     assert "traceback" not in text.lower()
     assert "the lines above say why" in text
+
+
+def test_an_error_in_an_executor_thread_is_the_crash_it_is_in_ros(grade):
+    # The pose callback fails once in the MultiThreadedExecutor's other thread: in ROS 2
+    # spin() raises it in main() and the node dies; it must not drive on to full marks.
+    result = grade(LESSON, HERE / "raises_in_an_executor_thread.py")
+    assert "no_crash" in failed_checks(result)
+    assert result.score == 0.0
+    text = "\n".join(feedback_of(result, "no_crash"))
+    assert "IndexError: list index out of range" in text
+    assert "executor.spin()" in text and "self.speeds[-1]" in text  # the traceback, through main()

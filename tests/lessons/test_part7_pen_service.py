@@ -65,3 +65,39 @@ def test_the_starter_runs_without_crashing(grade):
     result = grade(LESSON, STARTER)
     assert "no_crash" not in failed_checks(result)
     assert {"calls_per_side_change", "pen_colour_by_side"} <= failed_checks(result)
+
+
+def test_a_synchronous_call_in_the_pose_callback_is_the_deadlock_it_is_in_ros(grade):
+    result = grade(LESSON, HERE / "sync_call_in_the_callback.py")
+    assert failed_checks(result) == {"no_crash"}
+    assert result.score == 0.0
+    text = "\n".join(feedback_of(result, "no_crash"))
+    assert "Client.call() inside a callback would deadlock in ROS 2" in text and "call_async()" in text
+
+
+def test_skipping_wait_for_service_loses_every_request_and_is_told_so(grade):
+    # a new client per call, as in the course's code, without its wait: each
+    # request goes out before discovery and is lost, as in ROS 2
+    result = grade(LESSON, HERE / "skips_wait_for_service.py")
+    assert failed_checks(result) == {"calls_per_side_change", "pen_colour_by_side"}
+    assert result.score == 0.0
+    for check in ("calls_per_side_change", "pen_colour_by_side"):
+        text = feedback_of(result, check)[0]
+        assert "before it had discovered the service's server, so the request was lost" in text
+        assert text.count("Wait with client.wait_for_service() before the first call.") == 1  # said once
+
+
+def test_width_and_off_swapped_lifts_the_pen_and_is_told_so(grade):
+    result = grade(LESSON, HERE / "width_and_off_swapped.py")
+    assert failed_checks(result) == {"pen_colour_by_side"}
+    assert result.score == 0.0
+    text = feedback_of(result, "pen_colour_by_side")[0]
+    assert "the pen was off wherever the turtle drove" in text and "off must be 0" in text
+    assert "same colour" not in text
+
+
+def test_colours_as_fractions_are_refused_as_in_ros(grade):
+    result = grade(LESSON, HERE / "colours_as_fractions.py")
+    assert failed_checks(result) == {"no_crash"}
+    assert result.score == 0.0
+    assert "The 'r' field must be of type 'int' (got float 1.0" in feedback_of(result, "no_crash")[0]

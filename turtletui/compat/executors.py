@@ -7,6 +7,15 @@ one callback waits (a synchronous service call, a sleep, an event), another
 may run, as far as callback groups allow. In-process there are no threads: a
 callback that waits for a service's response runs the other ready callbacks
 meanwhile, one at a time, under the same group rules.
+
+As in rclpy, an exception in a callback a MultiThreadedExecutor runs beside
+the thread that spins (another thread, or nested in a callback that waits)
+does not end that thread or the waiting callback: spin() raises it in the
+thread that spins, and the callbacks running then go on. rclpy raises it at
+its next dispatch, so that callback runs too (and if none ever becomes ready,
+it never raises); turtletui raises it when the thread that spins next has its
+turn (once its own callback, if it runs one, returns), without waiting for
+another callback to become ready.
 """
 
 from __future__ import annotations
@@ -71,6 +80,9 @@ class Executor:
         self._spinning = 0
         """Threads inside this executor's spin calls now."""
         self._is_shutdown = False
+        self._failures: list[Exception] = []
+        """Errors of callbacks run beside the thread that spins, for spin() to
+        raise there, oldest first (MultiThreadedExecutor)."""
 
     @property
     def context(self) -> Context:
@@ -127,12 +139,18 @@ class Executor:
         # run out, once a tick.
         context = self._context
         host = context._host
-        return self._is_shutdown or not (context._ok and host is not None and host.running)
+        return self._is_shutdown or bool(self._failures) or not (context._ok and host is not None and host.running)
+
+    def _raise_failure(self) -> None:
+        """Raise the oldest error of a callback run beside the thread that spins (if any)."""
+        if self._failures:
+            raise self._failures.pop(0)
 
     def spin(self) -> None:
         host = self._guard("spin()")
         if not self._stopped():
             self._run(host, lambda: host.spin(self._stopped))
+        self._raise_failure()
 
     def spin_once(self, timeout_sec: float | None = None) -> None:
         if not self._context._ok:
@@ -146,14 +164,18 @@ class Executor:
         if not self._stopped():
             with self._counted():
                 host.spin_once(_timeout_ns(timeout_sec))
+        self._raise_failure()
 
     def spin_until_future_complete(self, future: Future, timeout_sec: float | None = None) -> None:
         host = self._guard("spin_until_future_complete()")
         if self._stopped():
+            self._raise_failure()
             return
         # As rclpy: a cancelled future is not done(), but ends the wait too.
         timeout_ns = _timeout_ns(timeout_sec)
-        self._run(host, lambda: host.spin_until(lambda: future.done() or future.cancelled(), timeout_ns))
+        failures = self._failures
+        self._run(host, lambda: host.spin_until(lambda: future.done() or future.cancelled() or bool(failures), timeout_ns))
+        self._raise_failure()
 
     def spin_once_until_future_complete(self, future: Future, timeout_sec: float | None = None) -> None:
         self.spin_once(timeout_sec)
@@ -177,9 +199,11 @@ class _Spinning:
 
     def __enter__(self) -> None:
         self._executor._spinning += 1
+        _spun_by_this_thread().append(self._executor)
 
     def __exit__(self, *exc: object) -> None:
         self._executor._spinning -= 1
+        _spun_by_this_thread().pop()
 
 
 class SingleThreadedExecutor(Executor):
@@ -197,11 +221,16 @@ class MultiThreadedExecutor(Executor):
         if num_threads is not None and num_threads < 1:
             raise ValueError(f"num_threads must be at least 1, got {num_threads}")
         self._num_threads = num_threads or DEFAULT_THREADS
+        self._left_running: list[threading.Thread] = []
+        """Threads still running a callback when an error left spin()."""
 
     def _run(self, host: Any, spin: Callable[[], Any]) -> None:
         """Run ``spin`` on the calling thread with ``num_threads - 1`` more
         threads running callbacks meanwhile (sandboxed; in-process there are
-        none), until it returns."""
+        none), until it returns. When a callback's error leaves it (raised on
+        this thread, or by another, see _work), the callbacks the other
+        threads are running go on, as in rclpy's thread pool: a later spin
+        or shutdown() lets them finish."""
         if getattr(host, "scheduler", None) is None or self._num_threads < 2:
             super()._run(host, spin)
             return
@@ -219,12 +248,19 @@ class MultiThreadedExecutor(Executor):
         ]
         for worker in workers:
             worker.start()
+        failed = False
         try:
             super()._run(host, spin)
+        except Exception:
+            failed = True
+            raise
         finally:
             finished.append(True)
-            for worker in workers:
-                worker.join()
+            if failed or self._failures:
+                self._left_running.extend(workers)  # spin() raises at once, as rclpy's
+            else:
+                for worker in workers:
+                    worker.join()
         if interrupted:
             raise interrupted[0]
 
@@ -239,9 +275,23 @@ class MultiThreadedExecutor(Executor):
                 # the thread that spins gets it, as Ctrl-C goes to the main thread
                 interrupted.append(interrupt)
                 finished.append(True)
+            except Exception as error:  # noqa: BLE001 - raised by spin() in the thread that spins
+                # As rclpy's pool, which keeps a callback's error in its task for
+                # spin() to raise: this thread is not the program's to end.
+                self._failures.append(error)
 
     def shutdown(self, timeout_sec: float | None = None, *, wait_for_threads: bool = True) -> bool:
-        return super().shutdown(timeout_sec)
+        """Stop spinning; with ``wait_for_threads``, wait (up to ``timeout_sec``)
+        for the callbacks still running in this executor's threads, as rclpy
+        waits for its pool (they run on after a callback's error left spin())."""
+        done = super().shutdown(timeout_sec)
+        me = threading.current_thread()
+        left, self._left_running = self._left_running, []
+        for worker in left:
+            if wait_for_threads and worker is not me:
+                worker.join(None if timeout_sec is None or timeout_sec < 0 else timeout_sec)
+            done = done and not worker.is_alive()
+        return done
 
 
 class EventsExecutor(SingleThreadedExecutor):
@@ -276,13 +326,42 @@ def wait_in_host(host: Any, done: Callable[[], bool], timeout_ns: int | None) ->
     as ``wait_inside_callback``; outside, while other threads run callbacks."""
     if not host.callback_depth or (getattr(host, "scheduler", None) is not None and not host.scheduler.alone()):
         return host.spin_until(done, timeout_ns, callbacks=False)
-    return host.spin_until(done, timeout_ns)
+    return _run_others_while_waiting(host, done, timeout_ns)
+
+
+def _run_others_while_waiting(host: Any, done: Callable[[], bool], timeout_ns: int | None) -> bool:
+    """Wait inside a callback, running the other ready callbacks on this
+    thread meanwhile (no other thread can). One of them that raises is, for
+    the MultiThreadedExecutor this thread spins, a callback of another of its
+    threads: its error waits for spin() to raise it, and this wait goes on."""
+    spun = _spun_by_this_thread()
+    executor = spun[-1] if spun else None
+    if not isinstance(executor, MultiThreadedExecutor):
+        return host.spin_until(done, timeout_ns)
+    deadline = None if timeout_ns is None else host.graph.now_ns + max(timeout_ns, 0)
+    while True:
+        left = None if deadline is None else max(deadline - host.graph.now_ns, 0)
+        try:
+            return host.spin_until(done, left)
+        except Exception as error:  # noqa: BLE001 - raised by spin() in the thread that spins
+            executor._failures.append(error)
 
 
 def busy_exclusive_group(group: Any) -> bool:
     """Whether ``group`` is a mutually exclusive group the calling thread is
     running a callback of (nothing else of it can run until that returns)."""
     return isinstance(group, MutuallyExclusiveCallbackGroup) and group in running_groups()
+
+
+_spinning_here = threading.local()
+"""The executors the calling thread is inside a spin of, innermost last."""
+
+
+def _spun_by_this_thread() -> list[Executor]:
+    stack = getattr(_spinning_here, "executors", None)
+    if stack is None:
+        stack = _spinning_here.executors = []
+    return stack
 
 
 _global_executor: Executor | None = None

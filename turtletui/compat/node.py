@@ -171,10 +171,13 @@ _UNDISCOVERED = (
     "or wait until publisher.get_subscription_count() > 0 before the first message."
 )
 
+LOST_REQUEST_ADVICE = "Wait with client.wait_for_service() before the first call."
+"""How turtletui's warning of a request sent before discovery ends (the grader
+shows it as the likely cause when a check fails)."""
 _UNDISCOVERED_SERVICE = (
     "{node} called {service} before it had discovered the service's server, so the request was lost "
     "and will never be answered: ROS 2 nodes take a moment to discover each other, here and on a real "
-    "robot. Wait with client.wait_for_service() before the first call."
+    "robot. " + LOST_REQUEST_ADVICE
 )
 
 _FIX_INSIDE = (

@@ -21,6 +21,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from turtletui.compat.distro import resolve_distro
+from turtletui.compat.node import LOST_REQUEST_ADVICE
 from turtletui.errors import TurtletuiError, UsageError
 from turtletui.grading.checks import Check, Verdict
 from turtletui.grading.pictures import picture_of_trace
@@ -391,11 +392,18 @@ def _output(spec: CheckSpec, verdict: Verdict, hidden: bool, warnings: Sequence[
     return "\n".join(lines)
 
 
-def _type_warnings(trace: Trace) -> list[str]:
-    """turtletui's warnings in a run of endpoints whose types never match another's
-    (turtletui.graph.introspection.mistyped_endpoints): silent under ROS 2, and
-    the reason a turtle neither moves nor is heard."""
-    return [r.msg for r in trace.logs if r.node == "turtletui" and r.msg.endswith(NEVER_MATCH)]
+def _likely_causes(trace: Trace) -> list[str]:
+    """turtletui's warnings in a run, each said once, of what ROS 2 does silently:
+    endpoints whose types never match another's
+    (turtletui.graph.introspection.mistyped_endpoints), the reason a turtle
+    neither moves nor is heard; service requests sent before the client had
+    discovered the server, lost (a node that skips wait_for_service)."""
+    causes = [
+        r.msg
+        for r in trace.logs
+        if r.node == "turtletui" and (r.msg.endswith(NEVER_MATCH) or r.msg.endswith(LOST_REQUEST_ADVICE))
+    ]
+    return list(dict.fromkeys(causes))
 
 
 def forbidden_call(plan: GradingPlan, trace: Trace, *, hidden: bool = False) -> str | None:
@@ -486,7 +494,7 @@ def grade_run(
             trace.twin, _ = run_scenario(plan, run, controllers, limits=limits, start=run.twin_start, duration=window)
         return judge(check, trace, thresholds)
 
-    tests = _judge_run(plan, run, verdict_of, problem, _type_warnings(trace))
+    tests = _judge_run(plan, run, verdict_of, problem, _likely_causes(trace))
     failed = not all(test.passed for _, test in tests)
     if recorder is not None:
         recorder.close(keep=failed)

@@ -15,6 +15,7 @@ from turtletui.grading.checks.base import (
     bounds,
     check,
     measured,
+    number_text,
     turtle_of,
 )
 from turtletui.grading.trace import Trace
@@ -73,3 +74,25 @@ def min_clearance(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     if gaps.size == 0:
         return Verdict(False, "the turtle never published a pose")
     return measured("closest to a wall or obstacle:", bounds(float(gaps.min()), th, " m"))
+
+
+@check(
+    "coordinate_range",
+    "Lowest and highest x or y the turtle reached, in metres: threshold min bounds the lowest, "
+    "max the highest (a box it must keep within, give or take its turns).",
+    {**MINMAX, **TURTLE},
+)
+def coordinate_range(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    poses = trace.pose_array(turtle_of(th))
+    if len(poses) == 0:
+        return Verdict(False, "the turtle never published a pose")
+    xy = poses[:, 1:3]
+    lowest, highest = float(xy.min()), float(xy.max())
+    verdicts = []
+    if "min" in th:
+        verdicts.append(measured("lowest x or y:", bounds(lowest, {"min": th["min"]}, " m")))
+    if "max" in th:
+        verdicts.append(measured("highest x or y:", bounds(highest, {"max": th["max"]}, " m")))
+    if not verdicts:
+        return Verdict(True, f"x and y between {number_text(lowest)} m and {number_text(highest)} m")
+    return Verdict(all(v.passed for v in verdicts), "; ".join(v.measured for v in verdicts))

@@ -74,15 +74,24 @@ def pen_colour_by_side(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     need = th.get("min", 0.95)
     # Only where it moved: a turtle standing still draws nothing, and one
     # waits at its start until the node has discovered turtlesim and set a pen.
-    drew = np.zeros(len(poses), dtype=bool)
-    drew[1:] = (np.diff(poses[:, 1:3], axis=0) != 0).any(axis=1)
-    poses = poses[drew]
+    moved = np.zeros(len(poses), dtype=bool)
+    moved[1:] = (np.diff(poses[:, 1:3], axis=0) != 0).any(axis=1)
+    # nor with its pen off (set_pen's off = 1): turtlesim then keeps the old colour, undrawn
+    pen_off = moved & (poses[:, 8] != 0)
+    poses_off = poses[pen_off]
+    poses = poses[moved & ~pen_off]
     colours = poses[:, 5:8].astype(int)
     found: dict[str, tuple[int, int, int]] = {}
     shares: dict[str, float] = {}
     for side, mask in (("right", poses[:, 1] > split + margin), ("left", poses[:, 1] < split - margin)):
         side_colours = [tuple(c) for c in colours[mask].tolist()]
         if not side_colours:
+            off_there = poses_off[:, 1] > split + margin if side == "right" else poses_off[:, 1] < split - margin
+            if off_there.any():
+                return Verdict(
+                    False, f"the pen was off wherever the turtle drove on the {side} side of x = {split}: "
+                    "it drew nothing there (set_pen's off must be 0 to draw)"
+                )
             return Verdict(False, f"the turtle never drove on the {side} side of x = {split}")
         wanted = tuple(th[side]) if side in th else max(set(side_colours), key=side_colours.count)
         found[side] = wanted
