@@ -341,7 +341,7 @@ def test_a_fresh_message_is_still_copied_for_a_subscription_where_someone_else_g
     msg = Twist(linear=Vector3(x=1.0))
     graph.publish(pub.topic, msg, None, pub, fresh=True)
     graph.run_ready()
-    kept = [m for _, m in pub.kept] if other == "transient local" else also
+    kept = [m for _, m, _ in pub.kept] if other == "transient local" else also
     assert own[0] == msg and own[0] is not msg and own[0].linear is not msg.linear
     own[0].linear.x = 3.0  # the subscriber's to change: nobody else sees it
     assert msg.linear.x == 1.0 and [m.linear.x for m in kept] == [1.0]
@@ -378,7 +378,7 @@ def test_a_snapshot_publish_gives_every_keeper_the_message_as_it_was(keeper):
     msg.linear.x = 3.0  # the publisher's: changed after publish
     graph.run_ready()
     if keeper == "transient local":
-        kept = [m for _, m in pub.kept]
+        kept = [m for _, m, _ in pub.kept]
     assert [m.linear.x for m in kept] == [1.0] and kept[0] is not msg
 
 

@@ -11,9 +11,9 @@ repr), and what happens when each field is set to each of a list of values
 With the real rclpy it also gives the text of each interface file, read
 where ament_index finds the package. With --identities it gives instead what
 every class of the packages is called (``__module__``, ``__qualname__``,
-``repr``, its metaclass, where ``import`` and pickle find it) and what the
-package's modules hold. tests/interfaces/test_real_definitions.py runs it
-both ways and compares.
+``repr``, its metaclass, where ``import`` and pickle find it, a message
+class's SLOT_TYPES) and what the package's modules hold.
+tests/interfaces/test_real_definitions.py runs it both ways and compares.
 """
 
 from __future__ import annotations
@@ -168,6 +168,34 @@ def interface_classes(package: str):
                     yield f"{label}.Impl.{part}.{service_part}", getattr(inner, service_part)
 
 
+def type_description(slot_type) -> dict:
+    """One of SLOT_TYPES as plain data: its class (and the classes it is an
+    instance of), its repr without the address, its attributes."""
+    kind = type(slot_type)
+    attributes = {}
+    for klass in kind.__mro__:
+        names = vars(klass).get("__slots__", ())
+        for name in (names,) if isinstance(names, str) else names:  # rosidl's Array: __slots__ = ('size')
+            value = getattr(slot_type, name)
+            attributes[name] = type_description(value) if name == "value_type" else value
+    text = repr(slot_type)
+    return {
+        "class": [f"{k.__module__}.{k.__qualname__}" for k in kind.__mro__],
+        "repr": text[: text.find(" at 0x")] if " at 0x" in text else text,
+        "attributes": attributes,
+        "bounded": slot_type.has_maximum_size() if hasattr(slot_type, "has_maximum_size") else None,
+    }
+
+
+def slot_types(cls) -> list | None:
+    """What a program sees of a message class's SLOT_TYPES (None for a service or action)."""
+    if not hasattr(cls, "get_fields_and_field_types"):
+        return None
+    types = cls.SLOT_TYPES
+    assert type(types) is tuple and types is cls.SLOT_TYPES and types == cls().SLOT_TYPES
+    return [type_description(t) for t in types]
+
+
 def identity(cls) -> dict:
     """What a program printing or pickling the class sees."""
     try:
@@ -190,6 +218,7 @@ def identity(cls) -> dict:
         "importable": importable,
         "module_classes": sorted(n for n in vars(module) if n[0].isupper()) if module else None,
         "pickles": pickle.loads(pickle.dumps(cls)) is cls,
+        "slot_types": slot_types(cls),
     }
 
 

@@ -708,6 +708,7 @@ def test_a_distro_renames_turtlesim_s_classes_and_back():
         assert RotateAbsolute.Impl.FeedbackMessage.get_fields_and_field_types()['feedback'] == \
             'turtlesim_msgs/RotateAbsolute_Feedback'
         assert Spawn.Event.get_fields_and_field_types()['request'] == 'sequence<turtlesim_msgs/Spawn_Request, 1>'
+        assert Spawn.Event.SLOT_TYPES[1].value_type.namespaces == ['turtlesim_msgs', 'srv']
         assert repr(Spawn.Request()) == "turtlesim_msgs.srv.Spawn_Request(x=0.0, y=0.0, theta=0.0, name='')"
         assert I.interface_name(Spawn.Request) == 'turtlesim/srv/Spawn_Request'  # the registry's name stays
     finally:
@@ -715,6 +716,26 @@ def test_a_distro_renames_turtlesim_s_classes_and_back():
     assert repr(Spawn.Request) == "<class 'turtlesim.srv._spawn.Spawn_Request'>"
     assert RotateAbsolute.Impl.FeedbackMessage.get_fields_and_field_types()['feedback'] == \
         'turtlesim/RotateAbsolute_Feedback'
+    assert Spawn.Event.SLOT_TYPES[1].value_type.namespaces == ['turtlesim', 'srv']
+
+
+def test_slot_types_are_the_fields_types_as_rosidl_parser_describes_them():
+    from turtletui.interfaces import rosidl_definition as d
+
+    # no shipped message has every kind of field: one made from text, for this test only
+    text = ('string<=5 a\nwstring b\nwstring<=3 c\nchar d\nbyte e\n'
+            'float64[3] f\nint16[<=4] g\ngeometry_msgs/Vector3[] h\nbool i\n')
+    cls = I._message._create_message('test_msgs/msg/SlotKinds', text, 'test_msgs.msg._slot_kinds')
+    del I._message._REGISTRY['test_msgs/msg/SlotKinds']
+    assert cls.SLOT_TYPES == (
+        d.BoundedString(5), d.UnboundedWString(), d.BoundedWString(3), d.BasicType('uint8'), d.BasicType('octet'),
+        d.Array(d.BasicType('double'), 3), d.BoundedSequence(d.BasicType('int16'), 4),
+        d.UnboundedSequence(d.NamespacedType(['geometry_msgs', 'msg'], 'Vector3')), d.BasicType('boolean'),
+    )
+    assert cls().SLOT_TYPES is cls.SLOT_TYPES
+    assert repr(cls.SLOT_TYPES[0]).startswith('<rosidl_parser.definition.BoundedString object at 0x')
+    with pytest.raises(TypeError):
+        hash(cls.SLOT_TYPES[0])
 
 
 @pytest.mark.parametrize('protocol', range(2, pickle.HIGHEST_PROTOCOL + 1))

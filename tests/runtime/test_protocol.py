@@ -29,7 +29,7 @@ CHANGES: dict[type, tuple] = {
     protocol.DeclareNode: protocol.DeclareNode(1, "driver", "/robots"),
     protocol.RemoveNode: protocol.RemoveNode(1),
     protocol.DeclarePublisher: protocol.DeclarePublisher(2, 1, "/turtle1/cmd_vel", "geometry_msgs/msg/Twist", 10, QosPolicies(1, 2, 1)),
-    protocol.DeclareSubscription: protocol.DeclareSubscription(3, 1, "/turtle1/pose", "turtlesim/msg/Pose", 1, "on_pose", None),
+    protocol.DeclareSubscription: protocol.DeclareSubscription(3, 1, "/turtle1/pose", "turtlesim/msg/Pose", 1, "on_pose", None, True),
     protocol.RemoveEndpoint: protocol.RemoveEndpoint(3),
     protocol.DeclareTimer: protocol.DeclareTimer(1, 100_000_000, "tick"),
     protocol.DeclareService: protocol.DeclareService(1, "/reset_count", "std_srvs/srv/Empty"),
@@ -127,9 +127,11 @@ def test_a_tick_with_everything_round_trips():
         (protocol.ParameterUpdate(1, "gain", 2.5),),
         (protocol.ServeGoal(12, "/spin", [1.0]), protocol.ServeCancel(12)),
         mirror,
+        (protocol.StampedDelivery(1, 4, [5.5, 5.5, 0.0, 0.0, 0.0], 16_000_000, 2, bytes(range(16))),),
     )
     decoded = protocol.decode_from_parent(protocol.encode_tick(tick))
     assert decoded == tick
+    assert type(decoded.stamped[0]) is protocol.StampedDelivery
     assert [type(e) for e in decoded.goal_events] == [type(e) for e in tick.goal_events]
     assert {type(e) for e in tick.goal_events} == set(typing.get_args(protocol.GoalEvent))
     assert [type(e) for e in decoded.served] == [protocol.ServeGoal, protocol.ServeCancel]
@@ -187,7 +189,8 @@ REFUSED = [
     ({"decl": [["node", 1, "n", None]]}, "DeclareNode.namespace must be a string, got NoneType None"),
     ({"decl": [["pub", 2, 1, "/t", "pkg/msg/T", "10", None]]}, "DeclarePublisher.depth must be an integer, got str '10'"),
     ({"decl": [["pub", 2, 1, "/t", "pkg/msg/T", 10, [1, 2]]]}, "DeclarePublisher.qos must be null or QoS policies"),
-    ({"decl": [["sub", 2, 1, "/t", "pkg/msg/T", 10, 5, None]]}, "DeclareSubscription.label must be a string"),
+    ({"decl": [["sub", 2, 1, "/t", "pkg/msg/T", 10, 5, None, False]]}, "DeclareSubscription.label must be a string"),
+    ({"decl": [["sub", 2, 1, "/t", "pkg/msg/T", 10, "cb", None, 1]]}, "DeclareSubscription.message_info must be true or false"),
     ({"decl": [["rmrecord", "turtle", 1, "/t"]]}, "RemoveRecord.kind must be one of service, client, action_client, action_server"),
     ({"served": [["accept", 1, "won"]]}, r"served\[0\]: AcceptServedGoal.status must be one of accepted, executing, got str 'won'"),
     ({"served": [["cancel", 1, 0, 1]]}, "AnswerServedCancel.canceling must be true or false"),

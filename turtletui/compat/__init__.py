@@ -35,6 +35,7 @@ ROS_PACKAGES = (
     "type_description_interfaces",
     "turtlesim",
     "turtlesim_msgs",
+    "rosidl_parser",
 )
 
 

@@ -36,10 +36,20 @@ def running_groups() -> list[CallbackGroup]:
     return stack
 
 
-def dispatcher(host: Any, group: CallbackGroup, callback: Callable) -> Callable:
+def dispatcher(
+    host: Any,
+    group: CallbackGroup,
+    callback: Callable,
+    message_info: Callable[[Any], dict] | None = None,
+) -> Callable:
     """``callback`` as the graph should call it: counted as a callback (as
     host.wrap_callback counts, inline: this runs for every delivery), run
-    under ``group``'s rules, a coroutine it returns run as a Task."""
+    under ``group``'s rules, a coroutine it returns run as a Task.
+
+    ``message_info``, for a subscription callback that takes rclpy's
+    MessageInfo: its queue holds ``(msg, MessageOrigin)`` pairs (the graph's
+    ``stamped`` subscriptions) and ``message_info(origin)`` makes the second
+    argument of each call."""
     depth = host.callback_counter
     ready = host.graph.ready
     owner = host.owner
@@ -100,6 +110,15 @@ def dispatcher(host: Any, group: CallbackGroup, callback: Callable) -> Callable:
         steps written out here; any other goes through ``run``."""
         queue = sub.queue
         popleft = queue.popleft
+        if message_info is not None:
+
+            def deliver_with_info() -> None:
+                sub.pending = False
+                while queue:
+                    msg, origin = popleft()
+                    run(msg, message_info(origin))
+
+            return deliver_with_info
 
         def deliver() -> None:
             sub.pending = False

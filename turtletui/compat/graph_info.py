@@ -167,6 +167,19 @@ def gid_text(gid: Sequence[int]) -> str:
     return ".".join(format(x, "02x") for x in gid)
 
 
+def publisher_gid(graph: core.Graph, publisher: core.Publisher) -> bytes:
+    """The GID of ``publisher`` as its TopicEndpointInfo lists it now (rmw's
+    MessageInfo names a message's publisher by it)."""
+    fqn = publisher.node.fqn
+    nth = 0
+    for endpoint in graph.publishers_of(publisher.topic.name):
+        if endpoint is publisher:
+            break
+        if endpoint.node.fqn == fqn:
+            nth += 1
+    return bytes(_gid(fqn, publisher.topic.name, TopicEndpointTypeEnum.PUBLISHER, nth))
+
+
 def _gid(node: str, topic: str, kind: TopicEndpointTypeEnum, nth: int) -> list[int]:
     """16 bytes naming an endpoint (a DDS GUID's size), the same in every run."""
     return list(hashlib.blake2b(f"{node}|{topic}|{kind.name}|{nth}".encode(), digest_size=16).digest())

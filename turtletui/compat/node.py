@@ -45,6 +45,7 @@ from turtletui.compat.graph_info import (
 from turtletui.compat.guard_condition import GuardCondition
 from turtletui.compat.logging import RcutilsLogger, get_logger
 from turtletui.compat.matching import match_publisher, match_subscription, watch_mismatches
+from turtletui.compat.message_info import MessageInfo, message_info_maker, takes_message_info
 from turtletui.compat.parameter import (
     ListParametersResult,
     Parameter,
@@ -199,7 +200,9 @@ def _describe(msg: Any) -> str:
 
 
 class Subscription(Destroyable):
-    """Calls ``callback(msg)`` for each message on a topic, with its own copy of it."""
+    """Calls ``callback(msg)`` for each message on a topic, with its own copy of
+    it, or ``callback(msg, message_info)`` if it takes two arguments (see
+    turtletui.compat.message_info)."""
 
     def __init__(self, node: Node, record: core.Subscription, callback: Callable, qos_profile: Any) -> None:
         self._node = node
@@ -657,7 +660,7 @@ class Node(Destroyable):
         self,
         msg_type: Any,
         topic: str,
-        callback: Callable[[Any], None],
+        callback: Callable[[Any], None] | Callable[[Any, MessageInfo], None],
         qos_profile: QoSProfile | int,
         *,
         callback_group: Any = None,
@@ -669,12 +672,12 @@ class Node(Destroyable):
         self._require_alive()
         _check_msg_type(msg_type, "create_subscription()")
         qos_profile = profile_of(qos_profile)
-        if not callable(callback):
-            raise TypeError(f"create_subscription() needs a callable callback, got {callback!r}")
         depth = depth_of(qos_profile)
         host = self._context.host
         name = self.resolve_topic_name(topic)
-        run = dispatcher(host, self._group(callback_group), callback)
+        with_info = takes_message_info(callback)  # after the name's checks, as rclpy
+        info = message_info_maker(self._graph) if with_info else None
+        run = dispatcher(host, self._group(callback_group), callback, info)
         try:
             record = self._graph.add_subscription(
                 self._record,
@@ -685,6 +688,7 @@ class Node(Destroyable):
                 qos=qos_profile,
                 copy=copier(msg_type),
                 delivery=run.delivery,
+                stamped=with_info,
             )
         except core.TopicTypeConflict as err:
             raise topic_type_error("subscription", err.name, err.type_name) from None

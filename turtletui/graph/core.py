@@ -16,7 +16,7 @@ import heapq
 from collections import deque
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Any, Literal, Protocol
+from typing import Any, Literal, NamedTuple, Protocol
 
 from turtletui.errors import TurtletuiError
 from turtletui.graph.action_endpoints import (
@@ -102,6 +102,43 @@ class NodeRecord:
         return f"{ns}/{self.name}"
 
 
+class MessageOrigin(NamedTuple):
+    """Where and when a queued message comes from, for a callback that takes
+    rclpy's MessageInfo (see StampedQueue)."""
+
+    source_ns: int
+    """When it was published, in simulated ns since start."""
+    received_ns: int
+    """When it reached the subscription, in simulated ns since start."""
+    sequence: int | None
+    """Its publisher's count of messages it had published, this one included
+    (None when no publisher record sent it: a bridged message)."""
+    publisher: Publisher | bytes | None
+    """The publisher's record, or its GID when it lives in another process."""
+
+
+class StampedQueue(deque):
+    """The queue of a subscription whose callback takes message info: each
+    message waits as ``(msg, MessageOrigin)``. Its ``append`` stamps what
+    Graph.publish hands it with the publish under way (Graph.sending), so
+    that the publish loop does nothing more for other subscriptions."""
+
+    def __init__(self, graph: Graph, depth: int) -> None:
+        super().__init__(maxlen=max(depth, 1))
+        self.graph = graph
+
+    def append(self, msg: Any) -> None:
+        graph = self.graph
+        publisher = graph.sending
+        now = graph.now_ns
+        sequence = None if publisher is None else publisher.sequence
+        deque.append(self, (msg, MessageOrigin(now, now, sequence, publisher)))
+
+    def append_stamped(self, msg: Any, origin: MessageOrigin) -> None:
+        """Queue ``msg`` from an earlier publish or another process."""
+        deque.append(self, (msg, origin))
+
+
 @dataclass(eq=False)
 class Subscription:
     node: NodeRecord
@@ -148,10 +185,13 @@ class Publisher:
     """When it was made, in simulated ns (for discovery: Graph.discovery_ns)."""
     muted: set = field(default_factory=set, repr=False)
     """The subscriptions it never reaches: their QoS is incompatible with its own."""
+    sequence: int = 0
+    """How many messages it has published: the last one's publication sequence
+    number (rmw's MessageInfo counts each publisher's from 1)."""
     kept: deque | None = field(init=False, repr=False)
     """A transient-local publisher's last ``depth`` messages, as (when published,
-    message), for the transient-local subscriptions that join later; None
-    for a volatile one."""
+    message, its sequence number), for the transient-local subscriptions that
+    join later; None for a volatile one."""
 
     def __post_init__(self) -> None:
         self.kept = deque(maxlen=max(self.depth, 1)) if is_transient_local(self.qos) else None
@@ -483,6 +523,9 @@ class Graph:
         """How many /rosout subscriptions are handing out messages right now."""
         self._rosout_later: list[tuple[LogRecord, tuple[str, str, int] | None]] = []
         """Lines logged in a /rosout callback, delivered ROSOUT_ECHO_NS later (see ``_to_rosout``)."""
+        self.sending: Publisher | None = None
+        """The publisher of the message ``publish`` is handing out (or last
+        handed out), for the StampedQueue of a callback that takes message info."""
 
     def type_name_of(self, cls: type) -> str:
         """The full name of an interface class as this graph's distro has it
@@ -723,16 +766,20 @@ class Graph:
         qos: Any = None,
         copy: Callable[[Any], Any] | None = None,
         delivery: Callable[[Subscription], Callable[[], None]] | None = None,
+        stamped: bool = False,
     ) -> Subscription:
         """Subscribe ``callback`` to topic ``name``; with ``copy``, each message is
         queued as ``copy(msg)``, the subscription's own (see Subscription.copy).
         ``delivery(sub)``, if given, makes what hands ``sub``'s queue to the
         callback in place of Subscription.deliver: the same steps fused with
         the callback's own layers (it clears ``sub.pending`` first, then
-        takes the messages oldest first)."""
+        takes the messages oldest first). ``stamped``: each message is queued
+        and handed out as ``(msg, MessageOrigin)`` (see StampedQueue)."""
         topic = self.topic(name, msg_type, node.owner)
         self.version += 1
         sub = Subscription(node, topic, depth, callback, node.owner, qos, copy, self.now_ns)
+        if stamped:
+            sub.queue = StampedQueue(self, depth)
         deliver = sub.deliver if delivery is None else delivery(sub)
         if name == ROSOUT:
             deliver = self._counted_rosout_delivery(deliver)
@@ -780,10 +827,15 @@ class Graph:
         if pub not in topic.publishers or sub not in topic.subscriptions or sub in pub.muted:
             return
         copy = sub.copy
+        queue = sub.queue
         given = False
-        for stamp, msg in pub.kept or ():
+        for stamp, msg, sequence in pub.kept or ():
             if stamp < before_ns:
-                sub.queue.append(msg if copy is None else copy(msg))
+                msg = msg if copy is None else copy(msg)
+                if type(queue) is StampedQueue:
+                    queue.append_stamped(msg, MessageOrigin(stamp, self.now_ns, sequence, pub))
+                else:
+                    queue.append(msg)
                 given = True
         if given and not sub.pending:
             sub.pending = True
@@ -921,13 +973,15 @@ class Graph:
         else:
             owner = publisher.owner
             muted = publisher.muted
+            publisher.sequence += 1
             if young is None:
                 young = publisher.created_ns > settled
             if publisher.kept is not None:
                 if snapshot is not None:
                     msg, snapshot = snapshot(msg), None
-                publisher.kept.append((now, msg))
+                publisher.kept.append((now, msg, publisher.sequence))
                 fresh = False  # kept for late joiners: every subscription gets a copy
+        self.sending = publisher
         if not young:  # others count only what reaches them (a sandboxed host forwards nothing young)
             topic.count += 1
             topic._stamps.append(now)
@@ -1302,8 +1356,10 @@ class Graph:
             return
         msg = to_log_message(record, origin)
         remote = self.outbox.remote_owner if self.outbox is not None else None
+        publisher.sequence += 1
+        self.sending = publisher
         if publisher.kept is not None:
-            publisher.kept.append((self.now_ns, msg))
+            publisher.kept.append((self.now_ns, msg, publisher.sequence))
         own = publisher.owner
         ready = self.ready
         for sub in topic.subscriptions:

@@ -341,10 +341,49 @@ def _split_sections(text: str) -> list[str]:
 # base classes
 # --------------------------------------------------------------------------
 
+class _SlotTypes:
+    """A message class's ``SLOT_TYPES``: its fields' types as
+    rosidl_parser.definition objects, in field order (see rosidl_definition.py),
+    made the first time a program asks."""
+
+    def __get__(self, obj: object, cls: type) -> tuple:
+        types = cls.__dict__.get('_slot_types')
+        if types is None:
+            types = tuple(_slot_type(spec) for spec in cls._FIELDS)
+            cls._slot_types = types
+        return types
+
+
+def _slot_type(spec: FieldSpec) -> Any:
+    """The rosidl_parser.definition type of a field, as rosidl_generator_py writes it."""
+    from turtletui.interfaces import rosidl_definition as d
+
+    if spec.kind == 'msg':
+        package, kind, name = spec.msg_cls._TYPE_NAME.split('/')
+        shown = _SHOWN.get(package)
+        value: Any = d.NamespacedType([shown[1] if shown else package, kind], name)
+    elif spec.kind == 'str':
+        wide = spec.base.startswith('wstring')
+        if spec.strlen is None:
+            value = d.UnboundedWString() if wide else d.UnboundedString()
+        else:
+            value = d.BoundedWString(spec.strlen) if wide else d.BoundedString(spec.strlen)
+    else:
+        value = d.BasicType(_PRIMITIVES[spec.base][0])
+    if spec.array == _SEQ:
+        return d.UnboundedSequence(value)
+    if spec.array == _BOUNDED:
+        return d.BoundedSequence(value, spec.size)
+    if spec.array == _FIXED:
+        return d.Array(value, spec.size)
+    return value
+
+
 class Message:
     """Base class of every message class (not part of ROS)."""
 
     __slots__ = ()
+    SLOT_TYPES = _SlotTypes()
 
     _TYPE_NAME = ''          # full ROS name, e.g. 'geometry_msgs/msg/Twist'
     _REPR_PREFIX = ''        # e.g. 'geometry_msgs.msg.Twist'
@@ -816,6 +855,7 @@ def show_package_as(package: str, shown: str) -> None:
                 cls._REPR_PREFIX = f'{shown}/{name[len(prefix):]}'.replace('/', '.')
             cls._fields_and_field_types = {
                 spec.name: _shown_type(spec, package, shown) for spec in cls._FIELDS}
+            cls._slot_types = None  # made again, with the package's new name
 
 
 def _shown_type(spec: FieldSpec, package: str, shown: str) -> str:

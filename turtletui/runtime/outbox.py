@@ -11,7 +11,7 @@ This module must not import numpy or Textual: start-up time counts.
 from __future__ import annotations
 
 import itertools
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from typing import Any
 
 from turtletui.compat.matching import match_mirror
@@ -20,10 +20,12 @@ from turtletui.graph.core import (
     ActionServer,
     GoalHandle,
     Graph,
+    MessageOrigin,
     NodeRecord,
     Publisher,
     Service,
     ServiceClient,
+    StampedQueue,
     Subscription,
     Timer,
     Topic,
@@ -46,6 +48,7 @@ from turtletui.runtime.protocol import (
     DeclareService,
     DeclareSubscription,
     DeclareTimer,
+    Delivery,
     FinishServedGoal,
     GoalAccepted,
     GoalEvent,
@@ -68,6 +71,7 @@ from turtletui.runtime.protocol import (
     ServerEvent,
     ServiceResponse,
     SetParameter,
+    StampedDelivery,
     Tick,
 )
 
@@ -171,7 +175,14 @@ class ParentOutbox:
             qos = graph_mirror.QosPolicies.of(record.qos)
             topic = record.topic
             change = DeclareSubscription(
-                self._new_id(record), node, topic.name, topic.type_name, record.depth, label, qos
+                self._new_id(record),
+                node,
+                topic.name,
+                topic.type_name,
+                record.depth,
+                label,
+                qos,
+                type(record.queue) is StampedQueue,
             )
         elif isinstance(record, Timer):
             # named in the parent's report of a controller too slow for its timer
@@ -257,15 +268,10 @@ class ParentOutbox:
         if tick.graph is not None:  # first: what arrives with it may come from nodes it adds
             graph_mirror.apply(graph, tick.graph, self.own)
             match_mirror(graph, self.remote_owner)
-        own = self.own
-        for sub_id, values in tick.deliveries:
-            sub = own.get(sub_id)
-            if sub is None:
-                continue
-            sub.queue.append(trusted_from_values(sub.topic.msg_type)(values))
-            if not sub.pending:
-                sub.pending = True
-                ready.append(sub.ready_item)
+        if tick.stamped:
+            self._deliver_stamped(tick.deliveries, tick.stamped)
+        elif tick.deliveries:
+            self._deliver(tick.deliveries)
         for call_id, type_name, values in tick.results:
             on_response = self._calls.pop(call_id, None)
             if on_response is not None:
@@ -286,9 +292,42 @@ class ParentOutbox:
 
             ready.append((OWNER, lambda s=service, q=request, r=respond: s.handler(q, r)))
         for node_id, name, value in tick.parameters:
-            node = own.get(node_id)
+            node = self.own.get(node_id)
             if isinstance(node, NodeRecord) and node.parameter_setter is not None:
                 ready.append((OWNER, lambda n=node, k=name, v=value: self._set_parameter(n, k, v)))
+
+    def _deliver(self, deliveries: Sequence[Delivery]) -> None:
+        """Queue messages for the controller's subscriptions."""
+        own = self.own
+        ready = self.graph.ready
+        for sub_id, values in deliveries:
+            sub = own.get(sub_id)
+            if sub is None:
+                continue
+            sub.queue.append(trusted_from_values(sub.topic.msg_type)(values))
+            if not sub.pending:
+                sub.pending = True
+                ready.append(sub.ready_item)
+
+    def _deliver_stamped(self, deliveries: Sequence[Delivery], stamped: Sequence[StampedDelivery]) -> None:
+        """Queue both kinds of messages, in the order the parent had them."""
+        own = self.own
+        graph = self.graph
+        ready = graph.ready
+        done = 0
+        for position, sub_id, values, source_ns, sequence, gid in stamped:
+            if position > done:
+                self._deliver(deliveries[done:position])
+                done = position
+            sub = own.get(sub_id)
+            if sub is None or type(sub.queue) is not StampedQueue:
+                continue
+            msg = trusted_from_values(sub.topic.msg_type)(values)
+            sub.queue.append_stamped(msg, MessageOrigin(source_ns, graph.now_ns, sequence, gid))
+            if not sub.pending:
+                sub.pending = True
+                ready.append(sub.ready_item)
+        self._deliver(deliveries[done:])
 
     def _goal_event(self, event: GoalEvent) -> None:
         """What happened to one of the controller's goals for the parent's servers."""

@@ -70,6 +70,9 @@ class DeclareSubscription(NamedTuple):
     label: str
     """Its callback's name (only ever shown, in a report of a slow controller)."""
     qos: QosPolicies | None
+    message_info: bool = False
+    """Whether its callback takes rclpy's MessageInfo: the parent sends its
+    messages as :class:`StampedDelivery` records."""
 
 
 class RemoveEndpoint(NamedTuple):
@@ -292,6 +295,23 @@ class Delivery(NamedTuple):
     values: Values
 
 
+class StampedDelivery(NamedTuple):
+    """A message for one of the child's subscriptions whose callback takes
+    rclpy's MessageInfo: where it comes from, as well."""
+
+    position: int
+    """How many of the Tick's ``deliveries`` come before it: the child
+    queues the two kinds in the order the parent's subscriptions had them."""
+    subscription: int
+    values: Values
+    source_ns: int
+    """When it was published, in simulated ns since start."""
+    sequence: int | None
+    """Its publisher's publication sequence number."""
+    publisher_gid: bytes | None
+    """Its publisher's GID, as the publisher's TopicEndpointInfo lists it."""
+
+
 class ServiceResult(NamedTuple):
     """The answer to the child's :class:`CallService`."""
 
@@ -393,6 +413,9 @@ class Tick(NamedTuple):
     """Goals and cancel requests for the child's action servers, in order."""
     graph: GraphMirror | None = None
     """The parent's graph, when it changed since the child last heard of it."""
+    stamped: Sequence[StampedDelivery] = ()
+    """Messages for the child's subscriptions that take MessageInfo (rare:
+    kept apart so that ``deliveries`` cost nothing more)."""
 
 
 class End(NamedTuple):
@@ -424,7 +447,7 @@ _dumps = marshal.dumps
 def encode_tick(tick: Tick) -> bytes:
     """The frame payload of ``tick``: a tuple of its fields, the records as
     plain tuples (empty ones as ``()``)."""
-    now_ns, deliveries, results, goal_events, requests, parameters, served, graph = tick
+    now_ns, deliveries, results, goal_events, requests, parameters, served, graph, stamped = tick
     return _dumps((
         now_ns,
         tuple(map(tuple, deliveries)) if deliveries else (),
@@ -434,6 +457,7 @@ def encode_tick(tick: Tick) -> bytes:
         tuple(map(tuple, parameters)) if parameters else (),
         _tagged(served) if served else (),
         None if graph is None else graph.to_wire(),
+        tuple(map(tuple, stamped)) if stamped else (),
     ))
 
 
@@ -450,7 +474,7 @@ def decode_from_parent(payload: bytes) -> Tick | End:
     message = marshal.loads(payload)
     if message is None:
         return End()
-    now_ns, deliveries, results, goal_events, requests, parameters, served, graph = message
+    now_ns, deliveries, results, goal_events, requests, parameters, served, graph, stamped = message
     return Tick(
         now_ns,
         tuple(map(Delivery._make, deliveries)) if deliveries else (),
@@ -460,6 +484,7 @@ def decode_from_parent(payload: bytes) -> Tick | End:
         tuple(map(ParameterUpdate._make, parameters)) if parameters else (),
         tuple([_SERVER_EVENTS[tag](fields) for tag, fields in served]) if served else (),
         None if graph is None else GraphMirror.from_wire(graph),
+        tuple(map(StampedDelivery._make, stamped)) if stamped else (),
     )
 
 
@@ -630,7 +655,7 @@ _FIELDS: dict[type, tuple[Callable[[Any], Any], ...]] = {
     DeclareNode: (_int, _str, _str),
     RemoveNode: (_int,),
     DeclarePublisher: (_int, _int, _str, _str, _int, _qos),
-    DeclareSubscription: (_int, _int, _str, _str, _int, _str, _qos),
+    DeclareSubscription: (_int, _int, _str, _str, _int, _str, _qos, _bool),
     RemoveEndpoint: (_int,),
     DeclareTimer: (_int, _int, _str),
     DeclareService: (_int, _str, _str),

@@ -12,11 +12,12 @@ next :class:`~turtletui.runtime.protocol.Tick`.
 from __future__ import annotations
 
 import itertools
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from typing import Any
 
+from turtletui.compat.graph_info import publisher_gid
 from turtletui.compat.matching import warn_others
-from turtletui.graph.core import GoalHandle, Graph, GraphError, NodeRecord, Publisher
+from turtletui.graph.core import GoalHandle, Graph, GraphError, MessageOrigin, NodeRecord, Publisher
 from turtletui.graph.logs import ERROR
 from turtletui.interfaces import build_from_values, from_values, get_interface, to_values
 from turtletui.runtime import graph_mirror
@@ -58,6 +59,7 @@ from turtletui.runtime.protocol import (
     ServiceRequest,
     ServiceResult,
     SetParameter,
+    StampedDelivery,
     Tick,
 )
 
@@ -97,6 +99,7 @@ class GraphProxy:
         self._goals: dict[int, Any] = {}
         self._service_calls: dict[int, Callable[[list], None]] = {}
         self._deliveries: list[Delivery] = []
+        self._stamped: list[StampedDelivery] = []
         self._results: list[ServiceResult] = []
         self._goal_events: list[GoalEvent] = []
         self._requests: list[ServiceRequest] = []
@@ -121,7 +124,7 @@ class GraphProxy:
     def has_news(self) -> bool:
         """Whether the next Tick brings the child something (or the graph changed)."""
         return bool(
-            self._deliveries or self._results or self._goal_events or self._requests or self._parameters
+            self._deliveries or self._stamped or self._results or self._goal_events or self._requests or self._parameters
             or self._served_out
         ) or self.graph.version != self._mirrored_version
 
@@ -139,6 +142,10 @@ class GraphProxy:
         if deliveries:
             self._deliveries = []
             cause = deliveries[0][0] if len(deliveries) == 1 else _subscriptions(deliveries)
+        stamped = self._stamped
+        if stamped:
+            self._stamped = []
+            cause = _subscriptions(deliveries, stamped)
         mirror = None
         graph = self.graph
         if graph.version != self._mirrored_version:
@@ -146,7 +153,7 @@ class GraphProxy:
             snapshot = graph_mirror.snapshot(graph, self.owner, self._own_ids())
             if snapshot != self._mirror:
                 self._mirror = mirror = snapshot
-        return Tick(graph.now_ns, deliveries, results, goal_events, requests, parameters, served, mirror), cause
+        return Tick(graph.now_ns, deliveries, results, goal_events, requests, parameters, served, mirror, stamped), cause
 
     def _own_ids(self) -> dict[int, int]:
         """``id(record)`` to wire id, for the child's nodes and topic endpoints here."""
@@ -323,8 +330,24 @@ class GraphProxy:
             def forward(msg: Any, wire_id: int = wire_id) -> None:
                 self._deliveries.append(Delivery(wire_id, self.values(msg)))
 
+            def forward_stamped(entry: tuple[Any, MessageOrigin], wire_id: int = wire_id) -> None:
+                msg, origin = entry
+                publisher = origin.publisher
+                gid = publisher_gid(graph, publisher) if isinstance(publisher, Publisher) else publisher
+                self._stamped.append(
+                    StampedDelivery(
+                        len(self._deliveries), wire_id, self.values(msg), origin.source_ns, origin.sequence, gid
+                    )
+                )
+
             subscription = graph.add_subscription(
-                node, change.topic, get_interface(change.type_name), change.depth, forward, qos=change.qos
+                node,
+                change.topic,
+                get_interface(change.type_name),
+                change.depth,
+                forward_stamped if change.message_info else forward,
+                qos=change.qos,
+                stamped=change.message_info,
             )
             self._endpoints[wire_id] = subscription
             warn_others(graph, subscription)
@@ -403,10 +426,10 @@ class GraphProxy:
         return None
 
 
-def _subscriptions(deliveries: list[Delivery]) -> Any:
+def _subscriptions(deliveries: Sequence[Delivery], stamped: Sequence[StampedDelivery] = ()) -> Any:
     """What an exchange delivered messages for: one subscription's wire id, or
     a tuple of several."""
-    ids = sorted({delivery.subscription for delivery in deliveries})
+    ids = sorted({delivery.subscription for delivery in (*deliveries, *stamped)})
     return ids[0] if len(ids) == 1 else tuple(ids)
 
 

@@ -1,0 +1,1 @@
+from turtletui.interfaces.rosidl_definition import *  # noqa: F403
