@@ -47,3 +47,13 @@ def test_the_starter_runs_and_sends_one_goal(grade):
     result = grade(LESSON, STARTER)
     assert "no_crash" not in failed_checks(result)
     assert "goals_sent" in failed_checks(result)
+
+
+def test_a_first_goal_sent_before_discovery_is_lost_and_told_so(grade):
+    # as in ROS 2: the goal goes out before the client has discovered the
+    # action's server and is never answered, so the chain of goals never starts
+    result = grade(LESSON, HERE / "skips_wait_for_server.py")
+    assert "goals_reached" in failed_checks(result)
+    text = feedback_of(result, "goals_reached")[0]
+    assert "before it had discovered the action's server, so the goal was lost" in text
+    assert text.count("Wait with action_client.wait_for_server() before the first goal.") == 1

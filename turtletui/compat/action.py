@@ -29,10 +29,13 @@ _STATUS = {
     "canceled": GoalStatus.STATUS_CANCELED,
     "aborted": GoalStatus.STATUS_ABORTED,
 }
+LOST_GOAL_ADVICE = "Wait with action_client.wait_for_server() before the first goal."
+"""How turtletui's warning of a goal sent before discovery ends (the grader
+shows it as the likely cause when a check fails)."""
 _UNDISCOVERED_ACTION = (
     "{node} sent a goal to {action} before it had discovered the action's server, so the goal was lost "
     "and will never be answered: ROS 2 nodes take a moment to discover each other, here and on a real "
-    "robot. Wait with action_client.wait_for_server() before the first goal."
+    "robot. " + LOST_GOAL_ADVICE
 )
 _ERROR_UNKNOWN_GOAL_ID = 2
 """action_msgs/srv/CancelGoal's code for a goal the server does not know (a rejected one)."""

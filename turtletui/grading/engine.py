@@ -20,6 +20,7 @@ from functools import cached_property
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from turtletui.compat.action import LOST_GOAL_ADVICE
 from turtletui.compat.distro import resolve_distro
 from turtletui.compat.node import LOST_REQUEST_ADVICE
 from turtletui.errors import TurtletuiError, UsageError
@@ -397,11 +398,12 @@ def _likely_causes(trace: Trace) -> list[str]:
     endpoints whose types never match another's
     (turtletui.graph.introspection.mistyped_endpoints), the reason a turtle
     neither moves nor is heard; service requests sent before the client had
-    discovered the server, lost (a node that skips wait_for_service)."""
+    discovered the server, lost (a node that skips wait_for_service), and
+    action goals the same way (wait_for_server)."""
     causes = [
         r.msg
         for r in trace.logs
-        if r.node == "turtletui" and (r.msg.endswith(NEVER_MATCH) or r.msg.endswith(LOST_REQUEST_ADVICE))
+        if r.node == "turtletui" and r.msg.endswith((NEVER_MATCH, LOST_REQUEST_ADVICE, LOST_GOAL_ADVICE))
     ]
     return list(dict.fromkeys(causes))
 
