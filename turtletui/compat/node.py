@@ -162,7 +162,7 @@ class Publisher(Destroyable):
         return True
 
     def destroy(self) -> None:
-        self._node.destroy_publisher(self)
+        self._node._release_entity(self, self._node._graph.remove_endpoint)
 
 
 _UNDISCOVERED = (
@@ -223,7 +223,7 @@ class Subscription(Destroyable):
         )
 
     def destroy(self) -> None:
-        self._node.destroy_subscription(self)
+        self._node._release_entity(self, self._node._graph.remove_endpoint)
 
 
 class Client(Destroyable):
@@ -340,7 +340,7 @@ class Client(Destroyable):
         )
 
     def destroy(self) -> None:
-        self._node.destroy_client(self)
+        self._node._release_entity(self, self._node._graph.remove_client)
 
 
 def wait_for_server(
@@ -385,7 +385,7 @@ class Service(Destroyable):
         return self._record.name
 
     def destroy(self) -> None:
-        self._node.destroy_service(self)
+        self._node._release_entity(self, self._node._graph.remove_service)
 
 
 class Node(Destroyable):
@@ -820,9 +820,19 @@ class Node(Destroyable):
         if entity not in self._entities:
             return False
         self._entities.remove(entity)
-        remove(entity._record)
-        entity._destroyed = True
+        self._release_entity(entity, remove)
         return True
+
+    def _release_entity(self, entity: Any, remove: Callable[[Any], Any]) -> None:
+        """What ``entity.destroy()`` does in rclpy (a ``with`` block's end too): the entity
+        leaves the graph but stays in the node's lists until ``node.destroy_*()`` takes it out."""
+        if not entity._destroyed:
+            remove(entity._record)
+            entity._destroyed = True
+
+    def __exit__(self, *exc_info: object) -> None:
+        """Leaving ``with Node(...) as node:`` destroys the node, as in rclpy."""
+        self.destroy_node()
 
     def destroy_node(self) -> None:
         """Remove the node and all its entities from the graph."""

@@ -154,7 +154,7 @@ class Timer(Destroyable):
         return self._next_call_ns() - self._now()
 
     def destroy(self) -> None:
-        self._node.destroy_timer(self)
+        self._node._release_entity(self, self._node._graph.cancel_timer)
 
     def _info(self) -> TimerInfo:
         """The TimerInfo of the call being made (rcl_timer_call_with_info): when it was due
