@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import math
 import re
 from collections.abc import Callable, Iterator, Sequence
 from typing import Any
@@ -66,7 +65,7 @@ from turtletui.compat.qos import (
     qos_profile_rosout_default,
     qos_profile_services_default,
 )
-from turtletui.compat.rcl_error import topic_type_error
+from turtletui.compat.rcl_error import RCLError, topic_type_error
 from turtletui.compat.task import Future
 from turtletui.compat.time import Clock, ClockType, Duration, clock_for
 from turtletui.compat.time_source import TimeSource
@@ -78,6 +77,10 @@ from turtletui.interfaces import copier, interface_name
 from turtletui.interfaces.rcl_interfaces import Log, ParameterEvent
 
 _NS = 1_000_000_000
+
+
+def _no_call() -> None:
+    """The call of a timer made with no callback."""
 _RCL_EXPAND_AT = "at /project/src/rcl/expand_topic_name.c:"
 """Where rcl's errors for a name it cannot expand say they come from (the Kilted wheels' build)."""
 _SUBSTITUTION = re.compile(r"\{[^}]*\}")
@@ -699,28 +702,28 @@ class Node(Destroyable):
         clock: Clock | None = None,
         autostart: bool = True,
     ) -> Timer:
-        if isinstance(timer_period_sec, bool) or not isinstance(timer_period_sec, (int, float)):
-            raise TypeError(f"timer_period_sec must be a number of seconds, got {timer_period_sec!r}")
-        if not math.isfinite(timer_period_sec) or timer_period_sec <= 0:
-            raise ValueError(f"timer_period_sec must be positive and finite, got {timer_period_sec}")
-        if not callable(callback):
-            raise TypeError(f"create_timer() needs a callable callback, got {callback!r}")
+        # rclpy's conversion, with its errors ("fast", None, nan, inf) and its truncation
+        period_ns = int(float(timer_period_sec) * _NS)
+        if period_ns < 0:
+            raise RCLError("failed to create timer: timer period must be non-negative")
+        if not callback:
+            callback = _no_call  # rclpy's executor skips a timer whose callback is None
         if clock is not None and not isinstance(clock, Clock):
             raise TypeError(f"create_timer() needs an rclpy.clock.Clock as clock, got {clock!r}")
         host = self._context.host
         group = self._group(callback_group)
         made: list[Timer] = []
-        info_parameter = timer_info_parameter(callback)
+        info_parameter = timer_info_parameter(callback) if callable(callback) else None
         if info_parameter is not None:
             callback = with_timer_info(callback, info_parameter, made)
         record = self._graph.add_timer(
             self._record,
-            max(1, int(round(timer_period_sec * _NS))),
-            dispatcher(host, group, callback),
+            max(1, period_ns),  # a period of 0 (ready at every spin in rcl) fires once per ns here
+            dispatcher(host, group, callback),  # a callback that is not callable fails when called, as in rclpy
             # rclpy lets a destroyed node make a timer; no executor calls it
             autostart=autostart and not self._destroyed,
         )
-        timer = Timer(self, record, self._clock if clock is None else clock)
+        timer = Timer(self, record, self._clock if clock is None else clock, period_ns)
         made.append(timer)
         timer.callback_group = group
         self._entities.append(timer)
