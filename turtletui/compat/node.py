@@ -73,7 +73,9 @@ from turtletui.compat.timer import Rate, Timer, timer_info_parameter, with_timer
 from turtletui.compat.type_description_service import TypeDescriptionService
 from turtletui.graph import core
 from turtletui.graph.logs import WARN
-from turtletui.interfaces import copier, interface_name
+from turtletui.interfaces import Action as ActionType
+from turtletui.interfaces import Message, copier, interface_name
+from turtletui.interfaces import Service as ServiceType
 from turtletui.interfaces.rcl_interfaces import Log, ParameterEvent
 
 _NS = 1_000_000_000
@@ -81,18 +83,36 @@ _NS = 1_000_000_000
 
 def _no_call() -> None:
     """The call of a timer made with no callback."""
+
+
 _RCL_EXPAND_AT = "at /project/src/rcl/expand_topic_name.c:"
 """Where rcl's errors for a name it cannot expand say they come from (the Kilted wheels' build)."""
 _SUBSTITUTION = re.compile(r"\{[^}]*\}")
 
 
-def _check_msg_type(msg_type: Any, what: str) -> str:
+def _check_for_type_support(interface: Any) -> None:
+    """rclpy's type_support.check_for_type_support: what is not an interface class has no
+    ``_TYPE_SUPPORT``, and rclpy adds its ROS 1 hint to Python's AttributeError."""
+    if isinstance(interface, type) and issubclass(interface, (Message, ServiceType, ActionType)):
+        return
     try:
-        return interface_name(msg_type)
-    except Exception:
-        raise TypeError(
-            f"{what} needs a ROS message class such as geometry_msgs.msg.Twist, got {msg_type!r}"
-        ) from None
+        interface._TYPE_SUPPORT  # noqa: B018 - the AttributeError, in Python's own words
+    except AttributeError as err:
+        err.args = (
+            err.args[0] + " This might be a ROS 1 message type but it should be a ROS 2 message type."
+            " Make sure to source your ROS 2 workspace after your ROS 1 workspace.",
+            *err.args[1:],
+        )
+        raise
+
+
+def _check_msg_type(msg_type: Any) -> None:
+    """rclpy's check_is_valid_msg_type."""
+    _check_for_type_support(msg_type)
+    if not issubclass(msg_type, Message):
+        raise RuntimeError(
+            f"The message type provided is not valid ({msg_type}), this might be a service or action"
+        )
 
 
 class Publisher(Destroyable):
@@ -609,6 +629,8 @@ class Node(Destroyable):
 
     def _resolve(self, topic: str, is_service: bool = False, *, only_expand: bool = False) -> str:
         self._require_alive()
+        if topic is None:
+            raise RCLError("failed to validate name: topic_name argument is null")  # rcl's, for pybind11's NULL
         if not isinstance(topic, str):
             raise TypeError(f"a topic or service name must be a str, got {topic!r}")
         validate_topic_name(topic, is_service=is_service)
@@ -638,13 +660,12 @@ class Node(Destroyable):
         publisher_class: type[Publisher] = Publisher,
     ) -> Publisher:
         self._require_alive()
-        _check_msg_type(msg_type, "create_publisher()")
-        qos_profile = profile_of(qos_profile)
+        qos_profile = profile_of(qos_profile)  # rclpy's order: the QoS, the name, the type
+        name = self.resolve_topic_name(topic)
+        _check_msg_type(msg_type)
         depth = depth_of(qos_profile)
         try:
-            record = self._graph.add_publisher(
-                self._record, self.resolve_topic_name(topic), msg_type, depth, qos=qos_profile
-            )
+            record = self._graph.add_publisher(self._record, name, msg_type, depth, qos=qos_profile)
         except core.TopicTypeConflict as err:
             raise topic_type_error("publisher", err.name, err.type_name) from None
         publisher = publisher_class(self, record, qos_profile)
@@ -667,13 +688,13 @@ class Node(Destroyable):
         content_filter_options: Any = None,
     ) -> Subscription:
         self._require_alive()
-        _check_msg_type(msg_type, "create_subscription()")
-        qos_profile = profile_of(qos_profile)
+        qos_profile = profile_of(qos_profile)  # rclpy's order: the QoS, the name, the type
+        name = self.resolve_topic_name(topic)
+        _check_msg_type(msg_type)
         if not callable(callback):
             raise TypeError(f"create_subscription() needs a callable callback, got {callback!r}")
         depth = depth_of(qos_profile)
         host = self._context.host
-        name = self.resolve_topic_name(topic)
         run = dispatcher(host, self._group(callback_group), callback)
         try:
             record = self._graph.add_subscription(
@@ -752,7 +773,7 @@ class Node(Destroyable):
         callback_group: Any = None,
     ) -> Client:
         self._require_alive()
-        _check_srv_type(srv_type, "create_client()")
+        _check_srv_type(srv_type)
         record = self._graph.add_client(self._record, self._resolve(srv_name, True), srv_type)
         client = Client(self, record, self._group(callback_group), srv_name)
         self._entities.append(client)
@@ -768,7 +789,7 @@ class Node(Destroyable):
         callback_group: Any = None,
     ) -> Service:
         self._require_alive()
-        _check_srv_type(srv_type, "create_service()")
+        _check_srv_type(srv_type)
         host = self._context.host
         name = self._resolve(srv_name, True)
 
@@ -1153,6 +1174,10 @@ class Node(Destroyable):
         return list_parameter_names(list(self._parameters), prefixes, depth)
 
 
-def _check_srv_type(srv_type: Any, what: str) -> None:
+def _check_srv_type(srv_type: Any) -> None:
+    """rclpy's check_is_valid_srv_type."""
+    _check_for_type_support(srv_type)
     if not (hasattr(srv_type, "Request") and hasattr(srv_type, "Response")):
-        raise TypeError(f"{what} needs a ROS service class such as turtlesim.srv.SetPen, got {srv_type!r}")
+        raise RuntimeError(
+            f"The service type provided is not valid ({srv_type}), this might be a message or action"
+        )
