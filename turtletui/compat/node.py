@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import re
+import warnings
 from collections.abc import Callable, Iterator, Sequence
 from typing import Any
 
@@ -22,6 +23,7 @@ from turtletui.compat.exceptions import (  # noqa: F401  (re-exported: rclpy.nod
     NameValidationException,
     NotInitializedException,
     ParameterAlreadyDeclaredException,
+    ParameterImmutableException,
     ParameterNotDeclaredException,
     ParameterUninitializedException,
     validate_full_topic_name,
@@ -77,6 +79,7 @@ from turtletui.interfaces import Action as ActionType
 from turtletui.interfaces import Message, copier, interface_name
 from turtletui.interfaces import Service as ServiceType
 from turtletui.interfaces.rcl_interfaces import Log, ParameterEvent
+from turtletui.interfaces.rcl_interfaces import Parameter as ParameterMsg
 
 _NS = 1_000_000_000
 
@@ -475,6 +478,10 @@ class Node(Destroyable):
         self._parameters: dict[str, Parameter] = {}
         self._descriptors: dict[str, ParameterDescriptor] = {}
         self._on_set: list[Callable] = []
+        self._pre_set: list[Callable] = []
+        """Pre-set parameters callbacks (Iron on): they may change the list being set."""
+        self._post_set: list[Callable] = []
+        """Post-set parameters callbacks (Iron on): told what was set."""
         self._entities: list[Any] = []
         self._default_callback_group = MutuallyExclusiveCallbackGroup()
         self._rate_group = ReentrantCallbackGroup()
@@ -1011,10 +1018,14 @@ class Node(Destroyable):
         )
         if not result.successful:
             raise InvalidParameterValueException(name, value, result.reason)
+        result = self._run_on_set([parameter])  # as rclpy's declare: on-set, not pre-set
+        if not result.successful:
+            raise InvalidParameterValueException(name, value, result.reason)
         self._parameters[name] = parameter
         self._descriptors[name] = descriptor
         self._graph.set_parameter(self._record, name, value)
         self._publish_parameter_event(new=[parameter])
+        self._run_post_set([parameter])
         return parameter
 
     def declare_parameters(
@@ -1032,7 +1043,10 @@ class Node(Destroyable):
         self._require_alive()
         if name not in self._parameters:
             raise ParameterNotDeclaredException(name)
+        if self._descriptors[name].read_only:
+            raise ParameterImmutableException(name)
         del self._parameters[name]
+        del self._descriptors[name]
         self._graph.set_parameter(self._record, name, None, remove=True)
 
     def has_parameter(self, name: str) -> bool:
@@ -1060,17 +1074,53 @@ class Node(Destroyable):
         return parameter
 
     def get_parameters(self, names: list[str]) -> list[Parameter]:
+        if not all(isinstance(name, str) for name in names):
+            raise TypeError("All names must be instances of type str")
         return [self.get_parameter(name) for name in names]
 
     def get_parameters_by_prefix(self, prefix: str) -> dict[str, Parameter]:
         start = f"{prefix}." if prefix else ""
         return {n[len(start):]: p for n, p in self._parameters.items() if n.startswith(start)}
 
+    def add_pre_set_parameters_callback(self, callback: Callable[[list[Parameter]], list[Parameter]]) -> None:
+        """A callback that may change the list of parameters set_parameters is setting
+        (not run by declare_parameter); the newest runs first, as in rclpy."""
+        self._pre_set.insert(0, callback)
+
     def add_on_set_parameters_callback(self, callback: Callable[[list[Parameter]], SetParametersResult]) -> None:
+        """A callback that accepts or refuses parameters before they are set or declared;
+        the newest runs first and the first refusal wins, as in rclpy."""
+        _check_callable(callback)
         self._on_set.insert(0, callback)
+
+    def add_post_set_parameters_callback(self, callback: Callable[[list[Parameter]], None]) -> None:
+        """A callback told which parameters were set or declared; the newest runs first."""
+        _check_callable(callback)
+        self._post_set.insert(0, callback)
+
+    def remove_pre_set_parameters_callback(self, callback: Callable) -> None:
+        self._pre_set.remove(callback)
 
     def remove_on_set_parameters_callback(self, callback: Callable) -> None:
         self._on_set.remove(callback)
+
+    def remove_post_set_parameters_callback(self, callback: Callable) -> None:
+        self._post_set.remove(callback)
+
+    def _run_on_set(self, parameters: list[Parameter]) -> SetParametersResult:
+        """rclpy's on-set callbacks: the first that refuses decides."""
+        for callback in self._on_set:
+            result = callback(parameters)
+            if not isinstance(result, SetParametersResult):
+                warnings.warn("Callback returned an invalid type, it should return SetParameterResult.", stacklevel=2)
+                return SetParametersResult(successful=False, reason="Callback returned an invalid type")
+            if not result.successful:
+                return result
+        return SetParametersResult(successful=True)
+
+    def _run_post_set(self, parameters: list[Parameter]) -> None:
+        for callback in self._post_set:
+            callback(parameters)
 
     def set_parameters(self, parameter_list: list[Parameter]) -> list[SetParametersResult]:
         """Set parameters one by one; each gets its own result."""
@@ -1091,6 +1141,14 @@ class Node(Destroyable):
         """rclpy 9's _set_parameters_atomically: all or none; a NOT_SET value
         undeclares a dynamically typed parameter."""
         self._require_alive()
+        if self._pre_set:
+            parameters = [parameter for callback in self._pre_set for parameter in callback(parameters)]
+            if not parameters:
+                return SetParametersResult(
+                    successful=False,
+                    reason="parameter list cannot be empty, this might be due to "
+                    "pre_set_parameters_callback modifying the original parameters list.",
+                )
         if not all(isinstance(parameter, Parameter) for parameter in parameters):
             raise TypeError(f"parameter must be instance of type '{Parameter!r}'")
         undeclared = [p.name for p in parameters if p.name not in self._parameters]
@@ -1105,12 +1163,9 @@ class Node(Destroyable):
                 )
                 if not result.successful:
                     return result
-        for callback in self._on_set:
-            result = callback(parameters)
-            if not getattr(result, "successful", False):
-                return result if isinstance(result, SetParametersResult) else SetParametersResult(
-                    successful=False, reason="rejected by on-set-parameters callback"
-                )
+        result = self._run_on_set(parameters)
+        if not result.successful:
+            return result
         new, changed, deleted = [], [], []
         for parameter in parameters:
             if parameter.type_ is Parameter.Type.NOT_SET:
@@ -1125,7 +1180,42 @@ class Node(Destroyable):
             self._parameters[parameter.name] = parameter
             self._graph.set_parameter(self._record, parameter.name, parameter.value)
         self._publish_parameter_event(new=new, changed=changed, deleted=deleted)
+        self._run_post_set(parameters)
         return SetParametersResult(successful=True)
+
+    def set_descriptor(
+        self, name: str, descriptor: ParameterDescriptor, alternative_value: ParameterValue | None = None
+    ) -> ParameterValue:
+        """A new descriptor for a declared parameter; its value stays if it complies, else
+        ``alternative_value`` is tried (rclpy's Node.set_descriptor, with its exceptions)."""
+        if not self.has_parameter(name):
+            if not self._allow_undeclared:
+                raise ParameterNotDeclaredException(name)
+            return self.get_parameter(name).get_parameter_value()
+        if self.describe_parameter(name).read_only:
+            raise ParameterImmutableException(name)
+        current = self.get_parameter(name)
+        alternative = (
+            current
+            if alternative_value is None
+            else Parameter.from_parameter_msg(ParameterMsg(name=name, value=alternative_value))
+        )
+        if not self._apply_descriptor_and_set(current, descriptor).successful:
+            result = self._apply_descriptor_and_set(alternative, descriptor)
+            if not result.successful:
+                raise InvalidParameterValueException(name, alternative.value, result.reason)
+        self._descriptors[name] = descriptor
+        return self.get_parameter(name).get_parameter_value()
+
+    def _apply_descriptor_and_set(self, parameter: Parameter, descriptor: ParameterDescriptor) -> SetParametersResult:
+        """rclpy's: the parameter is stored (no event, no callbacks) if the descriptor allows it."""
+        result = apply_descriptor(
+            parameter, descriptor, declared=True, rel_tol=self.PARAM_REL_TOL, check_read_only=False
+        )
+        if result.successful:
+            self._parameters[parameter.name] = parameter
+            self._graph.set_parameter(self._record, parameter.name, parameter.value)
+        return result
 
     def _publish_parameter_event(
         self, *, new: Sequence[Parameter] = (), changed: Sequence[Parameter] = (), deleted: Sequence[Parameter] = ()
@@ -1172,6 +1262,12 @@ class Node(Destroyable):
         """The names of the parameters under ``prefixes`` (all if empty), at most
         ``depth`` levels deep (0: any), and their prefixes."""
         return list_parameter_names(list(self._parameters), prefixes, depth)
+
+
+def _check_callable(callback: Any) -> None:
+    if not callable(callback):
+        # rclpy's, a format string it never formats: the TypeError's text is the tuple
+        raise TypeError("Callback must be callable, got {}", type(callback))
 
 
 def _check_srv_type(srv_type: Any) -> None:
