@@ -308,12 +308,13 @@ def get_logging_severity_from_string(log_severity: str) -> LoggingSeverity:
     return LoggingSeverity(parse_level(log_severity))
 
 
-def apply_log_level(spec: str | None) -> None:
-    """Apply ``--log-level LEVEL``."""
+def apply_log_level(spec: str | None, by_logger: dict[str, str] | None = None) -> None:
+    """Apply ``--log-level LEVEL`` (every logger's default) and ``--log-level NAME:=LEVEL``."""
     global _DEFAULT_LEVEL
-    if not spec:
-        return
-    _DEFAULT_LEVEL = LoggingSeverity(parse_level(spec))
+    if spec:
+        _DEFAULT_LEVEL = LoggingSeverity(parse_level(spec))
+    for name, level in (by_logger or {}).items():
+        set_logger_level(name, parse_level(level))
 
 
 def reset_levels() -> None:

@@ -445,12 +445,10 @@ class Node(Destroyable):
 
         ros_args = self._context.ros_args
         local = parse_ros_args(["--ros-args", *cli_args]) if cli_args else None
-        remaps: dict[str, str] = {}
-        if use_global_arguments:
-            remaps.update(ros_args.remaps_for(node_name))
-        if local is not None:
-            remaps.update(local.remaps_for(node_name))
-        given_name = node_name
+        remaps: dict[str, str] = {}  # rcl tries the node's own rules first, then the global ones
+        for rules in (local if local is not None else None, ros_args if use_global_arguments else None):
+            for source, target in (rules.remaps_for(node_name) if rules is not None else {}).items():
+                remaps.setdefault(source, target)
         node_name = remaps.pop("__node", remaps.pop("__name", node_name))
         namespace = remaps.pop("__ns", namespace or "")
         if namespace and not namespace.startswith("/"):
@@ -461,20 +459,23 @@ class Node(Destroyable):
         fqn = f"{namespace.rstrip('/')}/{node_name}"
         overrides: dict[str, Any] = {}
         if use_global_arguments:
-            overrides.update(ros_args.params_for(given_name, fqn))
+            overrides.update(ros_args.params_for(fqn))
         if local is not None:
-            overrides.update(local.params_for(given_name, fqn))
+            overrides.update(local.params_for(fqn))
         self._overrides = overrides
         for param in parameter_overrides or ():
             self._overrides.setdefault(param.name, param.value)
         self._allow_undeclared = allow_undeclared_parameters
-        self._remaps = remaps
+        self._remaps: dict[str, str] = {}
+        """Remap rules as rcl applies them: both sides expanded for this node (``chatter``
+        is ``/ns/chatter`` here), compared with a name once it is expanded."""
         host = self._context.host
         self._graph = host.graph
         self._record = host.graph.add_node(
             node_name, namespace, host.owner, parameter_setter=self._set_from_outside
         )
         watch_mismatches(host.graph)
+        self._remaps = {self._expand(source): self._expand(target) for source, target in remaps.items()}
         self._parameters: dict[str, Parameter] = {}
         self._descriptors: dict[str, ParameterDescriptor] = {}
         self._on_set: list[Callable] = []
@@ -641,18 +642,18 @@ class Node(Destroyable):
         if not isinstance(topic, str):
             raise TypeError(f"a topic or service name must be a str, got {topic!r}")
         validate_topic_name(topic, is_service=is_service)
-        remaps = {} if only_expand else self._remaps
-        if topic in remaps:
-            topic = remaps[topic]
-        if topic.startswith("~"):
-            name = self._record.fqn + topic[1:]
-        elif topic.startswith("/"):
-            name = topic
-        else:
-            name = f"{self._record.namespace.rstrip('/')}/{topic}"
-        name = remaps.get(name, name)
+        name = self._expand(topic)
+        if not only_expand:
+            name = self._remaps.get(name, name)
         validate_full_topic_name(name, is_service=is_service)
         return name
+
+    def _expand(self, topic: str) -> str:
+        if topic.startswith("~"):
+            return self._record.fqn + topic[1:]
+        if topic.startswith("/"):
+            return topic
+        return f"{self._record.namespace.rstrip('/')}/{topic}"
 
     # -- entities ---------------------------------------------------------------
     def create_publisher(
