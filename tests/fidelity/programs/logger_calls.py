@@ -35,9 +35,9 @@ def main():
     attempt("once=False:", lambda: log.info("once=False logs", once=False))
     attempt("clock not a clock:", lambda: log.info("x", throttle_duration_sec=1.0, throttle_time_source_type="steady"))
     for severity in (LoggingSeverity.INFO, LoggingSeverity.WARN):
-        attempt(f"one site, {severity.name}:", lambda: log.log("one site", severity))
+        attempt(f"one site, {severity.name}:", lambda severity=severity: log.log("one site", severity))
     for once in (True, False):
-        attempt(f"one site, once={once}:", lambda: log.info("one site, filters", once=once))
+        attempt(f"one site, once={once}:", lambda once=once: log.info("one site, filters", once=once))
     attempt("empty child:", lambda: log.get_child(""))
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")

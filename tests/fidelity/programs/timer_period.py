@@ -28,7 +28,7 @@ def main():
     print("period:", timer.timer_period_ns, type(timer.timer_period_ns).__name__)
     while len(stamps) < 6:
         rclpy.spin_once(node, timeout_sec=1.0)
-    gaps = [round((b - a) / 1e8) for a, b in zip(stamps, stamps[1:])]
+    gaps = [round((b - a) / 1e8) for a, b in zip(stamps[:-1], stamps[1:], strict=True)]
     print("gaps in tenths of a second:", gaps)
     timer.timer_period_ns = 0.25e9
     print("float period:", timer.timer_period_ns)
