@@ -9,7 +9,8 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any, Protocol
 
-from turtletui.compat.ros_args import RosArgs, parse_ros_args
+from turtletui.compat.rcl_error import RCLError, UnknownROSArgsError
+from turtletui.compat.ros_args import RosArgs, RosArgsError, UnknownRosArgs, parse_ros_args
 
 if TYPE_CHECKING:
     from turtletui.graph.core import Graph
@@ -97,9 +98,18 @@ class Context:
             raise RuntimeError("Context.init() must only be called once")
         import sys
 
+        try:
+            ros_args = parse_ros_args(sys.argv if args is None else list(args))
+        except UnknownRosArgs as err:
+            raise UnknownROSArgsError(str(err.unknown)) from None
+        except RosArgsError as err:
+            from turtletui.compat.logging import get_logger
+
+            get_logger("rcl").error("Failed to parse global arguments")
+            raise RCLError(f"failed to initialize rcl: {err.rcl or err}") from None
         self._host = current_host()
         Context.inits += 1
-        self.ros_args = parse_ros_args(sys.argv if args is None else list(args))
+        self.ros_args = ros_args
         self._ok = True
 
     def ok(self) -> bool:

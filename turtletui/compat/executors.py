@@ -102,6 +102,11 @@ class Executor:
     def get_nodes(self) -> list[Any]:
         return list(self._nodes)
 
+    def wake(self) -> None:
+        """rclpy's executor triggers its guard condition so that a wait in progress takes in
+        new nodes and entities; it runs no callback and ends no wait. turtletui's waits see
+        new entities as they are made, so there is nothing to do."""
+
     def shutdown(self, timeout_sec: float | None = None) -> bool:
         """Stop spinning and forget the nodes."""
         self._is_shutdown = True

@@ -44,4 +44,5 @@ class GuardCondition(Destroyable):
         self._run()
 
     def destroy(self) -> None:
-        self._node.destroy_guard_condition(self)
+        """As rclpy's: the guard condition stays in ``node.guards`` until ``destroy_guard_condition``."""
+        self._destroyed = True

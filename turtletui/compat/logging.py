@@ -9,6 +9,7 @@ severity, logger name, filters or filter parameters between calls.
 from __future__ import annotations
 
 import sys
+import warnings
 from collections.abc import Callable
 from enum import IntEnum
 from typing import Any
@@ -147,9 +148,17 @@ class RcutilsLogger:
     debug = _severity_method("debug", LoggingSeverity.DEBUG)
     info = _severity_method("info", LoggingSeverity.INFO)
     warning = _severity_method("warning", LoggingSeverity.WARN)
-    warn = _severity_method("warn", LoggingSeverity.WARN, "Deprecated in rclpy in favour of ``warning``; still works.")
+    def warn(self, message: str, **kwargs: Any) -> bool:
+        """Deprecated in rclpy in favour of ``warning``; still works, with rclpy's DeprecationWarning."""
+        warnings.warn(_WARN_DEPRECATED, DeprecationWarning, stacklevel=2)
+        return self.warning(message, **kwargs)
+
     error = _severity_method("error", LoggingSeverity.ERROR)
     fatal = _severity_method("fatal", LoggingSeverity.FATAL)
+
+
+_WARN_DEPRECATED = "Deprecated in favor of :py:classmethod:RcutilsLogger.warning:."
+"""What typing_extensions.deprecated says for rclpy's ``warn`` (shown once per call site)."""
 
 
 def _text(message: Any) -> str:
@@ -208,7 +217,7 @@ def _filters_from_kwargs(kwargs: dict[str, Any]) -> list[str]:
     for key in kwargs:
         if key not in LOG_KEYWORDS:
             raise TypeError(
-                f'parameter "{key}" is not one of the recognized logging options {list(LOG_KEYWORDS)}'
+                f'parameter "{key}" is not one of the recognized logging options "{list(LOG_KEYWORDS)}"'
             )
     return detected
 
@@ -237,10 +246,7 @@ def _check_unchanged(
     context: dict, name: str, severity: LoggingSeverity, filters: list[str], kwargs: dict[str, Any]
 ) -> None:
     if severity != context["severity"]:
-        raise ValueError(
-            "Logger severity cannot be changed between calls (rclpy keeps one severity per "
-            "line of code: use separate logging calls)."
-        )
+        raise ValueError("Logger severity cannot be changed between calls.")
     if name != context["name"]:
         raise ValueError("Logger name cannot be changed between calls.")
     if filters != context["filters"]:
@@ -302,12 +308,13 @@ def get_logging_severity_from_string(log_severity: str) -> LoggingSeverity:
     return LoggingSeverity(parse_level(log_severity))
 
 
-def apply_log_level(spec: str | None) -> None:
-    """Apply ``--log-level LEVEL``."""
+def apply_log_level(spec: str | None, by_logger: dict[str, str] | None = None) -> None:
+    """Apply ``--log-level LEVEL`` (every logger's default) and ``--log-level NAME:=LEVEL``."""
     global _DEFAULT_LEVEL
-    if not spec:
-        return
-    _DEFAULT_LEVEL = LoggingSeverity(parse_level(spec))
+    if spec:
+        _DEFAULT_LEVEL = LoggingSeverity(parse_level(spec))
+    for name, level in (by_logger or {}).items():
+        set_logger_level(name, parse_level(level))
 
 
 def reset_levels() -> None:

@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-import math
 import re
+import warnings
 from collections.abc import Callable, Iterator, Sequence
 from typing import Any
 
@@ -23,6 +23,7 @@ from turtletui.compat.exceptions import (  # noqa: F401  (re-exported: rclpy.nod
     NameValidationException,
     NotInitializedException,
     ParameterAlreadyDeclaredException,
+    ParameterImmutableException,
     ParameterNotDeclaredException,
     ParameterUninitializedException,
     validate_full_topic_name,
@@ -67,7 +68,7 @@ from turtletui.compat.qos import (
     qos_profile_rosout_default,
     qos_profile_services_default,
 )
-from turtletui.compat.rcl_error import topic_type_error
+from turtletui.compat.rcl_error import RCLError, topic_type_error
 from turtletui.compat.task import Future
 from turtletui.compat.time import Clock, ClockType, Duration, clock_for
 from turtletui.compat.time_source import TimeSource
@@ -75,22 +76,47 @@ from turtletui.compat.timer import Rate, Timer, timer_info_parameter, with_timer
 from turtletui.compat.type_description_service import TypeDescriptionService
 from turtletui.graph import core
 from turtletui.graph.logs import WARN
-from turtletui.interfaces import copier, interface_name
+from turtletui.interfaces import Action as ActionType
+from turtletui.interfaces import Message, copier, interface_name
+from turtletui.interfaces import Service as ServiceType
 from turtletui.interfaces.rcl_interfaces import Log, ParameterEvent
+from turtletui.interfaces.rcl_interfaces import Parameter as ParameterMsg
 
 _NS = 1_000_000_000
+
+
+def _no_call() -> None:
+    """The call of a timer made with no callback."""
+
+
 _RCL_EXPAND_AT = "at /project/src/rcl/expand_topic_name.c:"
 """Where rcl's errors for a name it cannot expand say they come from (the Kilted wheels' build)."""
 _SUBSTITUTION = re.compile(r"\{[^}]*\}")
 
 
-def _check_msg_type(msg_type: Any, what: str) -> str:
+def _check_for_type_support(interface: Any) -> None:
+    """rclpy's type_support.check_for_type_support: what is not an interface class has no
+    ``_TYPE_SUPPORT``, and rclpy adds its ROS 1 hint to Python's AttributeError."""
+    if isinstance(interface, type) and issubclass(interface, (Message, ServiceType, ActionType)):
+        return
     try:
-        return interface_name(msg_type)
-    except Exception:
-        raise TypeError(
-            f"{what} needs a ROS message class such as geometry_msgs.msg.Twist, got {msg_type!r}"
-        ) from None
+        interface._TYPE_SUPPORT  # noqa: B018 - the AttributeError, in Python's own words
+    except AttributeError as err:
+        err.args = (
+            err.args[0] + " This might be a ROS 1 message type but it should be a ROS 2 message type."
+            " Make sure to source your ROS 2 workspace after your ROS 1 workspace.",
+            *err.args[1:],
+        )
+        raise
+
+
+def _check_msg_type(msg_type: Any) -> None:
+    """rclpy's check_is_valid_msg_type."""
+    _check_for_type_support(msg_type)
+    if not issubclass(msg_type, Message):
+        raise RuntimeError(
+            f"The message type provided is not valid ({msg_type}), this might be a service or action"
+        )
 
 
 class Publisher(Destroyable):
@@ -163,7 +189,7 @@ class Publisher(Destroyable):
         return True
 
     def destroy(self) -> None:
-        self._node.destroy_publisher(self)
+        self._node._release_entity(self, self._node._graph.remove_endpoint)
 
 
 _UNDISCOVERED = (
@@ -229,7 +255,7 @@ class Subscription(Destroyable):
         )
 
     def destroy(self) -> None:
-        self._node.destroy_subscription(self)
+        self._node._release_entity(self, self._node._graph.remove_endpoint)
 
 
 class Client(Destroyable):
@@ -346,7 +372,7 @@ class Client(Destroyable):
         )
 
     def destroy(self) -> None:
-        self._node.destroy_client(self)
+        self._node._release_entity(self, self._node._graph.remove_client)
 
 
 def wait_for_server(
@@ -391,7 +417,7 @@ class Service(Destroyable):
         return self._record.name
 
     def destroy(self) -> None:
-        self._node.destroy_service(self)
+        self._node._release_entity(self, self._node._graph.remove_service)
 
 
 class Node(Destroyable):
@@ -425,12 +451,10 @@ class Node(Destroyable):
 
         ros_args = self._context.ros_args
         local = parse_ros_args(["--ros-args", *cli_args]) if cli_args else None
-        remaps: dict[str, str] = {}
-        if use_global_arguments:
-            remaps.update(ros_args.remaps_for(node_name))
-        if local is not None:
-            remaps.update(local.remaps_for(node_name))
-        given_name = node_name
+        remaps: dict[str, str] = {}  # rcl tries the node's own rules first, then the global ones
+        for rules in (local if local is not None else None, ros_args if use_global_arguments else None):
+            for source, target in (rules.remaps_for(node_name) if rules is not None else {}).items():
+                remaps.setdefault(source, target)
         node_name = remaps.pop("__node", remaps.pop("__name", node_name))
         namespace = remaps.pop("__ns", namespace or "")
         if namespace and not namespace.startswith("/"):
@@ -441,23 +465,30 @@ class Node(Destroyable):
         fqn = f"{namespace.rstrip('/')}/{node_name}"
         overrides: dict[str, Any] = {}
         if use_global_arguments:
-            overrides.update(ros_args.params_for(given_name, fqn))
+            overrides.update(ros_args.params_for(fqn))
         if local is not None:
-            overrides.update(local.params_for(given_name, fqn))
+            overrides.update(local.params_for(fqn))
         self._overrides = overrides
         for param in parameter_overrides or ():
             self._overrides.setdefault(param.name, param.value)
         self._allow_undeclared = allow_undeclared_parameters
-        self._remaps = remaps
+        self._remaps: dict[str, str] = {}
+        """Remap rules as rcl applies them: both sides expanded for this node (``chatter``
+        is ``/ns/chatter`` here), compared with a name once it is expanded."""
         host = self._context.host
         self._graph = host.graph
         self._record = host.graph.add_node(
             node_name, namespace, host.owner, parameter_setter=self._set_from_outside
         )
         watch_mismatches(host.graph)
+        self._remaps = {self._expand(source): self._expand(target) for source, target in remaps.items()}
         self._parameters: dict[str, Parameter] = {}
         self._descriptors: dict[str, ParameterDescriptor] = {}
         self._on_set: list[Callable] = []
+        self._pre_set: list[Callable] = []
+        """Pre-set parameters callbacks (Iron on): they may change the list being set."""
+        self._post_set: list[Callable] = []
+        """Post-set parameters callbacks (Iron on): told what was set."""
         self._entities: list[Any] = []
         self._default_callback_group = MutuallyExclusiveCallbackGroup()
         self._rate_group = ReentrantCallbackGroup()
@@ -612,21 +643,23 @@ class Node(Destroyable):
 
     def _resolve(self, topic: str, is_service: bool = False, *, only_expand: bool = False) -> str:
         self._require_alive()
+        if topic is None:
+            raise RCLError("failed to validate name: topic_name argument is null")  # rcl's, for pybind11's NULL
         if not isinstance(topic, str):
             raise TypeError(f"a topic or service name must be a str, got {topic!r}")
         validate_topic_name(topic, is_service=is_service)
-        remaps = {} if only_expand else self._remaps
-        if topic in remaps:
-            topic = remaps[topic]
-        if topic.startswith("~"):
-            name = self._record.fqn + topic[1:]
-        elif topic.startswith("/"):
-            name = topic
-        else:
-            name = f"{self._record.namespace.rstrip('/')}/{topic}"
-        name = remaps.get(name, name)
+        name = self._expand(topic)
+        if not only_expand:
+            name = self._remaps.get(name, name)
         validate_full_topic_name(name, is_service=is_service)
         return name
+
+    def _expand(self, topic: str) -> str:
+        if topic.startswith("~"):
+            return self._record.fqn + topic[1:]
+        if topic.startswith("/"):
+            return topic
+        return f"{self._record.namespace.rstrip('/')}/{topic}"
 
     # -- entities ---------------------------------------------------------------
     def create_publisher(
@@ -641,13 +674,12 @@ class Node(Destroyable):
         publisher_class: type[Publisher] = Publisher,
     ) -> Publisher:
         self._require_alive()
-        _check_msg_type(msg_type, "create_publisher()")
-        qos_profile = profile_of(qos_profile)
+        qos_profile = profile_of(qos_profile)  # rclpy's order: the QoS, the name, the type
+        name = self.resolve_topic_name(topic)
+        _check_msg_type(msg_type)
         depth = depth_of(qos_profile)
         try:
-            record = self._graph.add_publisher(
-                self._record, self.resolve_topic_name(topic), msg_type, depth, qos=qos_profile
-            )
+            record = self._graph.add_publisher(self._record, name, msg_type, depth, qos=qos_profile)
         except core.TopicTypeConflict as err:
             raise topic_type_error("publisher", err.name, err.type_name) from None
         publisher = publisher_class(self, record, qos_profile)
@@ -670,11 +702,11 @@ class Node(Destroyable):
         content_filter_options: Any = None,
     ) -> Subscription:
         self._require_alive()
-        _check_msg_type(msg_type, "create_subscription()")
-        qos_profile = profile_of(qos_profile)
+        qos_profile = profile_of(qos_profile)  # rclpy's order: the QoS, the name, the type
+        name = self.resolve_topic_name(topic)
+        _check_msg_type(msg_type)
         depth = depth_of(qos_profile)
         host = self._context.host
-        name = self.resolve_topic_name(topic)
         with_info = takes_message_info(callback)  # after the name's checks, as rclpy
         info = message_info_maker(self._graph) if with_info else None
         run = dispatcher(host, self._group(callback_group), callback, info)
@@ -706,28 +738,28 @@ class Node(Destroyable):
         clock: Clock | None = None,
         autostart: bool = True,
     ) -> Timer:
-        if isinstance(timer_period_sec, bool) or not isinstance(timer_period_sec, (int, float)):
-            raise TypeError(f"timer_period_sec must be a number of seconds, got {timer_period_sec!r}")
-        if not math.isfinite(timer_period_sec) or timer_period_sec <= 0:
-            raise ValueError(f"timer_period_sec must be positive and finite, got {timer_period_sec}")
-        if not callable(callback):
-            raise TypeError(f"create_timer() needs a callable callback, got {callback!r}")
+        # rclpy's conversion, with its errors ("fast", None, nan, inf) and its truncation
+        period_ns = int(float(timer_period_sec) * _NS)
+        if period_ns < 0:
+            raise RCLError("failed to create timer: timer period must be non-negative")
+        if not callback:
+            callback = _no_call  # rclpy's executor skips a timer whose callback is None
         if clock is not None and not isinstance(clock, Clock):
             raise TypeError(f"create_timer() needs an rclpy.clock.Clock as clock, got {clock!r}")
         host = self._context.host
         group = self._group(callback_group)
         made: list[Timer] = []
-        info_parameter = timer_info_parameter(callback)
+        info_parameter = timer_info_parameter(callback) if callable(callback) else None
         if info_parameter is not None:
             callback = with_timer_info(callback, info_parameter, made)
         record = self._graph.add_timer(
             self._record,
-            max(1, int(round(timer_period_sec * _NS))),
-            dispatcher(host, group, callback),
+            max(1, period_ns),  # a period of 0 (ready at every spin in rcl) fires once per ns here
+            dispatcher(host, group, callback),  # a callback that is not callable fails when called, as in rclpy
             # rclpy lets a destroyed node make a timer; no executor calls it
             autostart=autostart and not self._destroyed,
         )
-        timer = Timer(self, record, self._clock if clock is None else clock)
+        timer = Timer(self, record, self._clock if clock is None else clock, period_ns)
         made.append(timer)
         timer.callback_group = group
         self._entities.append(timer)
@@ -756,7 +788,7 @@ class Node(Destroyable):
         callback_group: Any = None,
     ) -> Client:
         self._require_alive()
-        _check_srv_type(srv_type, "create_client()")
+        _check_srv_type(srv_type)
         record = self._graph.add_client(self._record, self._resolve(srv_name, True), srv_type)
         client = Client(self, record, self._group(callback_group), srv_name)
         self._entities.append(client)
@@ -772,7 +804,7 @@ class Node(Destroyable):
         callback_group: Any = None,
     ) -> Service:
         self._require_alive()
-        _check_srv_type(srv_type, "create_service()")
+        _check_srv_type(srv_type)
         host = self._context.host
         name = self._resolve(srv_name, True)
 
@@ -827,9 +859,19 @@ class Node(Destroyable):
         if entity not in self._entities:
             return False
         self._entities.remove(entity)
-        remove(entity._record)
-        entity._destroyed = True
+        self._release_entity(entity, remove)
         return True
+
+    def _release_entity(self, entity: Any, remove: Callable[[Any], Any]) -> None:
+        """What ``entity.destroy()`` does in rclpy (a ``with`` block's end too): the entity
+        leaves the graph but stays in the node's lists until ``node.destroy_*()`` takes it out."""
+        if not entity._destroyed:
+            remove(entity._record)
+            entity._destroyed = True
+
+    def __exit__(self, *exc_info: object) -> None:
+        """Leaving ``with Node(...) as node:`` destroys the node, as in rclpy."""
+        self.destroy_node()
 
     def destroy_node(self) -> None:
         """Remove the node and all its entities from the graph."""
@@ -984,10 +1026,14 @@ class Node(Destroyable):
         )
         if not result.successful:
             raise InvalidParameterValueException(name, value, result.reason)
+        result = self._run_on_set([parameter])  # as rclpy's declare: on-set, not pre-set
+        if not result.successful:
+            raise InvalidParameterValueException(name, value, result.reason)
         self._parameters[name] = parameter
         self._descriptors[name] = descriptor
         self._graph.set_parameter(self._record, name, value)
         self._publish_parameter_event(new=[parameter])
+        self._run_post_set([parameter])
         return parameter
 
     def declare_parameters(
@@ -1005,7 +1051,10 @@ class Node(Destroyable):
         self._require_alive()
         if name not in self._parameters:
             raise ParameterNotDeclaredException(name)
+        if self._descriptors[name].read_only:
+            raise ParameterImmutableException(name)
         del self._parameters[name]
+        del self._descriptors[name]
         self._graph.set_parameter(self._record, name, None, remove=True)
 
     def has_parameter(self, name: str) -> bool:
@@ -1033,17 +1082,53 @@ class Node(Destroyable):
         return parameter
 
     def get_parameters(self, names: list[str]) -> list[Parameter]:
+        if not all(isinstance(name, str) for name in names):
+            raise TypeError("All names must be instances of type str")
         return [self.get_parameter(name) for name in names]
 
     def get_parameters_by_prefix(self, prefix: str) -> dict[str, Parameter]:
         start = f"{prefix}." if prefix else ""
         return {n[len(start):]: p for n, p in self._parameters.items() if n.startswith(start)}
 
+    def add_pre_set_parameters_callback(self, callback: Callable[[list[Parameter]], list[Parameter]]) -> None:
+        """A callback that may change the list of parameters set_parameters is setting
+        (not run by declare_parameter); the newest runs first, as in rclpy."""
+        self._pre_set.insert(0, callback)
+
     def add_on_set_parameters_callback(self, callback: Callable[[list[Parameter]], SetParametersResult]) -> None:
+        """A callback that accepts or refuses parameters before they are set or declared;
+        the newest runs first and the first refusal wins, as in rclpy."""
+        _check_callable(callback)
         self._on_set.insert(0, callback)
+
+    def add_post_set_parameters_callback(self, callback: Callable[[list[Parameter]], None]) -> None:
+        """A callback told which parameters were set or declared; the newest runs first."""
+        _check_callable(callback)
+        self._post_set.insert(0, callback)
+
+    def remove_pre_set_parameters_callback(self, callback: Callable) -> None:
+        self._pre_set.remove(callback)
 
     def remove_on_set_parameters_callback(self, callback: Callable) -> None:
         self._on_set.remove(callback)
+
+    def remove_post_set_parameters_callback(self, callback: Callable) -> None:
+        self._post_set.remove(callback)
+
+    def _run_on_set(self, parameters: list[Parameter]) -> SetParametersResult:
+        """rclpy's on-set callbacks: the first that refuses decides."""
+        for callback in self._on_set:
+            result = callback(parameters)
+            if not isinstance(result, SetParametersResult):
+                warnings.warn("Callback returned an invalid type, it should return SetParameterResult.", stacklevel=2)
+                return SetParametersResult(successful=False, reason="Callback returned an invalid type")
+            if not result.successful:
+                return result
+        return SetParametersResult(successful=True)
+
+    def _run_post_set(self, parameters: list[Parameter]) -> None:
+        for callback in self._post_set:
+            callback(parameters)
 
     def set_parameters(self, parameter_list: list[Parameter]) -> list[SetParametersResult]:
         """Set parameters one by one; each gets its own result."""
@@ -1064,6 +1149,14 @@ class Node(Destroyable):
         """rclpy 9's _set_parameters_atomically: all or none; a NOT_SET value
         undeclares a dynamically typed parameter."""
         self._require_alive()
+        if self._pre_set:
+            parameters = [parameter for callback in self._pre_set for parameter in callback(parameters)]
+            if not parameters:
+                return SetParametersResult(
+                    successful=False,
+                    reason="parameter list cannot be empty, this might be due to "
+                    "pre_set_parameters_callback modifying the original parameters list.",
+                )
         if not all(isinstance(parameter, Parameter) for parameter in parameters):
             raise TypeError(f"parameter must be instance of type '{Parameter!r}'")
         undeclared = [p.name for p in parameters if p.name not in self._parameters]
@@ -1078,12 +1171,9 @@ class Node(Destroyable):
                 )
                 if not result.successful:
                     return result
-        for callback in self._on_set:
-            result = callback(parameters)
-            if not getattr(result, "successful", False):
-                return result if isinstance(result, SetParametersResult) else SetParametersResult(
-                    successful=False, reason="rejected by on-set-parameters callback"
-                )
+        result = self._run_on_set(parameters)
+        if not result.successful:
+            return result
         new, changed, deleted = [], [], []
         for parameter in parameters:
             if parameter.type_ is Parameter.Type.NOT_SET:
@@ -1098,7 +1188,42 @@ class Node(Destroyable):
             self._parameters[parameter.name] = parameter
             self._graph.set_parameter(self._record, parameter.name, parameter.value)
         self._publish_parameter_event(new=new, changed=changed, deleted=deleted)
+        self._run_post_set(parameters)
         return SetParametersResult(successful=True)
+
+    def set_descriptor(
+        self, name: str, descriptor: ParameterDescriptor, alternative_value: ParameterValue | None = None
+    ) -> ParameterValue:
+        """A new descriptor for a declared parameter; its value stays if it complies, else
+        ``alternative_value`` is tried (rclpy's Node.set_descriptor, with its exceptions)."""
+        if not self.has_parameter(name):
+            if not self._allow_undeclared:
+                raise ParameterNotDeclaredException(name)
+            return self.get_parameter(name).get_parameter_value()
+        if self.describe_parameter(name).read_only:
+            raise ParameterImmutableException(name)
+        current = self.get_parameter(name)
+        alternative = (
+            current
+            if alternative_value is None
+            else Parameter.from_parameter_msg(ParameterMsg(name=name, value=alternative_value))
+        )
+        if not self._apply_descriptor_and_set(current, descriptor).successful:
+            result = self._apply_descriptor_and_set(alternative, descriptor)
+            if not result.successful:
+                raise InvalidParameterValueException(name, alternative.value, result.reason)
+        self._descriptors[name] = descriptor
+        return self.get_parameter(name).get_parameter_value()
+
+    def _apply_descriptor_and_set(self, parameter: Parameter, descriptor: ParameterDescriptor) -> SetParametersResult:
+        """rclpy's: the parameter is stored (no event, no callbacks) if the descriptor allows it."""
+        result = apply_descriptor(
+            parameter, descriptor, declared=True, rel_tol=self.PARAM_REL_TOL, check_read_only=False
+        )
+        if result.successful:
+            self._parameters[parameter.name] = parameter
+            self._graph.set_parameter(self._record, parameter.name, parameter.value)
+        return result
 
     def _publish_parameter_event(
         self, *, new: Sequence[Parameter] = (), changed: Sequence[Parameter] = (), deleted: Sequence[Parameter] = ()
@@ -1147,6 +1272,16 @@ class Node(Destroyable):
         return list_parameter_names(list(self._parameters), prefixes, depth)
 
 
-def _check_srv_type(srv_type: Any, what: str) -> None:
+def _check_callable(callback: Any) -> None:
+    if not callable(callback):
+        # rclpy's, a format string it never formats: the TypeError's text is the tuple
+        raise TypeError("Callback must be callable, got {}", type(callback))
+
+
+def _check_srv_type(srv_type: Any) -> None:
+    """rclpy's check_is_valid_srv_type."""
+    _check_for_type_support(srv_type)
     if not (hasattr(srv_type, "Request") and hasattr(srv_type, "Response")):
-        raise TypeError(f"{what} needs a ROS service class such as turtlesim.srv.SetPen, got {srv_type!r}")
+        raise RuntimeError(
+            f"The service type provided is not valid ({srv_type}), this might be a message or action"
+        )

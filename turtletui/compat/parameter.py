@@ -170,11 +170,16 @@ _FIELD = {
 
 
 def parameter_value_to_python(parameter_value: ParameterValue) -> Any:
-    """The Python value held by an rcl_interfaces/msg/ParameterValue."""
-    type_ = Parameter.Type(parameter_value.type)
+    """The Python value held by an rcl_interfaces/msg/ParameterValue: arrays as lists,
+    as rclpy's; an unknown type raises rclpy's RuntimeError."""
+    try:
+        type_ = Parameter.Type(parameter_value.type)
+    except ValueError:
+        raise RuntimeError(f"unexpected parameter type {parameter_value.type}") from None
     if type_ is Parameter.Type.NOT_SET:
         return None
-    return getattr(parameter_value, _FIELD[type_])
+    value = getattr(parameter_value, _FIELD[type_])
+    return list(value) if type_.name.endswith("_ARRAY") else value
 
 
 def type_of(value: Any) -> Parameter.Type | None:
@@ -268,7 +273,7 @@ def get_parameter_value(string_value: str) -> ParameterValue:
 
     try:
         yaml_value = yaml.safe_load(string_value)
-    except yaml.YAMLError:
+    except yaml.parser.ParserError:  # only this one, as rclpy: a ScannerError ('a: b: c') goes on
         yaml_value = string_value
     if isinstance(yaml_value, list):
         for type_ in (Parameter.Type.BOOL_ARRAY, Parameter.Type.INTEGER_ARRAY,

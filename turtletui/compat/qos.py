@@ -110,10 +110,7 @@ class QoSProfile:
     ) -> None:
         if history is None:
             if depth is None:
-                raise InvalidQoSProfileException(
-                    "History and/or depth settings are required (the default history, "
-                    "KEEP_LAST requires a depth): e.g. QoSProfile(depth=10)"
-                )
+                raise InvalidQoSProfileException("History and/or depth settings are required.")
             history = HistoryPolicy.KEEP_LAST
         self.history = history
         if self.history == HistoryPolicy.KEEP_LAST and depth is None:

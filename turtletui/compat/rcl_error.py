@@ -10,6 +10,13 @@ class RCLError(RuntimeError):
     __module__ = "rclpy._rclpy_pybind11"  # as tracebacks name rclpy's
 
 
+class UnknownROSArgsError(RuntimeError):
+    """rclpy.init(args=...) with flags after --ros-args that rcl does not know; its text
+    is the list of them, as rclpy's."""
+
+    __module__ = "rclpy._rclpy_pybind11"
+
+
 def topic_type_error(kind: str, name: str, type_name: str) -> RCLError:
     """What rcl raises when a process asks for ``name`` with another type than
     it already uses there (Fast DDS refuses a second type in one participant);

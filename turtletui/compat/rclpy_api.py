@@ -25,7 +25,7 @@ class InitContextManager:
     ) -> None:
         self.context = get_default_context() if context is None else context
         self.context.init(args, domain_id=domain_id)
-        _logging.apply_log_level(self.context.ros_args.log_level)
+        _logging.apply_log_level(self.context.ros_args.log_level, self.context.ros_args.log_levels)
 
     def __enter__(self) -> InitContextManager:
         return self

@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from turtletui.errors import TurtletuiError
+from turtletui.graph.logs import parse_level
 
 _INT = re.compile(r"[-+]?(0|[1-9][0-9]*)\Z")
 _FLOAT = re.compile(r"[-+]?(\d+\.\d*|\.\d+|\d+)([eE][-+]?\d+)?\Z")
@@ -15,6 +16,30 @@ _NAME = re.compile(r"[A-Za-z_~/][A-Za-z0-9_./~]*\Z")
 
 class RosArgsError(TurtletuiError, ValueError):
     """A malformed ``--ros-args`` section; the message names the argument."""
+
+    def __init__(self, message: str, rcl: str | None = None) -> None:
+        super().__init__(message)
+        self.rcl = rcl
+        """rcl's own sentence for the mistake (what rclpy.init reports), where it is known."""
+
+
+class UnknownRosArgs(RosArgsError):
+    """Flags after ``--ros-args`` that ROS does not know (rcl lists them all)."""
+
+    def __init__(self, unknown: list[str]) -> None:
+        super().__init__(f"Found unknown ROS arguments: {unknown}")
+        self.unknown = unknown
+
+
+_TRAILING = {
+    "-r": "Couldn't parse trailing {flag} flag. No remap rule found.",
+    "-p": "Couldn't parse trailing {flag} flag. No parameter override rule found.",
+    "--params-file": "Couldn't parse trailing {flag} flag. No file path provided.",
+    "--log-level": "Couldn't parse trailing log level flag: '{flag}'. No log level provided.",
+    "-e": "Couldn't parse trailing {flag} flag. No enclave path provided.",
+}
+"""rcl's errors (arguments.c) for a flag with nothing after it, by its short form."""
+_SHORT = {"--remap": "-r", "--param": "-p", "--enclave": "-e"}
 
 
 @dataclass
@@ -25,32 +50,40 @@ class RosArgs:
     params: list[tuple[str | None, str, Any]] = field(default_factory=list)
     remaps: list[tuple[str | None, str, str]] = field(default_factory=list)
     log_level: str | None = None
+    """``--log-level LEVEL``: every logger's default level."""
+    log_levels: dict[str, str] = field(default_factory=dict)
+    """``--log-level NAME:=LEVEL``: one logger's level (and its children's)."""
     user_args: list[str] = field(default_factory=list)
     file_params: list[tuple[str, str, Any]] = field(default_factory=list)
     """(node name pattern, name, value) from ``--params-file`` files, in order."""
 
-    def params_for(self, node_name: str, fqn: str | None = None) -> dict[str, Any]:
-        """The parameters for a node, as rclpy applies them: first those for
-        every node (``--params-file`` sections with ``*`` or ``**``, matched on
-        its fully qualified name ``fqn``, then ``-p NAME:=V``), then those for
-        this node by name (a file's ``/ns/node:`` section, then ``-p node:NAME:=V``),
-        which win."""
-        return {name: value for _, name, value in self.param_rules(fqn or f"/{node_name}", node_name)}
+    def params_for(self, fqn: str) -> dict[str, Any]:
+        """The parameters for the node ``fqn`` (its fully qualified name, after any
+        ``-r __node``/``__ns``), as rclpy applies them: first those for every node
+        (``--params-file`` sections with ``*`` or ``**``, then ``-p NAME:=V``), then those
+        naming this node (a file's ``/ns/node:`` section, then ``-p node:NAME:=V``), which win."""
+        return {name: value for _, name, value in self.param_rules(fqn)}
 
-    def param_rules(self, fqn: str, *names: str) -> list[tuple[str, str, Any]]:
-        """(where it came from, name, value) for the node ``fqn`` (``-p NODE:...``
-        naming it by one of ``names``), in the order they apply (a later one
-        wins); where is ``--params-file`` or ``-p``."""
+    def param_rules(self, fqn: str) -> list[tuple[str, str, Any]]:
+        """(where it came from, name, value) for the node ``fqn``, in the order they apply
+        (a later one wins); where is ``--params-file`` or ``-p``. ``-p NODE:...`` names the
+        node as rcl does: ``driver`` is ``/driver``, so not ``/robot/driver``."""
         files = [(pattern, name, value) for pattern, name, value in self.file_params if node_matches(pattern, fqn)]
         return [
             *(("--params-file", name, value) for pattern, name, value in files if "*" in pattern),
             *(("-p", name, value) for node, name, value in self.params if node is None),
             *(("--params-file", name, value) for pattern, name, value in files if "*" not in pattern),
-            *(("-p", name, value) for node, name, value in self.params if node is not None and node in names),
+            *(("-p", name, value) for node, name, value in self.params if node is not None and node_matches(node, fqn)),
         ]
 
     def remaps_for(self, node_name: str) -> dict[str, str]:
-        return {src: dst for node, src, dst in self.remaps if node in (None, node_name)}
+        """The remap rules for the node named ``node_name`` (``node:from:=to`` names it by
+        name, as rcl matches them), the first rule for a name winning, as in rcl."""
+        rules: dict[str, str] = {}
+        for node, src, dst in self.remaps:
+            if node in (None, node_name):
+                rules.setdefault(src, dst)
+        return rules
 
 
 def parse_value(text: str) -> Any:
@@ -105,6 +138,7 @@ def _split_assignment(flag: str, text: str) -> tuple[str | None, str, str]:
 def parse_ros_args(argv: list[str]) -> RosArgs:
     """Split ``argv`` into user arguments and ROS arguments, as rcl does."""
     result = RosArgs()
+    unknown: list[str] = []
     i = 0
     in_ros = False
     while i < len(argv):
@@ -117,7 +151,10 @@ def parse_ros_args(argv: list[str]) -> RosArgs:
             result.user_args.append(arg)
         elif arg in ("-p", "--param", "-r", "--remap", "--log-level", "-e", "--enclave", "--params-file"):
             if i + 1 >= len(argv):
-                raise RosArgsError(f"malformed --ros-args: {arg} needs a value after it")
+                raise RosArgsError(
+                    f"malformed --ros-args: {arg} needs a value after it",
+                    rcl=_TRAILING[_SHORT.get(arg, arg)].format(flag=arg),
+                )
             text = argv[i + 1]
             i += 1
             if arg in ("-p", "--param"):
@@ -127,12 +164,25 @@ def parse_ros_args(argv: list[str]) -> RosArgs:
                 node, src, dst = _split_assignment(arg, text)
                 result.remaps.append((node, src, dst))
             elif arg == "--log-level":
-                result.log_level = text.split(":=")[-1]
+                logger, _, level = text.rpartition(":=")
+                try:
+                    parse_level(level)
+                except ValueError as err:
+                    raise RosArgsError(
+                        f"--log-level {text}: {err}",
+                        rcl=f"Couldn't parse log level: '{arg} {text}'. Error: Argument does not use a valid severity level",
+                    ) from None
+                if logger:
+                    result.log_levels[logger] = level
+                else:
+                    result.log_level = level
             elif arg == "--params-file":
                 result.file_params.extend(read_params_file(text))
         else:
-            raise RosArgsError(f"Found unknown ROS arguments: ['{arg}']")
+            unknown.append(arg)
         i += 1
+    if unknown:
+        raise UnknownRosArgs(unknown)
     return result
 
 

@@ -13,6 +13,8 @@ from collections.abc import Callable
 from enum import IntEnum
 from typing import TYPE_CHECKING
 
+from turtletui.compat.exceptions import NotInitializedException
+
 if TYPE_CHECKING:
     from turtletui.compat.context import Context
 
@@ -411,11 +413,14 @@ class Clock:
         switched on or off ends the wait early (False), as in rclpy."""
         if not isinstance(until, Time):
             raise TypeError("Time must be specified as rclpy.time.Time")
+        ctx = self._ctx(context)
+        if not ctx.ok():
+            raise NotInitializedException()  # rclpy checks the context before anything else
         if until.clock_type != self._clock_type:
             raise ValueError("until's clock type does not match this clock's type")
         from turtletui.compat.executors import wait_in_host
 
-        host = self._ctx(context).host
+        host = ctx.host
         if not self._ros_time_active:
             return host.sleep_until(until.nanoseconds - host.graph.epoch_ns)
         changed = False

@@ -94,8 +94,10 @@ def with_timer_info(callback: Callable, parameter: str, timer: list[Timer]) -> C
 class Timer(Destroyable):
     """Calls ``callback()`` every ``timer_period_ns`` of its clock's time."""
 
-    def __init__(self, node: Node, record: core.Timer, clock: Clock) -> None:
+    def __init__(self, node: Node, record: core.Timer, clock: Clock, period_ns: int | None = None) -> None:
         self._node = node
+        self._period_ns = record.period_ns if period_ns is None else period_ns
+        """The period asked for: 0 stays 0 here, while the graph fires such a timer every ns."""
         self._record = record
         self._graph = node._graph
         self._clock = clock
@@ -121,7 +123,16 @@ class Timer(Destroyable):
     @property
     def timer_period_ns(self) -> int:
         self._require_alive()
-        return self._record.period_ns
+        return self._period_ns
+
+    @timer_period_ns.setter
+    def timer_period_ns(self, value: int) -> None:
+        """A new period, as rcl_timer_exchange_period: the next call stays when it was due,
+        the calls after it follow the new period."""
+        self._require_alive()
+        period_ns = int(value)
+        self._period_ns = period_ns
+        self._record.period_ns = max(1, period_ns)
 
     def cancel(self) -> None:
         self._require_alive()
@@ -141,7 +152,8 @@ class Timer(Destroyable):
 
     def is_ready(self) -> bool:
         self._require_alive()
-        return not self._record.canceled and self._next_call_ns() <= self._now()
+        # a period of 0 is always ready in rcl
+        return not self._record.canceled and (self._period_ns == 0 or self._next_call_ns() <= self._now())
 
     def time_since_last_call(self) -> int:
         self._require_alive()
@@ -154,7 +166,7 @@ class Timer(Destroyable):
         return self._next_call_ns() - self._now()
 
     def destroy(self) -> None:
-        self._node.destroy_timer(self)
+        self._node._release_entity(self, self._node._graph.cancel_timer)
 
     def _info(self) -> TimerInfo:
         """The TimerInfo of the call being made (rcl_timer_call_with_info): when it was due

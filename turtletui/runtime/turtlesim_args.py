@@ -88,7 +88,7 @@ def parse_turtlesim_args(argv: Sequence[str]) -> TurtlesimArgs:
         name = target
     parameters: dict[str, Any] = {}
     type_description_service = True
-    for source, param, value in parsed.param_rules(f"/{name}", own, name):
+    for source, param, value in parsed.param_rules(f"/{name}"):
         # an rclcpp node leaves a file's parameters that it does not declare
         # (a /** section is for every node); -p names them, and is told
         if source == "--params-file" and param not in (*PARAMETERS, "use_sim_time", TYPE_DESCRIPTION_PARAMETER):
@@ -115,11 +115,9 @@ def parse_turtlesim_args(argv: Sequence[str]) -> TurtlesimArgs:
             raise RosArgsError(f"{flag}{param}:={_shown(value)}: {problem}")
         parameters[param] = value
     log_level = INFO
-    if parsed.log_level is not None:
-        try:
-            log_level = parse_level(parsed.log_level)
-        except ValueError as err:
-            raise RosArgsError(f"--log-level {parsed.log_level}: {err}") from None
+    level = parsed.log_levels.get(name, parsed.log_levels.get(own, parsed.log_level))
+    if level is not None:  # parse_ros_args checked it
+        log_level = parse_level(level)
     return TurtlesimArgs(name, parameters, log_level, type_description_service)
 
 
