@@ -110,7 +110,7 @@ def test_without_a_choice_files_that_import_turtlesim_run_as_jazzy_and_are_told_
     newer = controller(tmp_path, "turtlesim_msgs")
     distro, note = distro_of_imports([course])
     assert distro == "jazzy"
-    assert note.startswith("uses_turtlesim.py imports turtlesim.msg: running as ROS 2 Jazzy")
+    assert note.startswith("uses_turtlesim.py imports turtlesim's types from turtlesim: running as ROS 2 Jazzy")
     assert distro_of_imports([newer]) is None and distro_of_imports([course, newer]) is None
     for sandbox in HOSTS:
         result = run([course], duration=0.5, sandbox=sandbox)

@@ -24,7 +24,7 @@ async def test_the_default_app_runs_part6_and_shows_its_log(monkeypatch) -> None
         await wait_for(pilot, lambda: "Collision Avoidance Mode" in log_text(app))
         assert "[turtlesim] Starting turtlesim with node name /turtlesim" in log_text(app)
         # the course's file imports turtlesim.msg: with no --distro and no lesson it runs as Jazzy, and says so
-        assert "turtle_controller.py imports turtlesim.msg: running as ROS 2 Jazzy" in " ".join(log_text(app).split())
+        assert "turtle_controller.py imports turtlesim's types from turtlesim: running as ROS 2 Jazzy" in " ".join(log_text(app).split())
         assert app.sub_title == "ROS 2 Jazzy"
         assert app.session.slots[0].status == "running"
         assert app.session.sim.world.turtles["turtle1"].distance > 1.0

@@ -121,7 +121,7 @@ def distro_of_imports(paths: Iterable[Path]) -> tuple[str, str] | None:
     newest = DISTROS[newest_with_package("turtlesim")]
     files = ", ".join(importers["turtlesim"])
     return newest.name, (
-        f"{files} import{'s' if len(importers['turtlesim']) == 1 else ''} turtlesim.msg: running as ROS 2"
+        f"{files} import{'s' if len(importers['turtlesim']) == 1 else ''} turtlesim's types from turtlesim: running as ROS 2"
         f" {newest.name.capitalize()}, the newest with that package (from Kilted on turtlesim's types are in"
         f" turtlesim_msgs); --distro chooses another"
     )
