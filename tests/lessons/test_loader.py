@@ -205,6 +205,9 @@ duration = -5
         ('name = "s"\nstart = {x = 1}', "scenarios[0].start is missing 'y'"),
         ('name = "s"\nstart = {x = 1, y = 2, z = 3}', "scenarios[0].start has unknown field 'z'"),
         ('name = "s"\nstart = {x = 1, y = 2, theta = nan}', "scenarios[0].start theta must be a number, got nan"),
+        # a start outside the arena would grade every answer against the lesson's mistake
+        ('name = "s"\nstart = {x = 88, y = 2}', "scenarios[0].start x must be a number of metres in the arena (0 to 11.09), got 88"),
+        ('name = "s"\nstart = {x = 1, y = -0.5}', "scenarios[0].start y must be a number of metres in the arena (0 to 11.09), got -0.5"),
         (
             'name = "s"\ndurration = 3',
             "scenarios[0]: unknown field 'durration' (did you mean 'duration'?)",

@@ -130,6 +130,10 @@ def _show(value: Any) -> str:
     return repr(value)
 
 
+ARENA_METRES = 11.09
+"""The arena's width and height as a lesson gives them (turtletui.sim's ARENA_SIZE, 11.0889 m)."""
+
+
 def _is_number(value: Any) -> bool:
     return isinstance(value, (int, float)) and not isinstance(value, bool)
 
@@ -149,6 +153,15 @@ def _pose_numbers(value: dict[str, Any], fields: Sequence[str], field: str, bad:
         if not _is_number(number) or not math.isfinite(number):
             raise bad(field, f"{key} must be a number, got {_show(number)}")
         numbers[key] = float(number)
+    return numbers
+
+
+def _in_arena(numbers: dict[str, float], field: str, bad: Any) -> dict[str, float]:
+    """``numbers`` if its x and y lie in the arena (a pose outside it would
+    grade every answer against the lesson's mistake)."""
+    for key in ("x", "y"):
+        if not 0.0 <= numbers[key] <= ARENA_METRES:
+            raise bad(field, f"{key} must be a number of metres in the arena (0 to {ARENA_METRES}), got {numbers[key]:g}")
     return numbers
 
 
@@ -495,9 +508,7 @@ class _Validator:
         at, x, y, theta = (numbers[key] for key in TELEPORT_FIELDS)
         if not 0.0 < at < duration:
             raise bad("teleport", f"at must lie within the run (after 0 and before {duration:g} s), got {at:g}")
-        for key in ("x", "y"):
-            if not 0.0 <= numbers[key] <= 11.09:
-                raise bad("teleport", f"{key} must be a number of metres in the arena (0 to 11.09), got {numbers[key]:g}")
+        _in_arena(numbers, "teleport", bad)
         return at, x, y, theta
 
     def _overlay(self, i: int, item: dict[str, Any]) -> ArenaOverlay:
@@ -513,9 +524,9 @@ class _Validator:
             if key not in item:
                 raise self._error(f"{where}: missing field {key!r}", None, section)
             value = item[key]
-            if not _is_number(value) or not 0.0 <= value <= 11.09:
+            if not _is_number(value) or not 0.0 <= value <= ARENA_METRES:
                 raise self._error(
-                    f"{where}.{key} must be a number of metres in the arena (0 to 11.09), got {_show(value)}",
+                    f"{where}.{key} must be a number of metres in the arena (0 to {ARENA_METRES}), got {_show(value)}",
                     key,
                     section,
                 )
@@ -543,7 +554,7 @@ class _Validator:
                 "start",
                 f'must be a table {{x = ..., y = ..., theta = ...}} or "random", got {_show(value)}',
             )
-        return _pose_numbers(value, START_FIELDS, "start", bad)
+        return _in_arena(_pose_numbers(value, START_FIELDS, "start", bad), "start", bad)
 
     def _check(self, i: int, item: dict[str, Any], scenario_names: dict[str, int]) -> CheckSpec:
         bad, name = self._named_table("checks", i, item, CHECK_FIELDS)
