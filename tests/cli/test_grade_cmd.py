@@ -241,6 +241,9 @@ def test_gradescope_grades_a_folder_of_folders_as_one_ambiguous_upload(klass: Pa
     data = json.loads(result.stdout)
     assert data["score"] == 0.0
     assert "several possible controllers (ann/controller.py, ben/controller.py)" in data["output"]
+    # an instructor who meant the class is told what to use instead
+    assert "one student per subfolder? this format grades one upload" in data["output"]
+    assert "--format table, json or csv" in data["output"]
 
 
 def test_github_appends_a_result_line_to_github_output(klass: Path, lesson: Path, tmp_path: Path):

@@ -481,7 +481,16 @@ def _single(path: Path, choice: _Choice) -> Submission:
     name = path.stem if path.is_file() else path.name
     if path.is_dir() and not any(not ignored(p) for p in path.iterdir()):
         return Submission(name, path, None, f"{path}: the upload is empty: submit your controller (.py file or ROS package)")
-    return _student(path, choice, name)
+    upload = _student(path, choice, name)
+    if upload.controller is None and path.is_dir() and not _is_one_student(path):
+        # an instructor's class folder given to a one-upload format, most likely
+        students = [p for p in sorted(path.iterdir()) if p.is_dir() and not ignored(p)]
+        if sum(_student(p, choice).controller is not None for p in students) > 1:
+            upload = replace(upload, error=(
+                f"{upload.error} (a class folder, one student per subfolder? this format grades one upload:"
+                " grade the class with --format table, json or csv)"
+            ))
+    return upload
 
 
 def _unique(submissions: list[Submission]) -> list[Submission]:
