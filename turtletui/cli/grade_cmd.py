@@ -290,7 +290,8 @@ def _grade(
             status = f"error: {result.error}"
         else:
             status = f"{result.score:g}/{result.max_score:g}"
-            status += " (kept from an earlier run)" if reused else f" in {result.execution_time:.1f} s"
+            # its runs' wall seconds added up: with --jobs, more than the command's own
+            status += " (kept from an earlier run)" if reused else f" ({result.execution_time:.1f} s of runs)"
         sys.stderr.write(f"[{finished}/{total}] {result.student}: {status}\n")
 
     def slow(student: str, text: str) -> None:

@@ -76,7 +76,8 @@ class SubmissionResult:
     error: str | None = None
     """Why the submission could not be graded (no controller, ...): score 0."""
     execution_time: float = 0.0
-    """Wall seconds grading took."""
+    """Wall seconds its runs took, added up (runs side by side overlap: the
+    sum may exceed the time grading it took; its time limit counts this)."""
     recordings: list[str] = field(default_factory=list)
     """Recordings of failed scenario runs (``turtletui replay`` plays them)."""
     graded: str = ""
