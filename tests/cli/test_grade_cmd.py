@@ -178,7 +178,8 @@ def test_an_unwritable_output_is_a_one_line_error_and_loses_no_result(klass: Pat
 
     blocker = tmp_path / "a file"
     blocker.write_text("not a folder\n")
-    for bad in (blocker / "report.json", tmp_path):  # in a file's "folder"; a folder
+    # in a file's "folder"; a folder; a folder only the kernel writes (even root cannot)
+    for bad in (blocker / "report.json", tmp_path, Path("/proc/report.json")):
         stderr = one_line_error(grade_class(klass, lesson, "--format", "json", "--output", bad, "--force"))
         assert f"cannot write {bad}" in stderr
     # refused before grading anyone: the results kept earlier are all there, unchanged
