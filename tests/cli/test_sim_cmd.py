@@ -115,6 +115,8 @@ def test_headless_runs_until_ctrl_c_and_ends_cleanly(tmp_path: Path, inherited: 
         (["--duration", "5"], "--duration is for --headless runs"),
         (["--pixels", "nope"], "--pixels: expected one of auto, half, braille, graphics"),
         (["--headless", "--record", "nowhere/run.mcap"], "nowhere/run.mcap: cannot write the recording"),
+        # a folder only the kernel writes: refused before the run, also for root
+        (["--headless", "--record", "/proc/run.jsonl"], "/proc/run.jsonl: cannot write the recording"),
         (["--headless", "--foxglove", "nowhere:99999"], "--foxglove 'nowhere:99999': give HOST:PORT"),
         (["--record", "nowhere/run.mcap"], "nowhere/run.mcap: cannot write the recording"),
         ([], "no terminal to draw the app in; run headless instead: turtletui sim --headless"),

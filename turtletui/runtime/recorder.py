@@ -177,5 +177,16 @@ def check_record_path(path: str | os.PathLike[str]) -> None:
     elif target.is_dir():
         raise RecordingWriteError(f"{path}: cannot write the record (is a folder; name a file, or a bag folder as {path}/)")
     parent = target.parent
-    if not parent.is_dir() or not os.access(parent, os.W_OK):
+    if not parent.is_dir() or not os.access(parent, os.W_OK) or not _can_make_a_file_in(parent):
         raise RecordingWriteError(f"{path}: cannot write the recording (no writable folder {parent})")
+
+
+def _can_make_a_file_in(folder: Path) -> bool:
+    """What access() cannot tell (root; a read-only or special file system such as /proc)."""
+    import tempfile
+
+    try:
+        with tempfile.NamedTemporaryFile(dir=folder, prefix=".turtletui-", suffix=".probe"):
+            return True
+    except OSError:
+        return False
