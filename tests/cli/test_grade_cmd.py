@@ -124,6 +124,10 @@ def test_a_missing_path_and_an_empty_folder_are_one_line_errors(tmp_path: Path, 
     (tmp_path / "empty").mkdir()
     stderr = one_line_error(grade_cli(tmp_path / "empty", "--lesson", lesson, "--same-user"))
     assert f"{tmp_path / 'empty'}: empty folder" in stderr
+    (tmp_path / "notes").mkdir()
+    (tmp_path / "notes" / "notes.txt").write_text("to do\n")
+    stderr = one_line_error(grade_cli(tmp_path / "notes", "--lesson", lesson, "--same-user"))
+    assert f"{tmp_path / 'notes'}: no Python (.py) file and no student's folder in it" in stderr
 
 
 def test_a_check_the_lesson_names_that_does_not_exist_is_a_one_line_error(klass: Path, lesson: Path):
@@ -187,6 +191,8 @@ def test_an_unwritable_output_is_a_one_line_error_and_loses_no_result(klass: Pat
     # a results folder that cannot be made is bad input too
     stderr = one_line_error(grade_cli(klass, "--lesson", lesson, "--results", blocker / "r", "--same-user"))
     assert str(blocker / "r") in stderr
+    stderr = one_line_error(grade_cli(klass, "--lesson", lesson, "--results", blocker, "--same-user"))
+    assert f"{blocker}: cannot write results there (it is a file, not a folder)" in stderr
 
 
 # -- report formats ------------------------------------------------------------------------

@@ -216,4 +216,4 @@ def test_replay_png_draws_a_recording(tmp_path: Path):
     drawn = CliRunner().invoke(app, ["replay", str(record), "--png", str(tmp_path / "run.png")])
     assert drawn.exit_code == 0, drawn.output
     assert (tmp_path / "run.png").read_bytes().startswith(b"\x89PNG")
-    assert "1 wall or obstacle hits marked" in drawn.stderr
+    assert "1 wall or obstacle hit marked" in drawn.stderr

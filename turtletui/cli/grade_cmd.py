@@ -42,7 +42,7 @@ def grade(
         help="Keep each student's result and recordings here (default: turtletui-grades/LESSON).",
     ),
     jobs: int = typer.Option(
-        0, "--jobs", "-j", min=0, metavar="N", show_default=False, help="Scenario runs in parallel (default: one per CPU)."
+        0, "--jobs", "-j", min=0, metavar="N", show_default=False, help="Scenario runs in parallel (default, or 0: one per CPU)."
     ),
     force: bool = typer.Option(False, "--force", help="Regrade submissions whose results are kept."),
     fail_under: float = typer.Option(

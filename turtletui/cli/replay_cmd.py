@@ -106,7 +106,8 @@ def _picture(found, world, out: Path) -> None:
             out.write_bytes(render_png(drawing))
     except (OSError, ReportError) as err:
         fail(f"cannot write {out}: {getattr(err, 'strerror', None) or err}")
-    sys.stderr.write(f"wrote {out}: the path of turtle1, {len(drawing.hits)} wall or obstacle hits marked\n")
+    hits = len(drawing.hits)
+    sys.stderr.write(f"wrote {out}: the path of turtle1, {hits} wall or obstacle hit{'' if hits == 1 else 's'} marked\n")
 
 
 def _world(name: str | None):

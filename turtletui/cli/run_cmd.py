@@ -112,7 +112,7 @@ def run(
     plugins = plugins_of(plugin)
     specs = resolve_controllers(controllers or ["part6_wall_avoider"], plugins=plugins)
     if not 0 < duration < 1e7:
-        fail(f"--duration must be a positive number of seconds, got {duration}")
+        fail(f"--duration must be a positive number of seconds under 10,000,000, got {duration}")
     _check_pixels(pixels)
     _check_outputs(record, foxglove)
     # no distro yet: turtletui.api.run (the app: its session) lets the files' imports choose, and says so

@@ -75,7 +75,7 @@ def sim(
     except RosArgsError as err:
         fail(str(err))
     if duration is not None and not 0 < duration < 1e7:
-        fail(f"--duration must be a positive number of seconds, got {duration}")
+        fail(f"--duration must be a positive number of seconds under 10,000,000, got {duration}")
     world_spec = None if world is None else _resolve_world(world, plugins_of(plugin))
     _check_outputs(record, foxglove)
     if ros_python is not None and not ros:

@@ -196,6 +196,8 @@ class ResultStore:
             probe = folder / f".probe.{os.getpid()}"
             probe.write_text("")
             probe.unlink()
+        except FileExistsError:
+            raise ReportError(f"{folder}: cannot write results there (it is a file, not a folder)") from None
         except OSError as err:
             raise ReportError(f"{folder}: cannot write results there ({err.strerror or err})") from None
         here = folder.resolve()

@@ -469,7 +469,9 @@ def find_submissions(
         students = sorted(p for p in path.iterdir() if p.is_dir() and not ignored(p))
         loose = sorted(p for p in path.iterdir() if p.is_file() and p.suffix == ".py" and not ignored(p))
         if not students and not loose:
-            raise SubmissionError(f"{path}: empty folder: no submissions to grade")
+            anything = any(not ignored(p) for p in path.iterdir())
+            what = "no Python (.py) file and no student's folder in it" if anything else "empty folder"
+            raise SubmissionError(f"{path}: {what}: no submissions to grade")
         # Files that are not Python next to the students' folders (notes.txt, a
         # README, .DS_Store) are not submissions: nobody is graded 0 for them.
         found.extend(_student(p, choice) for p in [*students, *loose])
