@@ -173,7 +173,7 @@ def test_a_rerun_keeps_results_regrades_changes_and_force_regrades_all(tmp_path:
     (klass / "ann" / "controller.py").write_text(counted(HONEST, runs) + "# fixed a typo\n")
     third = grade_cli(*args)
     status = progress_of(third.stderr)
-    assert "kept" not in status["ann"] and status["ann"].startswith("3/3 in ")
+    assert "kept" not in status["ann"] and status["ann"].startswith("3/3 (")
     assert status["ben"] == "1/3 (kept from an earlier run)"
     assert runs_since(4) == 2
 
@@ -200,7 +200,7 @@ def test_a_damaged_result_file_is_graded_again_not_trusted(tmp_path: Path, lesso
     assert second.exit_code == 0, second.stderr
     status = progress_of(second.stderr)
     assert status["ann"].endswith("(kept from an earlier run)")
-    assert status["ben"].startswith("1/3 in ")
+    assert status["ben"].startswith("1/3 (") and status["ben"].endswith(" s of runs)")
     assert without_times(second.stdout) == without_times(first.stdout)
     assert stored_results(results)["ben"]["score"] == 1.0  # whole and right again
 
@@ -236,6 +236,7 @@ def test_a_failed_visible_scenario_is_recorded_and_a_hidden_one_is_not(tmp_path:
     report = grade_submissions(plan, find_submissions([klass]), store=store, jobs=1)
     ann, ben = report.submissions
     assert ann.recordings == []  # nothing failed: nothing to watch
+    assert not store.recordings("ann").exists(), "and no empty folder for it"
     failed = {t.scenario for t in ben.tests if not t.passed}
     assert failed == {"centre", "hidden 1"}  # it fails the hidden run too...
     assert ben.recordings == [str(store.recordings("ben") / "centre.mcap")]  # ...which is not recorded

@@ -463,8 +463,6 @@ def grade_run(
     # hidden runs are not recorded: a recording would show where they start
     name = f"{_file_name(run.label)}.{recording_format}"
     path = None if recordings is None or run.hidden else recordings / name
-    if path is not None:
-        recordings.mkdir(parents=True, exist_ok=True)
     trace, recorder = run_scenario(plan, run, controllers, limits=limits, record=path)
     if _killed_from_outside(trace):
         # SIGKILL that none of the run's own limits sent (the machine's OOM
@@ -499,6 +497,8 @@ def grade_run(
     tests = _judge_run(plan, run, verdict_of, problem, _likely_causes(trace))
     failed = not all(test.passed for _, test in tests)
     if recorder is not None:
+        if failed:  # buffered: the file is written now, and only a failed run's
+            recordings.mkdir(parents=True, exist_ok=True)
         recorder.close(keep=failed)
     picture = picture_of_trace(trace, run.label) if failed and not run.hidden else None
     return RunOutcome(run_index, tests, str(path) if recorder is not None and failed else None, picture)
