@@ -142,9 +142,11 @@ class Executor:
     def _stopped(self) -> bool:
         # Context.ok() inline: spin checks this each time the ready callbacks
         # run out, once a tick.
+        if self._is_shutdown or self._failures:
+            return True
         context = self._context
         host = context._host
-        return self._is_shutdown or bool(self._failures) or not (context._ok and host is not None and host.running)
+        return not (context._ok and host is not None and host.running)
 
     def _raise_failure(self) -> None:
         """Raise the oldest error of a callback run beside the thread that spins (if any)."""
