@@ -53,7 +53,7 @@ def comparable(text: str, folder: Path) -> dict:
 def progress(stderr: str) -> list[str]:
     """The progress lines, without their wall times and their place in the
     order submissions finished ("[3/6] "), which runs side by side decide."""
-    return sorted(re.sub(r"^\[\d+/\d+\] ", "", re.sub(r" in [0-9.]+ s$", "", line)) for line in stderr.splitlines())
+    return sorted(re.sub(r"^\[\d+/\d+\] ", "", re.sub(r" \([0-9.]+ s of runs\)$", "", line)) for line in stderr.splitlines())
 
 
 def test_a_local_ray_cluster_grades_exactly_as_the_local_pool(tmp_path: Path, lesson: Path):
