@@ -236,12 +236,22 @@ def _template_of(parent: int, *tokens: str) -> int:
     return template
 
 
-def test_each_submission_gets_a_server_of_its_own_forked_from_one_template(tmp_path: Path) -> None:
+def test_each_submission_gets_a_server_of_its_own_forked_from_one_template(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
     """A submission's server is forked (not started afresh) from a template
     that never runs a controller: its token, process and session are new."""
     names = ("ada", "bob", "cy")
     paths = [controller(tmp_path / name) for name in names]
     templates = []
+    started = []
+    real_init = forkserver.ForkServer.__init__
+
+    def counting_init(self, *args, template: bool = False, **kwargs) -> None:
+        started.append(template)
+        real_init(self, *args, template=template, **kwargs)
+
+    monkeypatch.setattr(forkserver.ForkServer, "__init__", counting_init)
     with forkserver.serving():
         for path in paths:
             run([path], duration=0.5)
@@ -249,6 +259,7 @@ def test_each_submission_gets_a_server_of_its_own_forked_from_one_template(tmp_p
     tokens = [noted(tmp_path / name, "token")[0] for name in names]
     assert len(set(tokens)) == 3
     assert len(set(templates)) == 1, "one template served every submission"
+    assert started == [True], "no server was started afresh"
     for name in names:
         assert noted(tmp_path / name, "parent")[0] == str(os.getpid())
         assert noted(tmp_path / name, "group") == ["True"]
@@ -582,6 +593,50 @@ def test_a_server_forked_by_a_template_ends_with_the_process_that_started_them(t
         assert not _running(server) and not _running(template)
     finally:
         os.kill(holder, signal.SIGKILL)
+
+
+def test_a_server_takes_a_token_of_its_own_though_it_cannot_read_its_environ_back() -> None:
+    """A server is not dumpable, which makes its /proc/PID/environ root's: a
+    server of a grader that is not root, or of one that runs student code as
+    nobody, cannot read it back, and must still take its token."""
+    import subprocess
+    import sys
+
+    import turtletui
+
+    root = str(Path(turtletui.__file__).resolve().parents[1])
+    code = textwrap.dedent(f"""\
+        import os, sys
+        sys.path.insert(0, {root!r})
+        from turtletui.runtime import forkserver
+        forkserver._prctl(4, 0)  # PR_SET_DUMPABLE 0, as a server (imports ctypes first)
+        if os.geteuid() == 0:
+            os.setgid(65534)
+            os.setuid(65534)
+        try:
+            open("/proc/self/environ", "rb").close()
+            readable = True
+        except OSError:
+            readable = False
+        wrong = forkserver._retoken("c" * 5)  # not as long as the one it has
+        right = forkserver._retoken("b" * 22)
+        print(readable, wrong, right, os.environ["TURTLETUI_SANDBOX"], flush=True)
+        sys.stdin.read()
+    """)
+    proc = subprocess.Popen(
+        [sys.executable, "-c", code], env=dict(os.environ, TURTLETUI_SANDBOX="a" * 22),
+        stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True,
+    )
+    try:
+        readable, wrong, right, seen = proc.stdout.readline().split()
+        assert readable == "False", "the case this test is about"
+        assert (wrong, right, seen) == ("False", "True", "b" * 22)
+        if os.geteuid() == 0:  # only root may read the environment of a process that is not dumpable
+            assert _processes_with("b" * 22) == {proc.pid}
+            assert proc.pid not in _processes_with("a" * 22)
+    finally:
+        proc.stdin.close()
+        proc.wait()
 
 
 def _running(pid: int) -> bool:

@@ -200,26 +200,35 @@ def _become_server(
 
 def _retoken(token: str) -> bool:
     """Give this process (and what it forks and starts) the sandbox ``token``
-    in place of the one it was started with, where the kernel shows a
-    process's environment (/proc/PID/environ, the block it was started with:
-    the new token must be as long) and in os.environ (for what it starts).
-    Whether /proc now shows it."""
+    in place of the one it was started with: in the environment block the
+    kernel shows as /proc/PID/environ (the one it was started with, found by
+    /proc/self/stat's env_start and env_end; the new token must be as long)
+    and in os.environ (for what it starts). Whether the block now holds it.
+    (/proc/self/environ itself cannot be read back: the process is not
+    dumpable, which makes it root's.)"""
     import ctypes
 
-    prefix = f"{TOKEN_VAR}=".encode()
+    entry = f"{TOKEN_VAR}=".encode()
     new = token.encode()
     try:
-        environ = ctypes.POINTER(ctypes.c_void_p).in_dll(ctypes.CDLL(None), "environ")
-        i = 0
-        while environ[i]:
-            entry = ctypes.string_at(environ[i])
-            if entry.startswith(prefix) and len(entry) == len(prefix) + len(new):
-                ctypes.memmove(environ[i] + len(prefix), new, len(new))
-            i += 1
+        with open("/proc/self/stat", "rb") as f:
+            fields = f.read().rpartition(b")")[2].split()
+        start, end = int(fields[47]), int(fields[48])  # fields 50 and 51 of proc(5)
+        if not 0 < start < end:
+            return False
+        offset = 0
+        for item in ctypes.string_at(start, end - start).split(b"\0"):
+            if item.startswith(entry):
+                break
+            offset += len(item) + 1
+        else:
+            return False
+        if len(item) != len(entry) + len(new):
+            return False
+        ctypes.memmove(start + offset + len(entry), new, len(new))
         os.environ[TOKEN_VAR] = token
-        with open("/proc/self/environ", "rb") as f:
-            return prefix + new in f.read().split(b"\0")
-    except (OSError, ValueError, AttributeError):
+        return ctypes.string_at(start, end - start).split(b"\0").count(entry + new) == 1
+    except (OSError, ValueError, IndexError):
         return False
 
 
@@ -408,6 +417,7 @@ class ForkServer:
         if _state(self.proc.pid) in ("T", "t", "Z", "X", ""):
             return None  # stopped (a run of the last submission?) or gone
         token = os.urandom(len(self.token)).hex()[: len(self.token)]  # as long: see _retoken
+        deadline = time.monotonic() + timeout  # for its answer and the server's "ready" both
         mine, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_SEQPACKET)
         try:
             self.sock.settimeout(timeout)
@@ -424,7 +434,7 @@ class ForkServer:
         server = ForkServer.__new__(ForkServer)
         server.token, server.sock, server.proc = token, mine, ForkedChild(pid)
         try:
-            mine.settimeout(timeout)
+            mine.settimeout(max(deadline - time.monotonic(), 0.001))
             ready = mine.recv(16) == b"ready"
         except OSError:
             ready = False
