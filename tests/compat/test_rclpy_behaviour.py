@@ -671,3 +671,23 @@ def accepted_but_ignored_arguments_change_nothing():
 
 def test_accepted_but_ignored_arguments_change_nothing(controller_host):
     run_body(controller_host, accepted_but_ignored_arguments_change_nothing)
+
+
+# -- timers --------------------------------------------------------------------------------------
+
+
+def a_zero_period_timer_fires_often_and_the_run_goes_on():
+    node = beh_node()
+    calls = []
+    node.create_timer(0.0, lambda: calls.append(node.get_clock().now().nanoseconds))
+    for _ in range(50):
+        rclpy.spin_once(node, timeout_sec=1.0)
+    # ready at every spin in rcl; here once a simulated millisecond, not once a
+    # nanosecond (which made a run that spins on it never end)
+    assert len(calls) == 50
+    assert calls[-1] - calls[0] == 49 * 1_000_000
+    rclpy.shutdown()
+
+
+def test_a_zero_period_timer_fires_often_and_the_run_goes_on(controller_host):
+    run_body(controller_host, a_zero_period_timer_fires_often_and_the_run_goes_on)

@@ -72,7 +72,13 @@ from turtletui.compat.rcl_error import RCLError, topic_type_error
 from turtletui.compat.task import Future
 from turtletui.compat.time import Clock, ClockType, Duration, clock_for
 from turtletui.compat.time_source import TimeSource
-from turtletui.compat.timer import Rate, Timer, timer_info_parameter, with_timer_info
+from turtletui.compat.timer import (
+    ZERO_PERIOD_NS,
+    Rate,
+    Timer,
+    timer_info_parameter,
+    with_timer_info,
+)
 from turtletui.compat.type_description_service import TypeDescriptionService
 from turtletui.graph import core
 from turtletui.graph.logs import WARN
@@ -754,7 +760,7 @@ class Node(Destroyable):
             callback = with_timer_info(callback, info_parameter, made)
         record = self._graph.add_timer(
             self._record,
-            max(1, period_ns),  # a period of 0 (ready at every spin in rcl) fires once per ns here
+            period_ns if period_ns > 0 else ZERO_PERIOD_NS,  # ready at every spin in rcl
             dispatcher(host, group, callback),  # a callback that is not callable fails when called, as in rclpy
             # rclpy lets a destroyed node make a timer; no executor calls it
             autostart=autostart and not self._destroyed,

@@ -44,6 +44,10 @@ if TYPE_CHECKING:
     from turtletui.graph import core
 
 _NS = 1_000_000_000
+ZERO_PERIOD_NS = 1_000_000
+"""How often a timer of period 0 fires here: rcl has it ready at every spin,
+which under simulated time would be every nanosecond (a run that never
+ends); once a simulated millisecond is as often as a busy executor spins."""
 _TIMER_THRESHOLD = JumpThreshold(min_forward=Duration(nanoseconds=1), min_backward=Duration(nanoseconds=-1))
 """What rcl_timer_init registers on a ROS clock: every jump, and ROS time switched on or off."""
 
@@ -97,7 +101,7 @@ class Timer(Destroyable):
     def __init__(self, node: Node, record: core.Timer, clock: Clock, period_ns: int | None = None) -> None:
         self._node = node
         self._period_ns = record.period_ns if period_ns is None else period_ns
-        """The period asked for: 0 stays 0 here, while the graph fires such a timer every ns."""
+        """The period asked for: 0 stays 0 here, while the graph fires such a timer every ZERO_PERIOD_NS."""
         self._record = record
         self._graph = node._graph
         self._clock = clock
@@ -132,7 +136,7 @@ class Timer(Destroyable):
         self._require_alive()
         period_ns = int(value)
         self._period_ns = period_ns
-        self._record.period_ns = max(1, period_ns)
+        self._record.period_ns = period_ns if period_ns > 0 else ZERO_PERIOD_NS
 
     def cancel(self) -> None:
         self._require_alive()
