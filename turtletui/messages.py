@@ -5,6 +5,12 @@ from __future__ import annotations
 import difflib
 from collections.abc import Iterable
 
+LOST_REQUEST_ADVICE = "Wait with client.wait_for_service() before the first call."
+"""How turtletui's warning of a service request sent before discovery ends
+(turtletui.compat.node); the grader shows the warning as a likely cause."""
+LOST_GOAL_ADVICE = "Wait with action_client.wait_for_server() before the first goal."
+"""The same for an action goal (turtletui.compat.action)."""
+
 
 def one_line(value: object) -> str:
     """``value``'s text with every run of whitespace, newlines included, made one space."""

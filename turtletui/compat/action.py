@@ -17,6 +17,7 @@ from turtletui.compat.task import Future
 from turtletui.graph.logs import WARN
 from turtletui.interfaces import copier
 from turtletui.interfaces.action_msgs import GoalStatus
+from turtletui.messages import LOST_GOAL_ADVICE
 
 _NS = 1_000_000_000
 
@@ -29,9 +30,6 @@ _STATUS = {
     "canceled": GoalStatus.STATUS_CANCELED,
     "aborted": GoalStatus.STATUS_ABORTED,
 }
-LOST_GOAL_ADVICE = "Wait with action_client.wait_for_server() before the first goal."
-"""How turtletui's warning of a goal sent before discovery ends (the grader
-shows it as the likely cause when a check fails)."""
 _UNDISCOVERED_ACTION = (
     "{node} sent a goal to {action} before it had discovered the action's server, so the goal was lost "
     "and will never be answered: ROS 2 nodes take a moment to discover each other, here and on a real "

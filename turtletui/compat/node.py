@@ -87,6 +87,7 @@ from turtletui.interfaces import Message, copier, interface_name
 from turtletui.interfaces import Service as ServiceType
 from turtletui.interfaces.rcl_interfaces import Log, ParameterEvent
 from turtletui.interfaces.rcl_interfaces import Parameter as ParameterMsg
+from turtletui.messages import LOST_REQUEST_ADVICE
 
 _NS = 1_000_000_000
 
@@ -204,9 +205,6 @@ _UNDISCOVERED = (
     "or wait until publisher.get_subscription_count() > 0 before the first message."
 )
 
-LOST_REQUEST_ADVICE = "Wait with client.wait_for_service() before the first call."
-"""How turtletui's warning of a request sent before discovery ends (the grader
-shows it as the likely cause when a check fails)."""
 _UNDISCOVERED_SERVICE = (
     "{node} called {service} before it had discovered the service's server, so the request was lost "
     "and will never be answered: ROS 2 nodes take a moment to discover each other, here and on a real "

@@ -20,9 +20,7 @@ from functools import cached_property
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from turtletui.compat.action import LOST_GOAL_ADVICE
 from turtletui.compat.distro import resolve_distro
-from turtletui.compat.node import LOST_REQUEST_ADVICE
 from turtletui.errors import TurtletuiError, UsageError
 from turtletui.grading.checks import Check, Verdict
 from turtletui.grading.pictures import picture_of_trace
@@ -32,7 +30,7 @@ from turtletui.graph.introspection import NEVER_MATCH
 from turtletui.graph.logs import LogRecord
 from turtletui.lessons.loader import display_path
 from turtletui.lessons.model import CheckSpec, Lesson, Scenario
-from turtletui.messages import did_you_mean
+from turtletui.messages import LOST_GOAL_ADVICE, LOST_REQUEST_ADVICE, did_you_mean
 from turtletui.plugins.manager import Plugins, collect_checks, plugin_manager
 from turtletui.runtime.loader import ControllerSpec
 from turtletui.runtime.recorder import open_recorder
