@@ -335,13 +335,11 @@ def check_output(output: Path | None) -> None:
         raise UsageError(f"cannot write {output}: {output.parent} is not a folder")
     if not os.access(output.parent, os.W_OK | os.X_OK):
         raise UsageError(f"cannot write {output}: permission denied")
-    import tempfile
+    from turtletui.files import cannot_write_in
 
-    try:  # what access() cannot tell (root; a read-only or special file system such as /proc)
-        with tempfile.NamedTemporaryFile(dir=output.parent, prefix=f".{output.name}.", suffix=".probe"):
-            pass
-    except OSError as err:
-        raise UsageError(f"cannot write {output}: {err.strerror or err}") from None
+    why = cannot_write_in(output.parent)
+    if why is not None:
+        raise UsageError(f"cannot write {output}: {why}")
 
 
 def write_output(report, fmt: str, output: Path | None, options) -> None:

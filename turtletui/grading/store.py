@@ -24,6 +24,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from turtletui.errors import TurtletuiError
+from turtletui.files import cannot_write_in
 from turtletui.grading.reports import ReportError, write_text_atomic
 from turtletui.grading.results import SubmissionResult
 from turtletui.grading.submissions import Submission
@@ -193,13 +194,13 @@ class ResultStore:
         self._secret = secret if secret is not None else signing_key()
         try:
             folder.mkdir(parents=True, exist_ok=True, mode=0o700)
-            probe = folder / f".probe.{os.getpid()}"
-            probe.write_text("")
-            probe.unlink()
         except FileExistsError:
             raise ReportError(f"{folder}: cannot write results there (it is a file, not a folder)") from None
         except OSError as err:
             raise ReportError(f"{folder}: cannot write results there ({err.strerror or err})") from None
+        why = cannot_write_in(folder)
+        if why is not None:
+            raise ReportError(f"{folder}: cannot write results there ({why})")
         here = folder.resolve()
         self.trusted = not any(
             here == place or place in here.parents for place in (Path(p).resolve() for p in untrusted)

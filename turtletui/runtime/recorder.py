@@ -11,6 +11,7 @@ from pathlib import Path
 from typing import Any
 
 from turtletui.errors import TurtletuiError
+from turtletui.files import cannot_write_in
 from turtletui.graph.core import Graph
 from turtletui.graph.logs import LogRecord
 from turtletui.interfaces import to_dict
@@ -177,16 +178,5 @@ def check_record_path(path: str | os.PathLike[str]) -> None:
     elif target.is_dir():
         raise RecordingWriteError(f"{path}: cannot write the record (is a folder; name a file, or a bag folder as {path}/)")
     parent = target.parent
-    if not parent.is_dir() or not os.access(parent, os.W_OK) or not _can_make_a_file_in(parent):
+    if not parent.is_dir() or not os.access(parent, os.W_OK) or cannot_write_in(parent) is not None:
         raise RecordingWriteError(f"{path}: cannot write the recording (no writable folder {parent})")
-
-
-def _can_make_a_file_in(folder: Path) -> bool:
-    """What access() cannot tell (root; a read-only or special file system such as /proc)."""
-    import tempfile
-
-    try:
-        with tempfile.NamedTemporaryFile(dir=folder, prefix=".turtletui-", suffix=".probe"):
-            return True
-    except OSError:
-        return False
