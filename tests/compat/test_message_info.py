@@ -166,3 +166,36 @@ def test_the_callback_s_signature_decides_as_rclpy_binds_it(callback, takes, mon
     monkeypatch.setattr(message_info, "current_distro", lambda: "kilted")
     assert message_info.takes_message_info(callback) is takes
 
+
+
+GID_AFTER_DESTROY = """
+import rclpy
+from rclpy.node import Node
+from std_msgs.msg import String
+
+
+def main():
+    rclpy.init()
+    node = Node("two")
+    first = node.create_publisher(String, "/chatter", 10)
+    second = node.create_publisher(String, "/chatter", 10)
+    gids = []
+    node.create_subscription(String, "/chatter", lambda msg, info: gids.append(bytes(info["publisher_gid"]["data"])), 10)
+    second.publish(String(data="a"))
+    rclpy.spin_once(node, timeout_sec=0.1)
+    listed = [bytes(e.endpoint_gid) for e in node.get_publishers_info_by_topic("/chatter")]
+    node.destroy_publisher(first)
+    second.publish(String(data="b"))
+    rclpy.spin_once(node, timeout_sec=0.1)
+    after = [bytes(e.endpoint_gid) for e in node.get_publishers_info_by_topic("/chatter")]
+    node.get_logger().info(f"same={gids[0] == gids[1]} listed={gids[0] in listed} still={after == [gids[0]]}")
+    rclpy.shutdown()
+"""
+
+
+def test_a_publishers_gid_stays_what_it_was_when_another_goes(controller_host):
+    """A DDS GUID is fixed: the second publisher of a node keeps its GID in
+    MessageInfo and in TopicEndpointInfo when the first is destroyed."""
+    result = controller_host.run(GID_AFTER_DESTROY, duration=1.0, distro="kilted")
+    assert result.ok, result.crashes
+    assert node_logs(result, "two") == ["same=True listed=True still=True"]

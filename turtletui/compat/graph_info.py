@@ -155,7 +155,8 @@ def endpoints_info(
                 topic_type=endpoint.topic.type_name,
                 topic_type_hash=type_hash_of(endpoint.topic.type_name),
                 endpoint_type=kind,
-                endpoint_gid=_gid(node.fqn, endpoint.topic.name, kind, nth),
+                # a publisher's GID, once a message named it, stays what it was then
+                endpoint_gid=list(getattr(endpoint, "gid", None) or _gid(node.fqn, endpoint.topic.name, kind, nth)),
                 qos_profile=_reported_qos(endpoint.qos),
             )
         )
@@ -168,16 +169,19 @@ def gid_text(gid: Sequence[int]) -> str:
 
 
 def publisher_gid(graph: core.Graph, publisher: core.Publisher) -> bytes:
-    """The GID of ``publisher`` as its TopicEndpointInfo lists it now (rmw's
-    MessageInfo names a message's publisher by it)."""
-    fqn = publisher.node.fqn
-    nth = 0
-    for endpoint in graph.publishers_of(publisher.topic.name):
-        if endpoint is publisher:
-            break
-        if endpoint.node.fqn == fqn:
-            nth += 1
-    return bytes(_gid(fqn, publisher.topic.name, TopicEndpointTypeEnum.PUBLISHER, nth))
+    """The GID of ``publisher`` as its TopicEndpointInfo listed it when first
+    asked (rmw's MessageInfo names a message's publisher by it), kept on the
+    record: worked out once, not for every message."""
+    if publisher.gid is None:
+        fqn = publisher.node.fqn
+        nth = 0
+        for endpoint in graph.publishers_of(publisher.topic.name):
+            if endpoint is publisher:
+                break
+            if endpoint.node.fqn == fqn:
+                nth += 1
+        publisher.gid = bytes(_gid(fqn, publisher.topic.name, TopicEndpointTypeEnum.PUBLISHER, nth))
+    return publisher.gid
 
 
 def _gid(node: str, topic: str, kind: TopicEndpointTypeEnum, nth: int) -> list[int]:

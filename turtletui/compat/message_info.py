@@ -71,17 +71,11 @@ def message_info_maker(graph: core.Graph) -> Callable[[core.MessageOrigin], dict
     (reception_sequence_number is None); ``publisher_gid`` from Kilted on."""
     epoch_ns = graph.epoch_ns
     with_gid = current_distro() not in ("humble", "jazzy")
-    gids: dict[core.Publisher, dict[str, Any]] = {}
-
     def gid_of(publisher: core.Publisher | bytes | None) -> dict[str, Any] | None:
         if publisher is None:
             return None
-        if isinstance(publisher, bytes):
-            return {"implementation_identifier": RMW_IMPLEMENTATION, "data": publisher}
-        gid = gids.get(publisher)
-        if gid is None:  # a GUID is fixed when the publisher is made: the first one seen stays
-            gid = gids[publisher] = {"implementation_identifier": RMW_IMPLEMENTATION, "data": publisher_gid(graph, publisher)}
-        return dict(gid)
+        data = publisher if isinstance(publisher, bytes) else publisher_gid(graph, publisher)
+        return {"implementation_identifier": RMW_IMPLEMENTATION, "data": data}
 
     def message_info(origin: core.MessageOrigin) -> dict[str, Any]:
         info = {

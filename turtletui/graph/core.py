@@ -188,6 +188,9 @@ class Publisher:
     sequence: int = 0
     """How many messages it has published: the last one's publication sequence
     number (rmw's MessageInfo counts each publisher's from 1)."""
+    gid: bytes | None = field(default=None, repr=False)
+    """Its GID once something asked for it (turtletui.compat.graph_info): a
+    DDS GUID stays what it was when first seen."""
     kept: deque | None = field(init=False, repr=False)
     """A transient-local publisher's last ``depth`` messages, as (when published,
     message, its sequence number), for the transient-local subscriptions that
