@@ -148,6 +148,13 @@ class Executor:
         host = context._host
         return not (context._ok and host is not None and host.running)
 
+    def _fail(self, error: Exception) -> None:
+        """Keep a callback's error for spin() to raise; the first few only (a
+        timer that raises every time while a callback waits long would keep
+        every traceback and its frames)."""
+        if len(self._failures) < _FAILURES_KEPT:
+            self._failures.append(error)
+
     def _raise_failure(self) -> None:
         """Raise the oldest error of a callback run beside the thread that spins (if any)."""
         if self._failures:
@@ -285,7 +292,7 @@ class MultiThreadedExecutor(Executor):
             except Exception as error:  # noqa: BLE001 - raised by spin() in the thread that spins
                 # As rclpy's pool, which keeps a callback's error in its task for
                 # spin() to raise: this thread is not the program's to end.
-                self._failures.append(error)
+                self._fail(error)
 
     def shutdown(self, timeout_sec: float | None = None, *, wait_for_threads: bool = True) -> bool:
         """Stop spinning; with ``wait_for_threads``, wait (up to ``timeout_sec``)
@@ -351,7 +358,7 @@ def _run_others_while_waiting(host: Any, done: Callable[[], bool], timeout_ns: i
         try:
             return host.spin_until(done, left)
         except Exception as error:  # noqa: BLE001 - raised by spin() in the thread that spins
-            executor._failures.append(error)
+            executor._fail(error)
 
 
 def busy_exclusive_group(group: Any) -> bool:
@@ -359,6 +366,9 @@ def busy_exclusive_group(group: Any) -> bool:
     running a callback of (nothing else of it can run until that returns)."""
     return isinstance(group, MutuallyExclusiveCallbackGroup) and group in running_groups()
 
+
+_FAILURES_KEPT = 16
+"""Errors of callbacks an executor keeps for spin() to raise (it raises the first)."""
 
 _spinning_here = threading.local()
 """The executors the calling thread is inside a spin of, innermost last."""
