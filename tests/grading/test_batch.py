@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import gc
 import json
+import os
 import re
 import signal
 import time
@@ -465,3 +466,68 @@ def test_a_threaded_controller_gets_the_same_run_and_score_with_any_jobs(tmp_pat
     assert threaded.student == "threaded"
     assert {t.check for t in threaded.tests if not t.passed} == {"wall_hits"}  # it ran, and hit the wall
     assert len(recordings[0]) > 150
+
+
+ESCAPER = HONEST.replace(
+    "def main():\n    rclpy.init()",
+    '''def escape():
+    """Leave the sandbox's marks: no subreaper, a session of its own, the
+    token overwritten where /proc shows it; note the pid once out."""
+    import ctypes, os, signal
+    ctypes.CDLL(None).prctl(36, 0, 0, 0, 0)  # PR_SET_CHILD_SUBREAPER off
+    noted, written = os.pipe()
+    if os.fork() == 0:
+        os.setsid()
+        if os.fork() == 0:
+            with open("/proc/self/stat", "rb") as f:
+                fields = f.read().rpartition(b")")[2].split()
+            start, end = int(fields[47]), int(fields[48])
+            block = ctypes.string_at(start, end - start)
+            at = block.find(b"TURTLETUI_SANDBOX=")
+            if at >= 0:
+                at += len(b"TURTLETUI_SANDBOX=")
+                size = block.find(b"\\0", at) - at
+                ctypes.memmove(start + at, b"x" * size, size)
+            os.environ.pop("TURTLETUI_SANDBOX", None)
+            with open("escaped", "a") as f:
+                f.write(f"{os.getpid()}\\n")
+            os.write(written, b"x")
+            signal.pause()
+        os._exit(0)
+    os.read(noted, 1)
+
+
+def main():
+    escape()
+    rclpy.init()''',
+)
+
+
+def _alive(pid: int) -> bool:
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as f:
+            return f.read().rpartition(b")")[2].split()[0] not in (b"Z", b"X")
+    except OSError:
+        return False
+
+
+def test_a_process_that_escaped_its_sandbox_ends_with_its_run(tmp_path: Path, lesson: Path):
+    """A run's process that left its session and its sandbox's marks is
+    inherited by the grading worker (a child subreaper): it is killed before
+    the worker's next run, so that it cannot stop another student's."""
+    klass = make_class(tmp_path / "class", {"ann": ESCAPER, "ben": HONEST})
+    report = grade_submissions(plan_of(lesson), find_submissions([klass]), jobs=2)
+    escaped = [int(pid) for pid in (klass / "ann" / "escaped").read_text().split()]
+    try:
+        assert len(escaped) == 2, "each of ann's runs escaped"
+        assert [s.score for s in report.submissions] == [MAX_SCORE, MAX_SCORE]
+        deadline = time.monotonic() + 30  # a busy machine takes a while; the kill is at once
+        while any(map(_alive, escaped)) and time.monotonic() < deadline:
+            time.sleep(0.05)
+        assert not any(map(_alive, escaped))
+    finally:
+        for pid in escaped:
+            try:
+                os.kill(pid, signal.SIGKILL)
+            except OSError:
+                pass

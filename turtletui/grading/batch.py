@@ -255,6 +255,9 @@ def run_task(
         os._exit(1)
     finally:
         _in_task = False
+        servers = forkserver.servers()
+        if servers is not None:
+            servers.end_of_run()
     return student, outcome, time.perf_counter() - started
 
 

@@ -39,7 +39,7 @@ from contextlib import contextmanager
 from functools import partial
 from typing import Any
 
-from turtletui.runtime.processes import TOKEN_VAR, kill_tree, reap_zombie_children
+from turtletui.runtime.processes import TOKEN_VAR, kill_children, kill_tree, reap_zombie_children
 
 _SERVER = (
     "import sys; sys.path.insert(0, {root!r}); "
@@ -477,7 +477,9 @@ class ForkServers:
     """The fork server of the submission a grading worker runs now: a new
     controller file (or user, or distro) gets a new server and the old one is stopped."""
 
-    def __init__(self) -> None:
+    def __init__(self, *, sole_parent: bool = False) -> None:
+        self._sole_parent = sole_parent
+        """This process starts no children but its runs' (a grading worker)."""
         self._key: tuple[Any, ...] | None = None
         self._server: ForkServer | None = None
         self._given_up: set[tuple[Any, ...]] = set()
@@ -550,6 +552,15 @@ class ForkServers:
             self._template.close()
             self._template = None
 
+    def end_of_run(self) -> None:
+        """Between two runs of a process that starts no children but its runs'
+        (a grading worker): kill every child but the template and the server.
+        A run's processes all end with it; one that left its session and its
+        sandbox's marks (its subreaper off, its token overwritten) was
+        inherited here, and could otherwise stop the next submission's runs."""
+        if self._sole_parent:
+            kill_children({server.proc.pid for server in (self._template, self._server) if server is not None})
+
     def _give_up(self) -> None:
         assert self._key is not None
         self._given_up.add(self._key)
@@ -581,7 +592,7 @@ def enable() -> None:
     server ends when this process does (end of file on its socket)."""
     global _servers
     if _servers is None and _available():
-        _servers = ForkServers()
+        _servers = ForkServers(sole_parent=True)
 
 
 @contextmanager

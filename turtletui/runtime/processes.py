@@ -108,6 +108,22 @@ def kill_tree(pid: int, token: str, *, reaped: bool = False, spare: int | None =
             _signal(child, signal.SIGKILL)
 
 
+def kill_children(keep: set[int]) -> None:
+    """Kill this process's children but ``keep``, and theirs that it inherits
+    meanwhile (a child subreaper inherits the orphans of what it started),
+    each frozen first so that none can fork away."""
+    me = os.getpid()
+    for _ in range(8):
+        found = {pid for pid, state, ppid in _processes() if ppid == me and pid not in keep and state not in (b"Z", b"X")}
+        if not found:
+            break
+        for pid in found:
+            _signal(pid, signal.SIGSTOP)
+        for pid in found:
+            _signal(pid, signal.SIGKILL)
+    reap_zombie_children()
+
+
 def reap_zombie_children() -> None:
     """Reap this process's children that have died and that nobody waits for:
     a child subreaper inherits the orphans of what it started and kills them."""
