@@ -475,7 +475,8 @@ def _is_my_child(pid: int) -> bool:
 
 class ForkServers:
     """The fork server of the submission a grading worker runs now: a new
-    controller file (or user, or distro) gets a new server and the old one is stopped."""
+    controller file (or user, or distro) gets a new server, forked from the
+    worker's template, and the old one is stopped."""
 
     def __init__(self, *, sole_parent: bool = False) -> None:
         self._sole_parent = sole_parent
