@@ -236,15 +236,10 @@ def _template_of(parent: int, *tokens: str) -> int:
     return template
 
 
-def test_each_submission_gets_a_server_of_its_own_forked_from_one_template(
-    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
-) -> None:
-    """A submission's server is forked (not started afresh) from a template
-    that never runs a controller: its token, process and session are new."""
-    names = ("ada", "bob", "cy")
-    paths = [controller(tmp_path / name) for name in names]
-    templates = []
-    started = []
+@pytest.fixture
+def server_starts(monkeypatch: pytest.MonkeyPatch) -> list[bool]:
+    """Each server started afresh from now on, as whether it was a template."""
+    started: list[bool] = []
     real_init = forkserver.ForkServer.__init__
 
     def counting_init(self, *args, template: bool = False, **kwargs) -> None:
@@ -252,6 +247,17 @@ def test_each_submission_gets_a_server_of_its_own_forked_from_one_template(
         real_init(self, *args, template=template, **kwargs)
 
     monkeypatch.setattr(forkserver.ForkServer, "__init__", counting_init)
+    return started
+
+
+def test_each_submission_gets_a_server_of_its_own_forked_from_one_template(
+    tmp_path: Path, server_starts: list[bool]
+) -> None:
+    """A submission's server is forked (not started afresh) from a template
+    that never runs a controller: its token, process and session are new."""
+    names = ("ada", "bob", "cy")
+    paths = [controller(tmp_path / name) for name in names]
+    templates = []
     with forkserver.serving():
         for path in paths:
             run([path], duration=0.5)
@@ -259,7 +265,7 @@ def test_each_submission_gets_a_server_of_its_own_forked_from_one_template(
     tokens = [noted(tmp_path / name, "token")[0] for name in names]
     assert len(set(tokens)) == 3
     assert len(set(templates)) == 1, "one template served every submission"
-    assert started == [True], "no server was started afresh"
+    assert server_starts == [True], "no server was started afresh"
     for name in names:
         assert noted(tmp_path / name, "parent")[0] == str(os.getpid())
         assert noted(tmp_path / name, "group") == ["True"]
@@ -300,24 +306,16 @@ def test_a_controller_that_stops_or_kills_the_template_slows_only_the_next_serve
 
 
 def test_where_templates_cannot_fork_servers_one_is_tried_once(
-    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, server_starts: list[bool]
 ) -> None:
     """A new template that forks no server (a system where the token cannot be
     set so) is not started again for every submission: servers start afresh."""
-    started = []
-    real_init = forkserver.ForkServer.__init__
-
-    def counting_init(self, *args, template: bool = False, **kwargs) -> None:
-        started.append(template)
-        real_init(self, *args, template=template, **kwargs)
-
-    monkeypatch.setattr(forkserver.ForkServer, "__init__", counting_init)
     monkeypatch.setattr(forkserver.ForkServer, "fork_server", lambda self, timeout: None)
     paths = [controller(tmp_path / name) for name in ("ada", "bob", "cy")]
     with forkserver.serving():
         results = [run([path], duration=0.5) for path in paths]
     assert [result.crashes for result in results] == [[], [], []]
-    assert started == [True, False, False, False], "one template, then a server started afresh per submission"
+    assert server_starts == [True, False, False, False], "one template, then a server started afresh per submission"
 
 
 def test_a_stopped_template_is_not_asked() -> None:

@@ -96,17 +96,29 @@ def serve(sock_fd: int, parent: int, distro: str | None = None, template: bool =
 
 
 def _serve_runs(sock: socket.socket, main: Callable[[dict[str, Any]], None]) -> None:
+    """A server's loop: each request (its config, and the run's three or four
+    descriptors) forks a run child."""
+
+    def run_child(request: Any, fds: list[int]) -> int:
+        return _fork(request, fds, sock, main) if len(fds) in (3, 4) else 0
+
+    _answer(sock, 1 << 20, 4, run_child)
+
+
+def _answer(sock: socket.socket, size: int, max_fds: int, fork: Callable[[Any, list[int]], int]) -> None:
+    """Answer each request on ``sock`` (JSON and descriptors, closed once
+    used) with the pid ``fork(request, fds)`` gives, 0 for a bad request,
+    until the caller goes away."""
     while True:
         try:
-            data, fds, _, _ = socket.recv_fds(sock, 1 << 20, 4)
+            data, fds, _, _ = socket.recv_fds(sock, size, max_fds)
         except OSError:
             return
         if not data:
             return  # the caller went away
         try:
-            request = json.loads(data)
-            pid = _fork(request, fds, sock, main) if len(fds) in (3, 4) else 0
-        except (OSError, ValueError):
+            pid = fork(json.loads(data), fds)
+        except (OSError, ValueError, KeyError, TypeError):
             pid = 0
         finally:
             for fd in fds:
@@ -153,26 +165,14 @@ def _warm(distro: str | None) -> None:
 def _make_servers(sock: socket.socket, parent: int, main: Callable[[dict[str, Any]], None]) -> None:
     """The template's loop: each request (a JSON token and the new server's
     socket) forks a server that serves runs on that socket."""
-    while True:
-        try:
-            data, fds, _, _ = socket.recv_fds(sock, 4096, 1)
-        except OSError:
-            return
-        if not data:
-            return  # the caller went away
-        try:
-            token = json.loads(data)["token"]
-            valid = len(fds) == 1 and isinstance(token, str)
-            pid = _handed_over(partial(_become_server, token, fds[0], sock, parent, main)) if valid else 0
-        except (OSError, ValueError, KeyError, TypeError):
-            pid = 0
-        finally:
-            for fd in fds:
-                os.close(fd)
-        try:
-            sock.send(str(pid).encode())
-        except OSError:
-            return
+
+    def server(request: Any, fds: list[int]) -> int:
+        token = request["token"]
+        if len(fds) != 1 or not isinstance(token, str):
+            return 0
+        return _handed_over(partial(_become_server, token, fds[0], sock, parent, main))
+
+    _answer(sock, 4096, 1, server)
 
 
 def _become_server(
