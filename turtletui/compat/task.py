@@ -3,9 +3,14 @@
 from __future__ import annotations
 
 import inspect
+import threading
 import warnings
 from collections.abc import Callable
 from typing import Any
+
+_awaiting = threading.local()
+"""The Future a coroutine step stopped at, per thread: rclpy's ``__await__`` yields None,
+so the Task learns what its coroutine waits for here rather than from the yielded value."""
 
 
 class Future:
@@ -28,9 +33,11 @@ class Future:
         self._executor = executor
 
     def __await__(self):
-        # Yields itself: the Task awaiting it resumes when it is done.
+        # Yields None, as rclpy's does (a coroutine driven by hand sees it); the
+        # Task awaiting it finds it in _awaiting and resumes when it is done.
         while self._state == "PENDING":
-            yield self
+            _awaiting.future = self
+            yield
         return self.result()
 
     def cancel(self) -> None:
@@ -142,14 +149,17 @@ class Task(Future):
                 self.set_result(result)
                 return
             self._handler = handler = result
+        _awaiting.future = None
         try:
-            awaited = handler.send(None)
+            handler.send(None)
         except StopIteration as stop:
             self.set_result(stop.value)
             return
         except Exception as exc:
             self.set_exception(exc)
             raise
+        finally:
+            awaited, _awaiting.future = _awaiting.future, None
         if isinstance(awaited, Future) and self._resume is not None:
             awaited._add_done_hook(lambda _future: self._resume())
         elif self._resume is not None:
