@@ -456,9 +456,10 @@ class Node(Destroyable):
         ros_args = self._context.ros_args
         local = parse_ros_args(["--ros-args", *cli_args]) if cli_args else None
         remaps: dict[str, str] = {}  # rcl tries the node's own rules first, then the global ones
-        for rules in (local if local is not None else None, ros_args if use_global_arguments else None):
-            for source, target in (rules.remaps_for(node_name) if rules is not None else {}).items():
-                remaps.setdefault(source, target)
+        for rules in (local, ros_args if use_global_arguments else None):
+            if rules is not None:
+                for source, target in rules.remaps_for(node_name).items():
+                    remaps.setdefault(source, target)
         node_name = remaps.pop("__node", remaps.pop("__name", node_name))
         namespace = remaps.pop("__ns", namespace or "")
         if namespace and not namespace.startswith("/"):
