@@ -73,9 +73,9 @@ from turtletui.compat.task import Future
 from turtletui.compat.time import Clock, ClockType, Duration, clock_for
 from turtletui.compat.time_source import TimeSource
 from turtletui.compat.timer import (
-    ZERO_PERIOD_NS,
     Rate,
     Timer,
+    scheduled_period,
     timer_info_parameter,
     with_timer_info,
 )
@@ -759,7 +759,7 @@ class Node(Destroyable):
             callback = with_timer_info(callback, info_parameter, made)
         record = self._graph.add_timer(
             self._record,
-            period_ns if period_ns > 0 else ZERO_PERIOD_NS,  # ready at every spin in rcl
+            scheduled_period(period_ns),  # a period of 0 is ready at every spin in rcl
             dispatcher(host, group, callback),  # a callback that is not callable fails when called, as in rclpy
             # rclpy lets a destroyed node make a timer; no executor calls it
             autostart=autostart and not self._destroyed,

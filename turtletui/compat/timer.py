@@ -48,6 +48,11 @@ ZERO_PERIOD_NS = 1_000_000
 """How often a timer of period 0 fires here: rcl has it ready at every spin,
 which under simulated time would be every nanosecond (a run that never
 ends); once a simulated millisecond is as often as a busy executor spins."""
+
+
+def scheduled_period(period_ns: int) -> int:
+    """The period the graph fires a timer asked for ``period_ns`` with (0: ZERO_PERIOD_NS)."""
+    return period_ns if period_ns > 0 else ZERO_PERIOD_NS
 _TIMER_THRESHOLD = JumpThreshold(min_forward=Duration(nanoseconds=1), min_backward=Duration(nanoseconds=-1))
 """What rcl_timer_init registers on a ROS clock: every jump, and ROS time switched on or off."""
 
@@ -136,7 +141,7 @@ class Timer(Destroyable):
         self._require_alive()
         period_ns = int(value)
         self._period_ns = period_ns
-        self._record.period_ns = period_ns if period_ns > 0 else ZERO_PERIOD_NS
+        self._record.period_ns = scheduled_period(period_ns)
 
     def cancel(self) -> None:
         self._require_alive()
