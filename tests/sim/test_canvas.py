@@ -137,15 +137,23 @@ def test_a_colour_read_between_flushes_is_the_pixel_the_flushed_image_has():
         for segment in segments:
             drawn.draw_segment(*segment)
         pixels, painted_mask = drawn.pixels, drawn.painted
-        ends = [segment[i : i + 2] for segment in segments for i in (0, 2)]
-        for col0, row0 in (to_pixel(x, y) for x, y in ends):
-            for col, row in {(col0, row0), (0, row0), (col0, _LAST), (col0 + 2, row0 - 1), (col0 - 3, row0 + 3)}:
-                col, row = min(max(col, 0), _LAST), min(max(row, 0), _LAST)
+        read = set()
+        for x0, y0, x1, y1, _, width in segments:
+            for col0, row0 in (to_pixel(x0, y0), to_pixel(x1, y1)):
+                read |= {(col0, row0), (0, row0), (col0, _LAST), (col0 + 2, row0 - 1), (col0 - 3, row0 + 3)}
+                if math.hypot(x1 - x0, y1 - y0) < 0.5:
+                    # a turtle's step: all around its ends, as far as its pen can paint
+                    reach = width + 3
+                    read |= {(col0 + dc, row0 + dr) for dc in range(-reach, reach + 1, 2) for dr in range(-reach, reach + 1, 2)}
+        queued, unflushed = None, -1
+        for col, row in sorted({(min(max(col, 0), _LAST), min(max(row, 0), _LAST)) for col, row in read}):
+            if queued is None or queued.version != unflushed:  # a read flushed them: queue them again
                 queued = PenCanvas()
                 for segment in segments:
                     queued.draw_segment(*segment)
-                expected = tuple(int(v) for v in pixels[row, col]) if painted_mask[row, col] else UNPAINTED
-                assert queued.color_at(col / METER_PX, (_LAST - row) / METER_PX) == expected, (segments, col, row)
+                unflushed = queued.version
+            expected = tuple(int(v) for v in pixels[row, col]) if painted_mask[row, col] else UNPAINTED
+            assert queued.color_at(col / METER_PX, (_LAST - row) / METER_PX) == expected, (segments, col, row)
 
 
 def test_a_sensor_read_every_tick_does_not_redraw_the_image_every_tick():

@@ -37,7 +37,7 @@ _FLUSH_BYTES = _FLUSH_AT * _SEGMENT.size
 """Queued segments (3 MB) that are rasterised even if nobody reads the image."""
 _RASTER_CHUNK = 512
 """Segments rasterised at once."""
-_LAZY_READS_AT = 32
+_LAZY_READS_AT = 64
 """Queued segments up to which a colour read tests them one by one instead of flushing."""
 _CHANGES_KEPT = 256
 """Recent changes remembered for changed_since (older asks get the whole image)."""
@@ -75,6 +75,10 @@ class PenCanvas:
         self._painted = np.zeros((PIXELS, PIXELS), dtype=bool)
         self._pending = bytearray()
         """Queued segments (_SEGMENT each): x0, y0, x1, y1 (m), packed colour, width."""
+        self._reach: list[tuple[float, ...]] = []
+        """For the first queued segments, the pixels (c0, c1, r0, r1) beyond which
+        each paints nothing, and the same for it and all before it together:
+        worked out once each, when the colour sensor reads."""
         self._pen: tuple[int, int, int] | None = None
         self._pen_packed = 0
         """The last pen colour drawn with, and it packed (a turtle keeps its colour)."""
@@ -146,6 +150,7 @@ class PenCanvas:
         if background is not None:
             self.background = background
         del self._pending[:]
+        del self._reach[:]
         self._painted[:, :] = False
         self._packed[:, :] = _pack(self.background)
         self._changed_everything()
@@ -203,22 +208,25 @@ class PenCanvas:
         if end > _LAZY_READS_AT * _SEGMENT.size:
             self._flush()
             return None
-        # The pixel's centre in metres, and whether it is on an edge, where
-        # segments beyond the arena land too (clipped).
-        x = col / METER_PX
-        y = (_LAST_PX - row) / METER_PX
+        # Segments beyond the arena land on its edge pixels too (clipped).
         x_edge = col == 0 or col == _LAST_PX
         y_edge = row == 0 or row == _LAST_PX
+        reach = self._reach
         size = _SEGMENT.size
-        for i in range(end - size, -1, -size):
-            x0, y0, x1, y1, packed, width = _unpack_segment(pending, i)
-            # A quick no: a pen reaches less than its width (cap, half-width
-            # over the cosine) plus a pixel of rounding past the segment's ends.
-            reach = ((width if width > 1.0 else 1.0) + 2.0) / METER_PX
-            if not x_edge and (x0 < x - reach > x1 or x0 > x + reach < x1):
+        for at in range(len(reach) * size, end, size):
+            c0, c1, r0, r1 = _reach(*_unpack_segment(pending, at))
+            if reach:
+                _, _, _, _, u0, u1, v0, v1 = reach[-1]
+                reach.append((c0, c1, r0, r1, min(u0, c0), max(u1, c1), min(v0, r0), max(v1, r1)))
+            else:
+                reach.append((c0, c1, r0, r1, c0, c1, r0, r1))
+        for i in range(len(reach) - 1, -1, -1):
+            c0, c1, r0, r1, u0, u1, v0, v1 = reach[i]
+            if not (x_edge or u0 <= col <= u1) or not (y_edge or v0 <= row <= v1):
+                break  # beyond every segment up to this one
+            if not (x_edge or c0 <= col <= c1) or not (y_edge or r0 <= row <= r1):
                 continue
-            if not y_edge and (y0 < y - reach > y1 or y0 > y + reach < y1):
-                continue
+            x0, y0, x1, y1, packed, width = _unpack_segment(pending, i * size)
             covered = _covers(x0, y0, x1, y1, width, col, row)
             if covered is None or (covered and not 0 <= packed < 1 << 24):
                 self._flush()  # beyond the exact test: the raster decides
@@ -232,6 +240,7 @@ class PenCanvas:
             return
         queued = np.frombuffer(self._pending, dtype=np.float64).reshape(-1, 6).copy()
         del self._pending[:]
+        del self._reach[:]
         self.version += 1
         # In chunks: their scratch arrays stay small enough to be reused rather
         # than mapped afresh (page faults cost more than the arithmetic).
@@ -356,6 +365,31 @@ def _cut(
         cut_dy = np.where(far, (t1 - t0) * dy, dy)
     keep &= np.isfinite(cut_x0) & np.isfinite(cut_y0) & np.isfinite(cut_dx) & np.isfinite(cut_dy)
     return keep, cut_x0, cut_y0, cut_dx, cut_dy
+
+
+_EVERYWHERE = (-math.inf, math.inf, -math.inf, math.inf)
+
+
+def _reach(x0: float, y0: float, x1: float, y1: float, packed: float, width: float) -> tuple[float, float, float, float]:
+    """The pixel columns and rows (c0, c1, r0, r1) outside which ``_flush``
+    paints nothing for this one segment (half a pixel generous, for rounding);
+    everywhere when that is not plain (non-finite values). Along a line its
+    square caps reach half the width; across it, the raster paints half the
+    width over the cosine (``half`` in ``_covers``)."""
+    top = _LAST_PX / METER_PX
+    ax, bx = x0 * METER_PX, x1 * METER_PX
+    ay, by = (top - y0) * METER_PX, (top - y1) * METER_PX
+    width = max(width, 1.0)
+    if not (math.isfinite(ax + bx + ay + by) and math.isfinite(width)):
+        return _EVERYWHERE
+    dx, dy = abs(bx - ax), abs(by - ay)
+    length = math.hypot(dx, dy)
+    ux, uy = (dx / length, dy / length) if length > 1e-9 else (1.0, 0.0)
+    cap = width / 2.0
+    across = cap / max(ux, uy)
+    reach_x = cap * ux + (across if ux <= uy + 1e-9 else 0.0) + 0.5
+    reach_y = cap * uy + (across if uy <= ux + 1e-9 else 0.0) + 0.5
+    return min(ax, bx) - reach_x, max(ax, bx) + reach_x, min(ay, by) - reach_y, max(ay, by) + reach_y
 
 
 def _covers(x0: float, y0: float, x1: float, y1: float, width: float, col: int, row: int) -> bool | None:
