@@ -498,3 +498,47 @@ def test_without_a_fork_server_only_a_run_long_enough_to_repay_the_copy_takes_th
     long = run([path], duration=FAST_PATH_MIN_NS / 1e9)
     assert long.ok, long.crashes
     assert len(fast_runs) == 1
+
+
+REPEATS = """
+import rclpy
+from rclpy.node import Node
+from std_msgs.msg import Float64MultiArray, MultiArrayDimension
+from turtlesim.msg import Pose
+
+rclpy.init()
+node = Node("repeats")
+publisher = node.create_publisher(Float64MultiArray, "numbers", 10)
+
+def send(pose):
+    msg = Float64MultiArray(data=[1.0, 2.0])
+    msg.layout.dim.append(MultiArrayDimension(label="x", size=2, stride=2))
+    publisher.publish(msg)
+
+node.create_subscription(Pose, "/turtle1/pose", send, 10)
+rclpy.spin(node)
+"""
+
+
+def test_a_message_changed_by_whoever_received_it_leaves_the_next_identical_one_alone(tmp_path, fast_runs):
+    # The same Report, tick after tick, is decoded once: each message built
+    # from it must still be a message of its own.
+    from turtletui.runtime.replica import ReplicableSetup
+
+    path = write(tmp_path, REPEATS)
+    for limits in (FAST, Limits(lockstep=True)):
+        seen: list[tuple] = []
+
+        def spoil(kind, payload, seen=seen):  # noqa: ANN001, ANN202
+            if kind == "topic" and payload[0].name == "/numbers":
+                msg = payload[1]
+                seen.append((list(msg.data), [(d.label, d.size) for d in msg.layout.dim]))
+                msg.data[0] = 99.0
+                msg.layout.dim[0].label = "spoiled"
+                msg.layout.dim.append(msg.layout.dim[0])
+
+        result = run([path], duration=1.0, setup=ReplicableSetup((), lambda sim: sim.graph.taps.append(spoil)), limits=limits)
+        assert result.ok, result.crashes
+        assert len(seen) >= 40
+        assert set(map(repr, seen)) == {repr(([1.0, 2.0], [("x", 2)]))}
+    assert len(fast_runs) == 1

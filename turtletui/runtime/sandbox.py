@@ -77,6 +77,9 @@ class Limits:
 
 _CRASH_KINDS = frozenset({"exception", "exit", "memory", "load", "cpu", "timeout", "killed"})
 """Kinds a child may report about itself (anything else is reported as an exception)."""
+_DECODED_KEPT = 64
+_DECODED_BYTES = 2048
+"""Reports up to this size are kept decoded, this many at most (then forgotten all at once)."""
 
 
 class SandboxHost:
@@ -108,6 +111,9 @@ class SandboxHost:
         self._wall_start = 0.0
         self._queued_at_start = 0.0
         self._recheck = 0.0
+        self._decoded: dict[bytes, protocol.Report] = {}
+        """Reports decoded, by their bytes: a controller often says the same
+        thing tick after tick (the same command, the same log line)."""
 
     # -- life cycle -----------------------------------------------------------
     @classmethod
@@ -344,8 +350,16 @@ class SandboxHost:
 
     def _decode(self, payload: bytes) -> protocol.Report:
         """The Report in ``payload``; raises _Stop (having said why) if it is none."""
+        report = self._decoded.get(payload)
+        if report is not None:
+            return report  # applying a Report builds new messages from it: it is never changed
         try:
-            return protocol.decode_report(payload)
+            report = protocol.decode_report(payload)
+            if len(payload) <= _DECODED_BYTES:
+                if len(self._decoded) >= _DECODED_KEPT:
+                    self._decoded.clear()
+                self._decoded[payload] = report
+            return report
         except protocol.ProtocolError as err:
             self._fail("exception", f"{_REFUSED}: {err}")
             raise _Stop from None
