@@ -13,6 +13,7 @@ import signal
 import time
 from pathlib import Path
 
+import pytest
 from support.controllers import spin_in_a_thread
 from support.grading import (
     CRASH_WITH_POSE,
@@ -511,16 +512,27 @@ def _alive(pid: int) -> bool:
         return False
 
 
-def test_a_process_that_escaped_its_sandbox_ends_with_its_run(tmp_path: Path, lesson: Path):
+@pytest.mark.parametrize("where", ["worker", "command"])
+def test_a_process_that_escaped_its_sandbox_ends_with_its_run(tmp_path: Path, lesson: Path, where: str):
     """A run's process that left its session and its sandbox's marks is
-    inherited by the grading worker (a child subreaper): it is killed before
-    the worker's next run, so that it cannot stop another student's."""
+    inherited by the grading process (a child subreaper): it is killed before
+    that process's next run, so that it cannot stop another student's. So
+    in a grading worker (``--jobs 2``) and in ``turtletui grade --jobs 1``,
+    which grades in the command's own process."""
     klass = make_class(tmp_path / "class", {"ann": ESCAPER, "ben": HONEST})
-    report = grade_submissions(plan_of(lesson), find_submissions([klass]), jobs=2)
+    if where == "worker":
+        report = grade_submissions(plan_of(lesson), find_submissions([klass]), jobs=2)
+        scores = [s.score for s in report.submissions]
+    else:
+        args = (klass, "--lesson", lesson, "--results", tmp_path / "res", "--same-user", "-j", "1", "--format", "json")
+        proc = grade_subprocess(*args)
+        out, err = proc.communicate(timeout=300)
+        assert proc.returncode == 0, err
+        scores = [s["score"] for s in json.loads(out)["submissions"]]
     escaped = [int(pid) for pid in (klass / "ann" / "escaped").read_text().split()]
     try:
         assert len(escaped) == 2, "each of ann's runs escaped"
-        assert [s.score for s in report.submissions] == [MAX_SCORE, MAX_SCORE]
+        assert scores == [MAX_SCORE, MAX_SCORE]
         deadline = time.monotonic() + 30  # a busy machine takes a while; the kill is at once
         while any(map(_alive, escaped)) and time.monotonic() < deadline:
             time.sleep(0.05)

@@ -139,4 +139,5 @@ def main() -> None:
     _interruptible()
     argv, ros_args = split_ros_args(sys.argv[1:])
     run_cmd.ROS_ARGS[:] = sim_cmd.ROS_ARGS[:] = ros_args
+    grade_cmd.OWN_PROCESS = True
     app(args=run_cmd.with_foxglove_default(argv), prog_name="turtletui")

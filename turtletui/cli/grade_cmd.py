@@ -19,6 +19,10 @@ from turtletui.cli.plugin_manager import plugins_of
 from turtletui.errors import UsageError
 
 BACKENDS = ("local", "ray")
+OWN_PROCESS = False
+"""The command runs in a process of its own (the console script sets it; a
+test's CliRunner does not): it starts no children but its runs', so after
+each run graded in it every other child is killed (see grade_submissions)."""
 EXIT_BELOW = 1
 EXIT_INTERRUPTED = 130
 
@@ -318,6 +322,7 @@ def _grade(
                 recording_format=recording_format,
                 time_limit=time_limit,
                 on_progress=None if quiet else slow,
+                sole_parent=OWN_PROCESS and backend is None,
                 backend=backend,
             )
     finally:

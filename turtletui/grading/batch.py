@@ -281,6 +281,7 @@ def grade_submissions(
     on_progress: Callable[[str, str], None] | None = None,
     progress_every: float = PROGRESS_EVERY,
     backend: RunBackend | None = None,
+    sole_parent: bool = False,
 ) -> GradeReport:
     """Grade every submission (reusing stored results unless ``force``).
 
@@ -298,6 +299,11 @@ def grade_submissions(
     seconds about a submission still being graded. ``backend`` runs the runs
     instead of ``jobs`` local workers. KeyboardInterrupt propagates after the
     workers are stopped; every result finished before it is already saved.
+    ``sole_parent``: this process starts no children of its own meanwhile (the
+    command line), so runs graded here (``jobs`` 1) are followed by killing
+    every child of it but the fork servers, as a worker does after each run:
+    nothing a run left behind outlives it. A library caller's own children
+    (the app's live run) are left alone, and with them such leftovers.
     """
     results: dict[str, SubmissionResult] = {}
     pending: dict[str, _Pending] = {}
@@ -372,7 +378,7 @@ def grade_submissions(
                 submitted = {student: item.submission for student, item in pending.items()}
                 backend.run(plan, tasks, submitted, limits, start, done, clock.tick)
             elif jobs <= 1 or len(tasks) <= 1:
-                with forkserver.serving(), clock.ticking():
+                with forkserver.serving(sole_parent=sole_parent), clock.ticking():
                     for task in tasks:
                         started = start(task)
                         if started is not None:

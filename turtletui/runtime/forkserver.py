@@ -597,14 +597,15 @@ def enable() -> None:
 
 
 @contextmanager
-def serving() -> Iterator[None]:
+def serving(*, sole_parent: bool = False) -> Iterator[None]:
     """Fork servers for the runs inside the block (one at a time), all stopped
-    at its end; nothing changes if they are in use already."""
+    at its end; nothing changes if they are in use already. ``sole_parent``
+    as for :class:`ForkServers`: this process starts no other children."""
     global _servers
     if _servers is not None or not _available():
         yield
         return
-    _servers = ForkServers()
+    _servers = ForkServers(sole_parent=sole_parent)
     try:
         yield
     finally:
