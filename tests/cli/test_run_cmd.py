@@ -248,6 +248,23 @@ def test_record_path_that_is_a_folder_is_refused_and_leaves_nothing(tmp_path):
     assert list((tmp_path / "records").iterdir()) == []
 
 
+@pytest.mark.parametrize("name", ["run.txt", "run"])
+def test_a_record_name_that_says_no_format_is_refused_with_the_names_that_do(tmp_path, name):
+    proc = turtletui_cli("run", "--headless", "--duration", "1", "--record", name, cwd=tmp_path)
+    line = assert_one_line_error(proc)
+    assert f"{name}: cannot tell which kind of recording" in line
+    assert "run.jsonl" in line and "run.mcap" in line and "run/" in line
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_record_name_in_capitals_is_the_format_it_names(tmp_path):
+    proc = turtletui_cli("run", "--headless", "--duration", "1", "-q", "--record", "RUN.MCAP", cwd=tmp_path)
+    assert proc.returncode == 0, proc.stderr
+    assert (tmp_path / "RUN.MCAP").read_bytes()[:8] == b"\x89MCAP0\r\n"
+    replayed = turtletui_cli("replay", "RUN.MCAP", "--headless", "-q", cwd=tmp_path)
+    assert replayed.returncode == 0, replayed.stderr
+
+
 # -- the command line itself -----------------------------------------------------
 
 

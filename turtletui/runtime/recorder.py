@@ -146,6 +146,10 @@ def _event(t: float, kind: str, payload: Any) -> dict[str, Any] | None:
     return None
 
 
+RECORD_SUFFIXES = (".jsonl", ".ndjson", ".json", ".mcap")
+"""File names ``--record`` takes (besides ``NAME/``, a rosbag2 folder)."""
+
+
 def open_recorder(
     sim: Any,
     path: str | os.PathLike[str],
@@ -159,7 +163,7 @@ def open_recorder(
     else JSON Lines. Both kinds ``close(keep)``."""
     from turtletui.recording.mcap_file import is_bag_folder
 
-    if os.fspath(path).endswith(".mcap") or is_bag_folder(path):
+    if Path(path).suffix.lower() == ".mcap" or is_bag_folder(path):
         from turtletui.recording.recorder import McapRecorder
 
         return McapRecorder(sim, path, earlier_logs, header, buffered=buffered)
@@ -172,6 +176,11 @@ def check_record_path(path: str | os.PathLike[str]) -> None:
     from turtletui.recording.mcap_file import is_bag_folder
 
     target = Path(path)
+    if not is_bag_folder(path) and target.suffix.lower() not in RECORD_SUFFIXES and not target.is_dir():
+        raise RecordingWriteError(
+            f"{path}: cannot tell which kind of recording to write from its name: name it {target.stem}.jsonl"
+            f" (JSON Lines), {target.stem}.mcap (MCAP) or {target.stem}/ (a rosbag2 folder)"
+        )
     if is_bag_folder(path):
         if target.is_dir() and any(target.iterdir()):
             raise RecordingWriteError(f"{path}: cannot write the bag (the folder exists and is not empty)")

@@ -65,7 +65,7 @@ def read_recording(path: str | Path) -> Recording:
     """Parse a recording; RecordingError names the line (or the MCAP file) of
     anything malformed."""
     path = Path(path)
-    if path.suffix == ".mcap" or path.is_dir():
+    if path.suffix.lower() == ".mcap" or path.is_dir():
         return _read_mcap(path)
     try:
         lines = path.read_text(encoding="utf-8").splitlines()
