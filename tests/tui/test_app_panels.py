@@ -335,3 +335,34 @@ def test_the_topics_table_lists_every_type_a_name_is_used_with() -> None:
     assert rows[0][1] == "geometry_msgs/msg/Pose, turtlesim_msgs/msg/Pose"
     _, rows = topic_columns((pose,), 45)
     assert rows[0][1] == "Pose, Pose"
+
+
+@pytest.mark.parametrize(
+    ("args", "panel"),
+    [
+        (["--lesson", "part5-pose-subscriber", "part5_pose_subscriber"], "lesson"),  # the lesson asked for
+        (["--lesson", "part6-closed-loop"], "lesson"),
+        (["part5_pose_subscriber"], "log"),
+        ([], "log"),  # the demo: its node's log streaming
+    ],
+)
+def test_run_opens_on_the_lesson_it_was_asked_for_else_on_the_log(monkeypatch, args, panel) -> None:
+    from typer.testing import CliRunner
+
+    from turtletui.cli import app as cli
+
+    shown = []
+    monkeypatch.setattr(TurtleApp, "run", lambda self: shown.append((self._panel, self._lesson)))
+    result = CliRunner().invoke(cli, ["run", *args], env={"TEXTUAL_DRIVER": "headless"})
+    assert result.exit_code == 0, result.output
+    assert shown[0][0] == panel
+    assert shown[0][1] is not None or panel == "log"
+
+
+@pilot_test
+async def test_the_app_shows_first_the_panel_it_is_given() -> None:
+    app = TurtleApp(lesson=find_lesson("part5-pose-subscriber").path, panel="lesson")
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.pause()
+        assert app.query_one("#side").current == "lesson"
+        assert "pose" in app.query_one("#lesson").source.lower()

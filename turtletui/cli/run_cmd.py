@@ -199,6 +199,8 @@ def _run_app(
     _check_outputs(record, foxglove)
     from turtletui.runtime.resolve import resolve_controllers
 
+    # A lesson asked for opens beside the arena; the demo's own (no files) shows its log streaming.
+    panel = "lesson" if lesson is not None else "log"
     if not controllers:
         controllers = ["part6_wall_avoider"]
         lesson = lesson or "part6-closed-loop"
@@ -225,6 +227,7 @@ def _run_app(
         foxglove=foxglove,
         distro=distro,
         ros=connection,
+        panel=panel,
     ).run()
 
 

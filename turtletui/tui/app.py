@@ -153,8 +153,11 @@ class TurtleApp(App):
         turtlesim: TurtlesimArgs | None = None,
         distro: str | None = None,
         ros: RosConnection | None = None,
+        panel: str = "log",
     ) -> None:
+        """``panel``: the side panel shown first ("log", "topics", "graph", "lesson")."""
         super().__init__()
+        self._panel = panel
         self._distro = distro
         """The ROS 2 distro nodes run as (--distro); None: the default."""
         self._record = record
@@ -207,7 +210,7 @@ class TurtleApp(App):
                 id="arena",
             )
             yield Splitter(ascii=self._ascii, id="splitter")
-            with ContentSwitcher(initial="log", id="side"):
+            with ContentSwitcher(initial=self._panel, id="side"):
                 yield LogPanel(id="log")
                 yield TopicsPanel(id="topics")
                 yield GraphPanel(id="graph")
