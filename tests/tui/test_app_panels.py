@@ -338,25 +338,39 @@ def test_the_topics_table_lists_every_type_a_name_is_used_with() -> None:
 
 
 @pytest.mark.parametrize(
-    ("args", "panel"),
+    ("args", "panel", "lesson", "node"),
     [
-        (["--lesson", "part5-pose-subscriber", "part5_pose_subscriber"], "lesson"),  # the lesson asked for
-        (["--lesson", "part6-closed-loop"], "lesson"),
-        (["part5_pose_subscriber"], "log"),
-        ([], "log"),  # the demo: its node's log streaming
+        (["--lesson", "part5-pose-subscriber", "part3_first_node"], "lesson", "part5-pose-subscriber", "part3_first_node"),
+        # no file: the lesson's own reference node shows what the lesson's node does
+        (["--lesson", "part5-pose-subscriber"], "lesson", "part5-pose-subscriber", "part5_pose_subscriber"),
+        (["--lesson", "part7-pen-service"], "lesson", "part7-pen-service", "part7_pen_color"),
+        (["part5_pose_subscriber"], "log", None, "part5_pose_subscriber"),
+        ([], "log", "part6-closed-loop", "part6_wall_avoider"),  # the demo: its node's log streaming
     ],
 )
-def test_run_opens_on_the_lesson_it_was_asked_for_else_on_the_log(monkeypatch, args, panel) -> None:
+def test_run_opens_on_the_lesson_it_was_asked_for_else_on_the_log(monkeypatch, args, panel, lesson, node) -> None:
     from typer.testing import CliRunner
 
     from turtletui.cli import app as cli
 
     shown = []
-    monkeypatch.setattr(TurtleApp, "run", lambda self: shown.append((self._panel, self._lesson)))
+    monkeypatch.setattr(TurtleApp, "run", lambda self: shown.append(self))
     result = CliRunner().invoke(cli, ["run", *args], env={"TEXTUAL_DRIVER": "headless"})
     assert result.exit_code == 0, result.output
-    assert shown[0][0] == panel
-    assert shown[0][1] is not None or panel == "log"
+    app = shown[0]
+    assert app._panel == panel
+    assert app._lesson == (find_lesson(lesson).path if lesson else None)
+    assert [spec.name for spec in app._controllers] == [node]
+
+
+def test_a_headless_run_of_a_lesson_without_a_file_runs_the_lessons_reference_node(tmp_path) -> None:
+    from typer.testing import CliRunner
+
+    from turtletui.cli import app as cli
+
+    result = CliRunner().invoke(cli, ["run", "--lesson", "part5-pose-subscriber", "--headless", "-d", "0.3"])
+    assert result.exit_code == 0, result.output
+    assert "[pose_subscriber]: (5.544444561004639, 5.544444561004639)" in result.stderr
 
 
 @pilot_test

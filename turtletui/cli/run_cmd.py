@@ -15,6 +15,7 @@ from turtletui.cli.ros_run import ros_python_option
 from turtletui.cli.screen import require_screen
 
 if TYPE_CHECKING:
+    from turtletui.lessons.model import Lesson
     from turtletui.plugins.manager import Plugins
     from turtletui.worlds import WorldSpec
 
@@ -26,7 +27,8 @@ def run(
     controllers: list[str] = typer.Argument(
         None,
         help="Controller files (rclpy nodes) or names of controllers registered by plugins"
-        " (see turtletui plugins). Default: part6_wall_avoider, the course's Part 6 node.",
+        " (see turtletui plugins). Default: the --lesson's reference node, else part6_wall_avoider,"
+        " the course's Part 6 node.",
     ),
     headless: bool = typer.Option(False, "--headless", help="Run without the terminal app and print the log."),
     duration: float = typer.Option(60.0, "--duration", "-d", help="Simulated seconds to run."),
@@ -110,13 +112,13 @@ def run(
     from turtletui.runtime.resolve import resolve_controllers
 
     plugins = plugins_of(plugin)
-    specs = resolve_controllers(controllers or ["part6_wall_avoider"], plugins=plugins)
     if not 0 < duration < 1e7:
         fail(f"--duration must be a positive number of seconds under 10,000,000, got {duration}")
     _check_pixels(pixels)
     _check_outputs(record, foxglove)
     # no distro yet: turtletui.api.run (the app: its session) lets the files' imports choose, and says so
-    _, distro, world_spec = _lesson_distro_world(lesson, plugins, distro, world)
+    found, distro, world_spec = _lesson_distro_world(lesson, plugins, distro, world)
+    specs = resolve_controllers(controllers or [demo_controller(found)], plugins=plugins)
     sim_world = None if world_spec is None else world_spec.build(seed)
 
     def print_log(record) -> None:
@@ -201,10 +203,13 @@ def _run_app(
 
     # A lesson asked for opens beside the arena; the demo's own (no files) shows its log streaming.
     panel = "lesson" if lesson is not None else "log"
-    if not controllers:
-        controllers = ["part6_wall_avoider"]
+    demo = not controllers
+    if demo:
         lesson = lesson or "part6-closed-loop"
-    lesson_path, distro, world_spec = _lesson_distro_world(lesson, plugins, distro, world)
+    found, distro, world_spec = _lesson_distro_world(lesson, plugins, distro, world)
+    lesson_path = None if found is None else found.path
+    if demo:
+        controllers = [demo_controller(found)]
     specs = resolve_controllers(controllers, plugins=plugins)
     connection = None
     if ros:
@@ -231,8 +236,14 @@ def _run_app(
     ).run()
 
 
+def demo_controller(lesson: Lesson | None) -> str:
+    """What runs when no file is given: the lesson's reference node (what the
+    lesson's node does), else the course's Part 6 node."""
+    return (lesson.reference if lesson is not None else None) or "part6_wall_avoider"
+
+
 def _lesson_distro_world(lesson: str | None, plugins: Plugins, distro: str | None, world: str | None):
-    """The lesson file (``--lesson``: an id or a file), the distro (``--distro``,
+    """The lesson (``--lesson``: an id or a file), the distro (``--distro``,
     else ``$TURTLETUI_DISTRO``, else the lesson's; None when none of them
     says) and the world (``--world``, else the lesson's) of a run."""
     from turtletui.compat.distro import choose_distro
@@ -253,7 +264,7 @@ def _lesson_distro_world(lesson: str | None, plugins: Plugins, distro: str | Non
     if found is not None and world is None and found.world != "empty":
         world, what = found.world, f"lesson {found.id}: world"
     world_spec = None if world is None else _resolve_world(world, plugins, what)
-    return (None if found is None else found.path), distro, world_spec
+    return found, distro, world_spec
 
 
 def _check_pixels(pixels: str) -> None:
