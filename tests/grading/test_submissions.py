@@ -106,3 +106,17 @@ def test_a_folder_of_several_complete_nodes_is_a_class_of_one_file_submissions(t
     assert [s.controller for s in find_submissions([one])] == [one / "turtle_controller.py"]
     assert [s.student for s in find_submissions([klass], executable="ben")] == ["class"]
     assert [s.student for s in find_submissions([klass], default_executable="ann")] == ["class"]
+
+
+def test_a_notebook_or_an_archive_handed_in_instead_of_a_py_file_is_named_with_what_to_do(tmp_path: Path):
+    klass = tmp_path / "class"
+    for student, name in (("ann", "controller.ipynb"), ("ben", "node.ZIP"), ("cat", "readme.md")):
+        (klass / student).mkdir(parents=True)
+        (klass / student / name).write_text("{}")
+    errors = {s.student: s.error for s in find_submissions([klass])}
+    assert errors["ann"].endswith(
+        "ann: no controller: the folder has no Python (.py) file, but controller.ipynb, a Jupyter notebook:"
+        " export it as a .py file (jupyter nbconvert --to script)"
+    )
+    assert errors["ben"].endswith("no Python (.py) file, but node.ZIP, an archive: unpack it into the folder")
+    assert errors["cat"].endswith("cat: no controller: the folder has no Python (.py) file")

@@ -337,6 +337,31 @@ def controller_candidates(folder: Path, starter: Path | None = None) -> tuple[li
     return files, problems
 
 
+_NOT_PYTHON = {
+    ".ipynb": "a Jupyter notebook: export it as a .py file (jupyter nbconvert --to script)",
+    ".zip": "an archive: unpack it into the folder",
+    ".tar": "an archive: unpack it into the folder",
+    ".gz": "an archive: unpack it into the folder",
+    ".txt": "text: name a Python file .py",
+    ".pyc": "compiled Python: hand in the .py source",
+}
+"""What a student sometimes hands in instead of a .py file, and what to do about it."""
+
+
+def _not_python(folder: Path) -> str:
+    """", but NAME, what it is" for the first file in ``folder`` that is a
+    usual wrong hand-in (a notebook, an archive), else ""."""
+    try:
+        files = sorted(p for p in folder.rglob("*") if p.is_file() and not ignored(p))
+    except OSError:
+        return ""
+    for path in files:
+        what = _NOT_PYTHON.get(path.suffix.lower())
+        if what is not None:
+            return f", but {path.relative_to(folder)}, {what}"
+    return ""
+
+
 def choose_controller(
     folder: Path,
     *,
@@ -368,7 +393,7 @@ def choose_controller(
     if len(candidates) == 1:
         return candidates[0]
     if not candidates:
-        why = f"; {problems[0]}" if problems else ": the folder has no Python (.py) file"
+        why = f"; {problems[0]}" if problems else f": the folder has no Python (.py) file{_not_python(folder)}"
         raise SubmissionError(f"{folder}: no controller{why}")
     raise SubmissionError(
         f"{folder}: several possible controllers ({listed}): choose one with --executable NAME"
@@ -470,7 +495,9 @@ def find_submissions(
         loose = sorted(p for p in path.iterdir() if p.is_file() and p.suffix == ".py" and not ignored(p))
         if not students and not loose:
             anything = any(not ignored(p) for p in path.iterdir())
-            what = "no Python (.py) file and no student's folder in it" if anything else "empty folder"
+            what = (
+                f"no Python (.py) file and no student's folder in it{_not_python(path)}" if anything else "empty folder"
+            )
             raise SubmissionError(f"{path}: {what}: no submissions to grade")
         # Files that are not Python next to the students' folders (notes.txt, a
         # README, .DS_Store) are not submissions: nobody is graded 0 for them.
