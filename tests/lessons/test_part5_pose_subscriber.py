@@ -78,3 +78,19 @@ def test_a_sleep_in_the_callback_is_named_as_why_the_lines_lag(grade):
     assert "logs_the_pose" in failed_checks(result)
     text = " ".join(feedback_of(result, "logs_the_pose"))
     assert "the lines lag behind the poses, as when the callback sleeps or blocks" in text
+
+
+def test_a_node_never_spun_is_told_that_its_program_ended(grade):
+    # no error and no line from the callback: the one clue is that main() returned at once
+    result = grade(LESSON, HERE / "never_spins.py")
+    assert result.score == 0.0
+    text = " ".join(feedback_of(result, "logs_the_pose"))
+    assert "never_spins.py ended at t=0.000 s, before the run did" in text
+    assert "rclpy.spin(node)" in text
+
+
+def test_a_topic_without_its_namespace_is_named_with_the_one_meant(grade):
+    result = grade(LESSON, HERE / "pose_without_namespace.py")
+    assert result.score == 0.0
+    text = " ".join(feedback_of(result, "logs_the_pose"))
+    assert "/pose_subscriber subscribes to /pose, but nothing publishes it (did you mean /turtle1/pose?)" in text

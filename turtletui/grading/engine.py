@@ -26,11 +26,16 @@ from turtletui.grading.checks import Check, Verdict
 from turtletui.grading.pictures import picture_of_trace
 from turtletui.grading.results import FAILED, PASSED, Picture, SubmissionResult, TestResult
 from turtletui.grading.trace import Trace, TraceCollector
-from turtletui.graph.introspection import NEVER_MATCH
+from turtletui.graph.introspection import NEVER_MATCH, is_dangling_warning
 from turtletui.graph.logs import LogRecord
 from turtletui.lessons.loader import display_path
 from turtletui.lessons.model import CheckSpec, Lesson, Scenario
-from turtletui.messages import LOST_GOAL_ADVICE, LOST_REQUEST_ADVICE, did_you_mean
+from turtletui.messages import (
+    ENDED_EARLY_ADVICE,
+    LOST_GOAL_ADVICE,
+    LOST_REQUEST_ADVICE,
+    did_you_mean,
+)
 from turtletui.plugins.manager import Plugins, collect_checks, plugin_manager
 from turtletui.runtime.loader import ControllerSpec
 from turtletui.runtime.recorder import open_recorder
@@ -397,11 +402,19 @@ def _likely_causes(trace: Trace) -> list[str]:
     (turtletui.graph.introspection.mistyped_endpoints), the reason a turtle
     neither moves nor is heard; service requests sent before the client had
     discovered the server, lost (a node that skips wait_for_service), and
-    action goals the same way (wait_for_server)."""
+    action goals the same way (wait_for_server); topics a node subscribes to that
+    nothing publishes, or publishes on that nothing subscribes to, with the
+    name it may have meant (dangling_endpoints: /scan for /turtle1/scan); and
+    a program that ended by itself before the run did (a main() that never
+    spins)."""
     causes = [
         r.msg
         for r in trace.logs
-        if r.node == "turtletui" and r.msg.endswith((NEVER_MATCH, LOST_REQUEST_ADVICE, LOST_GOAL_ADVICE))
+        if r.node == "turtletui"
+        and (
+            r.msg.endswith((NEVER_MATCH, LOST_REQUEST_ADVICE, LOST_GOAL_ADVICE, ENDED_EARLY_ADVICE))
+            or is_dangling_warning(r.msg)
+        )
     ]
     return list(dict.fromkeys(causes))
 

@@ -7,6 +7,7 @@ to live endpoints.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, replace
 from difflib import get_close_matches
 from typing import Any
@@ -254,7 +255,21 @@ def mistyped_endpoints(graph: Graph, owner_prefix: str = "") -> list[str]:
 
 
 def _close(topic: str, live: set[str]) -> list[str]:
-    return get_close_matches(topic, sorted(live - {topic}), n=2, cutoff=0.75)
+    """Up to two live topics ``topic`` may have meant: similar names, or the
+    same last name in another namespace (/scan for /turtle1/scan, /cmd_vel
+    for /turtle1/cmd_vel: a name written without its turtle's namespace)."""
+    others = sorted(live - {topic})
+    base = topic.rsplit("/", 1)[-1]
+    namesakes = [name for name in others if name.rsplit("/", 1)[-1] == base]
+    return list(dict.fromkeys([*get_close_matches(topic, others, n=2, cutoff=0.75), *namesakes]))[:2]
+
+
+_DANGLING = re.compile(r", but nothing (?:publishes|subscribes to) it(?: \(did you mean [^()]*\?\))?$")
+
+
+def is_dangling_warning(text: str) -> bool:
+    """Whether ``text`` is one of :func:`dangling_endpoints`' warnings."""
+    return _DANGLING.search(text) is not None
 
 
 def _dangling(node: str, verb: str, topic: str, other: str, live: set[str]) -> str:

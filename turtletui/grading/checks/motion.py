@@ -64,7 +64,15 @@ def _unheard(trace: Trace, verdict: Verdict, turtle: str, moved: bool) -> Verdic
     their numbers."""
     if verdict.passed or moved or len(trace.command_array(turtle)):
         return verdict
-    note = f"; nothing was published on /{turtle}/cmd_vel (is that the topic your node publishes on?)"
+    topic = f"/{turtle}/cmd_vel"
+    if topic in trace.published:
+        # the right publisher, never used: the code that publishes never ran
+        note = (
+            f"; nothing was published on {topic}: your node has a publisher on it but never published "
+            "(does the timer or callback that publishes ever run?)"
+        )
+    else:
+        note = f"; nothing was published on {topic} (is that the topic your node publishes on?)"
     return replace(verdict, measured=verdict.measured + note)
 
 
