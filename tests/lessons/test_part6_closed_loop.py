@@ -69,3 +69,13 @@ def test_the_wrong_turtles_pose_is_named_not_the_publisher(grade):
     text = feedback_of(result, "distance")[0]
     assert "your node has a publisher on it but never published" in text
     assert "subscribes to /turtle2/pose, but nothing publishes it (did you mean /turtle1/pose?)" in text
+
+
+def test_a_turn_that_never_starts_is_told_it_pushes_against_the_wall(grade):
+    # it drives at full speed - into the first wall, where it stays: not "hardly drove"
+    result = grade(LESSON, HERE / "and_instead_of_or.py")
+    assert result.score == 0.0
+    text = feedback_of(result, "distance")[0]
+    assert "to the end the turtle was pushing against a wall" in text
+    assert "did the condition that should turn it away ever hold?" in text
+    assert "or between the four comparisons, not and" in text

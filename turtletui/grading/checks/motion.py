@@ -36,7 +36,53 @@ def coverage(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     ix = np.clip((poses[:, 1] / cell).astype(int), 0, cells - 1)
     iy = np.clip((poses[:, 2] / cell).astype(int), 0, cells - 1)
     visited = len(set(zip(ix.tolist(), iy.tolist(), strict=True)))
-    return measured("arena covered:", bounds(visited / (cells * cells), th))
+    return _held(trace, measured("arena covered:", bounds(visited / (cells * cells), th)), turtle_of(th))
+
+
+HELD_SHARE = 0.25
+"""The share of a run a turtle may spend held back by a wall or an obstacle
+before a failed distance or coverage says so."""
+
+
+def held_back(trace: Trace, turtle: str) -> tuple[float, float | None, str]:
+    """The share of the run the turtle spent driving into something that held
+    it back (its speed says it drives, it moved less than half of that), since
+    when it was held to the end (None if it got free), and what held it ("a
+    wall" if it was at the arena's edge then, else "an obstacle")."""
+    poses = trace.pose_array(turtle)
+    if len(poses) < 2:
+        return 0.0, None, "a wall"
+    dt = np.diff(poses[:, 0])
+    speed = np.abs(poses[1:, 4])
+    moved = np.hypot(np.diff(poses[:, 1]), np.diff(poses[:, 2]))
+    held = (speed > 1e-6) & (moved < 0.5 * speed * dt) & ~trace.jumped(turtle)[1:]
+    share = float(held.mean())
+    x, y = poses[1:, 1][held], poses[1:, 2][held]
+    edge = 1e-6
+    at_wall = (x <= edge) | (x >= trace.arena_size - edge) | (y <= edge) | (y >= trace.arena_size - edge)
+    what = "a wall" if at_wall.any() or not len(x) else "an obstacle"
+    if not held[-1]:
+        return share, None, what
+    free = np.flatnonzero(~held)
+    since = float(poses[free[-1] + 1, 0]) if len(free) else float(poses[0, 0])
+    return share, since, what
+
+
+def _held(trace: Trace, verdict: Verdict, turtle: str) -> Verdict:
+    """A failed verdict of a turtle that spent much of its run pushing against
+    a wall or an obstacle, told so: the node drove on (it did not "hardly
+    drive"), and the command that should have turned it away never came."""
+    if verdict.passed:
+        return verdict
+    share, since, what = held_back(trace, turtle)
+    if share < HELD_SHARE:
+        return verdict
+    when = f"from t={since:.1f} s to the end" if since is not None else f"for {share:.0%} of the run"
+    note = (
+        f"; {when} the turtle was pushing against {what}: it drove into it and its "
+        "commands kept driving it forward (did the condition that should turn it away ever hold?)"
+    )
+    return replace(verdict, measured=verdict.measured + note)
 
 
 def _distance(trace: Trace, turtle: str) -> float:
@@ -80,7 +126,8 @@ def _unheard(trace: Trace, verdict: Verdict, turtle: str, moved: bool) -> Verdic
 def distance(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     turtle = turtle_of(th)
     driven = _distance(trace, turtle)
-    return _unheard(trace, measured("distance driven:", bounds(driven, th, " m")), turtle, driven > 0.0)
+    verdict = _held(trace, measured("distance driven:", bounds(driven, th, " m")), turtle)
+    return _unheard(trace, verdict, turtle, driven > 0.0)
 
 
 @check(
