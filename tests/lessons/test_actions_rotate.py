@@ -8,6 +8,7 @@ from support.lessons import SOLUTIONS, failed_checks, feedback_of
 
 LESSON = "actions-rotate"
 HERE = SOLUTIONS / "actions_rotate"
+CORPUS = Path(__file__).parent / "corpus" / LESSON
 STARTER = Path(__file__).parents[2] / "lessons" / "actions_rotate_starter.py"
 
 
@@ -57,3 +58,17 @@ def test_a_first_goal_sent_before_discovery_is_lost_and_told_so(grade):
     text = feedback_of(result, "goals_reached")[0]
     assert "before it had discovered the action's server, so the goal was lost" in text
     assert text.count("Wait with action_client.wait_for_server() before the first goal.") == 1
+
+
+def test_the_feedback_logged_in_other_words_scores_full_marks(grade):
+    # "0.42 rad to go": the number is the feedback, whatever the words around it
+    result = grade(LESSON, CORPUS / "right_feedback_in_other_words.py")
+    assert result.score == result.max_score
+
+
+def test_a_node_that_never_logs_the_feedback_fails_only_that(grade):
+    # its "Sending goal: theta = 1.57 rad" and "Goal done" lines carry other numbers
+    result = grade(LESSON, HERE / "feedback_not_logged.py")
+    assert failed_checks(result) == {"log_feedback"}
+    assert "log lines with the feedback: 0 (needs >= 3)" in feedback_of(result, "log_feedback")[0]
+    assert result.score == 9.0
