@@ -72,3 +72,12 @@ def test_a_node_that_never_logs_the_feedback_fails_only_that(grade):
     assert failed_checks(result) == {"log_feedback"}
     assert "log lines with the feedback: 0 (needs >= 3)" in feedback_of(result, "log_feedback")[0]
     assert result.score == 9.0
+
+
+def test_velocity_commands_that_abort_the_goals_are_named(grade):
+    result = grade(LESSON, HERE / "zero_twist_timer.py")
+    assert "goals_reached" in failed_checks(result)
+    text = feedback_of(result, "goals_reached")[0]
+    assert "velocity commands on /turtle1/cmd_vel once it had sent a goal" in text
+    assert "any message on /turtle1/cmd_vel (a zero Twist too)" in text
+    assert result.score < 5.0
