@@ -130,3 +130,19 @@ def test_cmd_vel_without_the_turtles_namespace_is_named_with_the_one_meant(grade
     assert result.score == 0.0
     text = feedback_of(result, "circle")[0]
     assert "/draw_circle publishes on /cmd_vel, but nothing subscribes to it (did you mean /turtle1/cmd_vel?)" in text
+
+
+@pytest.mark.parametrize(
+    ("solution", "why"),
+    [
+        ("sleeps_in_the_timer.py", "the commands came up to 2.0 s apart, and turtlesim stops a turtle 1 s after"),
+        ("slow_timer.py", "s apart, and turtlesim stops a turtle 1 s after the last one"),
+        ("stops_after_a_lap.py", "the last velocity command that moves the turtle came at t=7.0 s of 15 s"),
+    ],
+)
+def test_a_circle_in_fits_and_starts_earns_the_circle_only_and_is_told_why(grade, solution, why):
+    # keeping off the walls and not crashing count only for a turtle that keeps driving
+    result = grade(LESSON, HERE / solution)
+    assert failed_checks(result) == {"time_moving"}
+    assert result.score == 4.0
+    assert why in feedback_of(result, "time_moving")[0]

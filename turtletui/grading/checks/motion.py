@@ -20,6 +20,7 @@ from turtletui.grading.checks.base import (
     turtle_of,
 )
 from turtletui.grading.trace import Trace
+from turtletui.messages import plural
 
 
 @check(
@@ -159,7 +160,43 @@ def time_moving(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     need = f" ({'; '.join(notes)})" if notes else ""
     what = "moving" if th.get("turning", True) else "driving"
     moved = bool((poses[:, 4] > 1e-6).any() or (np.diff(poses[:, 1:4], axis=0) != 0).any())  # or turned
-    return _unheard(trace, Verdict(verdict.passed, f"{what} {share:.0%} of the run{need}"), turtle_of(th), moved)
+    text = f"{what} {share:.0%} of the run{need}"
+    if not verdict.passed:
+        text += _pauses(trace, turtle_of(th), turning=th.get("turning", True))
+    return _unheard(trace, Verdict(verdict.passed, text), turtle_of(th), moved)
+
+
+COMMAND_TIMEOUT = 1.0
+"""Seconds after its last velocity command that turtlesim stops a turtle."""
+
+
+def _pauses(trace: Trace, turtle: str, *, turning: bool) -> str:
+    """Why a turtle that was sent commands stood still, from when they came:
+    the commands that move it stopped (a stop sent, or nothing more), or came
+    further apart than turtlesim's 1 s timeout (a slow timer, a callback that
+    sleeps). "" when neither."""
+    commands = trace.command_array(turtle)
+    if not len(commands):
+        return ""
+    moves = (commands[:, 1] != 0) | (commands[:, 2] != 0)
+    if turning:
+        moves |= commands[:, 3] != 0
+    times = commands[moves, 0]
+    if not len(times):
+        return "; every velocity command the node sent was a stop (all zeros)"
+    end = max(trace.sim_time, float(times[-1]))
+    if end - times[-1] > COMMAND_TIMEOUT and end - times[-1] >= 0.2 * end:
+        later = int((commands[:, 0] > times[-1]).sum())
+        after = f" (the {plural(later, 'command')} after it stopped the turtle)" if later else ""
+        return f"; the last velocity command that moves the turtle came at t={times[-1]:.1f} s of {end:.0f} s{after}"
+    gaps = np.diff(times)
+    if len(gaps) and gaps.max() > COMMAND_TIMEOUT:
+        return (
+            f"; the commands came up to {gaps.max():.1f} s apart, and turtlesim stops a turtle "
+            f"{COMMAND_TIMEOUT:g} s after the last one (a timer that slow, or a callback that sleeps, "
+            "leaves it standing in between)"
+        )
+    return ""
 
 
 @check(
