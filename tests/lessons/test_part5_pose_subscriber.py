@@ -52,10 +52,11 @@ def test_a_pose_of_the_wrong_type_logs_nothing_and_is_told_which_types_differ(gr
 
 def test_logging_every_100th_pose_fails_the_rate_but_not_the_content(grade):
     result = grade(LESSON, HERE / "every_100th_pose.py")
-    outputs = failed_outputs(result)
+    outputs = feedback_of(result, "logs_every_pose")
     assert failed_checks(result) == {"logs_every_pose"}
     assert outputs and all(RATE in text and "not every Nth time" in text for text in outputs)
-    assert result.score == 7.0
+    # the content's points only: running without an error counts for a node that logs every pose
+    assert result.score == 5.0
 
 
 def test_logging_without_the_position_fails_the_content_check_and_earns_nothing(grade):
@@ -94,3 +95,11 @@ def test_a_topic_without_its_namespace_is_named_with_the_one_meant(grade):
     assert result.score == 0.0
     text = " ".join(feedback_of(result, "logs_the_pose"))
     assert "/pose_subscriber subscribes to /pose, but nothing publishes it (did you mean /turtle1/pose?)" in text
+
+
+def test_a_throttled_log_earns_the_content_only(grade):
+    result = grade(LESSON, HERE / "throttled_to_one_a_second.py")
+    assert failed_checks(result) == {"logs_every_pose"}
+    assert "no_crash" in not_judged(result)
+    assert "without throttle_duration_sec" in feedback_of(result, "logs_every_pose")[0]
+    assert result.score == 5.0
