@@ -81,3 +81,19 @@ def test_velocity_commands_that_abort_the_goals_are_named(grade):
     assert "velocity commands on /turtle1/cmd_vel once it had sent a goal" in text
     assert "any message on /turtle1/cmd_vel (a zero Twist too)" in text
     assert result.score < 5.0
+
+
+def test_a_wait_inside_a_callback_is_named_though_rclpy_only_warns(grade):
+    result = grade(LESSON, HERE / "waits_inside_a_callback.py")
+    assert "goals_sent" in failed_checks(result)
+    text = feedback_of(result, "goals_sent")[0]
+    assert "A done callback of your node raised an error, which rclpy only prints as a warning" in text
+    assert "spin_until_future_complete() was called inside a callback" in text
+    assert result.score < 5.0
+
+
+def test_an_action_without_its_turtles_namespace_is_named_with_the_one_meant(grade):
+    result = grade(LESSON, HERE / "action_without_namespace.py")
+    assert result.score == 0.0
+    text = feedback_of(result, "goals_sent")[0]
+    assert "is an action client of /rotate_absolute, but nothing serves it (did you mean /turtle1/rotate_absolute?)" in text

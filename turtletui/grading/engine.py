@@ -27,7 +27,7 @@ from turtletui.grading.pictures import picture_of_trace
 from turtletui.grading.results import FAILED, PASSED, Picture, SubmissionResult, TestResult
 from turtletui.grading.trace import Trace, TraceCollector
 from turtletui.graph.introspection import NEVER_MATCH, is_dangling_warning
-from turtletui.graph.logs import LogRecord
+from turtletui.graph.logs import OUTPUT_SUFFIX, LogRecord
 from turtletui.lessons.loader import display_path
 from turtletui.lessons.model import CheckSpec, Lesson, Scenario
 from turtletui.messages import (
@@ -406,17 +406,28 @@ def _likely_causes(trace: Trace) -> list[str]:
     nothing publishes, or publishes on that nothing subscribes to, with the
     name it may have meant (dangling_endpoints: /scan for /turtle1/scan); and
     a program that ended by itself before the run did (a main() that never
-    spins)."""
-    causes = [
-        r.msg
-        for r in trace.logs
-        if r.node == "turtletui"
-        and (
+    spins). Also rclpy's own warning that a done callback raised (printed,
+    not raised: the node runs on, and whatever that callback was to start
+    never happens)."""
+    causes = []
+    for r in trace.logs:
+        if r.node == "turtletui" and (
             r.msg.endswith((NEVER_MATCH, LOST_REQUEST_ADVICE, LOST_GOAL_ADVICE, ENDED_EARLY_ADVICE))
             or is_dangling_warning(r.msg)
-        )
-    ]
+        ):
+            causes.append(r.msg)
+        elif r.node.endswith(OUTPUT_SUFFIX) and DONE_CALLBACK_FAILED in r.msg:
+            error = r.msg.split(DONE_CALLBACK_FAILED, 1)[1].strip()
+            causes.append(
+                "A done callback of your node raised an error, which rclpy only prints as a warning "
+                f"('{DONE_CALLBACK_FAILED.strip()} ...'): the node runs on, but what that callback "
+                f"should have done next never happens. The error: {error}"
+            )
     return list(dict.fromkeys(causes))
+
+
+DONE_CALLBACK_FAILED = "Unhandled exception in done callback: "
+"""How rclpy's warning of a Future's done callback that raised begins (rclpy.task)."""
 
 
 def forbidden_call(plan: GradingPlan, trace: Trace, *, hidden: bool = False) -> str | None:

@@ -201,9 +201,10 @@ def _add_action_topic(topics: dict[str, TopicInfo], endpoint: ActionTopicEndpoin
 
 
 def dangling_endpoints(graph: Graph, owner_prefix: str = "") -> list[str]:
-    """One warning per controller subscription that nothing publishes to and
-    per controller publisher that nothing listens to, with the closest
-    existing topic names: the usual sign of a typo in a topic name."""
+    """One warning per controller subscription that nothing publishes to, per
+    controller publisher that nothing listens to (when a similar name
+    exists), and per service or action client that nothing serves, with the
+    closest existing names: the usual sign of a typo in a name."""
     warnings = []
     live = {t.name for t in graph.channels() if t.publishers or t.subscriptions}
     for topic in sorted(graph.channels(), key=lambda t: t.name):
@@ -220,6 +221,15 @@ def dangling_endpoints(graph: Graph, owner_prefix: str = "") -> list[str]:
                 # when a topic of a very similar name exists.
                 if _close(name, live):
                     warnings.append(_dangling(pub.node.fqn, "publishes on", name, "subscribes to", live))
+    # a client of a service or an action that nothing serves waits for ever
+    # (wait_for_service, wait_for_server): /rotate_absolute for /turtle1/rotate_absolute
+    for clients, servers, what in (
+        (graph.clients, graph.services, "a client of"),
+        (graph.action_clients, graph.action_servers, "an action client of"),
+    ):
+        for client in clients:
+            if client.owner.startswith(owner_prefix) and client.owner != "sim" and client.name not in servers:
+                warnings.append(_dangling(client.node.fqn, f"is {what}", client.name, "serves", set(servers)))
     return sorted(set(warnings))
 
 
@@ -264,7 +274,7 @@ def _close(topic: str, live: set[str]) -> list[str]:
     return list(dict.fromkeys([*get_close_matches(topic, others, n=2, cutoff=0.75), *namesakes]))[:2]
 
 
-_DANGLING = re.compile(r", but nothing (?:publishes|subscribes to) it(?: \(did you mean [^()]*\?\))?$")
+_DANGLING = re.compile(r", but nothing (?:publishes|subscribes to|serves) it(?: \(did you mean [^()]*\?\))?$")
 
 
 def is_dangling_warning(text: str) -> bool:
