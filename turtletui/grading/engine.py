@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 import os
 import random
+import re
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
@@ -396,7 +397,7 @@ def _output(spec: CheckSpec, verdict: Verdict, hidden: bool, warnings: Sequence[
     return "\n".join(lines)
 
 
-def _likely_causes(trace: Trace) -> list[str]:
+def _likely_causes(trace: Trace, *, hidden: bool = False) -> list[str]:
     """turtletui's warnings in a run, each said once, of what ROS 2 does silently:
     endpoints whose types never match another's
     (turtletui.graph.introspection.mistyped_endpoints), the reason a turtle
@@ -408,22 +409,26 @@ def _likely_causes(trace: Trace) -> list[str]:
     a program that ended by itself before the run did (a main() that never
     spins). Also rclpy's own warning that a done callback raised (printed,
     not raised: the node runs on, and whatever that callback was to start
-    never happens)."""
+    never happens). In a hidden run, without when or the error's text (which
+    might carry what the run measured)."""
     causes = []
     for r in trace.logs:
         if r.node == "turtletui" and (
             r.msg.endswith((NEVER_MATCH, LOST_REQUEST_ADVICE, LOST_GOAL_ADVICE, ENDED_EARLY_ADVICE))
             or is_dangling_warning(r.msg)
         ):
-            causes.append(r.msg)
+            causes.append(_ENDED_AT.sub(" ended", r.msg) if hidden else r.msg)
         elif r.node.endswith(OUTPUT_SUFFIX) and DONE_CALLBACK_FAILED in r.msg:
-            error = r.msg.split(DONE_CALLBACK_FAILED, 1)[1].strip()
+            error = "" if hidden else f" The error: {r.msg.split(DONE_CALLBACK_FAILED, 1)[1].strip()}"
             causes.append(
                 "A done callback of your node raised an error, which rclpy only prints as a warning "
                 f"('{DONE_CALLBACK_FAILED.strip()} ...'): the node runs on, but what that callback "
-                f"should have done next never happens. The error: {error}"
+                f"should have done next never happens.{error}"
             )
     return list(dict.fromkeys(causes))
+
+
+_ENDED_AT = re.compile(r" ended at t=[0-9.]+ s(?=, before the run did)")
 
 
 DONE_CALLBACK_FAILED = "Unhandled exception in done callback: "
@@ -516,7 +521,7 @@ def grade_run(
             trace.twin, _ = run_scenario(plan, run, controllers, limits=limits, start=run.twin_start, duration=window)
         return judge(check, trace, thresholds)
 
-    tests = _judge_run(plan, run, verdict_of, problem, _likely_causes(trace))
+    tests = _judge_run(plan, run, verdict_of, problem, _likely_causes(trace, hidden=run.hidden))
     failed = not all(test.passed for _, test in tests)
     if recorder is not None:
         if failed:  # buffered: the file is written now, and only a failed run's
