@@ -10,6 +10,12 @@ LOST_REQUEST_ADVICE = "Wait with client.wait_for_service() before the first call
 (turtletui.compat.node); the grader shows the warning as a likely cause."""
 LOST_GOAL_ADVICE = "Wait with action_client.wait_for_server() before the first goal."
 """The same for an action goal (turtletui.compat.action)."""
+ENDED_EARLY_ADVICE = (
+    "a callback runs only while something spins its node (rclpy.spin(node) at the end of main() keeps it running)."
+)
+"""How turtletui's note of a controller whose program ended before the run did
+ends (turtletui.runtime.report.log_ended_early); the grader shows it as a
+likely cause."""
 
 
 def one_line(value: object) -> str:

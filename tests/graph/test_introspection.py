@@ -125,6 +125,40 @@ def test_topic_name_typos_are_pointed_out_after_a_second(tmp_path: Path, sandbox
     ]
 
 
+@pytest.mark.parametrize("sandbox", [True, False], ids=["sandboxed", "in-process"])
+def test_names_without_their_turtles_namespace_and_unserved_clients_are_pointed_out(
+    tmp_path: Path, sandbox: bool
+) -> None:
+    path = tmp_path / "bare.py"
+    path.write_text(textwrap.dedent("""
+        import rclpy
+        from rclpy.action import ActionClient
+        from rclpy.node import Node
+        from geometry_msgs.msg import Twist
+        from turtlesim.action import RotateAbsolute
+        from turtlesim.srv import SetPen
+
+
+        class Bare(Node):
+            def __init__(self):
+                super().__init__("bare")
+                self.create_publisher(Twist, "cmd_vel", 10)
+                self.create_client(SetPen, "set_pen")
+                self.client = ActionClient(self, RotateAbsolute, "rotate_absolute")
+    """))
+    result = run([path], duration=2.0, sandbox=sandbox)
+    warnings = [(r.t, r.msg) for r in result.logs if r.node == "turtletui"]
+    assert warnings == [
+        (1.0, "/bare is a client of /set_pen, but nothing serves it (did you mean /turtle1/set_pen?)"),
+        (
+            1.0,
+            "/bare is an action client of /rotate_absolute, but nothing serves it "
+            "(did you mean /turtle1/rotate_absolute?)",
+        ),
+        (1.0, "/bare publishes on /cmd_vel, but nothing subscribes to it (did you mean /turtle1/cmd_vel?)"),
+    ]
+
+
 def test_a_well_connected_controller_gets_no_warning() -> None:
     result = run([PART6], duration=2.0, sandbox=False)
     assert [r for r in result.logs if r.node == "turtletui"] == []

@@ -8,6 +8,7 @@ from support.lessons import SOLUTIONS, failed_checks, feedback_of
 
 LESSON = "actions-rotate"
 HERE = SOLUTIONS / "actions_rotate"
+CORPUS = Path(__file__).parent / "corpus" / LESSON
 STARTER = Path(__file__).parents[2] / "lessons" / "actions_rotate_starter.py"
 
 
@@ -57,3 +58,42 @@ def test_a_first_goal_sent_before_discovery_is_lost_and_told_so(grade):
     text = feedback_of(result, "goals_reached")[0]
     assert "before it had discovered the action's server, so the goal was lost" in text
     assert text.count("Wait with action_client.wait_for_server() before the first goal.") == 1
+
+
+def test_the_feedback_logged_in_other_words_scores_full_marks(grade):
+    # "0.42 rad to go": the number is the feedback, whatever the words around it
+    result = grade(LESSON, CORPUS / "right_feedback_in_other_words.py")
+    assert result.score == result.max_score
+
+
+def test_a_node_that_never_logs_the_feedback_fails_only_that(grade):
+    # its "Sending goal: theta = 1.57 rad" and "Goal done" lines carry other numbers
+    result = grade(LESSON, HERE / "feedback_not_logged.py")
+    assert failed_checks(result) == {"log_feedback"}
+    assert "log lines with the feedback: 0 (needs >= 3)" in feedback_of(result, "log_feedback")[0]
+    assert result.score == 9.0
+
+
+def test_velocity_commands_that_abort_the_goals_are_named(grade):
+    result = grade(LESSON, HERE / "zero_twist_timer.py")
+    assert "goals_reached" in failed_checks(result)
+    text = feedback_of(result, "goals_reached")[0]
+    assert "velocity commands on /turtle1/cmd_vel once it had sent a goal" in text
+    assert "any message on /turtle1/cmd_vel (a zero Twist too)" in text
+    assert result.score < 5.0
+
+
+def test_a_wait_inside_a_callback_is_named_though_rclpy_only_warns(grade):
+    result = grade(LESSON, HERE / "waits_inside_a_callback.py")
+    assert "goals_sent" in failed_checks(result)
+    text = feedback_of(result, "goals_sent")[0]
+    assert "A done callback of your node raised an error, which rclpy only prints as a warning" in text
+    assert "spin_until_future_complete() was called inside a callback" in text
+    assert result.score < 5.0
+
+
+def test_an_action_without_its_turtles_namespace_is_named_with_the_one_meant(grade):
+    result = grade(LESSON, HERE / "action_without_namespace.py")
+    assert result.score == 0.0
+    text = feedback_of(result, "goals_sent")[0]
+    assert "is an action client of /rotate_absolute, but nothing serves it (did you mean /turtle1/rotate_absolute?)" in text

@@ -114,3 +114,10 @@ def test_shaving_past_obstacles_costs_as_much_as_a_crash_would(grade, solution):
     result = grade(LESSON, HERE / solution)
     assert failed_checks(result) == {"min_clearance"}
     assert result.score < 7.0
+
+
+def test_scan_without_the_turtles_namespace_is_named_with_the_one_meant(grade):
+    result = grade(LESSON, HERE / "scan_without_namespace.py")
+    assert result.score == 0.0
+    text = feedback_of(result, "distance")[0]
+    assert "/obstacle_avoider subscribes to /scan, but nothing publishes it (did you mean /turtle1/scan?)" in text

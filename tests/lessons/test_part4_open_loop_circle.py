@@ -115,3 +115,34 @@ def test_an_error_in_an_executor_thread_is_the_crash_it_is_in_ros(grade):
     text = "\n".join(feedback_of(result, "no_crash"))
     assert "IndexError: list index out of range" in text
     assert "executor.spin()" in text and "self.speeds[-1]" in text  # the traceback, through main()
+
+
+def test_a_publisher_that_never_publishes_is_told_so_not_to_check_its_topic(grade):
+    result = grade(LESSON, HERE / "timer_after_spin.py")
+    assert result.score == 0.0
+    text = feedback_of(result, "circle")[0]
+    assert "your node has a publisher on it but never published" in text
+    assert "is that the topic" not in text
+
+
+def test_cmd_vel_without_the_turtles_namespace_is_named_with_the_one_meant(grade):
+    result = grade(LESSON, HERE / "cmd_vel_without_namespace.py")
+    assert result.score == 0.0
+    text = feedback_of(result, "circle")[0]
+    assert "/draw_circle publishes on /cmd_vel, but nothing subscribes to it (did you mean /turtle1/cmd_vel?)" in text
+
+
+@pytest.mark.parametrize(
+    ("solution", "why"),
+    [
+        ("sleeps_in_the_timer.py", "the commands came up to 2.0 s apart, and turtlesim stops a turtle 1 s after"),
+        ("slow_timer.py", "s apart, and turtlesim stops a turtle 1 s after the last one"),
+        ("stops_after_a_lap.py", "the last velocity command that moves the turtle came at t=7.0 s of 15 s"),
+    ],
+)
+def test_a_circle_in_fits_and_starts_earns_the_circle_only_and_is_told_why(grade, solution, why):
+    # keeping off the walls and not crashing count only for a turtle that keeps driving
+    result = grade(LESSON, HERE / solution)
+    assert failed_checks(result) == {"time_moving"}
+    assert result.score == 4.0
+    assert why in feedback_of(result, "time_moving")[0]

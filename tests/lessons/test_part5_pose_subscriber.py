@@ -52,10 +52,11 @@ def test_a_pose_of_the_wrong_type_logs_nothing_and_is_told_which_types_differ(gr
 
 def test_logging_every_100th_pose_fails_the_rate_but_not_the_content(grade):
     result = grade(LESSON, HERE / "every_100th_pose.py")
-    outputs = failed_outputs(result)
+    outputs = feedback_of(result, "logs_every_pose")
     assert failed_checks(result) == {"logs_every_pose"}
     assert outputs and all(RATE in text and "not every Nth time" in text for text in outputs)
-    assert result.score == 7.0
+    # the content's points only: running without an error counts for a node that logs every pose
+    assert result.score == 5.0
 
 
 def test_logging_without_the_position_fails_the_content_check_and_earns_nothing(grade):
@@ -78,3 +79,36 @@ def test_a_sleep_in_the_callback_is_named_as_why_the_lines_lag(grade):
     assert "logs_the_pose" in failed_checks(result)
     text = " ".join(feedback_of(result, "logs_the_pose"))
     assert "the lines lag behind the poses, as when the callback sleeps or blocks" in text
+
+
+def test_a_node_never_spun_is_told_that_its_program_ended(grade):
+    # no error and no line from the callback: the one clue is that main() returned at once
+    result = grade(LESSON, HERE / "never_spins.py")
+    assert result.score == 0.0
+    text = " ".join(feedback_of(result, "logs_the_pose"))
+    assert "never_spins.py ended at t=0.000 s, before the run did" in text
+    assert "rclpy.spin(node)" in text
+    # a hidden run says so too, without when
+    hidden = [t.output for t in result.tests if t.hidden and t.check == "logs_the_pose"]
+    assert hidden and all("never_spins.py ended, before the run did" in o and "t=" not in o for o in hidden)
+
+
+def test_a_topic_without_its_namespace_is_named_with_the_one_meant(grade):
+    result = grade(LESSON, HERE / "pose_without_namespace.py")
+    assert result.score == 0.0
+    text = " ".join(feedback_of(result, "logs_the_pose"))
+    assert "/pose_subscriber subscribes to /pose, but nothing publishes it (did you mean /turtle1/pose?)" in text
+
+
+def test_a_throttled_log_earns_the_content_only(grade):
+    result = grade(LESSON, HERE / "throttled_to_one_a_second.py")
+    assert failed_checks(result) == {"logs_every_pose"}
+    assert "no_crash" in not_judged(result)
+    assert "without throttle_duration_sec" in feedback_of(result, "logs_every_pose")[0]
+    assert result.score == 5.0
+
+
+def test_print_from_a_closure_passes_too(grade):
+    # sandboxed only: print() is the controller's output there, as a terminal shows it
+    result = grade(LESSON, HERE / "right_print_from_a_closure.py")
+    assert result.score == result.max_score

@@ -60,3 +60,22 @@ def test_turning_in_the_open_and_racing_near_the_walls_scores_little(grade):
     assert "coverage" in failed_checks(result) and "closed_loop" not in failed_checks(result)
     assert any("the condition is not the wrong way round" in text for text in feedback_of(result, "coverage"))
     assert result.score <= 0.3 * result.max_score
+
+
+def test_the_wrong_turtles_pose_is_named_not_the_publisher(grade):
+    # the node publishes on the right topic; its pose callback never runs
+    result = grade(LESSON, HERE / "wrong_turtles_pose.py")
+    assert result.score == 0.0
+    text = feedback_of(result, "distance")[0]
+    assert "your node has a publisher on it but never published" in text
+    assert "subscribes to /turtle2/pose, but nothing publishes it (did you mean /turtle1/pose?)" in text
+
+
+def test_a_turn_that_never_starts_is_told_it_pushes_against_the_wall(grade):
+    # it drives at full speed - into the first wall, where it stays: not "hardly drove"
+    result = grade(LESSON, HERE / "and_instead_of_or.py")
+    assert result.score == 0.0
+    text = feedback_of(result, "distance")[0]
+    assert "to the end the turtle was pushing against a wall" in text
+    assert "did the condition that should turn it away ever hold?" in text
+    assert "or between the four comparisons, not and" in text

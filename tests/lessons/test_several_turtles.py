@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from support.lessons import SOLUTIONS, failed_checks, feedback_of
+from support.lessons import SOLUTIONS, failed, failed_checks, feedback, feedback_of
 
 LESSON = "several-turtles"
 HERE = SOLUTIONS / "several_turtles"
@@ -49,3 +49,11 @@ def test_the_starter_runs_and_spawns_one_turtle(grade):
     assert "no_crash" not in failed_checks(result)
     assert "turtles_caught" in failed_checks(result)
     assert result.score == 0.0
+
+
+def test_killing_on_every_pose_catches_them_all_but_loses_the_kill_once_points(grade):
+    result = grade(LESSON, HERE / "kills_on_every_pose.py")
+    assert failed(result) == {"kills_once": {"centre", "corner", "other targets", "hidden 1"}}
+    assert "calls of /kill: 667 (needs <= 16)" in feedback(result, "kills_once")
+    assert "set the target to None as soon as you call /kill" in feedback(result, "kills_once")
+    assert result.score == 9.0

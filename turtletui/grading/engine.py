@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 import os
 import random
+import re
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
@@ -26,11 +27,16 @@ from turtletui.grading.checks import Check, Verdict
 from turtletui.grading.pictures import picture_of_trace
 from turtletui.grading.results import FAILED, PASSED, Picture, SubmissionResult, TestResult
 from turtletui.grading.trace import Trace, TraceCollector
-from turtletui.graph.introspection import NEVER_MATCH
-from turtletui.graph.logs import LogRecord
+from turtletui.graph.introspection import NEVER_MATCH, is_dangling_warning
+from turtletui.graph.logs import OUTPUT_SUFFIX, LogRecord
 from turtletui.lessons.loader import display_path
 from turtletui.lessons.model import CheckSpec, Lesson, Scenario
-from turtletui.messages import LOST_GOAL_ADVICE, LOST_REQUEST_ADVICE, did_you_mean
+from turtletui.messages import (
+    ENDED_EARLY_ADVICE,
+    LOST_GOAL_ADVICE,
+    LOST_REQUEST_ADVICE,
+    did_you_mean,
+)
 from turtletui.plugins.manager import Plugins, collect_checks, plugin_manager
 from turtletui.runtime.loader import ControllerSpec
 from turtletui.runtime.recorder import open_recorder
@@ -391,19 +397,42 @@ def _output(spec: CheckSpec, verdict: Verdict, hidden: bool, warnings: Sequence[
     return "\n".join(lines)
 
 
-def _likely_causes(trace: Trace) -> list[str]:
+def _likely_causes(trace: Trace, *, hidden: bool = False) -> list[str]:
     """turtletui's warnings in a run, each said once, of what ROS 2 does silently:
     endpoints whose types never match another's
     (turtletui.graph.introspection.mistyped_endpoints), the reason a turtle
     neither moves nor is heard; service requests sent before the client had
     discovered the server, lost (a node that skips wait_for_service), and
-    action goals the same way (wait_for_server)."""
-    causes = [
-        r.msg
-        for r in trace.logs
-        if r.node == "turtletui" and r.msg.endswith((NEVER_MATCH, LOST_REQUEST_ADVICE, LOST_GOAL_ADVICE))
-    ]
+    action goals the same way (wait_for_server); topics a node subscribes to that
+    nothing publishes, or publishes on that nothing subscribes to, with the
+    name it may have meant (dangling_endpoints: /scan for /turtle1/scan); and
+    a program that ended by itself before the run did (a main() that never
+    spins). Also rclpy's own warning that a done callback raised (printed,
+    not raised: the node runs on, and whatever that callback was to start
+    never happens). In a hidden run, without when or the error's text (which
+    might carry what the run measured)."""
+    causes = []
+    for r in trace.logs:
+        if r.node == "turtletui" and (
+            r.msg.endswith((NEVER_MATCH, LOST_REQUEST_ADVICE, LOST_GOAL_ADVICE, ENDED_EARLY_ADVICE))
+            or is_dangling_warning(r.msg)
+        ):
+            causes.append(_ENDED_AT.sub(" ended", r.msg) if hidden else r.msg)
+        elif r.node.endswith(OUTPUT_SUFFIX) and DONE_CALLBACK_FAILED in r.msg:
+            error = "" if hidden else f" The error: {r.msg.split(DONE_CALLBACK_FAILED, 1)[1].strip()}"
+            causes.append(
+                "A done callback of your node raised an error, which rclpy only prints as a warning "
+                f"('{DONE_CALLBACK_FAILED.strip()} ...'): the node runs on, but what that callback "
+                f"should have done next never happens.{error}"
+            )
     return list(dict.fromkeys(causes))
+
+
+_ENDED_AT = re.compile(r" ended at t=[0-9.]+ s(?=, before the run did)")
+
+
+DONE_CALLBACK_FAILED = "Unhandled exception in done callback: "
+"""How rclpy's warning of a Future's done callback that raised begins (rclpy.task)."""
 
 
 def forbidden_call(plan: GradingPlan, trace: Trace, *, hidden: bool = False) -> str | None:
@@ -492,7 +521,7 @@ def grade_run(
             trace.twin, _ = run_scenario(plan, run, controllers, limits=limits, start=run.twin_start, duration=window)
         return judge(check, trace, thresholds)
 
-    tests = _judge_run(plan, run, verdict_of, problem, _likely_causes(trace))
+    tests = _judge_run(plan, run, verdict_of, problem, _likely_causes(trace, hidden=run.hidden))
     failed = not all(test.passed for _, test in tests)
     if recorder is not None:
         if failed:  # buffered: the file is written now, and only a failed run's

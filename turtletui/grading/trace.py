@@ -76,6 +76,10 @@ class Trace:
     arena_size: float = ARENA_SIZE
     sim_time: float = 0.0
     """Simulated seconds the run actually lasted."""
+    published: frozenset[str] = frozenset()
+    """Topics the controller's nodes had a geometry_msgs/msg/Twist publisher on
+    during the run, whether or not they published: a silent turtle's node may
+    have the right publisher and never use it."""
     twin: Trace | None = None
     """The twin run, for checks that compare with one
     (:attr:`turtletui.grading.checks.Check.twin`): the same scenario and seed
@@ -96,6 +100,18 @@ class Trace:
 
 _TWIST = "geometry_msgs/msg/Twist"
 """What turtlesim's cmd_vel carries: the commands a trace keeps."""
+_NOT_CONTROLLERS = frozenset({"sim", "scenario"})
+"""Owners of the graph's endpoints that are not the controller's: the
+simulator's own nodes and a scenario's scripted teleop."""
+
+
+def controller_twist_topics(sim: Simulation) -> frozenset[str]:
+    """Topics on which a controller's node had a Twist publisher during the run."""
+    return frozenset(
+        topic.name
+        for topic in sim.graph.channels()
+        if topic.type_name == _TWIST and topic.publisher_owners - _NOT_CONTROLLERS
+    )
 
 
 class TraceCollector:
@@ -195,4 +211,5 @@ class TraceCollector:
             killed=self._killed,
             obstacles=tuple(getattr(sim.world, "obstacles", ()) or ()),
             sim_time=sim.t,
+            published=controller_twist_topics(sim),
         )

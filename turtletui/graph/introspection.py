@@ -7,6 +7,7 @@ to live endpoints.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, replace
 from difflib import get_close_matches
 from typing import Any
@@ -200,9 +201,10 @@ def _add_action_topic(topics: dict[str, TopicInfo], endpoint: ActionTopicEndpoin
 
 
 def dangling_endpoints(graph: Graph, owner_prefix: str = "") -> list[str]:
-    """One warning per controller subscription that nothing publishes to and
-    per controller publisher that nothing listens to, with the closest
-    existing topic names: the usual sign of a typo in a topic name."""
+    """One warning per controller subscription that nothing publishes to, per
+    controller publisher that nothing listens to (when a similar name
+    exists), and per service or action client that nothing serves, with the
+    closest existing names: the usual sign of a typo in a name."""
     warnings = []
     live = {t.name for t in graph.channels() if t.publishers or t.subscriptions}
     for topic in sorted(graph.channels(), key=lambda t: t.name):
@@ -219,6 +221,15 @@ def dangling_endpoints(graph: Graph, owner_prefix: str = "") -> list[str]:
                 # when a topic of a very similar name exists.
                 if _close(name, live):
                     warnings.append(_dangling(pub.node.fqn, "publishes on", name, "subscribes to", live))
+    # a client of a service or an action that nothing serves waits for ever
+    # (wait_for_service, wait_for_server): /rotate_absolute for /turtle1/rotate_absolute
+    for clients, servers, what in (
+        (graph.clients, graph.services, "a client of"),
+        (graph.action_clients, graph.action_servers, "an action client of"),
+    ):
+        for client in clients:
+            if client.owner.startswith(owner_prefix) and client.owner != "sim" and client.name not in servers:
+                warnings.append(_dangling(client.node.fqn, f"is {what}", client.name, "serves", set(servers)))
     return sorted(set(warnings))
 
 
@@ -254,7 +265,21 @@ def mistyped_endpoints(graph: Graph, owner_prefix: str = "") -> list[str]:
 
 
 def _close(topic: str, live: set[str]) -> list[str]:
-    return get_close_matches(topic, sorted(live - {topic}), n=2, cutoff=0.75)
+    """Up to two live topics ``topic`` may have meant: similar names, or the
+    same last name in another namespace (/scan for /turtle1/scan, /cmd_vel
+    for /turtle1/cmd_vel: a name written without its turtle's namespace)."""
+    others = sorted(live - {topic})
+    base = topic.rsplit("/", 1)[-1]
+    namesakes = [name for name in others if name.rsplit("/", 1)[-1] == base]
+    return list(dict.fromkeys([*get_close_matches(topic, others, n=2, cutoff=0.75), *namesakes]))[:2]
+
+
+_DANGLING = re.compile(r", but nothing (?:publishes|subscribes to|serves) it(?: \(did you mean [^()]*\?\))?$")
+
+
+def is_dangling_warning(text: str) -> bool:
+    """Whether ``text`` is one of :func:`dangling_endpoints`' warnings."""
+    return _DANGLING.search(text) is not None
 
 
 def _dangling(node: str, verb: str, topic: str, other: str, live: set[str]) -> str:

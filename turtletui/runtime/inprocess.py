@@ -22,7 +22,12 @@ from turtletui.runtime.loader import (
     run_controller,
     seed_numpy,
 )
-from turtletui.runtime.report import CrashReport, crash_from_exception, stop_turtles
+from turtletui.runtime.report import (
+    CrashReport,
+    crash_from_exception,
+    log_ended_early,
+    stop_turtles,
+)
 from turtletui.runtime.scheduler import CLOCK_READS_PER_STEP, CLOCK_STEP_NS
 from turtletui.runtime.simulation import MAX_ROUNDS_PER_INSTANT, Simulation
 from turtletui.runtime.virtual_time import simulated_time
@@ -145,6 +150,7 @@ def run_in_process(
     sys.argv = [spec.label, *ros_args]
     random.seed(seed)
     crash = None
+    ended = False  # the program ended by itself, without an error
     try:
         if spec.factory is not None:
             from turtletui.runtime.loader import spin_nodes
@@ -162,13 +168,19 @@ def run_in_process(
     except SystemExit as exc:
         if exc.code not in (None, 0):
             crash = CrashReport(spec.label, sim.t, "exit", f"exited with status {exc.code}", [])
+        else:
+            ended = True
     except BaseException as exc:  # noqa: BLE001 - controller code may raise anything
         crash = crash_from_exception(spec, sim.t, exc)
+    else:
+        ended = True
     finally:
         sys.argv = saved_argv
         host.running = False
         if crash is not None:
             stop_turtles(sim, owner)
+        elif ended and sim.graph.now_ns < end_ns:
+            log_ended_early(sim.graph, spec.label, sim.t)
         sim.graph.remove_owner(owner)
         compat_context.get_default_context().try_shutdown()
         compat_context.bind_host(None)

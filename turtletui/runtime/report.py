@@ -5,7 +5,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
-from turtletui.graph.logs import ERROR
+from turtletui.graph.logs import ERROR, INFO
+from turtletui.messages import ENDED_EARLY_ADVICE
 
 if TYPE_CHECKING:
     from turtletui.graph.core import Graph
@@ -58,6 +59,14 @@ def log_crash(graph: Graph, crash: CrashReport) -> None:
     for frame in crash.frames:
         for line in frame.splitlines():
             graph.log("turtletui", ERROR, line)
+
+
+def log_ended_early(graph: Graph, label: str, t: float) -> None:
+    """Note that controller ``label``'s program ended by itself at ``t``
+    (seconds), before the run did: no error, but its nodes stopped with it (a
+    main() that never spins, or returns at once), which alone explains a
+    silent node."""
+    graph.log("turtletui", INFO, f"{label} ended at t={t:.3f} s, before the run did, and its nodes stopped with it: {ENDED_EARLY_ADVICE}")
 
 
 def crash_from_exception(spec: ControllerSpec, t: float, exc: BaseException) -> CrashReport:

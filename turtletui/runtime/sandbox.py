@@ -23,7 +23,7 @@ from turtletui.interfaces import InterfaceError
 from turtletui.runtime import protocol, wire
 from turtletui.runtime.budget import Pace
 from turtletui.runtime.loader import ControllerSpec, check_source, factory_reference, import_root
-from turtletui.runtime.report import CrashReport, log_crash, stop_turtles
+from turtletui.runtime.report import CrashReport, log_crash, log_ended_early, stop_turtles
 from turtletui.runtime.sandbox_process import ChildFailed, ChildProcess
 from turtletui.runtime.sandbox_proxy import GraphProxy
 from turtletui.runtime.simulation import MAX_ROUNDS_PER_INSTANT, Simulation
@@ -95,6 +95,8 @@ class SandboxHost:
         self.wake_ns: int | None = None
         self.crash: CrashReport | None = None
         self.finished = False
+        self._ending = False
+        """The run is over: the child's last report answers its end (not an end of its own)."""
         spin = wire.default_spin_seconds() if limits.spin_seconds is None else limits.spin_seconds
         self.process = ChildProcess(spec, limits, self.graph.log, spin=spin)
         self._pace = Pace(start_ns=0)
@@ -173,6 +175,7 @@ class SandboxHost:
 
     def close(self) -> CrashReport | None:
         """End the child (asking it first), kill what it left behind, report."""
+        self._ending = True
         if not self.finished and self._awaiting is not None:
             self._collect(self.limits.step_timeout)
         if not self.finished:
@@ -385,6 +388,8 @@ class SandboxHost:
         if report.done:
             crash = report.crash
             if crash is None:
+                if not self._ending:
+                    log_ended_early(self.graph, self.spec.label, self.sim.t)
                 self._terminate()
             else:
                 kind = crash.kind if crash.kind in _CRASH_KINDS else "exception"

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Mapping
 from dataclasses import replace
@@ -270,3 +271,41 @@ def _lag(poses: Any, t: float, max_age: float, numbers: list[tuple[float, float]
         if _shows(numbers, x, y):
             return t - when
     return None
+
+
+@check(
+    "log_feedback",
+    "Log lines of the controller's nodes (optionally matching `pattern`, from `node`, at "
+    "`level`) that carry the feedback of a RotateAbsolute goal sent to `action` (default "
+    "/turtle1/rotate_absolute) while it was in progress: a number equal, to the digits it "
+    "prints, to the angle the turtle still had to turn (the feedback's remaining, in radians or "
+    "degrees, either sign) in the last `max_age` seconds (default 0.1). Lines logged the "
+    "instant a goal was sent (\"Sending goal: 1.57\") do not count: thresholds min and max.",
+    {**MINMAX, **_LOG, "action": "text", "max_age": "number"},
+)
+def log_feedback(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    """Whatever words the lines use ("Remaining: 0.42 rad", "0.42 rad to go",
+    "feedback 24.1 deg"): the numbers are what the feedback said."""
+    action = th.get("action", "/turtle1/rotate_absolute")
+    max_age = th.get("max_age", 0.1)
+    goals = [goal for goal in trace.goals if goal.action == action]
+    poses = trace.pose_array(action.strip("/").split("/")[0])
+    if not goals or len(poses) == 0:
+        return measured("log lines with the feedback:", bounds(0, th))
+    sent = np.array([goal.t for goal in goals])
+    times = poses[:, 0]
+    count = 0
+    for record in _matching_logs(trace, th):
+        latest = int(np.searchsorted(sent, record.t + 1e-9, side="right")) - 1
+        if latest < 0 or record.t - sent[latest] <= 1e-9:
+            continue  # before any goal, or the line that announces one
+        numbers = [(abs(value), tolerance) for value, tolerance in _logged_numbers(record.msg)]
+        if not numbers:
+            continue
+        target = float(goals[latest].goal.theta)
+        recent = poses[(times <= record.t + 1e-9) & (times >= record.t - max_age - 1e-9)]
+        remaining = np.abs(np.remainder(target - recent[:, 3] + math.pi, math.tau) - math.pi)
+        said = [*remaining.tolist(), *np.degrees(remaining).tolist()]
+        if any(abs(value - r) <= tolerance for value, tolerance in numbers for r in said):
+            count += 1
+    return measured("log lines with the feedback:", bounds(count, th))

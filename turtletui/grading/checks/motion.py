@@ -20,6 +20,7 @@ from turtletui.grading.checks.base import (
     turtle_of,
 )
 from turtletui.grading.trace import Trace
+from turtletui.messages import plural
 
 
 @check(
@@ -36,7 +37,53 @@ def coverage(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     ix = np.clip((poses[:, 1] / cell).astype(int), 0, cells - 1)
     iy = np.clip((poses[:, 2] / cell).astype(int), 0, cells - 1)
     visited = len(set(zip(ix.tolist(), iy.tolist(), strict=True)))
-    return measured("arena covered:", bounds(visited / (cells * cells), th))
+    return _held(trace, measured("arena covered:", bounds(visited / (cells * cells), th)), turtle_of(th))
+
+
+HELD_SHARE = 0.25
+"""The share of a run a turtle may spend held back by a wall or an obstacle
+before a failed distance or coverage says so."""
+
+
+def held_back(trace: Trace, turtle: str) -> tuple[float, float | None, str]:
+    """The share of the run the turtle spent driving into something that held
+    it back (its speed says it drives, it moved less than half of that), since
+    when it was held to the end (None if it got free), and what held it ("a
+    wall" if it was at the arena's edge then, else "an obstacle")."""
+    poses = trace.pose_array(turtle)
+    if len(poses) < 2:
+        return 0.0, None, "a wall"
+    dt = np.diff(poses[:, 0])
+    speed = np.abs(poses[1:, 4])
+    moved = np.hypot(np.diff(poses[:, 1]), np.diff(poses[:, 2]))
+    held = (speed > 1e-6) & (moved < 0.5 * speed * dt) & ~trace.jumped(turtle)[1:]
+    share = float(held.mean())
+    x, y = poses[1:, 1][held], poses[1:, 2][held]
+    edge = 1e-6
+    at_wall = (x <= edge) | (x >= trace.arena_size - edge) | (y <= edge) | (y >= trace.arena_size - edge)
+    what = "a wall" if at_wall.any() or not len(x) else "an obstacle"
+    if not held[-1]:
+        return share, None, what
+    free = np.flatnonzero(~held)
+    since = float(poses[free[-1] + 1, 0]) if len(free) else float(poses[0, 0])
+    return share, since, what
+
+
+def _held(trace: Trace, verdict: Verdict, turtle: str) -> Verdict:
+    """A failed verdict of a turtle that spent much of its run pushing against
+    a wall or an obstacle, told so: the node drove on (it did not "hardly
+    drive"), and the command that should have turned it away never came."""
+    if verdict.passed:
+        return verdict
+    share, since, what = held_back(trace, turtle)
+    if share < HELD_SHARE:
+        return verdict
+    when = f"from t={since:.1f} s to the end" if since is not None else f"for {share:.0%} of the run"
+    note = (
+        f"; {when} the turtle was pushing against {what}: it drove into it and its "
+        "commands kept driving it forward (did the condition that should turn it away ever hold?)"
+    )
+    return replace(verdict, measured=verdict.measured + note)
 
 
 def _distance(trace: Trace, turtle: str) -> float:
@@ -64,7 +111,15 @@ def _unheard(trace: Trace, verdict: Verdict, turtle: str, moved: bool) -> Verdic
     their numbers."""
     if verdict.passed or moved or len(trace.command_array(turtle)):
         return verdict
-    note = f"; nothing was published on /{turtle}/cmd_vel (is that the topic your node publishes on?)"
+    topic = f"/{turtle}/cmd_vel"
+    if topic in trace.published:
+        # the right publisher, never used: the code that publishes never ran
+        note = (
+            f"; nothing was published on {topic}: your node has a publisher on it but never published "
+            "(does the timer or callback that publishes ever run?)"
+        )
+    else:
+        note = f"; nothing was published on {topic} (is that the topic your node publishes on?)"
     return replace(verdict, measured=verdict.measured + note)
 
 
@@ -72,7 +127,8 @@ def _unheard(trace: Trace, verdict: Verdict, turtle: str, moved: bool) -> Verdic
 def distance(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     turtle = turtle_of(th)
     driven = _distance(trace, turtle)
-    return _unheard(trace, measured("distance driven:", bounds(driven, th, " m")), turtle, driven > 0.0)
+    verdict = _held(trace, measured("distance driven:", bounds(driven, th, " m")), turtle)
+    return _unheard(trace, verdict, turtle, driven > 0.0)
 
 
 @check(
@@ -104,7 +160,43 @@ def time_moving(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     need = f" ({'; '.join(notes)})" if notes else ""
     what = "moving" if th.get("turning", True) else "driving"
     moved = bool((poses[:, 4] > 1e-6).any() or (np.diff(poses[:, 1:4], axis=0) != 0).any())  # or turned
-    return _unheard(trace, Verdict(verdict.passed, f"{what} {share:.0%} of the run{need}"), turtle_of(th), moved)
+    text = f"{what} {share:.0%} of the run{need}"
+    if not verdict.passed:
+        text += _pauses(trace, turtle_of(th), turning=th.get("turning", True))
+    return _unheard(trace, Verdict(verdict.passed, text), turtle_of(th), moved)
+
+
+COMMAND_TIMEOUT = 1.0
+"""Seconds after its last velocity command that turtlesim stops a turtle."""
+
+
+def _pauses(trace: Trace, turtle: str, *, turning: bool) -> str:
+    """Why a turtle that was sent commands stood still, from when they came:
+    the commands that move it stopped (a stop sent, or nothing more), or came
+    further apart than turtlesim's 1 s timeout (a slow timer, a callback that
+    sleeps). "" when neither."""
+    commands = trace.command_array(turtle)
+    if not len(commands):
+        return ""
+    moves = (commands[:, 1] != 0) | (commands[:, 2] != 0)
+    if turning:
+        moves |= commands[:, 3] != 0
+    times = commands[moves, 0]
+    if not len(times):
+        return "; every velocity command the node sent was a stop (all zeros)"
+    end = max(trace.sim_time, float(times[-1]))
+    if end - times[-1] > COMMAND_TIMEOUT and end - times[-1] >= 0.2 * end:
+        later = int((commands[:, 0] > times[-1]).sum())
+        after = f" (the {plural(later, 'command')} after it stopped the turtle)" if later else ""
+        return f"; the last velocity command that moves the turtle came at t={times[-1]:.1f} s of {end:.0f} s{after}"
+    gaps = np.diff(times)
+    if len(gaps) and gaps.max() > COMMAND_TIMEOUT:
+        return (
+            f"; the commands came up to {gaps.max():.1f} s apart, and turtlesim stops a turtle "
+            f"{COMMAND_TIMEOUT:g} s after the last one (a timer that slow, or a callback that sleeps, "
+            "leaves it standing in between)"
+        )
+    return ""
 
 
 @check(

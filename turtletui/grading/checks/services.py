@@ -20,6 +20,7 @@ from turtletui.grading.checks.base import (
     turtle_of,
 )
 from turtletui.grading.trace import Trace
+from turtletui.messages import plural
 
 
 @check(
@@ -179,7 +180,16 @@ def goals_reached(trace: Trace, th: Mapping[str, Any]) -> Verdict:
             reached += 1
     share = reached / len(goals)
     verdict = bounds(share, {"min": th.get("min", 1.0), "max": th.get("max")})
-    return Verdict(verdict.passed, f"{reached} of {len(goals)} goals reached: {verdict.measured}")
+    text = f"{reached} of {len(goals)} goals reached: {verdict.measured}"
+    commands = trace.command_array(turtle)
+    during = int((commands[:, 0] >= goals[0].t).sum()) if len(commands) else 0
+    if not verdict.passed and during:
+        # turtlesim aborts a rotation on any cmd_vel message, a zero Twist too
+        text += (
+            f"; the node published {plural(during, 'velocity command')} on /{turtle}/cmd_vel once it had "
+            "sent a goal, and any cmd_vel message aborts the goal in progress"
+        )
+    return Verdict(verdict.passed, text)
 
 
 @check(
