@@ -857,8 +857,10 @@ class Node(Destroyable):
         return True
 
     def destroy_rate(self, rate: Rate) -> bool:
+        """Destroy ``rate`` and its timer; False (as rclpy) when the timer was already gone."""
+        destroyed = self.destroy_timer(rate._timer)
         rate.destroy()
-        return True
+        return destroyed
 
     def _destroy_entity(self, entity: Any, remove: Callable[[Any], Any]) -> bool:
         if entity not in self._entities:
