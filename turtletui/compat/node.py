@@ -424,6 +424,16 @@ class Service(Destroyable):
         self._node._release_entity(self, self._node._graph.remove_service)
 
 
+_NAME_ALONE = (
+    "when declaring parameter named '{}', declaring a parameter only providing its name is deprecated. "
+    "You have to either:\n"
+    '\t- Pass a name and a default value different to "PARAMETER NOT SET" (and optionally a descriptor).\n'
+    "\t- Pass a name and a parameter type.\n"
+    "\t- Pass a name and a descriptor with `dynamic_typing=True"
+)
+"""rclpy's UserWarning for ``declare_parameter(name)`` (its text, unclosed backquote included)."""
+
+
 class Node(Destroyable):
     """A ROS 2 node: the base class of every controller."""
 
@@ -1001,7 +1011,63 @@ class Node(Destroyable):
         descriptor: ParameterDescriptor | None = None,
         ignore_override: bool = False,
     ) -> Parameter:
-        """Declare a parameter; a ``--ros-args -p`` override of the same type wins."""
+        """Declare a parameter; a ``--ros-args -p`` override of the same type wins.
+        A name alone (no value, no descriptor) is deprecated in rclpy: it warns
+        and declares a dynamically typed parameter."""
+        if value is None and descriptor is None:
+            return self.declare_parameters("", [(name,)], ignore_override)[0]
+        entry = (name, value, ParameterDescriptor() if descriptor is None else descriptor)
+        return self.declare_parameters("", [entry], ignore_override)[0]
+
+    def declare_parameters(
+        self, namespace: str, parameters: Sequence[tuple], ignore_override: bool = False
+    ) -> list[Parameter]:
+        """Declare each ``(name,)``, ``(name, value)`` or ``(name, value, descriptor)``
+        under ``namespace``, after checking every entry as rclpy does (its
+        TypeErrors and ValueErrors, and its UserWarning for a name alone)."""
+        checked = []
+        for index, entry in enumerate(parameters):
+            if len(entry) < 1 or len(entry) > 3:
+                raise TypeError(
+                    f"Invalid parameter tuple length at index {index} in parameters list: {entry}; "
+                    "expecting length between 1 and 3"
+                )
+            name = entry[0]
+            if not isinstance(name, str):
+                raise TypeError(f"First element {name} at index {index} in parameters list is not a str.")
+            if namespace:
+                name = f"{namespace}.{name}"
+            value = entry[1] if len(entry) > 1 else None
+            descriptor = entry[2] if len(entry) > 2 else ParameterDescriptor()
+            if not isinstance(descriptor, ParameterDescriptor):
+                raise TypeError(
+                    f"Third element {descriptor} at index {index} in parameters list is not a ParameterDescriptor."
+                )
+            if len(entry) == 1:
+                warnings.warn(_NAME_ALONE.format(name), UserWarning, stacklevel=2)
+                descriptor.dynamic_typing = True
+            if isinstance(value, Parameter.Type):
+                if value is Parameter.Type.NOT_SET:
+                    raise ValueError(f"Cannot declare parameter {{{name}}} as statically typed of type NOT_SET")
+                if descriptor.dynamic_typing:
+                    raise ValueError(
+                        f"When declaring parameter {{{name}}} passing a descriptor with`dynamic_typing=True` "
+                        "is not allowed when the parameter type is provided"
+                    )
+            elif not descriptor.dynamic_typing:
+                inferred = value.type if isinstance(value, ParameterValue) else None
+                if inferred is None:
+                    inferred = Parameter.Type.from_parameter_value(value).value
+                if inferred == Parameter.Type.NOT_SET.value:
+                    raise ValueError(
+                        "Cannot declare a statically typed parameter with default value of type PARAMETER_NOT_SET"
+                    )
+            checked.append((name, value, descriptor))
+        return [self._declare_one(name, value, descriptor, ignore_override) for name, value, descriptor in checked]
+
+    def _declare_one(
+        self, name: str, value: Any, descriptor: ParameterDescriptor, ignore_override: bool
+    ) -> Parameter:
         self._require_alive()
         if name in self._parameters:
             raise ParameterAlreadyDeclaredException([name])
@@ -1011,9 +1077,6 @@ class Node(Destroyable):
             expected, value = value, None
         else:
             expected = Parameter.Type.from_parameter_value(value)
-        if value is None and descriptor is None and expected is Parameter.Type.NOT_SET:
-            descriptor = ParameterDescriptor(dynamic_typing=True)  # as rclpy: a name alone
-        descriptor = descriptor or ParameterDescriptor()
         if not ignore_override and name in self._overrides:
             override = self._overrides[name]
             if (
@@ -1042,17 +1105,6 @@ class Node(Destroyable):
         self._publish_parameter_event(new=[parameter])
         self._run_post_set([parameter])
         return parameter
-
-    def declare_parameters(
-        self, namespace: str, parameters: Sequence[tuple], ignore_override: bool = False
-    ) -> list[Parameter]:
-        declared = []
-        for entry in parameters:
-            name = f"{namespace}.{entry[0]}" if namespace else entry[0]
-            value = entry[1] if len(entry) > 1 else None
-            descriptor = entry[2] if len(entry) > 2 else None
-            declared.append(self.declare_parameter(name, value, descriptor, ignore_override))
-        return declared
 
     def undeclare_parameter(self, name: str) -> None:
         self._require_alive()
