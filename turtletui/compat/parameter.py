@@ -153,7 +153,8 @@ class Parameter:
         return ParameterMsg(name=self.name, value=self.get_parameter_value())
 
     def __repr__(self) -> str:
-        return f"Parameter(name={self._name!r}, type_={self._type_.name}, value={self._value!r})"
+        # rclpy's Parameter has no repr of its own: print(param) shows the object
+        return f"<rclpy.parameter.Parameter object at {id(self):#x}>"
 
 
 _FIELD = {
