@@ -268,6 +268,8 @@ SURFACE = {
     "rclpy.lifecycle.SimpleManagedEntity": ["__init__", "on_activate", "on_deactivate", "is_activated"],
     "rclpy.lifecycle.LifecycleState": ["__init__"],
     "rclpy.time_source.TimeSource": ["__init__", "attach_node", "detach_node", "attach_clock", "clock_callback"],
+    "rclpy.event_handler.SubscriptionEventCallbacks": ["__init__"],
+    "rclpy.event_handler.PublisherEventCallbacks": ["__init__"],
 }
 
 ENUMS = [
@@ -281,6 +283,7 @@ ENUMS = [
     "rclpy.action.GoalResponse",
     "rclpy.action.CancelResponse",
     "rclpy.lifecycle.TransitionCallbackReturn",
+    "rclpy.qos.QoSPolicyKind",
 ]
 
 ALIASES = {
@@ -314,6 +317,7 @@ NAMES = [
     "rclpy.timer.Rate",
     "rclpy.lifecycle.LifecycleNodeMixin",
     "rclpy.lifecycle.ManagedEntity",
+    "rclpy.event_handler.UnsupportedEventTypeError",
 ]
 
 QOS_PRESETS = [

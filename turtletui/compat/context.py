@@ -81,11 +81,13 @@ class Context:
         self._nodes: list[Any] = []
         self._callbacks: list[Any] = []
         self._made = 0
-        self.qos_events: list[tuple[int, int, Any, str]] = []
+        self.qos_events: list[tuple[int, int, Any, str, Any, Any]] = []
         """QoS warnings waiting for an executor (turtletui.compat.matching)."""
         self.ros_args = RosArgs()
         self.told_no_clock = False
         """Whether a node was told why its use_sim_time clock stands still."""
+        self.told_event_callbacks = False
+        """Whether turtletui said which QoS event callbacks it never calls."""
 
     @property
     def host(self) -> Host:
@@ -149,8 +151,11 @@ class Context:
     def flush_qos_events(self) -> None:
         """Log the QoS warnings waiting, as an executor runs event callbacks."""
         events, self.qos_events = sorted(self.qos_events, key=lambda e: e[:2]), []
-        for _, _, logger, text in events:
-            logger.warning(text)
+        for _, _, logger, text, callback, status in events:
+            if callback is None:
+                logger.warning(text)
+            else:
+                callback(status)  # the program's incompatible_qos callback
 
     def untrack_node(self, node: Any) -> None:
         if node in self._nodes:

@@ -16,6 +16,7 @@ from turtletui.compat.context import Context, get_default_context
 from turtletui.compat.destroyable import Destroyable
 from turtletui.compat.dispatch import dispatcher
 from turtletui.compat.distro import current_distro
+from turtletui.compat.event_handler import attach_event_callbacks
 from turtletui.compat.exceptions import (  # noqa: F401  (re-exported: rclpy.node users import them here)
     InvalidHandle,
     InvalidParameterTypeException,
@@ -608,15 +609,19 @@ class Node(Destroyable):
         self.add_callback_group(callback_group)
         return callback_group
 
-    def _qos_event(self, entity: Any, text: str) -> None:
+    def _qos_event(
+        self, entity: Any, text: str, callback: Callable[[Any], None] | None = None, status: Any = None
+    ) -> None:
         """Log ``text`` as rclpy's default QoS event callback of ``entity``
-        does: when an executor next runs the node's callbacks, a node's events
-        in the order of its entities, nodes in the order they were made."""
+        does, or call the program's own ``callback`` with ``status``: when an
+        executor next runs the node's callbacks, a node's events in the order
+        of its entities, nodes in the order they were made."""
         events = self._context.qos_events
         if not events:
             host = self._context.host
             host.graph.ready.append((host.owner, self._context.flush_qos_events))
-        events.append((self._context.node_order(self), self._entities.index(entity), self._logger, text))
+        order = (self._context.node_order(self), self._entities.index(entity))
+        events.append((*order, self._logger, text, callback, status))
 
     def get_name(self) -> str:
         self._require_alive()
@@ -700,6 +705,7 @@ class Node(Destroyable):
         publisher = publisher_class(self, record, qos_profile)
         publisher._topic_as_given = topic
         self._entities.append(publisher)
+        attach_event_callbacks(self, publisher, event_callbacks, "publisher")
         match_publisher(self, publisher)
         return publisher
 
@@ -742,6 +748,7 @@ class Node(Destroyable):
         subscription = Subscription(self, record, callback, qos_profile)
         subscription._topic_as_given = topic
         self._entities.append(subscription)
+        attach_event_callbacks(self, subscription, event_callbacks, "subscription")
         match_subscription(self, subscription)
         return subscription
 

@@ -17,6 +17,26 @@ class InvalidQoSProfileException(ValueError):
     from Exception only; a ValueError here too, as turtletui raised before.)"""
 
 
+class QoSPolicyKind(IntEnum):
+    """The QoS policies an incompatible-QoS event can name (rmw's values)."""
+
+    INVALID = 1 << 0
+    DURABILITY = 1 << 1
+    DEADLINE = 1 << 2
+    LIVELINESS = 1 << 3
+    RELIABILITY = 1 << 4
+    HISTORY = 1 << 5
+    LIFESPAN = 1 << 6
+    DEPTH = 1 << 7
+    LIVELINESS_LEASE_DURATION = 1 << 8
+    AVOID_ROS_NAMESPACE_CONVENTIONS = 1 << 9
+
+
+def qos_policy_name_from_kind(policy_kind: QoSPolicyKind | int) -> str:
+    """The name of a QoS policy kind (``QoSPolicyKind.RELIABILITY`` or 16: "RELIABILITY")."""
+    return QoSPolicyKind(policy_kind).name
+
+
 class QoSPolicyEnum(IntEnum):
     """Base of the QoS policy enums."""
 

@@ -4,6 +4,7 @@ from rclpy import (  # noqa: F401,E402
     callback_groups,
     clock,
     duration,
+    event_handler,
     executors,
     logging,
     node,
