@@ -52,6 +52,7 @@ FUNCTIONS = {
     ],
     "rclpy.logging": ["get_logger", "set_logger_level", "get_logger_effective_level"],
     "rclpy.wait_for_message": ["wait_for_message"],
+    "rclpy.signals": ["install_signal_handlers", "get_current_signal_handlers_options", "uninstall_signal_handlers"],
 }
 
 NODE_METHODS = [
@@ -284,6 +285,7 @@ ENUMS = [
     "rclpy.action.CancelResponse",
     "rclpy.lifecycle.TransitionCallbackReturn",
     "rclpy.qos.QoSPolicyKind",
+    "rclpy.signals.SignalHandlerOptions",
 ]
 
 ALIASES = {

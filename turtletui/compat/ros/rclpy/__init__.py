@@ -10,6 +10,7 @@ from rclpy import (  # noqa: F401,E402
     node,
     parameter,
     qos,
+    signals,
     task,
     time,
 )
