@@ -105,49 +105,65 @@ def dispatcher(
     def delivery(sub: Any) -> Callable[[], None]:
         """What hands subscription ``sub``'s queued messages to the callback:
         turtletui.graph.core.Subscription.deliver and ``run`` in one (for
-        add_subscription's ``delivery``), a frame less per message. A message
-        for a free MutuallyExclusive group, the usual case, takes ``run``'s
-        steps written out here; any other goes through ``run``."""
+        add_subscription's ``delivery``), a frame less per message. As rclpy's
+        executor takes one message of a subscription each time it runs it, a
+        delivery hands over the oldest message only and, if more are queued,
+        queues itself again behind what else is ready: ``spin_once()`` runs
+        one message, and two busy subscriptions take turns. A message for a
+        free MutuallyExclusive group, the usual case, takes ``run``'s steps
+        written out here; any other goes through ``run``."""
         queue = sub.queue
         popleft = queue.popleft
+
+        def take() -> Any:
+            """The oldest message; the subscription stays pending while more wait."""
+            msg = popleft()
+            if queue:
+                ready.append(sub.ready_item)
+            else:
+                sub.pending = False
+            return msg
+
         if message_info is not None:
 
             def deliver_with_info() -> None:
-                sub.pending = False
-                while queue:
-                    msg, origin = popleft()
-                    run(msg, message_info(origin))
+                if not queue:
+                    sub.pending = False
+                    return
+                msg, origin = take()
+                run(msg, message_info(origin))
 
             return deliver_with_info
 
         def deliver() -> None:
-            sub.pending = False
-            while queue:
-                if not exclusive or group._active_entity is not None:
-                    run(popleft())
-                    continue
-                group._active_entity = run
-                held = False
+            if not queue:
+                sub.pending = False
+                return
+            if not exclusive or group._active_entity is not None:
+                run(take())
+                return
+            group._active_entity = run
+            held = False
+            try:
+                stack = _running.groups
+            except AttributeError:
+                stack = running_groups()
+            stack.append(group)
+            try:
+                depth.n += 1
                 try:
-                    stack = _running.groups
-                except AttributeError:
-                    stack = running_groups()
-                stack.append(group)
-                try:
-                    depth.n += 1
-                    try:
-                        result = callback(popleft())
-                    finally:
-                        depth.n -= 1
-                    if result is not None and isinstance(result, CoroutineType):
-                        held = True
-                        start_task(host, group, result, now=True, release=lambda _task: release(run))
+                    result = callback(take())
                 finally:
-                    stack.pop()
-                    if not held:
-                        group._active_entity = None
-                        if group._deferred:
-                            release_deferred(run)
+                    depth.n -= 1
+                if result is not None and isinstance(result, CoroutineType):
+                    held = True
+                    start_task(host, group, result, now=True, release=lambda _task: release(run))
+            finally:
+                stack.pop()
+                if not held:
+                    group._active_entity = None
+                    if group._deferred:
+                        release_deferred(run)
 
         return deliver
 
