@@ -41,6 +41,7 @@ def dispatcher(
     group: CallbackGroup,
     callback: Callable,
     message_info: Callable[[Any], dict] | None = None,
+    received: Callable[[Any], None] | None = None,
 ) -> Callable:
     """``callback`` as the graph should call it: counted as a callback (as
     host.wrap_callback counts, inline: this runs for every delivery), run
@@ -49,7 +50,9 @@ def dispatcher(
     ``message_info``, for a subscription callback that takes rclpy's
     MessageInfo: its queue holds ``(msg, MessageOrigin)`` pairs (the graph's
     ``stamped`` subscriptions) and ``message_info(origin)`` makes the second
-    argument of each call."""
+    argument of each call. ``received(msg)``, if given, does to each message
+    what the middleware does on its way (float32 fields rounded) before the
+    callback has it."""
     depth = host.callback_counter
     ready = host.graph.ready
     owner = host.owner
@@ -122,6 +125,8 @@ def dispatcher(
                 ready.append(sub.ready_item)
             else:
                 sub.pending = False
+            if received is not None:
+                received(msg if message_info is None else msg[0])
             return msg
 
         if message_info is not None:

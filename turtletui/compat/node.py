@@ -84,7 +84,7 @@ from turtletui.compat.type_description_service import TypeDescriptionService
 from turtletui.graph import core
 from turtletui.graph.logs import WARN
 from turtletui.interfaces import Action as ActionType
-from turtletui.interfaces import Message, copier, interface_name
+from turtletui.interfaces import Message, copier, float32_rounder, interface_name
 from turtletui.interfaces import Service as ServiceType
 from turtletui.interfaces.rcl_interfaces import Log, ParameterEvent
 from turtletui.interfaces.rcl_interfaces import Parameter as ParameterMsg
@@ -730,7 +730,7 @@ class Node(Destroyable):
         host = self._context.host
         with_info = takes_message_info(callback)  # after the name's checks, as rclpy
         info = message_info_maker(self._graph) if with_info else None
-        run = dispatcher(host, self._group(callback_group), callback, info)
+        run = dispatcher(host, self._group(callback_group), callback, info, float32_rounder(msg_type))
         try:
             record = self._graph.add_subscription(
                 self._record,
