@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any, Protocol
 
+from turtletui.compat.identity import as_rclpy
 from turtletui.compat.rcl_error import RCLError, UnknownROSArgsError
 from turtletui.compat.ros_args import RosArgs, RosArgsError, UnknownRosArgs, parse_ros_args
 
@@ -182,3 +183,6 @@ def reset_default_context() -> Context:
     global _default_context
     _default_context = Context()
     return _default_context
+
+# as rclpy's classes print: <rclpy.node.Node object at ...> (turtletui.compat.identity)
+as_rclpy("rclpy.context", Context)

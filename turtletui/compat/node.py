@@ -45,6 +45,7 @@ from turtletui.compat.graph_info import (
     endpoints_info,
 )
 from turtletui.compat.guard_condition import GuardCondition
+from turtletui.compat.identity import as_rclpy
 from turtletui.compat.logging import RcutilsLogger, get_logger
 from turtletui.compat.matching import match_publisher, match_subscription, watch_mismatches
 from turtletui.compat.message_info import MessageInfo, message_info_maker, takes_message_info
@@ -1351,3 +1352,10 @@ def _check_srv_type(srv_type: Any) -> None:
         raise RuntimeError(
             f"The service type provided is not valid ({srv_type}), this might be a message or action"
         )
+
+# as rclpy's classes print: <rclpy.node.Node object at ...> (turtletui.compat.identity)
+as_rclpy("rclpy.node", Node)
+as_rclpy("rclpy.publisher", Publisher)
+as_rclpy("rclpy.subscription", Subscription)
+as_rclpy("rclpy.client", Client)
+as_rclpy("rclpy.service", Service)

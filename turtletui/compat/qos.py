@@ -8,6 +8,7 @@ import warnings
 from enum import Enum, IntEnum
 from typing import Any
 
+from turtletui.compat.identity import as_rclpy
 from turtletui.compat.time import Duration
 from turtletui.graph.qos import incompatible_policy, is_transient_local  # noqa: F401  (the middleware's matching)
 
@@ -252,12 +253,6 @@ class QoSProfile:
             f"{slot[1:]}=%s" % _plain(getattr(self, slot)) for slot in self.__slots__
         )
 
-    def __repr__(self) -> str:
-        return (
-            f"QoSProfile(history={self.history.name}, depth={self.depth}, "
-            f"reliability={self.reliability.name}, durability={self.durability.name})"
-        )
-
 
 def _plain(value: Any) -> Any:
     return int(value) if isinstance(value, IntEnum) else value
@@ -367,3 +362,6 @@ def depth_of(qos_profile: QoSProfile | int) -> int:
     if qos_profile.history == HistoryPolicy.KEEP_LAST:
         return max(qos_profile.depth, 1)
     return 1
+
+# as rclpy's classes print: <rclpy.node.Node object at ...> (turtletui.compat.identity)
+as_rclpy("rclpy.qos", QoSProfile, HistoryPolicy, ReliabilityPolicy, DurabilityPolicy, LivelinessPolicy, QoSPresetProfiles, QoSPolicyKind)

@@ -25,6 +25,7 @@ from turtletui.compat.executors import (
     threads_that_can_help,
     wait_in_host,
 )
+from turtletui.compat.identity import as_rclpy
 from turtletui.compat.time import (
     _SOURCE_CHANGES,
     Clock,
@@ -341,3 +342,6 @@ class Rate:
         """Stop the rate: a sleep after it raises. As rclpy's, the rate's timer
         stays the node's until ``node.destroy_rate(rate)`` destroys it."""
         self._destroyed = True
+
+# as rclpy's classes print: <rclpy.node.Node object at ...> (turtletui.compat.identity)
+as_rclpy("rclpy.timer", Timer, Rate, TimerInfo)
