@@ -52,6 +52,7 @@ FUNCTIONS = {
     ],
     "rclpy.logging": ["get_logger", "set_logger_level", "get_logger_effective_level"],
     "rclpy.wait_for_message": ["wait_for_message"],
+    "rclpy.signals": ["install_signal_handlers", "get_current_signal_handlers_options", "uninstall_signal_handlers"],
 }
 
 NODE_METHODS = [
@@ -268,6 +269,8 @@ SURFACE = {
     "rclpy.lifecycle.SimpleManagedEntity": ["__init__", "on_activate", "on_deactivate", "is_activated"],
     "rclpy.lifecycle.LifecycleState": ["__init__"],
     "rclpy.time_source.TimeSource": ["__init__", "attach_node", "detach_node", "attach_clock", "clock_callback"],
+    "rclpy.event_handler.SubscriptionEventCallbacks": ["__init__"],
+    "rclpy.event_handler.PublisherEventCallbacks": ["__init__"],
 }
 
 ENUMS = [
@@ -281,6 +284,8 @@ ENUMS = [
     "rclpy.action.GoalResponse",
     "rclpy.action.CancelResponse",
     "rclpy.lifecycle.TransitionCallbackReturn",
+    "rclpy.qos.QoSPolicyKind",
+    "rclpy.signals.SignalHandlerOptions",
 ]
 
 ALIASES = {
@@ -314,6 +319,7 @@ NAMES = [
     "rclpy.timer.Rate",
     "rclpy.lifecycle.LifecycleNodeMixin",
     "rclpy.lifecycle.ManagedEntity",
+    "rclpy.event_handler.UnsupportedEventTypeError",
 ]
 
 QOS_PRESETS = [

@@ -691,3 +691,28 @@ def a_zero_period_timer_fires_often_and_the_run_goes_on():
 
 def test_a_zero_period_timer_fires_often_and_the_run_goes_on(controller_host):
     run_body(controller_host, a_zero_period_timer_fires_often_and_the_run_goes_on)
+
+
+# -- QoS event callbacks ---------------------------------------------------------------------------
+
+
+def event_callbacks_turtletui_never_calls():
+    from rclpy.event_handler import PublisherEventCallbacks, SubscriptionEventCallbacks
+    from std_msgs.msg import String
+
+    node = beh_node()
+    heard = []
+    node.create_publisher(String, "a", 10, event_callbacks=PublisherEventCallbacks(matched=heard.append, deadline=heard.append))
+    node.create_subscription(String, "a", heard.append, 10, event_callbacks=SubscriptionEventCallbacks(matched=heard.append))
+    rclpy.spin_once(node, timeout_sec=0.1)
+    assert heard == []
+
+
+def test_event_callbacks_turtletui_never_calls_are_named_once(controller_host):
+    result = run_body(controller_host, event_callbacks_turtletui_never_calls)
+    notes = [line for line in node_logs(result, "turtletui") if "never called in turtletui" in line]
+    assert notes == [
+        "/beh: the deadline and matched callbacks of its publisher on '/a' are never called in turtletui (it has"
+        " no such events: deadline and liveliness are not enforced, an endpoint of another type never matches,"
+        " and matches are not reported); its incompatible_qos callback is."
+    ]

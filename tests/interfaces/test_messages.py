@@ -195,6 +195,21 @@ def test_copier_copies_everything_mutable_and_nothing_more():
         I.copier(int)
 
 
+def test_float32_rounder_rounds_float32_fields_as_cdr_carries_them():
+    from turtletui.interfaces.geometry_msgs import Point32, Polygon, PolygonStamped
+
+    stamped = PolygonStamped(polygon=Polygon(points=[Point32(x=0.1), Point32(y=1 / 3, z=3.4e38)]))
+    I.float32_rounder(PolygonStamped)(stamped)
+    assert [(p.x, p.y, p.z) for p in stamped.polygon.points] == [
+        (0.10000000149011612, 0.0, 0.0),
+        (0.0, 0.3333333432674408, 3.3999999521443642e38),
+    ]
+    assert I.float32_rounder(Twist) is None  # float64 only: nothing to do
+    assert I.float32_rounder(LaserScan) is not None  # angle_min ... (its ranges are array('f') already)
+    with pytest.raises(I.InterfaceError, match="needs a message class"):
+        I.float32_rounder(int)
+
+
 def test_fields_getter_reads_the_named_fields_as_a_tuple():
     twist = Twist(linear=Vector3(x=1.5, y=-2.0), angular=Vector3(z=0.25))
     assert I.fields_getter(Twist, "linear.x", "linear.y", "angular.z")(twist) == (1.5, -2.0, 0.25)

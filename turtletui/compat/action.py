@@ -7,6 +7,7 @@ from collections.abc import Callable
 from typing import Any
 
 from turtletui.compat.destroyable import Destroyable
+from turtletui.compat.identity import as_rclpy
 from turtletui.compat.node import wait_for_server
 from turtletui.compat.qos import (
     QoSProfile,
@@ -261,3 +262,6 @@ def get_action_client_names_and_types_by_node(
 ) -> list[tuple[str, list[str]]]:
     """The actions the node ``remote_node_namespace/remote_node_name`` is a client of."""
     return node._names_and_types_by_node(remote_node_name, remote_node_namespace, "action_clients", "action client")
+
+# as rclpy's classes print: <rclpy.node.Node object at ...> (turtletui.compat.identity)
+as_rclpy("rclpy.action.client", ActionClient, ClientGoalHandle)

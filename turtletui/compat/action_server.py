@@ -23,6 +23,7 @@ from turtletui.compat.callback_groups import ReentrantCallbackGroup
 from turtletui.compat.destroyable import Destroyable
 from turtletui.compat.dispatch import dispatcher, start_task
 from turtletui.compat.executors import await_or_execute
+from turtletui.compat.identity import as_rclpy
 from turtletui.compat.qos import (
     QoSProfile,
     qos_profile_action_status_default,
@@ -343,3 +344,6 @@ def _print_user_traceback(exc: BaseException) -> None:
     lines = ["Traceback (most recent call last):\n", *traceback.format_list(frames)]
     lines += traceback.format_exception_only(type(exc), exc)
     sys.stderr.write("".join(lines))
+
+# as rclpy's classes print: <rclpy.node.Node object at ...> (turtletui.compat.identity)
+as_rclpy("rclpy.action.server", ActionServer, ServerGoalHandle, GoalResponse, CancelResponse)

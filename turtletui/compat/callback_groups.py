@@ -9,6 +9,8 @@ from __future__ import annotations
 
 from typing import Any
 
+from turtletui.compat.identity import as_rclpy
+
 
 class CallbackGroup:
     """The base of the two groups: what rclpy's executors ask of them."""
@@ -57,3 +59,6 @@ class MutuallyExclusiveCallbackGroup(CallbackGroup):
 
 class ReentrantCallbackGroup(CallbackGroup):
     """Any number of the group's callbacks at a time."""
+
+# as rclpy's classes print: <rclpy.node.Node object at ...> (turtletui.compat.identity)
+as_rclpy("rclpy.callback_groups", CallbackGroup, MutuallyExclusiveCallbackGroup, ReentrantCallbackGroup)

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any, Protocol
 
+from turtletui.compat.identity import as_rclpy
 from turtletui.compat.rcl_error import RCLError, UnknownROSArgsError
 from turtletui.compat.ros_args import RosArgs, RosArgsError, UnknownRosArgs, parse_ros_args
 
@@ -81,11 +82,13 @@ class Context:
         self._nodes: list[Any] = []
         self._callbacks: list[Any] = []
         self._made = 0
-        self.qos_events: list[tuple[int, int, Any, str]] = []
+        self.qos_events: list[tuple[int, int, Any, str, Any, Any]] = []
         """QoS warnings waiting for an executor (turtletui.compat.matching)."""
         self.ros_args = RosArgs()
         self.told_no_clock = False
         """Whether a node was told why its use_sim_time clock stands still."""
+        self.told_event_callbacks = False
+        """Whether turtletui said which QoS event callbacks it never calls."""
 
     @property
     def host(self) -> Host:
@@ -149,8 +152,11 @@ class Context:
     def flush_qos_events(self) -> None:
         """Log the QoS warnings waiting, as an executor runs event callbacks."""
         events, self.qos_events = sorted(self.qos_events, key=lambda e: e[:2]), []
-        for _, _, logger, text in events:
-            logger.warning(text)
+        for _, _, logger, text, callback, status in events:
+            if callback is None:
+                logger.warning(text)
+            else:
+                callback(status)  # the program's incompatible_qos callback
 
     def untrack_node(self, node: Any) -> None:
         if node in self._nodes:
@@ -177,3 +183,6 @@ def reset_default_context() -> Context:
     global _default_context
     _default_context = Context()
     return _default_context
+
+# as rclpy's classes print: <rclpy.node.Node object at ...> (turtletui.compat.identity)
+as_rclpy("rclpy.context", Context)

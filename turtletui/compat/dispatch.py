@@ -41,6 +41,7 @@ def dispatcher(
     group: CallbackGroup,
     callback: Callable,
     message_info: Callable[[Any], dict] | None = None,
+    received: Callable[[Any], None] | None = None,
 ) -> Callable:
     """``callback`` as the graph should call it: counted as a callback (as
     host.wrap_callback counts, inline: this runs for every delivery), run
@@ -49,7 +50,9 @@ def dispatcher(
     ``message_info``, for a subscription callback that takes rclpy's
     MessageInfo: its queue holds ``(msg, MessageOrigin)`` pairs (the graph's
     ``stamped`` subscriptions) and ``message_info(origin)`` makes the second
-    argument of each call."""
+    argument of each call. ``received(msg)``, if given, does to each message
+    what the middleware does on its way (float32 fields rounded) before the
+    callback has it."""
     depth = host.callback_counter
     ready = host.graph.ready
     owner = host.owner
@@ -105,49 +108,67 @@ def dispatcher(
     def delivery(sub: Any) -> Callable[[], None]:
         """What hands subscription ``sub``'s queued messages to the callback:
         turtletui.graph.core.Subscription.deliver and ``run`` in one (for
-        add_subscription's ``delivery``), a frame less per message. A message
-        for a free MutuallyExclusive group, the usual case, takes ``run``'s
-        steps written out here; any other goes through ``run``."""
+        add_subscription's ``delivery``), a frame less per message. As rclpy's
+        executor takes one message of a subscription each time it runs it, a
+        delivery hands over the oldest message only and, if more are queued,
+        queues itself again behind what else is ready: ``spin_once()`` runs
+        one message, and two busy subscriptions take turns. A message for a
+        free MutuallyExclusive group, the usual case, takes ``run``'s steps
+        written out here; any other goes through ``run``."""
         queue = sub.queue
         popleft = queue.popleft
+
+        def take() -> Any:
+            """The oldest message; the subscription stays pending while more wait."""
+            msg = popleft()
+            if queue:
+                ready.append(sub.ready_item)
+            else:
+                sub.pending = False
+            if received is not None:
+                received(msg if message_info is None else msg[0])
+            return msg
+
         if message_info is not None:
 
             def deliver_with_info() -> None:
-                sub.pending = False
-                while queue:
-                    msg, origin = popleft()
-                    run(msg, message_info(origin))
+                if not queue:
+                    sub.pending = False
+                    return
+                msg, origin = take()
+                run(msg, message_info(origin))
 
             return deliver_with_info
 
         def deliver() -> None:
-            sub.pending = False
-            while queue:
-                if not exclusive or group._active_entity is not None:
-                    run(popleft())
-                    continue
-                group._active_entity = run
-                held = False
+            if not queue:
+                sub.pending = False
+                return
+            if not exclusive or group._active_entity is not None:
+                run(take())
+                return
+            group._active_entity = run
+            held = False
+            try:
+                stack = _running.groups
+            except AttributeError:
+                stack = running_groups()
+            stack.append(group)
+            try:
+                depth.n += 1
                 try:
-                    stack = _running.groups
-                except AttributeError:
-                    stack = running_groups()
-                stack.append(group)
-                try:
-                    depth.n += 1
-                    try:
-                        result = callback(popleft())
-                    finally:
-                        depth.n -= 1
-                    if result is not None and isinstance(result, CoroutineType):
-                        held = True
-                        start_task(host, group, result, now=True, release=lambda _task: release(run))
+                    result = callback(take())
                 finally:
-                    stack.pop()
-                    if not held:
-                        group._active_entity = None
-                        if group._deferred:
-                            release_deferred(run)
+                    depth.n -= 1
+                if result is not None and isinstance(result, CoroutineType):
+                    held = True
+                    start_task(host, group, result, now=True, release=lambda _task: release(run))
+            finally:
+                stack.pop()
+                if not held:
+                    group._active_entity = None
+                    if group._deferred:
+                        release_deferred(run)
 
         return deliver
 

@@ -12,6 +12,8 @@ from __future__ import annotations
 import re
 from typing import Any
 
+from turtletui.compat.identity import as_rclpy
+
 __all__ = [
     "InvalidHandle",
     "InvalidNamespaceException",
@@ -225,3 +227,7 @@ def validate_full_topic_name(name: str, *, is_service: bool = False) -> None:
     for i in range(1, len(name)):
         if name[i] == "/" and name[i - 1] == "/":
             raise error(name, "topic name must not contain repeated '/'", i)
+
+# as rclpy's classes print: <rclpy.node.Node object at ...> (turtletui.compat.identity)
+as_rclpy("rclpy.exceptions", NotInitializedException, NoTypeSupportImportedException, NameValidationException, InvalidNamespaceException, InvalidNodeNameException, InvalidTopicNameException, InvalidServiceNameException, ParameterException, ParameterNotDeclaredException, ParameterAlreadyDeclaredException, InvalidParameterException, InvalidParameterTypeException, InvalidParameterValueException, ParameterImmutableException, ParameterUninitializedException, ROSInterruptException)
+as_rclpy("rclpy._rclpy_pybind11", InvalidHandle, TimerCancelledError)

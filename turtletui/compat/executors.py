@@ -28,6 +28,7 @@ from typing import Any
 from turtletui.compat.callback_groups import MutuallyExclusiveCallbackGroup, ReentrantCallbackGroup
 from turtletui.compat.context import Context, get_default_context
 from turtletui.compat.dispatch import running_groups, start_task
+from turtletui.compat.identity import as_rclpy
 from turtletui.compat.rcl_error import RCLError
 from turtletui.compat.task import Future, Task
 
@@ -391,3 +392,6 @@ def get_global_executor() -> Executor:
     if _global_executor is None or _global_executor.context is not context or not context._ok:
         _global_executor = SingleThreadedExecutor()
     return _global_executor
+
+# as rclpy's classes print: <rclpy.node.Node object at ...> (turtletui.compat.identity)
+as_rclpy("rclpy.executors", Executor, SingleThreadedExecutor, MultiThreadedExecutor, ExternalShutdownException, ShutdownException, TimeoutException)

@@ -8,6 +8,7 @@ from enum import IntEnum
 from typing import Any
 
 from turtletui.compat.distro import current_distro, type_description_names
+from turtletui.compat.identity import as_rclpy
 from turtletui.compat.qos import (
     DurabilityPolicy,
     HistoryPolicy,
@@ -210,3 +211,6 @@ def _reported_qos(asked: Any) -> QoSProfile:
         durability=durability,
         liveliness=liveliness,
     )
+
+# as rclpy's classes print: <rclpy.node.Node object at ...> (turtletui.compat.identity)
+as_rclpy("rclpy.topic_endpoint_info", TopicEndpointInfo, TopicEndpointTypeEnum)

@@ -11,6 +11,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
 from turtletui.compat.destroyable import Destroyable
+from turtletui.compat.identity import as_rclpy
 
 if TYPE_CHECKING:
     from turtletui.compat.callback_groups import CallbackGroup
@@ -46,3 +47,6 @@ class GuardCondition(Destroyable):
     def destroy(self) -> None:
         """As rclpy's: the guard condition stays in ``node.guards`` until ``destroy_guard_condition``."""
         self._destroyed = True
+
+# as rclpy's classes print: <rclpy.node.Node object at ...> (turtletui.compat.identity)
+as_rclpy("rclpy.guard_condition", GuardCondition)

@@ -16,6 +16,7 @@ from typing import Any
 
 from turtletui.compat import context as _context
 from turtletui.compat.dispatch import in_callback
+from turtletui.compat.identity import as_rclpy
 from turtletui.graph import core
 from turtletui.graph.logs import parse_level
 
@@ -321,3 +322,7 @@ def reset_levels() -> None:
     global _DEFAULT_LEVEL
     _LEVELS.clear()
     _DEFAULT_LEVEL = LoggingSeverity.INFO
+
+# as rclpy's classes print: <rclpy.node.Node object at ...> (turtletui.compat.identity)
+as_rclpy("rclpy.impl.logging_severity", LoggingSeverity)
+as_rclpy("rclpy.impl.rcutils_logger", RcutilsLogger)

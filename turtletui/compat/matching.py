@@ -15,6 +15,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from turtletui.compat.event_handler import incompatible_qos_event
 from turtletui.graph import core
 from turtletui.graph.qos import incompatible_policy
 
@@ -134,6 +135,10 @@ def _warn(graph: core.Graph | None, record: Any, policy: str, pub: Any, sub: Any
     if entity is REMOTE or record.owner == remote:
         return  # another process warns for its own endpoints
     if entity is not None:
+        event = incompatible_qos_event(entity, policy)
+        if event is None:
+            return  # use_default_callbacks=False and no incompatible_qos callback: nothing, as in rclpy
+        callback, status = event
         text = _PUBLISHER_SIDE if record is pub else _SUBSCRIPTION_SIDE
-        entity._node._qos_event(entity, text.format(entity._topic_as_given, policy))
+        entity._node._qos_event(entity, text.format(entity._topic_as_given, policy), callback, status)
     # a C++ node of the simulator's (turtlesim's...) warned as the graph matched it

@@ -16,6 +16,7 @@ from turtletui.compat.context import Context, get_default_context
 from turtletui.compat.destroyable import Destroyable
 from turtletui.compat.dispatch import dispatcher
 from turtletui.compat.distro import current_distro
+from turtletui.compat.event_handler import attach_event_callbacks
 from turtletui.compat.exceptions import (  # noqa: F401  (re-exported: rclpy.node users import them here)
     InvalidHandle,
     InvalidParameterTypeException,
@@ -44,6 +45,7 @@ from turtletui.compat.graph_info import (
     endpoints_info,
 )
 from turtletui.compat.guard_condition import GuardCondition
+from turtletui.compat.identity import as_rclpy
 from turtletui.compat.logging import RcutilsLogger, get_logger
 from turtletui.compat.matching import match_publisher, match_subscription, watch_mismatches
 from turtletui.compat.message_info import MessageInfo, message_info_maker, takes_message_info
@@ -83,7 +85,7 @@ from turtletui.compat.type_description_service import TypeDescriptionService
 from turtletui.graph import core
 from turtletui.graph.logs import WARN
 from turtletui.interfaces import Action as ActionType
-from turtletui.interfaces import Message, copier, interface_name
+from turtletui.interfaces import Message, copier, float32_rounder, interface_name
 from turtletui.interfaces import Service as ServiceType
 from turtletui.interfaces.rcl_interfaces import Log, ParameterEvent
 from turtletui.interfaces.rcl_interfaces import Parameter as ParameterMsg
@@ -424,6 +426,16 @@ class Service(Destroyable):
         self._node._release_entity(self, self._node._graph.remove_service)
 
 
+_NAME_ALONE = (
+    "when declaring parameter named '{}', declaring a parameter only providing its name is deprecated. "
+    "You have to either:\n"
+    '\t- Pass a name and a default value different to "PARAMETER NOT SET" (and optionally a descriptor).\n'
+    "\t- Pass a name and a parameter type.\n"
+    "\t- Pass a name and a descriptor with `dynamic_typing=True"
+)
+"""rclpy's UserWarning for ``declare_parameter(name)`` (its text, unclosed backquote included)."""
+
+
 class Node(Destroyable):
     """A ROS 2 node: the base class of every controller."""
 
@@ -598,15 +610,19 @@ class Node(Destroyable):
         self.add_callback_group(callback_group)
         return callback_group
 
-    def _qos_event(self, entity: Any, text: str) -> None:
+    def _qos_event(
+        self, entity: Any, text: str, callback: Callable[[Any], None] | None = None, status: Any = None
+    ) -> None:
         """Log ``text`` as rclpy's default QoS event callback of ``entity``
-        does: when an executor next runs the node's callbacks, a node's events
-        in the order of its entities, nodes in the order they were made."""
+        does, or call the program's own ``callback`` with ``status``: when an
+        executor next runs the node's callbacks, a node's events in the order
+        of its entities, nodes in the order they were made."""
         events = self._context.qos_events
         if not events:
             host = self._context.host
             host.graph.ready.append((host.owner, self._context.flush_qos_events))
-        events.append((self._context.node_order(self), self._entities.index(entity), self._logger, text))
+        order = (self._context.node_order(self), self._entities.index(entity))
+        events.append((*order, self._logger, text, callback, status))
 
     def get_name(self) -> str:
         self._require_alive()
@@ -690,6 +706,7 @@ class Node(Destroyable):
         publisher = publisher_class(self, record, qos_profile)
         publisher._topic_as_given = topic
         self._entities.append(publisher)
+        attach_event_callbacks(self, publisher, event_callbacks, "publisher")
         match_publisher(self, publisher)
         return publisher
 
@@ -714,7 +731,7 @@ class Node(Destroyable):
         host = self._context.host
         with_info = takes_message_info(callback)  # after the name's checks, as rclpy
         info = message_info_maker(self._graph) if with_info else None
-        run = dispatcher(host, self._group(callback_group), callback, info)
+        run = dispatcher(host, self._group(callback_group), callback, info, float32_rounder(msg_type))
         try:
             record = self._graph.add_subscription(
                 self._record,
@@ -732,6 +749,7 @@ class Node(Destroyable):
         subscription = Subscription(self, record, callback, qos_profile)
         subscription._topic_as_given = topic
         self._entities.append(subscription)
+        attach_event_callbacks(self, subscription, event_callbacks, "subscription")
         match_subscription(self, subscription)
         return subscription
 
@@ -857,8 +875,10 @@ class Node(Destroyable):
         return True
 
     def destroy_rate(self, rate: Rate) -> bool:
+        """Destroy ``rate`` and its timer; False (as rclpy) when the timer was already gone."""
+        destroyed = self.destroy_timer(rate._timer)
         rate.destroy()
-        return True
+        return destroyed
 
     def _destroy_entity(self, entity: Any, remove: Callable[[Any], Any]) -> bool:
         if entity not in self._entities:
@@ -999,7 +1019,63 @@ class Node(Destroyable):
         descriptor: ParameterDescriptor | None = None,
         ignore_override: bool = False,
     ) -> Parameter:
-        """Declare a parameter; a ``--ros-args -p`` override of the same type wins."""
+        """Declare a parameter; a ``--ros-args -p`` override of the same type wins.
+        A name alone (no value, no descriptor) is deprecated in rclpy: it warns
+        and declares a dynamically typed parameter."""
+        if value is None and descriptor is None:
+            return self.declare_parameters("", [(name,)], ignore_override)[0]
+        entry = (name, value, ParameterDescriptor() if descriptor is None else descriptor)
+        return self.declare_parameters("", [entry], ignore_override)[0]
+
+    def declare_parameters(
+        self, namespace: str, parameters: Sequence[tuple], ignore_override: bool = False
+    ) -> list[Parameter]:
+        """Declare each ``(name,)``, ``(name, value)`` or ``(name, value, descriptor)``
+        under ``namespace``, after checking every entry as rclpy does (its
+        TypeErrors and ValueErrors, and its UserWarning for a name alone)."""
+        checked = []
+        for index, entry in enumerate(parameters):
+            if len(entry) < 1 or len(entry) > 3:
+                raise TypeError(
+                    f"Invalid parameter tuple length at index {index} in parameters list: {entry}; "
+                    "expecting length between 1 and 3"
+                )
+            name = entry[0]
+            if not isinstance(name, str):
+                raise TypeError(f"First element {name} at index {index} in parameters list is not a str.")
+            if namespace:
+                name = f"{namespace}.{name}"
+            value = entry[1] if len(entry) > 1 else None
+            descriptor = entry[2] if len(entry) > 2 else ParameterDescriptor()
+            if not isinstance(descriptor, ParameterDescriptor):
+                raise TypeError(
+                    f"Third element {descriptor} at index {index} in parameters list is not a ParameterDescriptor."
+                )
+            if len(entry) == 1:
+                warnings.warn(_NAME_ALONE.format(name), UserWarning, stacklevel=2)
+                descriptor.dynamic_typing = True
+            if isinstance(value, Parameter.Type):
+                if value is Parameter.Type.NOT_SET:
+                    raise ValueError(f"Cannot declare parameter {{{name}}} as statically typed of type NOT_SET")
+                if descriptor.dynamic_typing:
+                    raise ValueError(
+                        f"When declaring parameter {{{name}}} passing a descriptor with`dynamic_typing=True` "
+                        "is not allowed when the parameter type is provided"
+                    )
+            elif not descriptor.dynamic_typing:
+                inferred = value.type if isinstance(value, ParameterValue) else None
+                if inferred is None:
+                    inferred = Parameter.Type.from_parameter_value(value).value
+                if inferred == Parameter.Type.NOT_SET.value:
+                    raise ValueError(
+                        "Cannot declare a statically typed parameter with default value of type PARAMETER_NOT_SET"
+                    )
+            checked.append((name, value, descriptor))
+        return [self._declare_one(name, value, descriptor, ignore_override) for name, value, descriptor in checked]
+
+    def _declare_one(
+        self, name: str, value: Any, descriptor: ParameterDescriptor, ignore_override: bool
+    ) -> Parameter:
         self._require_alive()
         if name in self._parameters:
             raise ParameterAlreadyDeclaredException([name])
@@ -1009,9 +1085,6 @@ class Node(Destroyable):
             expected, value = value, None
         else:
             expected = Parameter.Type.from_parameter_value(value)
-        if value is None and descriptor is None and expected is Parameter.Type.NOT_SET:
-            descriptor = ParameterDescriptor(dynamic_typing=True)  # as rclpy: a name alone
-        descriptor = descriptor or ParameterDescriptor()
         if not ignore_override and name in self._overrides:
             override = self._overrides[name]
             if (
@@ -1040,17 +1113,6 @@ class Node(Destroyable):
         self._publish_parameter_event(new=[parameter])
         self._run_post_set([parameter])
         return parameter
-
-    def declare_parameters(
-        self, namespace: str, parameters: Sequence[tuple], ignore_override: bool = False
-    ) -> list[Parameter]:
-        declared = []
-        for entry in parameters:
-            name = f"{namespace}.{entry[0]}" if namespace else entry[0]
-            value = entry[1] if len(entry) > 1 else None
-            descriptor = entry[2] if len(entry) > 2 else None
-            declared.append(self.declare_parameter(name, value, descriptor, ignore_override))
-        return declared
 
     def undeclare_parameter(self, name: str) -> None:
         self._require_alive()
@@ -1290,3 +1352,10 @@ def _check_srv_type(srv_type: Any) -> None:
         raise RuntimeError(
             f"The service type provided is not valid ({srv_type}), this might be a message or action"
         )
+
+# as rclpy's classes print: <rclpy.node.Node object at ...> (turtletui.compat.identity)
+as_rclpy("rclpy.node", Node)
+as_rclpy("rclpy.publisher", Publisher)
+as_rclpy("rclpy.subscription", Subscription)
+as_rclpy("rclpy.client", Client)
+as_rclpy("rclpy.service", Service)

@@ -8,6 +8,7 @@ import math
 from enum import IntEnum
 from typing import Any
 
+from turtletui.compat.identity import as_rclpy
 from turtletui.graph.parameter_services import list_parameter_names  # noqa: F401  (Node.list_parameters)
 from turtletui.interfaces.rcl_interfaces import (
     ListParametersResult,
@@ -151,9 +152,6 @@ class Parameter:
 
     def to_parameter_msg(self) -> ParameterMsg:
         return ParameterMsg(name=self.name, value=self.get_parameter_value())
-
-    def __repr__(self) -> str:
-        return f"Parameter(name={self._name!r}, type_={self._type_.name}, value={self._value!r})"
 
 
 _FIELD = {
@@ -338,3 +336,6 @@ def _unpack(namespace: str, parameter_dict: dict) -> dict[str, ParameterMsg]:
         else:
             parameters[full_name] = ParameterMsg(name=full_name, value=get_parameter_value(str(value)))
     return parameters
+
+# as rclpy's classes print: <rclpy.node.Node object at ...> (turtletui.compat.identity)
+as_rclpy("rclpy.parameter", Parameter)

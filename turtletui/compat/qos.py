@@ -8,6 +8,7 @@ import warnings
 from enum import Enum, IntEnum
 from typing import Any
 
+from turtletui.compat.identity import as_rclpy
 from turtletui.compat.time import Duration
 from turtletui.graph.qos import incompatible_policy, is_transient_local  # noqa: F401  (the middleware's matching)
 
@@ -15,6 +16,26 @@ from turtletui.graph.qos import incompatible_policy, is_transient_local  # noqa:
 class InvalidQoSProfileException(ValueError):
     """Raised for a QoSProfile without history and depth, as rclpy does. (rclpy's derives
     from Exception only; a ValueError here too, as turtletui raised before.)"""
+
+
+class QoSPolicyKind(IntEnum):
+    """The QoS policies an incompatible-QoS event can name (rmw's values)."""
+
+    INVALID = 1 << 0
+    DURABILITY = 1 << 1
+    DEADLINE = 1 << 2
+    LIVELINESS = 1 << 3
+    RELIABILITY = 1 << 4
+    HISTORY = 1 << 5
+    LIFESPAN = 1 << 6
+    DEPTH = 1 << 7
+    LIVELINESS_LEASE_DURATION = 1 << 8
+    AVOID_ROS_NAMESPACE_CONVENTIONS = 1 << 9
+
+
+def qos_policy_name_from_kind(policy_kind: QoSPolicyKind | int) -> str:
+    """The name of a QoS policy kind (``QoSPolicyKind.RELIABILITY`` or 16: "RELIABILITY")."""
+    return QoSPolicyKind(policy_kind).name
 
 
 class QoSPolicyEnum(IntEnum):
@@ -232,12 +253,6 @@ class QoSProfile:
             f"{slot[1:]}=%s" % _plain(getattr(self, slot)) for slot in self.__slots__
         )
 
-    def __repr__(self) -> str:
-        return (
-            f"QoSProfile(history={self.history.name}, depth={self.depth}, "
-            f"reliability={self.reliability.name}, durability={self.durability.name})"
-        )
-
 
 def _plain(value: Any) -> Any:
     return int(value) if isinstance(value, IntEnum) else value
@@ -347,3 +362,6 @@ def depth_of(qos_profile: QoSProfile | int) -> int:
     if qos_profile.history == HistoryPolicy.KEEP_LAST:
         return max(qos_profile.depth, 1)
     return 1
+
+# as rclpy's classes print: <rclpy.node.Node object at ...> (turtletui.compat.identity)
+as_rclpy("rclpy.qos", QoSProfile, HistoryPolicy, ReliabilityPolicy, DurabilityPolicy, LivelinessPolicy, QoSPresetProfiles, QoSPolicyKind)

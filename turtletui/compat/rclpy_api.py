@@ -10,6 +10,11 @@ from turtletui.compat.executors import Executor, get_global_executor
 from turtletui.compat.node import Node
 from turtletui.compat.parameter import Parameter
 from turtletui.compat.qos import QoSProfile, qos_profile_rosout_default
+from turtletui.compat.signals import (
+    SignalHandlerOptions,
+    install_signal_handlers,
+    uninstall_signal_handlers,
+)
 from turtletui.compat.task import Future
 
 
@@ -24,14 +29,22 @@ class InitContextManager:
         signal_handler_options: Any,
     ) -> None:
         self.context = get_default_context() if context is None else context
+        if signal_handler_options is None:  # rclpy's: the default context's init handles both signals
+            default = context is None or context is get_default_context()
+            signal_handler_options = SignalHandlerOptions.ALL if default else SignalHandlerOptions.NO
+        self.installed_signal_handlers = signal_handler_options != SignalHandlerOptions.NO
         self.context.init(args, domain_id=domain_id)
         _logging.apply_log_level(self.context.ros_args.log_level, self.context.ros_args.log_levels)
+        install_signal_handlers(signal_handler_options)
 
     def __enter__(self) -> InitContextManager:
         return self
 
     def __exit__(self, exc_type: Any, exc_val: Any, exc_tb: Any) -> None:
-        try_shutdown(context=None if self.context is get_default_context() else self.context)
+        try_shutdown(
+            context=None if self.context is get_default_context() else self.context,
+            uninstall_handlers=self.installed_signal_handlers,
+        )
 
 
 def init(
@@ -43,19 +56,23 @@ def init(
 ) -> InitContextManager:
     """Initialise the context (reads ``--ros-args`` from ``args`` or sys.argv).
 
-    ``signal_handler_options`` is accepted and ignored: turtletui ends the run itself."""
+    ``signal_handler_options`` is recorded (``rclpy.signals``), not acted on:
+    turtletui ends the run itself, Ctrl-C included."""
     return InitContextManager(args, context, domain_id, signal_handler_options)
 
 
 def shutdown(*, context: Context | None = None, uninstall_handlers: bool | None = None) -> None:
     """Shut the context down; RuntimeError if it is not initialised (or already shut down)."""
+    given = context
     if context is None:
         context = get_default_context(shutting_down=True)
     context.shutdown()
+    _uninstall_handlers(given, uninstall_handlers)
 
 
 def try_shutdown(*, context: Context | None = None, uninstall_handlers: bool | None = None) -> None:
     """Shut the context down if it is initialised."""
+    context_given = context
     if context is None:
         context = get_default_context()
         context.try_shutdown()
@@ -63,6 +80,14 @@ def try_shutdown(*, context: Context | None = None, uninstall_handlers: bool | N
             get_default_context(shutting_down=True)
     else:
         context.try_shutdown()
+    _uninstall_handlers(context_given, uninstall_handlers)
+
+
+def _uninstall_handlers(context: Context | None, uninstall_handlers: bool | None) -> None:
+    """rclpy's rule: shutting the default context down removes the signal
+    handlers unless ``uninstall_handlers`` says otherwise."""
+    if uninstall_handlers or (uninstall_handlers is None and (context is None or context is get_default_context())):
+        uninstall_signal_handlers()
 
 
 def ok(*, context: Context | None = None) -> bool:

@@ -8,6 +8,8 @@ import warnings
 from collections.abc import Callable
 from typing import Any
 
+from turtletui.compat.identity import as_rclpy
+
 _awaiting = threading.local()
 """The Future a coroutine step stopped at, per thread: rclpy's ``__await__`` yields None,
 so the Task learns what its coroutine waits for here rather than from the yielded value."""
@@ -164,3 +166,6 @@ class Task(Future):
             awaited._add_done_hook(lambda _future: self._resume())
         elif self._resume is not None:
             self._resume()
+
+
+as_rclpy("rclpy.task", Task)  # as rclpy's prints (Future names itself in its body)

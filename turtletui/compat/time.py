@@ -14,6 +14,7 @@ from enum import IntEnum
 from typing import TYPE_CHECKING
 
 from turtletui.compat.exceptions import NotInitializedException
+from turtletui.compat.identity import as_rclpy
 
 if TYPE_CHECKING:
     from turtletui.compat.context import Context
@@ -473,3 +474,9 @@ def clock_for(context: Context, clock_type: ClockType = ClockType.ROS_TIME) -> C
     clock = Clock(clock_type=clock_type)
     clock._context = context
     return clock
+
+# as rclpy's classes print: <rclpy.node.Node object at ...> (turtletui.compat.identity)
+as_rclpy("rclpy.clock", Clock, ROSClock, JumpThreshold, TimeJump, JumpHandle)
+as_rclpy("rclpy._rclpy_pybind11", ClockType, ClockChange)
+as_rclpy("rclpy.duration", Duration)
+as_rclpy("rclpy.time", Time)

@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import functools
 import inspect
-import math
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
@@ -26,6 +25,7 @@ from turtletui.compat.executors import (
     threads_that_can_help,
     wait_in_host,
 )
+from turtletui.compat.identity import as_rclpy
 from turtletui.compat.time import (
     _SOURCE_CHANGES,
     Clock,
@@ -293,10 +293,10 @@ class Rate:
     spinning the node (and, on /clock time, something publishing /clock)."""
 
     def __init__(self, node: Node, frequency: float, clock: Clock | None = None) -> None:
-        if isinstance(frequency, bool) or not isinstance(frequency, (int, float)):
-            raise TypeError(f"frequency must be a number of Hz, got {frequency!r}")
-        if not math.isfinite(frequency) or frequency <= 0:
-            raise ValueError(f"frequency must be positive and finite, got {frequency}")
+        # rclpy's checks and texts: `frequency <= 0` (a str or None raises its TypeError),
+        # then create_timer's conversion of the period (nan refused, inf a period of 0)
+        if frequency <= 0:
+            raise ValueError("frequency must be > 0")
         self._node = node
         self._fired = False
         self._destroyed = False
@@ -339,5 +339,9 @@ class Rate:
         return ""
 
     def destroy(self) -> None:
+        """Stop the rate: a sleep after it raises. As rclpy's, the rate's timer
+        stays the node's until ``node.destroy_rate(rate)`` destroys it."""
         self._destroyed = True
-        self._node.destroy_timer(self._timer)
+
+# as rclpy's classes print: <rclpy.node.Node object at ...> (turtletui.compat.identity)
+as_rclpy("rclpy.timer", Timer, Rate, TimerInfo)

@@ -29,8 +29,10 @@ Only the standard library is imported.
 from __future__ import annotations
 
 from array import array as _array
+from math import copysign as _copysign
 from math import isinf as _isinf
 from operator import attrgetter as _attrgetter
+from struct import Struct as _Struct
 
 from turtletui.interfaces import (  # noqa: F401  (registers every type)
     action_msgs,
@@ -646,6 +648,58 @@ def copier(cls: type) -> Callable[[Message], Message]:
         raise InterfaceError(f'copier() needs a message class, got {_describe(cls)}')
     _build(cls)
     return cls._copy
+
+
+_F32_STRUCT = _Struct('<f')
+
+
+def _as_float32(value: float) -> float:
+    """``value`` as a float32 field carries it over the middleware: rounded to
+    the nearest float32 (an overflow becomes an infinity, as C's cast makes it)."""
+    try:
+        return _F32_STRUCT.unpack(_F32_STRUCT.pack(value))[0]
+    except OverflowError:
+        return _copysign(float('inf'), value)
+
+
+def float32_rounder(cls: type) -> Callable[[Message], None] | None:
+    """What the middleware does to a ``cls`` message's float32 fields: rounds
+    them, in place, to float32 (rclpy keeps the Python float a field is set
+    to; the subscriber gets what CDR carried: ``Pose(x=0.1)`` arrives as
+    0.10000000149011612). Nested messages included; float32 sequences are
+    ``array('f')`` and rounded already. None when ``cls`` has no such field."""
+    if not (isinstance(cls, type) and issubclass(cls, Message)):
+        raise InterfaceError(f'float32_rounder() needs a message class, got {_describe(cls)}')
+    cached = cls.__dict__.get('_F32_ROUNDER', _MISSING_ROUNDER)
+    if cached is not _MISSING_ROUNDER:
+        return cached
+    steps: list[Callable[[Message], None]] = []
+    for spec in cls._FIELDS:
+        slot = spec.slot
+        if spec.kind == 'float' and spec.f32 and spec.array == _SCALAR:
+            steps.append(lambda msg, slot=slot: setattr(msg, slot, _as_float32(getattr(msg, slot))))
+        elif spec.kind == 'float' and spec.f32 and spec.array == _FIXED and spec.typecode is None:
+            steps.append(lambda msg, slot=slot: setattr(msg, slot, [_as_float32(v) for v in getattr(msg, slot)]))
+        elif spec.kind == 'msg':
+            inner = float32_rounder(spec.msg_cls)
+            if inner is None:
+                continue
+            if spec.array == _SCALAR:
+                steps.append(lambda msg, slot=slot, inner=inner: inner(getattr(msg, slot)))
+            else:
+                steps.append(lambda msg, slot=slot, inner=inner: [inner(m) for m in getattr(msg, slot)])
+    rounder = None
+    if steps:
+
+        def rounder(msg: Message) -> None:
+            for step in steps:
+                step(msg)
+
+    type.__setattr__(cls, '_F32_ROUNDER', rounder)
+    return rounder
+
+
+_MISSING_ROUNDER = object()
 
 
 def fields_getter(cls: type, *paths: str) -> Callable[[Message], tuple]:

@@ -11,6 +11,7 @@ This module must not import numpy or Textual: start-up time counts.
 from __future__ import annotations
 
 import itertools
+from array import array
 from collections.abc import Callable, Sequence
 from typing import Any
 
@@ -218,9 +219,7 @@ class ParentOutbox:
         self.changes.append(change)
 
     def parameter_set(self, node: NodeRecord, name: str, value: Any, remove: bool) -> None:
-        if isinstance(value, (bytes, bytearray)):
-            value = list(value)
-        self.changes.append(SetParameter(self.wire_ids[node], name, value, remove))
+        self.changes.append(SetParameter(self.wire_ids[node], name, wire_parameter_value(value), remove))
 
     def published(self, topic: Topic, msg: Any, publisher: Publisher | None, young: bool) -> None:
         # Its values now: a message changed after publish() is not what was sent.
@@ -404,3 +403,18 @@ class ParentOutbox:
         reason = node.parameter_setter(name, value)
         if reason:
             self.graph.log(node.name, WARN, f"Setting parameter {name} failed: {reason}")
+
+
+def wire_parameter_value(value: Any) -> Any:
+    """A parameter's value as the wire carries it (a scalar or a list of
+    scalars): rclpy's arrays may be tuples or ``array.array``, and a byte
+    array is ``bytes`` or a list of one-byte ``bytes``; each byte goes as its int."""
+    if isinstance(value, (bytes, bytearray)):
+        return list(value)
+    if isinstance(value, (list, tuple, array)):
+        return [_wire_byte(item) if isinstance(item, bytes) else item for item in value]
+    return value
+
+
+def _wire_byte(item: bytes) -> int | str:
+    return item[0] if len(item) == 1 else repr(item)  # rclpy's byte arrays hold one-byte bytes

@@ -4,11 +4,13 @@ from rclpy import (  # noqa: F401,E402
     callback_groups,
     clock,
     duration,
+    event_handler,
     executors,
     logging,
     node,
     parameter,
     qos,
+    signals,
     task,
     time,
 )

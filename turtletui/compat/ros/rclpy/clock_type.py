@@ -1,0 +1,1 @@
+from turtletui.compat.time import ClockType  # noqa: F401
