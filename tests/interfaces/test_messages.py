@@ -205,6 +205,12 @@ def test_float32_rounder_rounds_float32_fields_as_cdr_carries_them():
         (0.0, 0.3333333432674408, 3.3999999521443642e38),
     ]
     assert I.float32_rounder(Twist) is None  # float64 only: nothing to do
+    pose = I.get_interface("turtlesim/msg/Pose")(x=0.1, y=2.5, theta=float("nan"), angular_velocity=float("-inf"))
+    pose._linear_velocity = 1e39  # beyond float32, as only a trusted builder could set it: an infinity, as C casts
+    I.float32_rounder(type(pose))(pose)
+    assert repr((pose.x, pose.y, pose.theta, pose.linear_velocity, pose.angular_velocity)) == repr(
+        (0.10000000149011612, 2.5, float("nan"), float("inf"), float("-inf"))
+    )
     assert I.float32_rounder(LaserScan) is not None  # angle_min ... (its ranges are array('f') already)
     with pytest.raises(I.InterfaceError, match="needs a message class"):
         I.float32_rounder(int)
