@@ -144,8 +144,15 @@ def dispatcher(
             if not queue:
                 sub.pending = False
                 return
+            msg = popleft()  # take()'s steps written out: a frame less per message
+            if queue:
+                ready.append(sub.ready_item)
+            else:
+                sub.pending = False
+            if received is not None:
+                received(msg)
             if not exclusive or group._active_entity is not None:
-                run(take())
+                run(msg)
                 return
             group._active_entity = run
             held = False
@@ -157,7 +164,7 @@ def dispatcher(
             try:
                 depth.n += 1
                 try:
-                    result = callback(take())
+                    result = callback(msg)
                 finally:
                     depth.n -= 1
                 if result is not None and isinstance(result, CoroutineType):
