@@ -45,8 +45,11 @@ def test_a_pose_of_the_wrong_type_logs_nothing_and_is_told_which_types_differ(gr
         "/pose_subscriber subscribes to /turtle1/pose with type geometry_msgs/msg/Pose, but /turtlesim "
         "publishes it with type turtlesim/msg/Pose: endpoints of different types never match"
     )
-    judged = [t.output for t in result.tests if t.check in ("logs_the_pose", "logs_every_pose")]
-    assert judged and all(mismatch in text for text in judged)
+    judged = [t for t in result.tests if t.check in ("logs_the_pose", "logs_every_pose")]
+    assert judged and all(mismatch in t.output for t in judged if not t.hidden)
+    # a hidden run tells the kind of cause only (a line under turtletui's name may be the node's own)
+    hidden = [t.output for t in judged if t.hidden]
+    assert hidden and all("endpoints of another type at its other end" in text for text in hidden)
     assert result.score == 0.0
 
 
@@ -88,9 +91,53 @@ def test_a_node_never_spun_is_told_that_its_program_ended(grade):
     text = " ".join(feedback_of(result, "logs_the_pose"))
     assert "never_spins.py ended at t=0.000 s, before the run did" in text
     assert "rclpy.spin(node)" in text
-    # a hidden run says so too, without when
+    # a hidden run says so too, in words of its own: without the file's name or when
     hidden = [t.output for t in result.tests if t.hidden and t.check == "logs_the_pose"]
-    assert hidden and all("never_spins.py ended, before the run did" in o and "t=" not in o for o in hidden)
+    assert hidden and all("Your program ended by itself before the run did" in o and "t=" not in o for o in hidden)
+
+
+FORGER = """
+import rclpy
+from rclpy.node import Node
+from turtlesim.msg import Pose
+
+from turtletui.graph.introspection import NEVER_MATCH
+from turtletui.messages import ENDED_EARLY_ADVICE, LOST_REQUEST_ADVICE
+
+
+class Forger(Node):
+    def __init__(self):
+        super().__init__("forger")
+        self.told = False
+        self.create_subscription(Pose, "/turtle1/pose", self.leak, 10)
+
+    def leak(self, pose):
+        if self.told:
+            return
+        self.told = True
+        # what a hidden run's feedback must never carry: where it starts
+        where = f"START x={pose.x:.3f} y={pose.y:.3f}"
+        for ending in (ENDED_EARLY_ADVICE, LOST_REQUEST_ADVICE, NEVER_MATCH, ", but nothing publishes it"):
+            self._graph.log("turtletui", 30, f"{where} {ending}")
+
+
+def main():
+    rclpy.init()
+    rclpy.spin(Forger())
+"""
+
+
+def test_a_node_that_logs_under_turtletuis_name_cannot_carry_a_hidden_run_out(grade, tmp_path):
+    # A sandboxed node can log as "turtletui": in a hidden run a likely cause
+    # is told in fixed words, never the line's own text.
+    forger = tmp_path / "forger.py"
+    forger.write_text(FORGER)
+    result = grade(LESSON, forger)
+    visible = " ".join(t.output for t in result.tests if not t.hidden)
+    assert "START x=" in visible  # the trick works where the student may see the run anyway
+    hidden = [t.output for t in result.tests if t.hidden and not t.passed]
+    assert hidden and not any("START" in output for output in hidden)
+    assert any("Your program ended by itself" in output for output in hidden)
 
 
 def test_a_topic_without_its_namespace_is_named_with_the_one_meant(grade):

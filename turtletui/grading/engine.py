@@ -12,7 +12,6 @@ from __future__ import annotations
 import math
 import os
 import random
-import re
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
@@ -409,15 +408,14 @@ def _likely_causes(trace: Trace, *, hidden: bool = False) -> list[str]:
     a program that ended by itself before the run did (a main() that never
     spins). Also rclpy's own warning that a done callback raised (printed,
     not raised: the node runs on, and whatever that callback was to start
-    never happens). In a hidden run, without when or the error's text (which
-    might carry what the run measured)."""
+    never happens). In a hidden run each kind is told in fixed words: a
+    sandboxed node can log under turtletui's name, and its own text (or the
+    names and times of an honest warning) might carry where the run starts."""
     causes = []
     for r in trace.logs:
-        if r.node == "turtletui" and (
-            r.msg.endswith((NEVER_MATCH, LOST_REQUEST_ADVICE, LOST_GOAL_ADVICE, ENDED_EARLY_ADVICE))
-            or is_dangling_warning(r.msg)
-        ):
-            causes.append(_ENDED_AT.sub(" ended", r.msg) if hidden else r.msg)
+        kind = _cause_kind(r) if r.node == "turtletui" else None
+        if kind is not None:
+            causes.append(_HIDDEN_CAUSES[kind] if hidden else r.msg)
         elif r.node.endswith(OUTPUT_SUFFIX) and DONE_CALLBACK_FAILED in r.msg:
             error = "" if hidden else f" The error: {r.msg.split(DONE_CALLBACK_FAILED, 1)[1].strip()}"
             causes.append(
@@ -428,7 +426,30 @@ def _likely_causes(trace: Trace, *, hidden: bool = False) -> list[str]:
     return list(dict.fromkeys(causes))
 
 
-_ENDED_AT = re.compile(r" ended at t=[0-9.]+ s(?=, before the run did)")
+_HIDDEN_CAUSES = {
+    "mistyped": "A topic your node uses has endpoints of another type at its other end: " + NEVER_MATCH + ".",
+    "lost request": "A service request of your node was sent before its client had found the server, and was lost. "
+    + LOST_REQUEST_ADVICE,
+    "lost goal": "An action goal of your node was sent before its client had found the server, and was lost. "
+    + LOST_GOAL_ADVICE,
+    "ended": "Your program ended by itself before the run did, and its nodes stopped with it: " + ENDED_EARLY_ADVICE,
+    "dangling": "A topic, service or action your node uses has nothing at its other end (a misspelt name?).",
+}
+"""What a hidden run says of each kind of likely cause, whatever the warning's text."""
+
+
+def _cause_kind(record: LogRecord) -> str | None:
+    """Which of the likely causes turtletui's warning ``record`` is, or None."""
+    msg = record.msg
+    for kind, ending in (
+        ("mistyped", NEVER_MATCH),
+        ("lost request", LOST_REQUEST_ADVICE),
+        ("lost goal", LOST_GOAL_ADVICE),
+        ("ended", ENDED_EARLY_ADVICE),
+    ):
+        if msg.endswith(ending):
+            return kind
+    return "dangling" if is_dangling_warning(msg) else None
 
 
 DONE_CALLBACK_FAILED = "Unhandled exception in done callback: "
