@@ -54,3 +54,10 @@ def test_no_goals_no_feedback():
     trace = trace_of([(0.5, f"Remaining: {remaining(0.5):.2f}")])
     trace.goals.clear()
     assert not CHECK.judge(trace, {"min": 1}).passed
+
+
+def test_a_number_too_large_for_a_float_is_no_feedback_and_no_failure_of_the_check():
+    lines = [(0.32, "Remaining: 1e400 rad"), (0.64, f"Remaining: {remaining(0.64):.2f} rad, 9e999999 to go")]
+    verdict = CHECK.judge(trace_of(lines), {"min": 1})
+    assert verdict.judged and verdict.passed
+    assert verdict.measured == "log lines with the feedback: 1 (needs >= 1)"

@@ -206,7 +206,10 @@ def _logged_numbers(text: str) -> list[tuple[float, float]]:
         token = match.group()
         mantissa, _, exponent = token.lower().partition("e")
         decimals = len(mantissa.partition(".")[2])
-        step = 10.0 ** (int(exponent or 0) - decimals)
+        try:
+            step = 10.0 ** (int(exponent or 0) - decimals)
+        except OverflowError:
+            continue  # 1e400: no coordinate, and no step a float can hold
         numbers.append((float(token), max(step / 2, POSE_TOLERANCE)))
     return numbers
 
