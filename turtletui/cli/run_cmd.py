@@ -203,14 +203,11 @@ def _run_app(
 
     # A lesson asked for opens beside the arena; the demo's own (no files) shows its log streaming.
     panel = "lesson" if lesson is not None else "log"
-    demo = not controllers
-    if demo:
+    if not controllers:
         lesson = lesson or "part6-closed-loop"
     found, distro, world_spec = _lesson_distro_world(lesson, plugins, distro, world)
     lesson_path = None if found is None else found.path
-    if demo:
-        controllers = [demo_controller(found)]
-    specs = resolve_controllers(controllers, plugins=plugins)
+    specs = resolve_controllers(controllers or [demo_controller(found)], plugins=plugins)
     connection = None
     if ros:
         from turtletui.cli.ros_run import connect_or_fail

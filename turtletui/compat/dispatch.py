@@ -119,15 +119,15 @@ def dispatcher(
         popleft = queue.popleft
 
         def take() -> Any:
-            """The oldest message; the subscription stays pending while more wait."""
-            msg = popleft()
+            """The oldest (message, origin) pair; the subscription stays pending while more wait."""
+            entry = popleft()
             if queue:
                 ready.append(sub.ready_item)
             else:
                 sub.pending = False
             if received is not None:
-                received(msg if message_info is None else msg[0])
-            return msg
+                received(entry[0])
+            return entry
 
         if message_info is not None:
 

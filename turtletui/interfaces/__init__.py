@@ -706,7 +706,7 @@ def _scalars_rounder(slots: list[str]) -> Callable[[Message], None]:
     """Rounds the float32 scalars in ``slots`` (a message's own slot names) in
     one pack and unpack: a pose's five fields for the price of one (a
     subscription rounds every message it takes)."""
-    pack, unpack = _Struct('<' + 'f' * len(slots)).pack, _Struct('<' + 'f' * len(slots)).unpack
+    floats = _Struct('<' + 'f' * len(slots))
     fields = ', '.join(f'_m.{slot}' for slot in slots)
     source = (
         'def round_scalars(_m):\n'
@@ -715,7 +715,7 @@ def _scalars_rounder(slots: list[str]) -> Callable[[Message], None]:
         '    except OverflowError:\n'
         f'        {fields}, = [_as_float32(_v) for _v in ({fields},)]\n'
     )
-    namespace = {'_pack': pack, '_unpack': unpack, '_as_float32': _as_float32}
+    namespace = {'_pack': floats.pack, '_unpack': floats.unpack, '_as_float32': _as_float32}
     exec(compile(source, '<turtletui float32 rounder>', 'exec'), namespace)
     return namespace['round_scalars']
 

@@ -176,16 +176,16 @@ def check_record_path(path: str | os.PathLike[str]) -> None:
     from turtletui.recording.mcap_file import is_bag_folder
 
     target = Path(path)
-    if not is_bag_folder(path) and target.suffix.lower() not in RECORD_SUFFIXES and not target.is_dir():
-        raise RecordingWriteError(
-            f"{path}: cannot tell which kind of recording to write from its name: name it {target.stem}.jsonl"
-            f" (JSON Lines), {target.stem}.mcap (MCAP) or {target.stem}/ (a rosbag2 folder)"
-        )
     if is_bag_folder(path):
         if target.is_dir() and any(target.iterdir()):
             raise RecordingWriteError(f"{path}: cannot write the bag (the folder exists and is not empty)")
     elif target.is_dir():
         raise RecordingWriteError(f"{path}: cannot write the record (is a folder; name a file, or a bag folder as {path}/)")
+    elif target.suffix.lower() not in RECORD_SUFFIXES:
+        raise RecordingWriteError(
+            f"{path}: cannot tell which kind of recording to write from its name: name it {target.stem}.jsonl"
+            f" (JSON Lines), {target.stem}.mcap (MCAP) or {target.stem}/ (a rosbag2 folder)"
+        )
     parent = target.parent
     if not parent.is_dir() or not os.access(parent, os.W_OK) or cannot_write_in(parent) is not None:
         raise RecordingWriteError(f"{path}: cannot write the recording (no writable folder {parent})")
