@@ -144,7 +144,7 @@ class SandboxHost:
         host.exchange(timeout=host.limits.start_timeout, wait=True)
         if not sim.realtime and not host.finished:
             host._pace.start_ns = host.graph.now_ns
-            host._queued_at_start = host.process.queued_seconds()
+            host._queued_at_start = host._queued()
             host._wall_start = _perf_counter()
             host._metering = True
         return host
@@ -298,7 +298,7 @@ class SandboxHost:
         if limits.realtime_lag is not None and behind > limits.realtime_lag and pace.busy >= self._recheck:
             # Before stopping it, take off the time a busy machine kept it (or
             # this process) from a CPU: only its own slowness counts.
-            behind = pace.excuse(self.process.queued_seconds() - self._queued_at_start, now)
+            behind = pace.excuse(self._queued() - self._queued_at_start, now)
             self._recheck = pace.busy + _RECHECK_SECONDS
         if limits.realtime_lag is not None and behind > limits.realtime_lag:
             self._fail("slow", pace.report(now))
@@ -307,9 +307,15 @@ class SandboxHost:
             message = f"ran out of time after {answered - self._wall_start:.1f} s of wall time: {why}"
             # On a busy machine the run's limit can come before the pace's
             # verdict: if the controller is well behind real time, still say why.
-            if pace.excuse(self.process.queued_seconds() - self._queued_at_start, now) > _BEHIND_WORTH_SAYING:
+            if pace.excuse(self._queued() - self._queued_at_start, now) > _BEHIND_WORTH_SAYING:
                 message += f"; it {pace.report(now)}"
             self._fail("time", message)
+
+    def _queued(self) -> float:
+        """Seconds the processes an answer's wall time waited on spent waiting
+        for a CPU: in lockstep the child's and this process's (the answer is
+        timed here, from the Tick sent to the Report read)."""
+        return self.process.queued_seconds()
 
     def _collect(self, budget: float) -> bool:
         """Real time: apply the pending answer if it arrives within ``budget``

@@ -350,11 +350,11 @@ class ChildProcess:
         return self._output.dropped()
 
     # -- end --------------------------------------------------------------------------------------
-    def queued_seconds(self) -> float:
-        """Seconds the child's threads and this process's have waited for a CPU."""
+    def queued_seconds(self, *, own: bool = True) -> float:
+        """Seconds the child's threads and (``own``) this process's have waited for a CPU."""
         child = run_queue_seconds(self.proc.pid) if self.proc is not None else None
-        own = run_queue_seconds("self")
-        return (child or 0.0) + (own or 0.0)
+        mine = run_queue_seconds("self") if own else None
+        return (child or 0.0) + (mine or 0.0)
 
     def kill(self) -> None:
         """Kill the child and everything it started, show its last output and
