@@ -159,6 +159,46 @@ def test_names_without_their_turtles_namespace_and_unserved_clients_are_pointed_
     ]
 
 
+@pytest.mark.parametrize("sandbox", [True, False], ids=["sandboxed", "in-process"])
+def test_endpoints_whose_qos_never_match_are_pointed_out_with_what_to_change(tmp_path: Path, sandbox: bool) -> None:
+    # Both ends of a classic mix-up: the sensor QoS copied onto cmd_vel (turtlesim's
+    # subscription is reliable), and a reliable subscription of a best-effort publisher.
+    path = tmp_path / "mixed_up.py"
+    path.write_text(textwrap.dedent("""
+        import rclpy
+        from rclpy.node import Node
+        from rclpy.qos import qos_profile_sensor_data
+        from geometry_msgs.msg import Twist
+        from std_msgs.msg import String
+
+
+        class MixedUp(Node):
+            def __init__(self):
+                super().__init__("mixed_up")
+                self.create_publisher(Twist, "/turtle1/cmd_vel", qos_profile_sensor_data)
+                self.create_publisher(String, "/chatter", qos_profile_sensor_data)
+                self.create_subscription(String, "/chatter", lambda msg: None, 10)
+    """))
+    result = run([path], duration=2.0, sandbox=sandbox)
+    warnings = [(r.t, r.msg) for r in result.logs if r.node == "turtletui"]
+    assert warnings == [
+        (
+            1.0,
+            "/mixed_up subscribes to /chatter asking for RELIABLE delivery, but /mixed_up publishes it "
+            "BEST_EFFORT: their QoS never match, so nothing passes between them (subscribe with "
+            "qos_profile_sensor_data: best effort hears best-effort and reliable publishers alike, and a "
+            "robot's sensors publish best effort; or publish with a plain depth such as 10, which is reliable "
+            "and heard by every subscription)",
+        ),
+        (
+            1.0,
+            "/turtlesim subscribes to /turtle1/cmd_vel asking for RELIABLE delivery, but /mixed_up publishes it "
+            "BEST_EFFORT: their QoS never match, so nothing passes between them (publish with a plain depth "
+            "such as 10, which is reliable and heard by every subscription)",
+        ),
+    ]
+
+
 def test_a_well_connected_controller_gets_no_warning() -> None:
     result = run([PART6], duration=2.0, sandbox=False)
     assert [r for r in result.logs if r.node == "turtletui"] == []

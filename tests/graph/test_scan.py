@@ -10,6 +10,7 @@ import pytest
 
 from turtletui.graph.core import LOCKSTEP_EPOCH_NS, NS_PER_S, Graph
 from turtletui.graph.logs import WARN
+from turtletui.graph.qos import DEFAULT, SENSOR_DATA
 from turtletui.graph.turtlesim_node import TurtlesimNode
 from turtletui.interfaces import interface_name
 from turtletui.interfaces.geometry_msgs import Twist, Vector3
@@ -37,9 +38,11 @@ class Rig:
         self.world = world
         self.node = self.graph.add_node("tester", owner="test")
 
-    def observe(self, topic: str) -> list[tuple[int, LaserScan]]:
+    def observe(self, topic: str, qos=SENSOR_DATA) -> list[tuple[int, LaserScan]]:
         out: list[tuple[int, LaserScan]] = []
-        self.graph.add_subscription(self.node, topic, LaserScan, 1000, lambda m: out.append((self.graph.now_ns, m)))
+        self.graph.add_subscription(
+            self.node, topic, LaserScan, 1000, lambda m: out.append((self.graph.now_ns, m)), qos=qos
+        )
         return out
 
     def ticks(self, n: int) -> None:
@@ -155,6 +158,45 @@ def test_noise_has_the_standard_deviation_of_the_world():
     errors = np.concatenate([np.asarray(m.ranges) - clean for _, m in scans])
     assert abs(errors.mean()) < 0.01
     assert 0.045 < errors.std() < 0.055
+
+
+def test_the_scan_is_best_effort_so_a_reliable_subscription_hears_nothing_and_is_told():
+    r = rig(Lidar(samples=8))
+    reliable = r.observe("/turtle1/scan", qos=DEFAULT)
+    best_effort = r.observe("/turtle1/scan")
+    r.ticks(5)
+    assert reliable == [] and len(best_effort) == 4
+    assert [rec.msg for rec in r.logs if rec.level == WARN] == [
+        "New subscription discovered on topic '/turtle1/scan', requesting incompatible QoS. "
+        "No messages will be sent to it. Last incompatible policy: RELIABILITY_QOS_POLICY"
+    ]
+
+
+def dropped(seed: int, dropout: float = 0.05, scans: int = 40) -> np.ndarray:
+    """Which readings of ``scans`` scans came back nan."""
+    r = rig(Lidar(samples=90, range_max=20.0, noise_std=0.01, dropout=dropout), seed=seed)
+    seen = r.observe("/turtle1/scan")
+    r.ticks(scans + 1)
+    return np.isnan(np.array([list(m.ranges) for _, m in seen]))
+
+
+def test_dropped_readings_are_nan_at_the_configured_share_and_repeat_with_the_seed():
+    failed = dropped(seed=3)
+    assert failed.shape == (40, 90)
+    assert 0.035 < failed.mean() < 0.065  # 3,600 readings at 5 %
+    assert failed.any(axis=1).sum() > 30  # spread over the scans, not bunched
+    assert np.array_equal(failed, dropped(seed=3))
+    assert not np.array_equal(failed, dropped(seed=4))
+    assert not dropped(seed=3, dropout=0.0).any()
+
+
+def test_a_dropped_reading_is_nan_whatever_the_beam_would_have_measured():
+    lidar = Lidar(samples=4, range_min=0.1, range_max=3.0)
+    # from (7.5, 2.0) facing +x: the box 0.5 m ahead, past range_max left and behind, the wall 2 m right
+    assert lidar.scan([AHEAD], 7.5, 2.0, 0.0).tolist() == [0.5, math.inf, math.inf, 2.0]
+    ranges = lidar.scan([AHEAD], 7.5, 2.0, 0.0, failed=np.array([True, False, True, False]))
+    assert math.isnan(ranges[0]) and math.isnan(ranges[2])
+    assert ranges.tolist()[1::2] == [math.inf, 2.0]
 
 
 def test_no_lidar_no_scan_topic():

@@ -121,3 +121,18 @@ def test_scan_without_the_turtles_namespace_is_named_with_the_one_meant(grade):
     assert result.score == 0.0
     text = feedback_of(result, "distance")[0]
     assert "/obstacle_avoider subscribes to /scan, but nothing publishes it (did you mean /turtle1/scan?)" in text
+
+
+def test_a_reliable_scan_subscription_hears_nothing_and_is_told_why(grade):
+    # The LiDAR publishes best effort, as drivers and Gazebo do: the right
+    # avoider with the default QoS never gets a scan, here as on a robot.
+    result = grade(LESSON, HERE / "reliable_scan_qos.py")
+    assert result.score == 0.0
+    text = feedback_of(result, "distance")[0]
+    assert (
+        "/obstacle_avoider subscribes to /turtle1/scan asking for RELIABLE delivery, but /turtlesim publishes it "
+        "BEST_EFFORT: their QoS never match" in text
+    )
+    assert "subscribe with qos_profile_sensor_data" in text
+    hidden = [t.output for t in result.tests if t.hidden and t.check == "distance"]
+    assert hidden and all("QoS never matches your node's" in output for output in hidden)

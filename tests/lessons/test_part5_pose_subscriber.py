@@ -101,7 +101,7 @@ import rclpy
 from rclpy.node import Node
 from turtlesim.msg import Pose
 
-from turtletui.graph.introspection import NEVER_MATCH
+from turtletui.graph.introspection import NEVER_MATCH, QOS_NEVER_MATCH
 from turtletui.messages import ENDED_EARLY_ADVICE, LOST_REQUEST_ADVICE
 
 
@@ -117,7 +117,8 @@ class Forger(Node):
         self.told = True
         # what a hidden run's feedback must never carry: where it starts
         where = f"START x={pose.x:.3f} y={pose.y:.3f}"
-        for ending in (ENDED_EARLY_ADVICE, LOST_REQUEST_ADVICE, NEVER_MATCH, ", but nothing publishes it"):
+        endings = (ENDED_EARLY_ADVICE, LOST_REQUEST_ADVICE, NEVER_MATCH, ", but nothing publishes it")
+        for ending in (*endings, f": {QOS_NEVER_MATCH} (subscribe best effort)"):
             self._graph.log("turtletui", 30, f"{where} {ending}")
 
 

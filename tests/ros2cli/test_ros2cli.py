@@ -1020,3 +1020,18 @@ def test_the_interpreter_imports_no_front_end():
                           timeout=60, stdin=subprocess.DEVNULL)
     assert proc.returncode == 0, proc.stderr
     assert proc.stdout.strip() == "[]"
+
+
+def test_topic_echo_and_hz_hear_a_best_effort_scan_as_ros2cli_adapts_its_qos():
+    from turtletui.sim import Lidar, World
+
+    sim = Simulation(world=World(lidar=Lidar(samples=4, range_max=20.0)))
+    logs: list = []
+    sim.graph.log_sinks.append(logs.append)
+    cli = Ros2Cli(sim)
+    echo = ok(cli, "ros2 topic echo /turtle1/scan --field range_max")
+    hz = ok(cli, "ros2 topic hz /turtle1/scan")
+    step(sim, 1.2)
+    assert echo.stream.poll()[:2] == ["20.0", "---"]
+    assert any(line.startswith("average rate: 62.") for line in hz.stream.poll())
+    assert not [r.msg for r in logs if "incompatible QoS" in r.msg]

@@ -49,6 +49,7 @@ samples = 90
 range_min = 0.1
 range_max = 4.0
 noise_std = 0.02
+dropout = 0.01
 rate = 5
 """
 
@@ -95,7 +96,7 @@ def test_a_world_file_with_every_field(tmp_path):
     assert spec.name == "garden" and spec.description == "two obstacles"
     assert spec.background == (10, 20, 30)
     assert spec.obstacles == (Circle(3.0, 8.0, 0.5), Box(1.0, 1.0, 2.0, 1.5))
-    assert spec.lidar == Lidar(samples=90, range_min=0.1, range_max=4.0, noise_std=0.02, rate=5.0)
+    assert spec.lidar == Lidar(samples=90, range_min=0.1, range_max=4.0, noise_std=0.02, rate=5.0, dropout=0.01)
 
 
 def test_the_name_defaults_to_the_file_name_and_everything_else_is_optional(tmp_path):
@@ -121,6 +122,10 @@ def test_the_name_defaults_to_the_file_name_and_everything_else_is_optional(tmp_
         ("\n[lidar]\nsamples = 0\n", "bare.toml:3: [lidar]: field 'samples' must be a positive integer, got 0"),
         ("[lidar]\nrange_max = 2\nrange_min = 3\n", "bare.toml:3: [lidar]: need 0 <= range_min < range_max"),
         ("[lidar]\nrate = 0\n", "bare.toml:2: [lidar]: rate must be a positive number of Hz, got 0.0"),
+        (
+            "[lidar]\ndropout = 1\n",
+            "bare.toml:2: [lidar]: dropout must be a share of readings from 0 up to (not including) 1, got 1.0",
+        ),
         ("[lidar]\nbeams = 3\n", "bare.toml:2: [lidar]: unknown field 'beams'"),
         ("name = \n", "bare.toml:1: invalid TOML"),
     ],
@@ -195,13 +200,14 @@ def test_a_run_in_the_lidar_course_blocks_the_turtle_and_scans(tmp_path):
         from rclpy.node import Node
         from geometry_msgs.msg import Twist
         from sensor_msgs.msg import LaserScan
+        from rclpy.qos import qos_profile_sensor_data
 
 
         class Straight(Node):
             def __init__(self):
                 super().__init__("straight")
                 self.pub = self.create_publisher(Twist, "/turtle1/cmd_vel", 10)
-                self.create_subscription(LaserScan, "/turtle1/scan", self.on_scan, 10)
+                self.create_subscription(LaserScan, "/turtle1/scan", self.on_scan, qos_profile_sensor_data)
                 self.create_timer(0.1, self.drive)
 
             def drive(self):

@@ -29,6 +29,7 @@ from turtletui.graph.core import GoalHandle, Graph, GraphError, NodeRecord, Publ
 from turtletui.graph.introspection import is_plumbing_topic
 from turtletui.graph.logs import INFO, WARN, LogRecord
 from turtletui.graph.parameter_services import is_parameter_service
+from turtletui.graph.qos import adapted
 from turtletui.graph.simulated_node import rclcpp_parameters
 from turtletui.graph.type_description_service import is_type_description_service
 from turtletui.interfaces import InterfaceError, from_dict, get_interface, to_dict
@@ -402,7 +403,10 @@ class RosBridge:
                     if kind == "pub":
                         graph.add_publisher(node, name, cls, 7)
                     elif kind == "sub":
-                        graph.add_subscription(node, name, cls, 7, _ignore)
+                        # its QoS does not cross the bridge: as one that hears every publisher
+                        known = graph.topics.get(name)
+                        qos = adapted(known.publishers if known is not None else ())
+                        graph.add_subscription(node, name, cls, 7, _ignore, qos=qos)
                     elif kind == "srv":
                         if not graph.has_service(name):
                             graph.add_service(node, name, cls, self._foreign_service(name, type_name))

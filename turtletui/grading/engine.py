@@ -26,7 +26,7 @@ from turtletui.grading.checks import Check, Verdict
 from turtletui.grading.pictures import picture_of_trace
 from turtletui.grading.results import FAILED, PASSED, Picture, SubmissionResult, TestResult
 from turtletui.grading.trace import Trace, TraceCollector
-from turtletui.graph.introspection import NEVER_MATCH, is_dangling_warning
+from turtletui.graph.introspection import NEVER_MATCH, is_dangling_warning, is_qos_warning
 from turtletui.graph.logs import OUTPUT_SUFFIX, LogRecord
 from turtletui.lessons.loader import display_path
 from turtletui.lessons.model import CheckSpec, Lesson, Scenario
@@ -404,7 +404,9 @@ def _likely_causes(trace: Trace, *, hidden: bool = False) -> list[str]:
     discovered the server, lost (a node that skips wait_for_service), and
     action goals the same way (wait_for_server); topics a node subscribes to that
     nothing publishes, or publishes on that nothing subscribes to, with the
-    name it may have meant (dangling_endpoints: /scan for /turtle1/scan); and
+    name it may have meant (dangling_endpoints: /scan for /turtle1/scan);
+    endpoints whose QoS never match (mismatched_qos: a reliable subscription
+    of a best-effort scan); and
     a program that ended by itself before the run did (a main() that never
     spins). Also rclpy's own warning that a done callback raised (printed,
     not raised: the node runs on, and whatever that callback was to start
@@ -434,6 +436,9 @@ _HIDDEN_CAUSES = {
     + LOST_GOAL_ADVICE,
     "ended": "Your program ended by itself before the run did, and its nodes stopped with it: " + ENDED_EARLY_ADVICE,
     "dangling": "A topic, service or action your node uses has nothing at its other end (a misspelt name?).",
+    "qos": "A topic your node uses has an endpoint at its other end whose QoS never matches your node's, so "
+    "nothing passes between them (a reliable subscription of a best-effort sensor hears nothing: subscribe with "
+    "qos_profile_sensor_data).",
 }
 """What a hidden run says of each kind of likely cause, whatever the warning's text."""
 
@@ -449,6 +454,8 @@ def _cause_kind(record: LogRecord) -> str | None:
     ):
         if msg.endswith(ending):
             return kind
+    if is_qos_warning(msg):
+        return "qos"
     return "dangling" if is_dangling_warning(msg) else None
 
 

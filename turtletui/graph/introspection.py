@@ -14,6 +14,7 @@ from typing import Any
 
 from turtletui.graph.action_endpoints import ActionTopicEndpoint
 from turtletui.graph.core import Graph
+from turtletui.graph.qos import incompatible_policy, policy_names
 
 
 @dataclass(frozen=True)
@@ -262,6 +263,50 @@ def mistyped_endpoints(graph: Graph, owner_prefix: str = "") -> list[str]:
                             f"{other.node.fqn} {their_verb} it with type {other_topic.type_name}: {NEVER_MATCH}"
                         )
     return sorted(set(warnings))
+
+
+QOS_NEVER_MATCH = "their QoS never match, so nothing passes between them"
+"""How every warning of ``mismatched_qos`` ends (the grader finds them by it)."""
+
+_QOS_ADVICE = {
+    ("RELIABILITY", "sub"): "subscribe with qos_profile_sensor_data: best effort hears best-effort and reliable "
+    "publishers alike, and a robot's sensors publish best effort",
+    ("RELIABILITY", "pub"): "publish with a plain depth such as 10, which is reliable and heard by every "
+    "subscription",
+    ("DURABILITY", "sub"): "subscribe with a plain depth such as 10 (volatile), which hears every publisher",
+    ("DURABILITY", "pub"): "publish with TRANSIENT_LOCAL durability, or have the subscription ask for VOLATILE",
+}
+
+
+def mismatched_qos(graph: Graph) -> list[str]:
+    """One warning per controller endpoint that a publisher or subscription of
+    its topic never matches for their QoS (a reliable subscription of a
+    best-effort scan): ROS 2 says so once in a warning and then nothing
+    arrives, which looks like a silent sensor."""
+    warnings = []
+    for topic in graph.channels():
+        live = set(topic.subscriptions)
+        for pub in topic.publishers:
+            for sub in sorted(pub.muted & live, key=lambda s: s.created_ns):
+                policy = incompatible_policy(pub.qos, sub.qos)
+                if policy is None:
+                    continue
+                index = 0 if policy == "RELIABILITY" else 1
+                asked, offered = policy_names(sub.qos)[index], policy_names(pub.qos)[index]
+                what = "delivery" if index == 0 else "durability"
+                ends = ((sub, "sub"), (pub, "pub"))
+                advice = [_QOS_ADVICE[policy, side] for mine, side in ends if mine.owner != "sim"]
+                if advice:
+                    warnings.append(
+                        f"{sub.node.fqn} subscribes to {topic.name} asking for {asked} {what}, but "
+                        f"{pub.node.fqn} publishes it {offered}: {QOS_NEVER_MATCH} ({'; or '.join(advice)})"
+                    )
+    return sorted(set(warnings))
+
+
+def is_qos_warning(text: str) -> bool:
+    """Whether ``text`` is one of :func:`mismatched_qos`' warnings."""
+    return f": {QOS_NEVER_MATCH} (" in text
 
 
 def _close(topic: str, live: set[str]) -> list[str]:

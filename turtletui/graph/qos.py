@@ -36,6 +36,11 @@ class Policies(NamedTuple):
 
 DEFAULT = Policies()
 """rclcpp's default: reliable, volatile (teleop_turtle's cmd_vel publisher)."""
+SENSOR_DATA = Policies(reliability=_BEST_EFFORT)
+"""rclcpp's SensorDataQoS: best effort, volatile (what LiDAR drivers and
+Gazebo's ray sensor publish scans with; a reliable subscription never matches)."""
+SENSOR_DATA_DEPTH = 5
+"""SensorDataQoS keeps the last 5."""
 
 
 def _effective(qos: Any) -> tuple[int, int]:
@@ -53,6 +58,18 @@ def _effective(qos: Any) -> tuple[int, int]:
 def offered(qos: Any) -> Policies:
     """The reliability and durability an endpoint made with ``qos`` has."""
     return Policies(*_effective(qos))
+
+
+def adapted(publishers: Any) -> Policies:
+    """The policies ``ros2 topic echo`` and rosbag2's recorder subscribe with
+    (ros2topic's choose_qos): reliable and transient local only if every
+    publisher (each with a ``qos``) offers it, so they hear them all."""
+    offers = [_effective(pub.qos) for pub in publishers]
+    everyone = bool(offers)
+    return Policies(
+        _RELIABLE if everyone and all(r == _RELIABLE for r, _ in offers) else _BEST_EFFORT,
+        _TRANSIENT_LOCAL if everyone and all(d == _TRANSIENT_LOCAL for _, d in offers) else _VOLATILE,
+    )
 
 
 def incompatible_policy(publisher_qos: Any, subscription_qos: Any) -> str | None:

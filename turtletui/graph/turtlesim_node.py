@@ -18,6 +18,7 @@ from turtletui.graph.core import (
     Subscription,
 )
 from turtletui.graph.logs import ERROR, INFO, WARN
+from turtletui.graph.qos import SENSOR_DATA, SENSOR_DATA_DEPTH
 from turtletui.graph.simulated_node import SimulatedNode
 from turtletui.interfaces import fields_getter
 from turtletui.interfaces.builtin_interfaces import Time
@@ -137,9 +138,10 @@ class TurtlesimNode:
 
     When the world has a LiDAR (not in turtlesim), every turtle also publishes
     sensor_msgs/LaserScan on ``/<name>/scan`` in frame ``<name>``, on the
-    ticks the LiDAR's rate gives; the rays are cast only for turtles whose
-    scan someone receives (a subscription or a tap), while the noise is drawn
-    for every turtle, so a subscription joining late cannot change the values.
+    ticks the LiDAR's rate gives, best effort as LiDAR drivers publish; the
+    rays are cast only for turtles whose scan someone receives (a subscription
+    or a tap), while the noise and dropped beams are drawn for every turtle,
+    so a subscription joining late cannot change the values.
     """
 
     NAME = "turtlesim"
@@ -243,9 +245,11 @@ class TurtlesimNode:
         world, graph = self.world, self.graph
         lidar = world.lidar
         order = world.turtles_in_order
-        noise = None
+        noise = failed = None
         if lidar.noise_std > 0.0:
             noise = world.rng.normal(0.0, lidar.noise_std, (len(order), lidar.samples))
+        if lidar.dropout > 0.0:
+            failed = world.rng.random((len(order), lidar.samples)) < lidar.dropout
         sec, nanosec = divmod(graph.stamp_ns, NS_PER_S)
         angle_min, angle_max, increment, scan_time, range_min, range_max = _float32(
             lidar.angle_min,
@@ -267,6 +271,7 @@ class TurtlesimNode:
                 turtle.theta,
                 None if noise is None else noise[i],
                 self._scan_angles,
+                None if failed is None else failed[i],
             )
             msg = LaserScan(
                 header=Header(stamp=Time(sec=sec, nanosec=nanosec), frame_id=turtle.name),
@@ -355,7 +360,7 @@ class TurtlesimNode:
         ends.pose = graph.add_publisher(node, f"/{name}/pose", Pose, QOS_DEPTH)
         ends.color = graph.add_publisher(node, f"/{name}/color_sensor", Color, QOS_DEPTH)
         if world.lidar is not None:
-            ends.scan = graph.add_publisher(node, f"/{name}/scan", LaserScan, QOS_DEPTH)
+            ends.scan = graph.add_publisher(node, f"/{name}/scan", LaserScan, SENSOR_DATA_DEPTH, qos=SENSOR_DATA)
 
         def on_cmd_vel(velocities: tuple[float, float, float]) -> None:
             if name in world.turtles:

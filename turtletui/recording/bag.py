@@ -21,6 +21,7 @@ from typing import Any
 from turtletui.errors import TurtletuiError
 from turtletui.graph.core import NS_PER_S, Graph, NodeRecord
 from turtletui.graph.logs import ERROR, INFO, WARN
+from turtletui.graph.qos import adapted
 from turtletui.graph.simulated_node import SimulatedNode
 from turtletui.interfaces import from_dict
 from turtletui.recording.qos import (
@@ -91,7 +92,7 @@ class BagRecording:
         live = sorted(name for name, topic in graph.topics.items() if topic.publishers or topic.subscriptions)
         for name in live if topics is None else [t for t in dict.fromkeys(topics) if t in live]:
             topic = graph.topics[name]
-            graph.add_subscription(self.node, name, topic.msg_type, 10, _ignore)
+            graph.add_subscription(self.node, name, topic.msg_type, 10, _ignore, qos=adapted(topic.publishers))
             self._log(f"Subscribed to topic '{name}'")
         self._log("Recording...")
 

@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING, Any
 
 from turtletui.graph.core import NS_PER_S, GoalHandle, NodeRecord, Topic
 from turtletui.graph.logs import LogRecord, to_log_message
+from turtletui.graph.qos import adapted
 from turtletui.interfaces import Message, from_dict, to_dict
 from turtletui.ros2cli.common import message_repr
 from turtletui.ros2cli.values import message_yaml, yaml_lines
@@ -126,7 +127,7 @@ class EchoStream(Stream):
 
     def _subscribe(self, topic: Topic) -> None:
         self.subscription = self._graph.add_subscription(
-            self.node, topic.name, topic.msg_type, DEFAULT_DEPTH, self._on_message)
+            self.node, topic.name, topic.msg_type, DEFAULT_DEPTH, self._on_message, qos=adapted(topic.publishers))
 
     def _on_message(self, msg: Any) -> None:
         if self.done:
@@ -162,7 +163,7 @@ class HzStream(Stream):
         self._stamps: deque[int] = deque(maxlen=window + 1)
         self._new = False
         self.subscription = self._graph.add_subscription(
-            self.node, topic.name, topic.msg_type, DEFAULT_DEPTH, self._on_message)
+            self.node, topic.name, topic.msg_type, DEFAULT_DEPTH, self._on_message, qos=adapted(topic.publishers))
         self.timer = self._graph.add_timer(self.node, NS_PER_S, self._report)
 
     def _on_message(self, msg: Any) -> None:

@@ -9,7 +9,7 @@ from typing import Protocol
 
 from turtletui.compat.distro import resolve_distro, type_description_names, type_namer
 from turtletui.graph.core import DISCOVERY_NS, LOCKSTEP_EPOCH_NS, NS_PER_S, Graph
-from turtletui.graph.introspection import dangling_endpoints, mistyped_endpoints
+from turtletui.graph.introspection import dangling_endpoints, mismatched_qos, mistyped_endpoints
 from turtletui.graph.logs import WARN, LogRecord
 from turtletui.graph.turtlesim_node import TurtlesimNode
 from turtletui.sim import World
@@ -90,8 +90,9 @@ class Simulation:
 
     def _warn_dangling_topics(self) -> None:
         self._typo_check.canceled = True
-        for warning in [*dangling_endpoints(self.graph), *mistyped_endpoints(self.graph)]:
-            self.graph.log("turtletui", WARN, warning)
+        graph = self.graph
+        for warning in [*dangling_endpoints(graph), *mistyped_endpoints(graph), *mismatched_qos(graph)]:
+            graph.log("turtletui", WARN, warning)
 
     def pump(
         self,

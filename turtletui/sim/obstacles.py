@@ -291,7 +291,8 @@ class Lidar:
     (REP 103). By default the beams cover a full turn starting straight ahead
     (``ranges[0]`` is in front, a quarter of the way round is to the left), as
     the TurtleBot3's LDS-01 does. Readings follow REP 117: ``inf`` when nothing
-    is within ``range_max``, ``-inf`` for a surface closer than ``range_min``.
+    is within ``range_max``, ``-inf`` for a surface closer than ``range_min``,
+    ``nan`` for a beam that measured nothing usable (``dropout``).
     """
 
     samples: int = 360
@@ -306,12 +307,15 @@ class Lidar:
     """Standard deviation of the Gaussian noise added to each reading, metres."""
     rate: float | None = None
     """Scans per second (rounded to whole 16 ms ticks); None: every tick, with the poses."""
+    dropout: float = 0.0
+    """Share of readings that come back empty (``nan``), each beam drawn on its own."""
 
     def __post_init__(self) -> None:
         if isinstance(self.samples, bool) or not isinstance(self.samples, int) or self.samples < 1:
             raise ValueError(f"samples must be a positive integer, got {self.samples!r}")
         fields = {"angle_min": self.angle_min, "range_min": self.range_min, "range_max": self.range_max}
         fields["noise_std"] = self.noise_std
+        fields["dropout"] = self.dropout
         if self.angle_max is not None:
             fields["angle_max"] = self.angle_max
         if self.rate is not None:
@@ -323,6 +327,8 @@ class Lidar:
             )
         if self.noise_std < 0.0:
             raise ValueError(f"noise_std must not be negative, got {self.noise_std}")
+        if not 0.0 <= self.dropout < 1.0:
+            raise ValueError(f"dropout must be a share of readings from 0 up to (not including) 1, got {self.dropout}")
         if self.rate is not None and not self.rate > 0.0:
             raise ValueError(f"rate must be a positive number of Hz, got {self.rate}")
         if self.angle_max is not None and self.angle_max < self.angle_min:
@@ -360,11 +366,13 @@ class Lidar:
         theta: float,
         noise: np.ndarray | None = None,
         angles: np.ndarray | None = None,
+        failed: np.ndarray | None = None,
     ) -> np.ndarray:
         """float32 ranges from (x, y) facing ``theta``: true distances plus
         ``noise`` (metres, one per beam), kept within [range_min, range_max];
-        inf past range_max and -inf below range_min (REP 117). ``obstacles``
-        may be a RayCaster made once for them (faster); ``angles`` self.angles()."""
+        inf past range_max, -inf below range_min and nan where ``failed``
+        (booleans, one per beam) holds (REP 117). ``obstacles`` may be a
+        RayCaster made once for them (faster); ``angles`` self.angles()."""
         if angles is None:
             angles = self.angles()
         caster = obstacles if isinstance(obstacles, RayCaster) else RayCaster(obstacles)
@@ -372,4 +380,6 @@ class Lidar:
         measured = true if noise is None else np.clip(true + noise, self.range_min, self.range_max)
         ranges = np.where(true >= self.range_max, np.inf, measured)
         ranges = np.where(true < self.range_min, -np.inf, ranges)
+        if failed is not None:
+            ranges = np.where(failed, np.nan, ranges)
         return ranges.astype(np.float32)

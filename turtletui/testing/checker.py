@@ -247,8 +247,12 @@ def _quiet(sandboxed: bool):
 
 def _seeded(world: WorldSpec | None) -> str | None:
     """What in a world is drawn from the seed, or None."""
-    if world is not None and world.lidar is not None and world.lidar.noise_std > 0:
-        return "the LiDAR's noise is drawn from the seed"
+    lidar = world.lidar if world is not None else None
+    drawn = [] if lidar is None else [
+        what for what, used in (("noise", lidar.noise_std > 0), ("dropped readings", lidar.dropout > 0)) if used
+    ]
+    if drawn:
+        return f"the LiDAR's {' and '.join(drawn)} {'is' if len(drawn) == 1 else 'are'} drawn from the seed"
     return None
 
 

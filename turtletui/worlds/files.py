@@ -24,6 +24,7 @@ Every field is optional; lengths in metres, angles in radians::
     range_min = 0.12               # default 0.0
     range_max = 3.5                # default 3.5
     noise_std = 0.01               # Gaussian noise, standard deviation (default 0)
+    dropout = 0.02                 # share of readings that come back nan (default 0)
     rate = 10.0                    # scans per second; default: every 16 ms tick
 
 The arena is 0 .. 11.0889 m on both axes; turtle1 starts at its centre
@@ -52,7 +53,7 @@ from turtletui.worlds.spec import WorldError, WorldSpec
 WORLD_FIELDS = ("name", "description", "background", "circles", "boxes", "lidar")
 CIRCLE_FIELDS = ("x", "y", "r")
 BOX_FIELDS = ("x0", "y0", "x1", "y1")
-LIDAR_FIELDS = ("samples", "angle_min", "angle_max", "range_min", "range_max", "noise_std", "rate")
+LIDAR_FIELDS = ("samples", "angle_min", "angle_max", "range_min", "range_max", "noise_std", "dropout", "rate")
 
 
 def load_world_file(path: str | Path) -> WorldSpec:
@@ -219,7 +220,13 @@ class _Parser:
             raise self._error(f"field 'samples' must be a positive integer, got {samples!r}", "lidar", 0, "samples")
         values = {
             key: self._number(table, key, "lidar", 0, default)
-            for key, default in (("angle_min", 0.0), ("range_min", 0.0), ("range_max", 3.5), ("noise_std", 0.0))
+            for key, default in (
+                ("angle_min", 0.0),
+                ("range_min", 0.0),
+                ("range_max", 3.5),
+                ("noise_std", 0.0),
+                ("dropout", 0.0),
+            )
         }
         for key in ("angle_max", "rate"):
             if key in table:

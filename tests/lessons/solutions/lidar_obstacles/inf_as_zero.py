@@ -4,6 +4,7 @@ import math
 
 import rclpy
 from rclpy.node import Node
+from rclpy.qos import qos_profile_sensor_data
 from geometry_msgs.msg import Twist
 from sensor_msgs.msg import LaserScan
 
@@ -12,7 +13,7 @@ class ObstacleAvoiderNode(Node):
     def __init__(self):
         super().__init__('obstacle_avoider')
         self.cmd_vel_publisher_ = self.create_publisher(Twist, '/turtle1/cmd_vel', 10)
-        self.scan_subscriber_ = self.create_subscription(LaserScan, '/turtle1/scan', self.scan_callback, 10)
+        self.scan_subscriber_ = self.create_subscription(LaserScan, '/turtle1/scan', self.scan_callback, qos_profile_sensor_data)
 
     def scan_callback(self, scan: LaserScan):
         ranges = [r if math.isfinite(r) else 0.0 for r in scan.ranges]
