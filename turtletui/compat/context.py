@@ -152,11 +152,22 @@ class Context:
     def flush_qos_events(self) -> None:
         """Log the QoS warnings waiting, as an executor runs event callbacks."""
         events, self.qos_events = sorted(self.qos_events, key=lambda e: e[:2]), []
-        for _, _, logger, text, callback, status in events:
+        for done, (_, _, logger, text, callback, status) in enumerate(events, 1):
             if callback is None:
                 logger.warning(text)
-            else:
+                continue
+            try:
                 callback(status)  # the program's incompatible_qos callback
+            except BaseException:
+                # Each handler is a callback of its own in rclpy: the ones after
+                # this one still run, at the executor's next turn.
+                left = events[done:]
+                if left:
+                    if not self.qos_events:
+                        host = self.host
+                        host.graph.ready.append((host.owner, self.flush_qos_events))
+                    self.qos_events[:0] = left
+                raise
 
     def untrack_node(self, node: Any) -> None:
         if node in self._nodes:
