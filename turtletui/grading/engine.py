@@ -437,8 +437,9 @@ _HIDDEN_CAUSES = {
     "ended": "Your program ended by itself before the run did, and its nodes stopped with it: " + ENDED_EARLY_ADVICE,
     "dangling": "A topic, service or action your node uses has nothing at its other end (a misspelt name?).",
     "qos": "A topic your node uses has an endpoint at its other end whose QoS never matches your node's, so "
-    "nothing passes between them (a reliable subscription of a best-effort sensor hears nothing: subscribe with "
-    "qos_profile_sensor_data).",
+    "nothing passes between them: a reliable subscription hears no best-effort publisher (subscribe with "
+    "qos_profile_sensor_data), and a best-effort publisher reaches no reliable subscription (publish with a plain "
+    "depth such as 10).",
 }
 """What a hidden run says of each kind of likely cause, whatever the warning's text."""
 

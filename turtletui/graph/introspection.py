@@ -273,16 +273,16 @@ _QOS_ADVICE = {
     "publishers alike, and a robot's sensors publish best effort",
     ("RELIABILITY", "pub"): "publish with a plain depth such as 10, which is reliable and heard by every "
     "subscription",
-    ("DURABILITY", "sub"): "subscribe with a plain depth such as 10 (volatile), which hears every publisher",
+    ("DURABILITY", "sub"): "subscribe with a plain depth such as 10, which is volatile and hears every publisher",
     ("DURABILITY", "pub"): "publish with TRANSIENT_LOCAL durability, or have the subscription ask for VOLATILE",
 }
 
 
 def mismatched_qos(graph: Graph) -> list[str]:
-    """One warning per controller endpoint that a publisher or subscription of
-    its topic never matches for their QoS (a reliable subscription of a
-    best-effort scan): ROS 2 says so once in a warning and then nothing
-    arrives, which looks like a silent sensor."""
+    """One warning per publisher and subscription, one of them a controller's,
+    that never match for their QoS (a reliable subscription of a best-effort
+    scan), with what to change on the controller's side: ROS 2 says so once
+    in a warning and then nothing arrives, which looks like a silent sensor."""
     warnings = []
     for topic in graph.channels():
         live = set(topic.subscriptions)
