@@ -61,3 +61,15 @@ def test_no_goals_fails_and_thresholds_are_validated():
     assert not verdict.passed and verdict.measured == f"no goals sent to {ACTION}"
     assert CHECK.problem({"min": 1.0, "tolerance": 0.05, "action": ACTION}) is None
     assert CHECK.problem({"tolerence": 0.05}) is not None
+
+
+def test_only_velocity_commands_sent_while_a_goal_was_in_progress_are_blamed():
+    # the first goal is reached at 1.6 s; the second, sent at 2 s, never is
+    theta = np.concatenate([turn(0.0, math.pi / 2, 100), np.full(200, math.pi / 2)])
+    trace = trace_of(theta, [(0.0, math.pi / 2), (2.0, 0.0)])
+    times = [0.5, 1.0, 1.8, 1.9, 2.5]  # two while turning, two between the goals, one after the second
+    trace.commands["turtle1"] = np.array([[t, 0.0, 0.0, 0.0] for t in times])
+    verdict = CHECK.judge(trace, {})
+    assert not verdict.passed
+    assert verdict.measured.startswith("1 of 2 goals reached")
+    assert "published 3 velocity commands on /turtle1/cmd_vel while a goal was in progress" in verdict.measured

@@ -78,7 +78,7 @@ def test_velocity_commands_that_abort_the_goals_are_named(grade):
     result = grade(LESSON, HERE / "zero_twist_timer.py")
     assert "goals_reached" in failed_checks(result)
     text = feedback_of(result, "goals_reached")[0]
-    assert "velocity commands on /turtle1/cmd_vel once it had sent a goal" in text
+    assert "velocity commands on /turtle1/cmd_vel while a goal was in progress" in text
     assert "any message on /turtle1/cmd_vel (a zero Twist too)" in text
     assert result.score < 5.0
 

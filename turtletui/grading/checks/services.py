@@ -170,24 +170,30 @@ def goals_reached(trace: Trace, th: Mapping[str, Any]) -> Verdict:
         return Verdict(False, f"no goals sent to {action}")
     poses = trace.pose_array(turtle)
     reached = 0
+    in_progress: list[tuple[float, float]] = []  # (from, until) each goal was reached or replaced
     for i, goal in enumerate(goals):
         start = goal.t
         end = goals[i + 1].t if i + 1 < len(goals) else math.inf
         if end <= start:  # replaced at once: turtlesim aborts it before it starts
             continue
         window = poses[(poses[:, 0] >= start) & (poses[:, 0] <= end)] if len(poses) else poses
-        if len(window) and _angle_error(window[:, 3], float(goal.goal.theta)).min() <= tolerance:
-            reached += 1
+        if len(window):
+            near = _angle_error(window[:, 3], float(goal.goal.theta)) <= tolerance
+            if near.any():
+                reached += 1
+                end = float(window[near.argmax(), 0])
+        in_progress.append((start, end))
     share = reached / len(goals)
     verdict = bounds(share, {"min": th.get("min", 1.0), "max": th.get("max")})
     text = f"{reached} of {len(goals)} goals reached: {verdict.measured}"
     commands = trace.command_array(turtle)
-    during = int((commands[:, 0] >= goals[0].t).sum()) if len(commands) else 0
+    times = commands[:, 0] if len(commands) else commands
+    during = sum(int(((times >= start) & (times < end)).sum()) for start, end in in_progress)
     if not verdict.passed and during:
         # turtlesim aborts a rotation on any cmd_vel message, a zero Twist too
         text += (
-            f"; the node published {plural(during, 'velocity command')} on /{turtle}/cmd_vel once it had "
-            "sent a goal, and any cmd_vel message aborts the goal in progress"
+            f"; the node published {plural(during, 'velocity command')} on /{turtle}/cmd_vel while a goal "
+            "was in progress, and any cmd_vel message aborts the goal in progress"
         )
     return Verdict(verdict.passed, text)
 
