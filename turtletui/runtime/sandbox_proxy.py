@@ -372,7 +372,10 @@ class GraphProxy:
         elif kind is RemoveRecord:
             self._remove(change)
         elif kind is SetParameter:
-            graph.set_parameter(self._node(change.node, change), change.name, change.value, remove=change.remove)
+            value = change.value
+            if type(value) is list:
+                value = list(value)  # a decoded Report may be reused (SandboxHost._decode): keep its own
+            graph.set_parameter(self._node(change.node, change), change.name, value, remove=change.remove)
 
     def _declare_service(self, change: DeclareService) -> None:
         srv_type = get_interface(change.type_name)
