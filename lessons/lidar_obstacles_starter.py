@@ -19,9 +19,9 @@ class ObstacleAvoiderNode(Node):
         self.get_logger().info("Obstacle avoider has started: watching /turtle1/scan")
 
     def scan_callback(self, scan: LaserScan):
-        # A reading is inf when nothing is within range_max, -inf when something
-        # is closer than range_min, nan when the beam failed: keep the finite ones.
-        valid = [r for r in scan.ranges if math.isfinite(r)]
+        # Keep the readings between range_min and range_max: that leaves out inf
+        # (nothing in range), -inf (too close), nan (lost) and a real driver's 0.0.
+        valid = [r for r in scan.ranges if scan.range_min <= r <= scan.range_max]
         closest = min(valid) if valid else math.inf
         self.get_logger().info(
             f"{len(scan.ranges)} beams, closest reading {closest:.2f} m", throttle_duration_sec=1.0

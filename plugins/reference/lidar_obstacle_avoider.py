@@ -34,11 +34,11 @@ class ObstacleAvoiderNode(Node):
             angle = math.atan2(math.sin(angle), math.cos(angle))  # into [-pi, pi]
             if not low <= angle <= high:
                 continue
-            if math.isnan(r):
-                continue                 # no reading from this beam
             if r == -math.inf:
                 r = scan.range_min       # REP 117: something closer than range_min
-            closest = min(closest, r)    # inf (nothing in range) leaves range_max
+            elif not scan.range_min <= r <= scan.range_max:
+                continue                 # not a distance: nan (no reading), inf (nothing in range), a driver's 0.0
+            closest = min(closest, r)
         return closest
 
     def scan_callback(self, scan: LaserScan):

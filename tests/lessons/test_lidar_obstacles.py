@@ -136,3 +136,12 @@ def test_a_reliable_scan_subscription_hears_nothing_and_is_told_why(grade):
     assert "subscribe with qos_profile_sensor_data" in text
     hidden = [t.output for t in result.tests if t.hidden and t.check == "distance"]
     assert hidden and all("QoS never matches your node's" in output for output in hidden)
+
+
+def test_a_sector_minimum_that_keeps_lost_readings_drives_on_blind(grade):
+    # numpy.min of a sector with one nan in it is nan, and nan < 0.9 is False:
+    # with one reading in ten lost, the turtle misses obstacles it saw coming
+    result = grade(LESSON, HERE / "numpy_min_keeps_nan.py")
+    assert {"obstacle_hits", "min_clearance"} <= failed_checks(result)
+    assert result.score < 5.0
+    assert "one nan in the sector makes numpy.min" in feedback_of(result, "obstacle_hits")[0]
