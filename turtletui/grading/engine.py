@@ -389,10 +389,10 @@ def _output(spec: CheckSpec, verdict: Verdict, hidden: bool, warnings: Sequence[
     if not verdict.judged:
         return verdict.measured
     lines = [verdict.measured] if verdict.measured and not hidden else []
+    if not verdict.passed:
+        lines += warnings  # the likely cause, said by turtletui during the run: before the general advice
     if not verdict.passed and spec.feedback:
         lines.append(spec.feedback)
-    if not verdict.passed:
-        lines += warnings  # the likely cause, said by turtletui during the run
     return "\n".join(lines)
 
 
