@@ -199,6 +199,41 @@ def test_endpoints_whose_qos_never_match_are_pointed_out_with_what_to_change(tmp
     ]
 
 
+@pytest.mark.parametrize("sandbox", [True, False], ids=["sandboxed", "in-process"])
+def test_a_node_made_later_is_looked_at_a_second_after_it_appears(tmp_path: Path, sandbox: bool) -> None:
+    # as a node reloaded in the app is: its mistakes are pointed out again
+    path = tmp_path / "late.py"
+    path.write_text(textwrap.dedent("""
+        import rclpy
+        from rclpy.node import Node
+        from turtlesim.msg import Pose
+
+
+        class First(Node):
+            def __init__(self):
+                super().__init__("first")
+                self.create_subscription(Pose, "/turtle1/pose", lambda msg: None, 10)
+                self.later = self.create_timer(2.0, self.make_another)
+                self.others = []
+
+            def make_another(self):
+                self.later.cancel()
+                other = Node("late")
+                other.create_subscription(Pose, "/turtle1/pos", lambda msg: None, 10)
+                self.others.append(other)
+
+
+        def main():
+            rclpy.init()
+            rclpy.spin(First())
+    """))
+    result = run([path], duration=4.0, sandbox=sandbox, distro="jazzy")
+    warnings = [(r.t, r.msg) for r in result.logs if r.node == "turtletui"]
+    assert warnings == [
+        (3.0, "/late subscribes to /turtle1/pos, but nothing publishes it (did you mean /turtle1/pose?)"),
+    ]
+
+
 def test_a_well_connected_controller_gets_no_warning() -> None:
     result = run([PART6], duration=2.0, sandbox=False)
     assert [r for r in result.logs if r.node == "turtletui"] == []

@@ -514,6 +514,9 @@ class Graph:
         self.outbox: GraphOutbox | None = None
         """Told what this graph's nodes do, when the graph is one part of a
         larger one (see GraphOutbox); None for a whole graph."""
+        self.on_node: Callable[[NodeRecord], None] | None = None
+        """Told of every node made (the simulation looks at a controller's
+        endpoints a second after its nodes appear)."""
         self.on_mismatch: Callable[[Publisher, Subscription, str], None] | None = None
         """Told of every publisher and subscription that match but for their
         QoS (with the policy's name), as DDS tells both sides: the rclpy layer
@@ -616,6 +619,8 @@ class Graph:
         self.nodes.append(node)
         if self.outbox is not None:
             self.outbox.declared(node)
+        if self.on_node is not None:
+            self.on_node(node)
         return node
 
     def remove_node(self, node: NodeRecord) -> None:

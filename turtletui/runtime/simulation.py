@@ -8,7 +8,7 @@ from collections.abc import Callable, Sequence
 from typing import Protocol
 
 from turtletui.compat.distro import resolve_distro, type_description_names, type_namer
-from turtletui.graph.core import DISCOVERY_NS, LOCKSTEP_EPOCH_NS, NS_PER_S, Graph
+from turtletui.graph.core import DISCOVERY_NS, LOCKSTEP_EPOCH_NS, NS_PER_S, Graph, NodeRecord
 from turtletui.graph.introspection import dangling_endpoints, mismatched_qos, mistyped_endpoints
 from turtletui.graph.logs import WARN, LogRecord
 from turtletui.graph.turtlesim_node import TurtlesimNode
@@ -71,9 +71,8 @@ class Simulation:
         self.world = world if world is not None else World(spawn_turtle1=False)
         self.turtlesim = TurtlesimNode(self.graph, self.world, name=turtlesim_name)
         self.remotes: list[RemoteHost] = []
-        self._typo_check = self.graph.add_timer(
-            self.turtlesim.node, TOPIC_CHECK_AFTER_NS, self._warn_dangling_topics
-        )
+        self._topic_check = self.graph.add_timer(self.turtlesim.node, TOPIC_CHECK_AFTER_NS, self._warn_of_endpoints)
+        self.graph.on_node = self._node_made
         self.realtime = realtime
         self.speed = speed
         """Simulated seconds per wall second in real-time mode."""
@@ -88,8 +87,18 @@ class Simulation:
         """Simulated seconds since start."""
         return self.graph.now_ns / NS_PER_S
 
-    def _warn_dangling_topics(self) -> None:
-        self._typo_check.canceled = True
+    def _node_made(self, node: NodeRecord) -> None:
+        """A controller's node (a reloaded one too): look at every endpoint a
+        second from now, when its node has made its endpoints and discovery is over."""
+        if node.owner == "sim":  # the simulator's own (turtlesim, ros2 tools, rosbag2)
+            return
+        self._topic_check.canceled = True
+        self._topic_check = self.graph.add_timer(self.turtlesim.node, TOPIC_CHECK_AFTER_NS, self._warn_of_endpoints)
+
+    def _warn_of_endpoints(self) -> None:
+        """Say what ROS 2 would leave silent: topics nothing is at the other end
+        of, endpoints whose types or QoS never match (each run of this once)."""
+        self._topic_check.canceled = True
         graph = self.graph
         for warning in [*dangling_endpoints(graph), *mistyped_endpoints(graph), *mismatched_qos(graph)]:
             graph.log("turtletui", WARN, warning)
