@@ -46,6 +46,13 @@ def test_min_clearance_measures_the_closest_wall():
     assert judge("min_clearance", t, min=0.3).passed
 
 
+def test_a_turtle_held_at_a_surface_is_0_m_from_it_not_float_noise():
+    t = trace([(5.0, 5.0), (0.1 + 0.2 - 0.3, 5.0)])  # 5.55e-17 m from the left wall
+    verdict = judge("min_clearance", t, min=0.2)
+    assert verdict.measured.startswith("closest to a wall or obstacle: 0 m (needs")
+    assert "0.005 m" in judge("min_clearance", trace([(5.0, 5.0), (0.005, 5.0)]), min=0.2).measured
+
+
 def test_coverage_counts_cells_visited():
     line = [(0.5 + i, 0.5) for i in range(11)]  # 11 of the 121 one-metre cells
     verdict = judge("coverage", trace(line), min=0.1)
