@@ -41,6 +41,7 @@ class TurtleSummary:
     theta: float
     distance: float
     wall_hits: int
+    obstacle_hits: int = 0
 
 
 @dataclass
@@ -67,6 +68,10 @@ class RunResult:
         return sum(t.wall_hits for t in self.turtles.values())
 
     @property
+    def obstacle_hits(self) -> int:
+        return sum(t.obstacle_hits for t in self.turtles.values())
+
+    @property
     def ok(self) -> bool:
         return not self.crashes
 
@@ -75,9 +80,12 @@ class RunResult:
         status = "ok" if self.ok else f"{len(self.crashes)} controller(s) failed"
         if self.interrupted:
             status = f"interrupted, {status}"
+        hits = f"wall hits {self.wall_hits}"
+        if self.obstacle_hits:  # only a world with obstacles has any
+            hits += f", obstacle hits {self.obstacle_hits}"
         return (
             f"sim time {self.sim_time:.3f} s, wall time {self.wall_time:.3f} s, "
-            f"distance {self.distance:.2f} m, wall hits {self.wall_hits}: {status}"
+            f"distance {self.distance:.2f} m, {hits}: {status}"
         )
 
 
@@ -187,7 +195,8 @@ def run(
         outcome = run_controllers(sim, specs, end_ns, ros_args=args, seed=seed, limits=limits, recipe=recipe)
     wall = time.perf_counter() - started
     turtles = {
-        name: TurtleSummary(t.x, t.y, t.theta, t.distance, t.wall_hits) for name, t in sim.world.turtles.items()
+        name: TurtleSummary(t.x, t.y, t.theta, t.distance, t.wall_hits, t.obstacle_hits)
+        for name, t in sim.world.turtles.items()
     }
     return RunResult(sim.t, wall, turtles, logs, outcome.crashes, calls, poses, outcome.interrupted)
 

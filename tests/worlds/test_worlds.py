@@ -232,6 +232,7 @@ def test_a_run_in_the_lidar_course_blocks_the_turtle_and_scans(tmp_path):
     messages = [record.msg for record in result.logs]
     assert any(m.startswith("Oh no! I hit an obstacle! (Blocked at [x=8.600000") for m in messages)
     assert any(m.startswith("ahead 3.0") for m in messages)
+    assert result.summary().endswith(", wall hits 0, obstacle hits 1: ok")
 
 
 # -- finding worlds -------------------------------------------------------------------------

@@ -220,7 +220,8 @@ def run_ros(
         bridge.close()
     wall = time.perf_counter() - started
     turtles = {
-        name: TurtleSummary(t.x, t.y, t.theta, t.distance, t.wall_hits) for name, t in sim.world.turtles.items()
+        name: TurtleSummary(t.x, t.y, t.theta, t.distance, t.wall_hits, t.obstacle_hits)
+        for name, t in sim.world.turtles.items()
     }
     return RunResult(sim.t, wall, turtles, logs, crashes, interrupted=interrupted)
 
