@@ -805,10 +805,11 @@ def test_help_is_argparse_s_as_ros2cli_builds_it(cli):
 
 
 def test_help_fits_the_width_the_console_asks_for(cli):
+    # (echo's and pub's QoS choices are one word each, wider than that, as in ros2)
     cli.help_width = 50
-    assert max(map(len, ok(cli, "ros2 topic echo -h").lines)) <= 50
+    assert max(map(len, ok(cli, "ros2 topic hz -h").lines)) <= 50
     cli.help_width = 100
-    assert max(map(len, ok(cli, "ros2 topic echo -h").lines)) > 50
+    assert max(map(len, ok(cli, "ros2 topic hz -h").lines)) > 50
 
 
 ERRORS = [
@@ -1035,3 +1036,22 @@ def test_topic_echo_and_hz_hear_a_best_effort_scan_as_ros2cli_adapts_its_qos():
     assert echo.stream.poll()[:2] == ["20.0", "---"]
     assert any(line.startswith("average rate: 62.") for line in hz.stream.poll())
     assert not [r.msg for r in logs if "incompatible QoS" in r.msg]
+
+
+def test_echo_and_pub_take_ros2clis_qos_options(sim, cli):
+    from turtletui.sim import Lidar, World
+
+    sim = Simulation(world=World(lidar=Lidar(samples=4, range_max=20.0)))
+    cli = Ros2Cli(sim)
+    # asking for reliable delivery of a best-effort scan hears nothing, as in ROS 2
+    deaf = ok(cli, "ros2 topic echo /turtle1/scan --qos-reliability reliable --field range_max")
+    hears = ok(cli, "ros2 topic echo /turtle1/scan --qos-profile sensor_data --field range_max")
+    # a best-effort publisher never matches turtlesim's reliable cmd_vel subscription
+    pub = ok(cli, "ros2 topic pub --once --qos-reliability best_effort /turtle1/cmd_vel "
+                  "geometry_msgs/msg/Twist '{linear: {x: 2.0}}'")
+    step(sim, 1.2)
+    assert deaf.stream.poll() == []
+    assert hears.stream.poll()[:2] == ["20.0", "---"]
+    assert pub.lines[-1:] == WAITING and pub.stream.count == 0
+    assert sim.world.turtles["turtle1"].x == pytest.approx(5.544445)
+    assert "invalid choice: 'fast'" in cli.run("ros2 topic echo /turtle1/scan --qos-reliability fast").lines[-1]

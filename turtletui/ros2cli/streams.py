@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any
 
 from turtletui.graph.core import NS_PER_S, GoalHandle, NodeRecord, Topic
 from turtletui.graph.logs import LogRecord, to_log_message
-from turtletui.graph.qos import adapted
+from turtletui.graph.qos import SENSOR_DATA, SENSOR_DATA_DEPTH, Policies, adapted
 from turtletui.interfaces import Message, from_dict, to_dict
 from turtletui.ros2cli.common import message_repr
 from turtletui.ros2cli.values import message_yaml, yaml_lines
@@ -119,15 +119,18 @@ class EchoStream(Stream):
     """``ros2 topic echo``: every message as YAML, then ``---``."""
 
     def __init__(self, cli: Ros2Cli, command: str, topic: Topic, once: bool,
-                 field_path: list[str]) -> None:
+                 field_path: list[str], qos: Policies | None = None, depth: int = DEFAULT_DEPTH) -> None:
         super().__init__(cli, command)
         self._once = once
         self._field = field_path
+        self._qos = qos
+        self._depth = depth
         self._subscribe(topic)
 
     def _subscribe(self, topic: Topic) -> None:
+        qos = self._qos if self._qos is not None else adapted(topic.publishers)
         self.subscription = self._graph.add_subscription(
-            self.node, topic.name, topic.msg_type, DEFAULT_DEPTH, self._on_message, qos=adapted(topic.publishers))
+            self.node, topic.name, topic.msg_type, self._depth, self._on_message, qos=qos)
 
     def _on_message(self, msg: Any) -> None:
         if self.done:
@@ -162,8 +165,9 @@ class HzStream(Stream):
         super().__init__(cli, command)
         self._stamps: deque[int] = deque(maxlen=window + 1)
         self._new = False
+        # ros2topic's hz subscribes with qos_profile_sensor_data: it hears every publisher
         self.subscription = self._graph.add_subscription(
-            self.node, topic.name, topic.msg_type, DEFAULT_DEPTH, self._on_message, qos=adapted(topic.publishers))
+            self.node, topic.name, topic.msg_type, SENSOR_DATA_DEPTH, self._on_message, qos=SENSOR_DATA)
         self.timer = self._graph.add_timer(self.node, NS_PER_S, self._report)
 
     def _on_message(self, msg: Any) -> None:
@@ -194,7 +198,8 @@ class PubStream(Stream):
     runs_in_background = True
 
     def __init__(self, cli: Ros2Cli, command: str, topic_name: str, msg: Message,
-                 period_ns: int, times: int, print_nth: int, wait: int = 0) -> None:
+                 period_ns: int, times: int, print_nth: int, wait: int = 0,
+                 qos: Policies | None = None, depth: int = DEFAULT_DEPTH) -> None:
         super().__init__(cli, command)
         self._cls = type(msg)
         self._values = to_dict(msg)
@@ -204,7 +209,7 @@ class PubStream(Stream):
         self._wait = wait
         self.count = 0
         """Messages published so far."""
-        self.publisher = self._graph.add_publisher(self.node, topic_name, self._cls, DEFAULT_DEPTH)
+        self.publisher = self._graph.add_publisher(self.node, topic_name, self._cls, depth, qos=qos)
         self.timer = None
         if self._matched() < wait:
             self._checks = 0
@@ -215,7 +220,8 @@ class PubStream(Stream):
 
     def _matched(self) -> int:
         graph, pub = self._graph, self.publisher
-        return sum(1 for sub in pub.topic.subscriptions if graph.matched(pub, sub))
+        # as DDS counts them: discovered, and not kept apart by their QoS
+        return sum(1 for sub in pub.topic.subscriptions if graph.matched(pub, sub) and sub not in pub.muted)
 
     def _check_matching(self) -> None:
         """ros2cli checks every 100 ms and says so every second."""

@@ -40,6 +40,7 @@ from turtletui.ros2cli.common import (
     topic_or_error,
     type_name,
 )
+from turtletui.ros2cli.qos_args import add_qos_arguments, asked_qos, echo_qos
 from turtletui.ros2cli.streams import EchoStream, HzStream, PubStream, RosoutEchoStream
 from turtletui.ros2cli.values import message_values
 
@@ -70,6 +71,7 @@ def _echo_arguments(parser: ArgumentParser) -> None:
     parser.add_argument("topic_name", help="Name of the ROS topic to listen to (e.g. '/chatter')")
     parser.add_argument("message_type", nargs="?",
                         help="Type of the ROS message (e.g. 'std_msgs/msg/String')")
+    add_qos_arguments(parser, "subscribe", "sensor_data")
     parser.add_argument("--field", type=str, default=None,
                         help="Echo a selected field of a message. Use '.' to select sub-fields. "
                              "For example, to echo the position field of a nav_msgs/msg/Odometry "
@@ -88,7 +90,10 @@ def _echo(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
     _refuse_action_topic(cli, name)
     topic = one_typed_topic(cli, name, "does not appear to be published yet", args.message_type)
     path = _field_path(cli, topic.msg_type, args.field) if args.field is not None else []
-    return cli.start(EchoStream(cli, line, topic, args.once, path))
+    qos, depth, notes = echo_qos(args, topic.publishers)
+    result = cli.start(EchoStream(cli, line, topic, args.once, path, qos, depth))
+    result.lines[:0] = notes
+    return result
 
 
 def _field_path(cli: Ros2Cli, cls: type, text: str) -> list[str]:
@@ -245,6 +250,7 @@ def _pub_arguments(parser: ArgumentParser) -> None:
     parser.add_argument("-w", "--wait-matching-subscriptions", type=nonnegative_int, default=None,
                         help="Wait until finding the specified number of matching subscriptions. "
                              "Defaults to 1 when using \"-1\"/\"--once\"/\"--times\", otherwise defaults to 0.")
+    add_qos_arguments(parser, "publish", "default")
 
 
 def _pub(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
@@ -268,7 +274,8 @@ def _pub(cli: Ros2Cli, args: Namespace, line: str) -> CommandResult:
     wait = args.wait_matching_subscriptions
     if wait is None:
         wait = 1 if times else 0
-    result = cli.start(PubStream(cli, line, name, msg, round(NS_PER_S / rate), times, args.print, wait))
+    qos, depth = asked_qos(args)
+    result = cli.start(PubStream(cli, line, name, msg, round(NS_PER_S / rate), times, args.print, wait, qos, depth))
     result.lines[:0] = notes
     return result
 
