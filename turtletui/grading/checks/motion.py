@@ -162,7 +162,7 @@ def time_moving(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     moved = bool((poses[:, 4] > 1e-6).any() or (np.diff(poses[:, 1:4], axis=0) != 0).any())  # or turned
     text = f"{what} {share:.0%} of the run{need}"
     if not verdict.passed:
-        text += _pauses(trace, turtle_of(th), turning=th.get("turning", True))
+        text += pauses(trace, turtle_of(th), turning=th.get("turning", True))
     return _unheard(trace, Verdict(verdict.passed, text), turtle_of(th), moved)
 
 
@@ -170,7 +170,7 @@ COMMAND_TIMEOUT = 1.0
 """Seconds after its last velocity command that turtlesim stops a turtle."""
 
 
-def _pauses(trace: Trace, turtle: str, *, turning: bool) -> str:
+def pauses(trace: Trace, turtle: str, *, turning: bool = True) -> str:
     """Why a turtle that was sent commands stood still, from when they came:
     the commands that move it stopped (a stop sent, or nothing more), or came
     further apart than turtlesim's 1 s timeout (a slow timer, a callback that
