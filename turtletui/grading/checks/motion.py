@@ -337,7 +337,8 @@ def time_to_goal(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     inside = np.nonzero(dists <= tolerance)[0]
     if inside.size == 0:
         closest = f"{dists.min():.2f} m" if dists.size else "never moved"
-        return Verdict(False, f"never came within {tolerance} m of the goal (closest {closest})")
+        text = f"never came within {tolerance} m of the goal (closest {closest})"
+        return Verdict(False, text + _how_it_missed(trace, th, dists, tolerance))
     return measured("reached the goal after", bounds(float(times[inside[0]]), th, " s"))
 
 
@@ -351,7 +352,50 @@ def final_error(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     _, dists = _goal_distances(trace, th)
     if dists.size == 0:
         return Verdict(False, "the turtle never published a pose")
-    return measured("distance from the goal at the end:", bounds(float(dists[-1]), th, " m"))
+    verdict = measured("distance from the goal at the end:", bounds(float(dists[-1]), th, " m"))
+    if verdict.passed:
+        return verdict
+    return Verdict(False, verdict.measured + _how_it_missed(trace, th, dists, th["max"]))
+
+
+BACKWARDS = 0.1
+"""Share of the commands with a negative linear.x from which a missed goal says the turtle backed."""
+SLOW_COMMANDS = 0.15
+"""Seconds between commands (the median) from which a missed goal names the node's rate."""
+
+
+def _how_it_missed(trace: Trace, th: Mapping[str, Any], dists: np.ndarray, tolerance: float) -> str:
+    """What the commands say about a goal missed: the node drove the turtle
+    backwards (linear.x from dx, or from a signed error), steered from stale
+    poses (a callback that sleeps), or stopped it short on purpose (a stop
+    tolerance wider than the check's). "" when none of these."""
+    commands = trace.command_array(turtle_of(th))
+    if not len(commands) or not dists.size:
+        return ""
+    notes = []
+    backwards = float((commands[:, 1] < -1e-3).mean())
+    if backwards >= BACKWARDS:
+        notes.append(f"linear.x was negative in {backwards:.0%} of the commands: the turtle drove backwards")
+    gaps = np.diff(commands[:, 0])
+    if len(gaps) and float(np.median(gaps)) >= SLOW_COMMANDS:
+        notes.append(
+            f"your node sent a command only every {float(np.median(gaps)):.2f} s, while turtlesim sends "
+            "62.5 poses a second: a slow timer, or a pose callback that sleeps and then steers from the "
+            "old poses that queued up meanwhile, reacts late"
+        )
+    poses = trace.pose_array(turtle_of(th))
+    end = poses[-1, 0]
+    recent = poses[poses[:, 0] >= end - COMMAND_TIMEOUT]
+    still = len(recent) > 1 and not (np.diff(recent[:, 1:3], axis=0) != 0).any()
+    last = commands[commands[:, 0] >= end - COMMAND_TIMEOUT]
+    stopping = len(last) > 0 and not last[:, 1:].any()
+    driven = float(np.hypot(*np.diff(poses[:, 1:3], axis=0).T).sum())
+    if still and stopping and driven > 2 * tolerance and dists[-1] > tolerance:
+        notes.append(
+            f"the turtle drove, then your node stopped it {dists[-1]:.2f} m from the goal with zero "
+            f"Twists: it stops further out than {tolerance:g} m"
+        )
+    return "".join(f"; {note}" for note in notes)
 
 
 @check(
