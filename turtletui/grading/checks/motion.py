@@ -258,9 +258,21 @@ def closed_loop(trace: Trace, th: Mapping[str, Any]) -> Verdict:
             False,
             f"from another start (x={x:.2f}, y={y:.2f}) the node sent the same {len(mine)} commands on "
             f"{topic} at the same times{note}: they do not depend on where the turtle is or what it"
-            " senses (an open loop)",
+            f" senses (an open loop){_all_alike(mine)}",
         )
     return Verdict(True, f"the commands depend on where the turtle is: from another start they differed from t={t:.3f} s")
+
+
+def _all_alike(commands: np.ndarray) -> str:
+    """A note for an open loop whose commands were one Twist over and over: a
+    node that reads the pose and always takes the same branch of its if."""
+    if len(commands) < 2 or (commands[1:, 1:] != commands[0, 1:]).any():
+        return ""
+    linear, _, angular = commands[0, 1:].tolist()
+    return (
+        f"; every one was the same Twist (linear.x={linear:g}, angular.z={angular:g}): if the node "
+        "compares the pose, that comparison came out the same on every pose"
+    )
 
 
 def fit_circle(x: np.ndarray, y: np.ndarray) -> tuple[float, float, float, float]:
