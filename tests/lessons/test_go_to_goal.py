@@ -158,3 +158,14 @@ def test_degrees_against_radians_is_named_in_the_feedback(grade):
     assert "default goal" in failed(result)["time_to_goal"]
     assert result.score == 0.0
     assert "Both angles are in radians: math.degrees() on one of them" in feedback(result, "time_to_goal")
+
+
+def test_a_goal_read_as_0_0_is_told_where_the_node_stopped_not_that_its_tolerance_is_wide(grade):
+    # .double_value of an INTEGER parameter is 0.0: without -p the node drives
+    # to the corner and stops there; with -p goal_x:=2.0 it cannot even start
+    result = grade(LESSON, HERE / "integer_default_read_as_double.py")
+    assert result.score == 0.0
+    text = feedback(result, "time_to_goal")
+    assert "your node stopped it with zero Twists at (0.04, 0.03), 11.26 m from the goal: does it steer to another goal?" in text
+    assert "stops further out than" not in text
+    assert "declare it with 8.0, not 8" in feedback(result, "no_crash")

@@ -372,6 +372,9 @@ def final_error(trace: Trace, th: Mapping[str, Any]) -> Verdict:
 
 BACKWARDS = 0.1
 """Share of the commands with a negative linear.x from which a missed goal says the turtle backed."""
+STOPPED_SHORT = 1.0
+"""Metres from the goal within which a node that stopped the turtle is told its tolerance is too wide
+(further out, it was steering somewhere else)."""
 SLOW_COMMANDS = 0.15
 """Seconds between commands (the median) from which a missed goal names the node's rate."""
 
@@ -403,10 +406,17 @@ def _how_it_missed(trace: Trace, th: Mapping[str, Any], dists: np.ndarray, toler
     stopping = len(last) > 0 and not last[:, 1:].any()
     driven = float(np.hypot(*np.diff(poses[:, 1:3], axis=0).T).sum())
     if still and stopping and driven > 2 * tolerance and dists[-1] > tolerance:
-        notes.append(
-            f"the turtle drove, then your node stopped it {dists[-1]:.2f} m from the goal with zero "
-            f"Twists: it stops further out than {tolerance:g} m"
-        )
+        if dists[-1] <= STOPPED_SHORT:
+            notes.append(
+                f"the turtle drove, then your node stopped it {dists[-1]:.2f} m from the goal with zero "
+                f"Twists: it stops further out than {tolerance:g} m"
+            )
+        else:
+            x, y = poses[-1, 1:3].tolist()
+            notes.append(
+                f"the turtle drove, then your node stopped it with zero Twists at ({x:.2f}, {y:.2f}), "
+                f"{dists[-1]:.2f} m from the goal: does it steer to another goal?"
+            )
     return "".join(f"; {note}" for note in notes)
 
 
