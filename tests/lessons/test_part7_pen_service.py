@@ -135,3 +135,11 @@ def test_a_side_read_from_y_is_shown_where_the_pen_changed(grade):
     assert result.score == 0.0
     text = feedback(result, "pen_colour_by_side")
     assert "the pen changed colour at x = 1.4, 9.7, 3.6 (the line is x = 5.5)" in text
+
+
+def test_a_timer_that_sets_the_pen_every_tick_is_a_flood_too(grade):
+    result = grade(LESSON, HERE / "timer_sets_the_pen_every_tick.py")
+    assert failed_checks(result) == {"calls_per_side_change"}
+    assert result.score == 6.0
+    text = feedback(result, "calls_per_side_change")
+    assert "119 calls of /turtle1/set_pen for 3 crossings" in text and "nor from every tick of a timer" in text
