@@ -110,3 +110,14 @@ def test_timer_lines_without_a_number_at_the_end_are_quoted(grade, solution, quo
     (text,) = feedback_of(result, "log_period")
     assert f"10 lines logged from callbacks did not match it, such as {quoted}" in text
     assert "with the number in the middle" in text and "a string without its f" in text
+
+
+def test_a_callback_called_instead_of_passed_logs_once_from_init_and_is_told_so(grade):
+    # create_timer(1.0, self.timer_callback()) runs the callback once and hands
+    # the timer None, which rclpy's executor skips: one line, from __init__
+    result = grade(LESSON, HERE / "callback_called_not_passed.py")
+    assert failed_checks(result) == {"log_period", "log_counter"}
+    assert result.score == 0.0
+    (text,) = feedback_of(result, "log_period")
+    assert "1 log line matching" in text
+    assert "logged outside any callback (t=0.000 s): by code that runs once, such as __init__ or main()" in text

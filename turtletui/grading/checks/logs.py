@@ -196,7 +196,15 @@ def _log_period(trace: Trace, th: Mapping[str, Any]) -> Verdict:
             f"callback (the first at t={outside[0].t:.3f} s): from code the executor did not call, such as a "
             "loop that sleeps or calls spin_once between lines, not from a timer callback that rclpy.spin runs",
         )
-    return _one_per_period(lines, th)
+    verdict = _one_per_period(lines, th)
+    if outside and not verdict.passed:
+        when = ", ".join(f"t={record.t:.3f} s" for record in outside[:3])
+        return Verdict(
+            False,
+            f"{verdict.measured}, logged outside any callback ({when}): by code that runs once, such as "
+            "__init__ or main(), not by a timer's callback",
+        )
+    return verdict
 
 
 def _one_per_period(records: list[Any], th: Mapping[str, Any]) -> Verdict:
