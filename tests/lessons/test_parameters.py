@@ -104,3 +104,12 @@ def test_declaring_in_the_callback_crashes_on_the_second_pose_and_is_told_why(gr
     text = feedback(result, "no_crash")
     assert "ParameterAlreadyDeclaredException: Parameter(s) already declared: ['speed']" in text
     assert "a declare_parameter that runs twice" in text
+
+
+def test_a_slow_timer_that_circles_outside_the_box_is_not_told_its_defaults_are_wrong(grade):
+    result = grade(LESSON, HERE / "slow_timer_circles_outside_the_box.py")
+    assert failed(result)["mean_speed"] == {"defaults"}
+    assert result.score < 9.0
+    text = feedback(result, "mean_speed")
+    assert "mean speed: 1.50 m/s (needs >= 2.20 m/s)" in text
+    assert "With those defaults and still slow, the turtle spent the run circling slowly outside the box" in text
