@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 from turtletui.grading.checks import BUILTIN_CHECKS, fit_circle
+from turtletui.grading.checks.base import bounds
 from turtletui.grading.trace import POSE_COLUMNS, ServiceCall, Trace
 from turtletui.graph.logs import INFO, LogRecord
 from turtletui.runtime.report import CrashReport
@@ -256,3 +257,16 @@ def test_coordinate_range_names_the_side_that_went_too_far():
     assert both.passed and both.measured == "lowest x or y: 2.50 m (needs >= 2 m); highest x or y: 8.40 m (needs <= 9 m)"
     assert judge("coordinate_range", t).measured == "x and y between 2.50 m and 8.40 m"
     assert not judge("coordinate_range", trace([]), max=7.0).passed
+
+
+@pytest.mark.parametrize(
+    ("value", "thresholds", "shown"),
+    [
+        (1.49962, {"min": 1.5}, "1.4996 (needs >= 1.50)"),  # not "1.50 (needs >= 1.50)", a fail that reads as a pass
+        (2.0004, {"max": 2}, "2.0004 (needs <= 2)"),
+        (1.2, {"min": 1.5}, "1.20 (needs >= 1.50)"),
+        (1.5, {"min": 1.5}, "1.50 (needs >= 1.50)"),
+    ],
+)
+def test_a_number_that_missed_its_bound_is_shown_with_the_digits_that_tell_them_apart(value, thresholds, shown):
+    assert bounds(value, thresholds).measured == shown

@@ -118,3 +118,54 @@ def test_goal_parameters_declared_but_ignored_reach_only_the_default_goal(grade)
     text = feedback(result, "time_to_goal")
     assert "This run sets the goal with -p goal_x:=2.0 -p goal_y:=6.0" in text
     assert 'self.get_parameter("goal_x").value' in text
+
+
+def test_a_tolerance_wider_than_the_goals_stops_short_and_is_told_so(grade):
+    result = grade(LESSON, HERE / "tolerance_half_a_metre.py")
+    failures = failed(result)
+    assert {"default goal", "goal to the left"} <= failures["time_to_goal"] & failures["final_error"]
+    assert result.score == 0.0
+    text = feedback(result, "time_to_goal")
+    assert "your node stopped it 0.49 m from the goal with zero Twists: it stops further out than 0.1 m" in text
+    assert "stops further out than 0.1 m" in feedback(result, "final_error")
+
+
+def test_a_speed_from_dx_backs_away_from_goals_to_the_left(grade):
+    result = grade(LESSON, HERE / "linear_speed_from_dx.py")
+    failures = failed(result)
+    assert "default goal" not in failures["time_to_goal"]  # dx > 0 there: it works
+    assert {"goal to the left", "goal due west"} <= failures["time_to_goal"]
+    assert result.score < 2.0
+    assert "linear.x was negative in 100% of the commands: the turtle drove backwards" in feedback(result, "time_to_goal")
+
+
+def test_a_callback_that_sleeps_is_told_its_commands_come_late(grade):
+    result = grade(LESSON, HERE / "sleeps_in_the_pose_callback.py")
+    assert "default goal" in failed(result)["time_to_goal"]
+    assert result.score == 0.0
+    assert "your node sent a command only every 0.20 s" in feedback(result, "time_to_goal")
+
+
+def test_a_wrap_by_pi_fails_the_hidden_starts_and_their_feedback_names_it(grade):
+    result = grade(LESSON, HERE / "wraps_by_pi_not_two_pi.py")
+    assert {"hidden 1", "hidden 2"} <= failed(result)["time_to_goal"]
+    assert result.score < 8.0
+    assert "adding or taking away pi (not 2 pi)" in feedback(result, "time_to_goal")
+
+
+def test_degrees_against_radians_is_named_in_the_feedback(grade):
+    result = grade(LESSON, HERE / "degrees_minus_radians.py")
+    assert "default goal" in failed(result)["time_to_goal"]
+    assert result.score == 0.0
+    assert "Both angles are in radians: math.degrees() on one of them" in feedback(result, "time_to_goal")
+
+
+def test_a_goal_read_as_0_0_is_told_where_the_node_stopped_not_that_its_tolerance_is_wide(grade):
+    # .double_value of an INTEGER parameter is 0.0: without -p the node drives
+    # to the corner and stops there; with -p goal_x:=2.0 it cannot even start
+    result = grade(LESSON, HERE / "integer_default_read_as_double.py")
+    assert result.score == 0.0
+    text = feedback(result, "time_to_goal")
+    assert "your node stopped it with zero Twists at (0.04, 0.03), 11.26 m from the goal: does it steer to another goal?" in text
+    assert "stops further out than" not in text
+    assert "declare it with 8.0, not 8" in feedback(result, "no_crash")

@@ -78,3 +78,38 @@ def test_a_box_min_worked_out_from_box_max_fails_the_high_box(grade):
     assert text.startswith("lowest x or y: ")
     assert "did not respect the box's lower bound, box_min" in text and "not 11 - box_max" in text
     assert result.score < 9.0
+
+
+def test_a_box_test_that_is_always_true_is_told_every_command_was_the_same(grade):
+    result = grade(LESSON, HERE / "box_test_inverted.py")
+    assert "closed_loop" in failed(result)
+    assert result.score <= 1.0
+    text = feedback(result, "closed_loop")
+    assert "every one was the same Twist (linear.x=1, angular.z=1.5)" in text
+    assert "that comparison came out the same on every pose" in text
+
+
+def test_a_misnamed_parameter_fails_its_run_by_a_hair_and_says_so_in_digits(grade):
+    result = grade(LESSON, HERE / "turn_rate_misnamed.py")
+    assert set(failed(result)) == {"min_clearance"}
+    assert result.score < 7.5
+    text = feedback(result, "min_clearance")
+    assert "closest to a wall or obstacle: 1.496 m (needs >= 1.50 m)" in text
+    assert 'a parameter declared as "turning_rate" at its default' in text
+
+
+def test_declaring_in_the_callback_crashes_on_the_second_pose_and_is_told_why(grade):
+    result = grade(LESSON, HERE / "declares_in_the_callback.py")
+    assert result.score == 0.0
+    text = feedback(result, "no_crash")
+    assert "ParameterAlreadyDeclaredException: Parameter(s) already declared: ['speed']" in text
+    assert "a declare_parameter that runs twice" in text
+
+
+def test_a_slow_timer_that_circles_outside_the_box_is_not_told_its_defaults_are_wrong(grade):
+    result = grade(LESSON, HERE / "slow_timer_circles_outside_the_box.py")
+    assert failed(result)["mean_speed"] == {"defaults"}
+    assert result.score < 9.0
+    text = feedback(result, "mean_speed")
+    assert "mean speed: 1.50 m/s (needs >= 2.20 m/s)" in text
+    assert "With those defaults and still slow, the turtle spent the run circling slowly outside the box" in text

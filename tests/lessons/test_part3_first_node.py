@@ -95,3 +95,29 @@ def test_printed_lines_do_not_count_as_a_timers_log(grade):
     (text,) = feedback_of(result, "log_period")
     assert "printed lines do not count" in text and "self.get_logger().info" in text
     assert result.score == 0.0
+
+
+@pytest.mark.parametrize(
+    ("solution", "quoted"),
+    [("string_without_its_f.py", "'Hello {self.counter_}'"), ("counter_in_mid_line.py", "'Hello 9 from first_node'")],
+)
+def test_timer_lines_without_a_number_at_the_end_are_quoted(grade, solution, quoted):
+    # the timer and the counter are right, the line is not a counter line: the
+    # student is shown the line the grader could not read, not only "0 lines"
+    result = grade(LESSON, HERE / solution)
+    assert failed_checks(result) == {"log_period", "log_counter"}
+    assert result.score == 0.0
+    (text,) = feedback_of(result, "log_period")
+    assert f"10 lines logged from callbacks did not match it, such as {quoted}" in text
+    assert "with the number in the middle" in text and "a string without its f" in text
+
+
+def test_a_callback_called_instead_of_passed_logs_once_from_init_and_is_told_so(grade):
+    # create_timer(1.0, self.timer_callback()) runs the callback once and hands
+    # the timer None, which rclpy's executor skips: one line, from __init__
+    result = grade(LESSON, HERE / "callback_called_not_passed.py")
+    assert failed_checks(result) == {"log_period", "log_counter"}
+    assert result.score == 0.0
+    (text,) = feedback_of(result, "log_period")
+    assert "1 log line matching" in text
+    assert "logged outside any callback (t=0.000 s): by code that runs once, such as __init__ or main()" in text

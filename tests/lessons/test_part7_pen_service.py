@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from support.lessons import SOLUTIONS, failed_checks, feedback_of
+from support.lessons import SOLUTIONS, failed, failed_checks, feedback, feedback_of
 
 LESSON = "part7-pen-service"
 HERE = SOLUTIONS / "part7"
@@ -101,3 +101,45 @@ def test_colours_as_fractions_are_refused_as_in_ros(grade):
     assert failed_checks(result) == {"no_crash"}
     assert result.score == 0.0
     assert "The 'r' field must be of type 'int' (got float 1.0" in feedback_of(result, "no_crash")[0]
+
+
+STOOD_STILL = "the last velocity command that moves the turtle came at t=0.1 s of 12 s"
+
+
+def test_driving_only_when_the_side_changes_is_not_part_6s_turtle(grade):
+    # it publishes a Twist only at a crossing: the turtle moves 1 s and stops;
+    # where it still crossed the line by luck, its colours alone earn little
+    result = grade(LESSON, HERE / "publishes_only_when_the_side_changes.py")
+    failures = failed(result)
+    assert {"centre", "right half"} <= failures["time_moving"]
+    assert {"centre", "right half"} <= failures["pen_colour_by_side"]
+    assert result.score <= 2.0
+    text = feedback(result, "pen_colour_by_side")
+    assert "never drove on the left side of x = 5.5; " + STOOD_STILL in text
+    assert "with the set_pen call beside it, not around it" in feedback(result, "time_moving")
+
+
+def test_awaiting_the_answer_in_the_pose_callback_stops_the_node_and_is_told_why(grade):
+    # rclpy holds the default callback group while the coroutine waits, and
+    # hands the answer over in that same group: the node waits for ever
+    result = grade(LESSON, HERE / "awaits_the_answer_in_the_callback.py")
+    assert result.score == 0.0
+    assert STOOD_STILL in feedback(result, "pen_colour_by_side")
+    text = feedback(result, "time_moving")
+    assert "moving 8% of the run" in text and "an await of client.call_async(request) inside the callback" in text
+
+
+def test_a_side_read_from_y_is_shown_where_the_pen_changed(grade):
+    result = grade(LESSON, HERE / "side_from_y_not_x.py")
+    assert "pen_colour_by_side" in failed_checks(result)
+    assert result.score == 0.0
+    text = feedback(result, "pen_colour_by_side")
+    assert "the pen changed colour at x = 1.4, 9.7, 3.6 (the line is x = 5.5)" in text
+
+
+def test_a_timer_that_sets_the_pen_every_tick_is_a_flood_too(grade):
+    result = grade(LESSON, HERE / "timer_sets_the_pen_every_tick.py")
+    assert failed_checks(result) == {"calls_per_side_change"}
+    assert result.score == 6.0
+    text = feedback(result, "calls_per_side_change")
+    assert "119 calls of /turtle1/set_pen for 3 crossings" in text and "nor from every tick of a timer" in text

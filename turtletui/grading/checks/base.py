@@ -157,7 +157,20 @@ def bounds(value: float, th: Mapping[str, Any], unit: str = "", *, default_max: 
     if high is not None:
         wanted.append(f"<= {number_text(high)}{unit}")
     need = f" (needs {' and '.join(wanted)})" if wanted else ""
-    return Verdict(passed, f"{number_text(value)}{unit}{need}")
+    missed = [bound for bound, ok in ((low, low is None or value >= low), (high, high is None or value <= high)) if not ok]
+    shown = _apart(value, missed[0]) if missed else number_text(value)
+    return Verdict(passed, f"{shown}{unit}{need}")
+
+
+def _apart(value: float, bound: float) -> str:
+    """``value`` with the digits that tell it from the ``bound`` it missed: a
+    clearance of 1.4996 m is "1.4996", not "1.50", beside "needs >= 1.50"."""
+    if number_text(value) != number_text(bound) and f"{value:.2f}" != f"{bound:.2f}":
+        return number_text(value)
+    for digits in range(3, 7):
+        if f"{value:.{digits}f}" != f"{bound:.{digits}f}":
+            return f"{value:.{digits}f}"
+    return repr(value)
 
 
 def number_text(value: float) -> str:

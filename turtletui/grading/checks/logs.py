@@ -153,8 +153,37 @@ def log_period(trace: Trace, th: Mapping[str, Any]) -> Verdict:
                 f"{verdict.measured}; {plural(len(printed), 'printed line')} do not count: print() cannot "
                 "say which callback printed it, log with self.get_logger().info(...)",
             )
-        return verdict
+        return _unmatched_callback_lines(trace, th, verdict)
     return _log_period(trace, th)
+
+
+def _unmatched_callback_lines(trace: Trace, th: Mapping[str, Any], verdict: Verdict) -> Verdict:
+    """``verdict``, and when too few lines matched, the line a callback logged
+    most often that the pattern missed: a counter in mid-line ("Hello 3 from
+    node"), or an f-string without its f ("Hello {self.counter_}")."""
+    if verdict.passed or len(_counter_lines(trace, th)) >= max(th.get("min", 3), 2) or "pattern" not in th:
+        return verdict
+    pattern = re.compile(th["pattern"])
+    missed: dict[str, int] = {}
+    for record in trace.logs:
+        if (
+            record.in_callback
+            and record.node not in ("turtlesim", "turtletui")
+            and not record.node.endswith(OUTPUT_SUFFIX)
+            and not pattern.search(record.msg)
+        ):
+            missed[record.msg] = missed.get(record.msg, 0) + 1
+    kinds: dict[str, list[str]] = {}
+    for msg, count in missed.items():
+        kinds.setdefault(_kind(msg), []).extend([msg] * count)
+    if not kinds:
+        return verdict
+    lines = max(kinds.values(), key=len)
+    return Verdict(
+        False,
+        f"{verdict.measured}; {plural(len(lines), 'line')} logged from callbacks did not match it, "
+        f"such as {lines[-1]!r}",
+    )
 
 
 def _log_period(trace: Trace, th: Mapping[str, Any]) -> Verdict:
@@ -167,7 +196,15 @@ def _log_period(trace: Trace, th: Mapping[str, Any]) -> Verdict:
             f"callback (the first at t={outside[0].t:.3f} s): from code the executor did not call, such as a "
             "loop that sleeps or calls spin_once between lines, not from a timer callback that rclpy.spin runs",
         )
-    return _one_per_period(lines, th)
+    verdict = _one_per_period(lines, th)
+    if outside and not verdict.passed:
+        when = ", ".join(f"t={record.t:.3f} s" for record in outside[:3])
+        return Verdict(
+            False,
+            f"{verdict.measured}, logged outside any callback ({when}): by code that runs once, such as "
+            "__init__ or main(), not by a timer's callback",
+        )
+    return verdict
 
 
 def _one_per_period(records: list[Any], th: Mapping[str, Any]) -> Verdict:

@@ -162,7 +162,7 @@ def time_moving(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     moved = bool((poses[:, 4] > 1e-6).any() or (np.diff(poses[:, 1:4], axis=0) != 0).any())  # or turned
     text = f"{what} {share:.0%} of the run{need}"
     if not verdict.passed:
-        text += _pauses(trace, turtle_of(th), turning=th.get("turning", True))
+        text += pauses(trace, turtle_of(th), turning=th.get("turning", True))
     return _unheard(trace, Verdict(verdict.passed, text), turtle_of(th), moved)
 
 
@@ -170,7 +170,7 @@ COMMAND_TIMEOUT = 1.0
 """Seconds after its last velocity command that turtlesim stops a turtle."""
 
 
-def _pauses(trace: Trace, turtle: str, *, turning: bool) -> str:
+def pauses(trace: Trace, turtle: str, *, turning: bool = True) -> str:
     """Why a turtle that was sent commands stood still, from when they came:
     the commands that move it stopped (a stop sent, or nothing more), or came
     further apart than turtlesim's 1 s timeout (a slow timer, a callback that
@@ -258,9 +258,21 @@ def closed_loop(trace: Trace, th: Mapping[str, Any]) -> Verdict:
             False,
             f"from another start (x={x:.2f}, y={y:.2f}) the node sent the same {len(mine)} commands on "
             f"{topic} at the same times{note}: they do not depend on where the turtle is or what it"
-            " senses (an open loop)",
+            f" senses (an open loop){_all_alike(mine)}",
         )
     return Verdict(True, f"the commands depend on where the turtle is: from another start they differed from t={t:.3f} s")
+
+
+def _all_alike(commands: np.ndarray) -> str:
+    """A note for an open loop whose commands were one Twist over and over: a
+    node that reads the pose and always takes the same branch of its if."""
+    if len(commands) < 2 or (commands[1:, 1:] != commands[0, 1:]).any():
+        return ""
+    linear, _, angular = commands[0, 1:].tolist()
+    return (
+        f"; every one was the same Twist (linear.x={linear:g}, angular.z={angular:g}): if the node "
+        "compares the pose, that comparison came out the same on every pose"
+    )
 
 
 def fit_circle(x: np.ndarray, y: np.ndarray) -> tuple[float, float, float, float]:
@@ -337,7 +349,8 @@ def time_to_goal(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     inside = np.nonzero(dists <= tolerance)[0]
     if inside.size == 0:
         closest = f"{dists.min():.2f} m" if dists.size else "never moved"
-        return Verdict(False, f"never came within {tolerance} m of the goal (closest {closest})")
+        text = f"never came within {tolerance} m of the goal (closest {closest})"
+        return Verdict(False, text + _how_it_missed(trace, th, dists, tolerance))
     return measured("reached the goal after", bounds(float(times[inside[0]]), th, " s"))
 
 
@@ -351,7 +364,60 @@ def final_error(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     _, dists = _goal_distances(trace, th)
     if dists.size == 0:
         return Verdict(False, "the turtle never published a pose")
-    return measured("distance from the goal at the end:", bounds(float(dists[-1]), th, " m"))
+    verdict = measured("distance from the goal at the end:", bounds(float(dists[-1]), th, " m"))
+    if verdict.passed:
+        return verdict
+    return Verdict(False, verdict.measured + _how_it_missed(trace, th, dists, th["max"]))
+
+
+BACKWARDS = 0.1
+"""Share of the commands with a negative linear.x from which a missed goal says the turtle backed."""
+STOPPED_SHORT = 1.0
+"""Metres from the goal within which a node that stopped the turtle is told its tolerance is too wide
+(further out, it was steering somewhere else)."""
+SLOW_COMMANDS = 0.15
+"""Seconds between commands (the median) from which a missed goal names the node's rate."""
+
+
+def _how_it_missed(trace: Trace, th: Mapping[str, Any], dists: np.ndarray, tolerance: float) -> str:
+    """What the commands say about a goal missed: the node drove the turtle
+    backwards (linear.x from dx, or from a signed error), steered from stale
+    poses (a callback that sleeps), or stopped it short on purpose (a stop
+    tolerance wider than the check's). "" when none of these."""
+    commands = trace.command_array(turtle_of(th))
+    if not len(commands) or not dists.size:
+        return ""
+    notes = []
+    backwards = float((commands[:, 1] < -1e-3).mean())
+    if backwards >= BACKWARDS:
+        notes.append(f"linear.x was negative in {backwards:.0%} of the commands: the turtle drove backwards")
+    gaps = np.diff(commands[:, 0])
+    if len(gaps) and float(np.median(gaps)) >= SLOW_COMMANDS:
+        notes.append(
+            f"your node sent a command only every {float(np.median(gaps)):.2f} s, while turtlesim sends "
+            "62.5 poses a second: a slow timer, or a pose callback that sleeps and then steers from the "
+            "old poses that queued up meanwhile, reacts late"
+        )
+    poses = trace.pose_array(turtle_of(th))
+    end = poses[-1, 0]
+    recent = poses[poses[:, 0] >= end - COMMAND_TIMEOUT]
+    still = len(recent) > 1 and not (np.diff(recent[:, 1:3], axis=0) != 0).any()
+    last = commands[commands[:, 0] >= end - COMMAND_TIMEOUT]
+    stopping = len(last) > 0 and not last[:, 1:].any()
+    driven = float(np.hypot(*np.diff(poses[:, 1:3], axis=0).T).sum())
+    if still and stopping and driven > 2 * tolerance and dists[-1] > tolerance:
+        if dists[-1] <= STOPPED_SHORT:
+            notes.append(
+                f"the turtle drove, then your node stopped it {dists[-1]:.2f} m from the goal with zero "
+                f"Twists: it stops further out than {tolerance:g} m"
+            )
+        else:
+            x, y = poses[-1, 1:3].tolist()
+            notes.append(
+                f"the turtle drove, then your node stopped it with zero Twists at ({x:.2f}, {y:.2f}), "
+                f"{dists[-1]:.2f} m from the goal: does it steer to another goal?"
+            )
+    return "".join(f"; {note}" for note in notes)
 
 
 @check(

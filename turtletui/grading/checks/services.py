@@ -19,6 +19,7 @@ from turtletui.grading.checks.base import (
     number_text,
     turtle_of,
 )
+from turtletui.grading.checks.motion import pauses
 from turtletui.grading.trace import Trace
 from turtletui.messages import plural
 
@@ -93,7 +94,8 @@ def pen_colour_by_side(trace: Trace, th: Mapping[str, Any]) -> Verdict:
                     False, f"the pen was off wherever the turtle drove on the {side} side of x = {split}: "
                     "it drew nothing there (set_pen's off must be 0 to draw)"
                 )
-            return Verdict(False, f"the turtle never drove on the {side} side of x = {split}")
+            stood = pauses(trace, turtle_of(th))
+            return Verdict(False, f"the turtle never drove on the {side} side of x = {split}{stood}")
         wanted = tuple(th[side]) if side in th else max(set(side_colours), key=side_colours.count)
         found[side] = wanted
         shares[side] = side_colours.count(wanted) / len(side_colours)
@@ -108,7 +110,21 @@ def pen_colour_by_side(trace: Trace, th: Mapping[str, Any]) -> Verdict:
         detail += ": the same colour on both sides"
     else:
         detail += f"; changed colour {margin} m or more before reaching x = {split} at {early} of {crossings} crossings"
-    return Verdict(passed, f"pen colour {detail} (needs {need:.0%})")
+    text = f"pen colour {detail} (needs {need:.0%})"
+    if not passed and found["right"] != found["left"]:
+        text += _changed_at(poses[:, 1], colours, split)
+    return Verdict(passed, text)
+
+
+def _changed_at(x: np.ndarray, colours: np.ndarray, split: float) -> str:
+    """Where the pen changed colour, for a student whose node changes it elsewhere
+    than at the line (another number, pose.y for pose.x, a timer)."""
+    changes = np.flatnonzero((colours[1:] != colours[:-1]).any(axis=1)) + 1
+    if not len(changes):
+        return ""
+    shown = ", ".join(f"{value:.1f}" for value in x[changes[:5]].tolist())
+    more = ", ..." if len(changes) > 5 else ""
+    return f"; the pen changed colour at x = {shown}{more} (the line is x = {split})"
 
 
 def _early_crossings(

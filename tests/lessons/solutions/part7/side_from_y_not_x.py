@@ -1,0 +1,42 @@
+"""Wrong: the side is read from pose.y, not pose.x."""
+import rclpy
+from geometry_msgs.msg import Twist
+from rclpy.node import Node
+from turtlesim.msg import Pose
+from turtlesim.srv import SetPen
+
+
+class TurtleControllerNode(Node):
+    def __init__(self):
+        super().__init__("turtle_controller")
+        self.cmd_vel_publisher_ = self.create_publisher(Twist, "/turtle1/cmd_vel", 10)
+        self.create_subscription(Pose, "/turtle1/pose", self.pose_callback, 10)
+        self.client_ = self.create_client(SetPen, "/turtle1/set_pen")
+        self.client_.wait_for_service()
+        self.previous_y_ = 0.0
+
+    def pose_callback(self, pose: Pose):
+        cmd = Twist()
+        if pose.x > 9.0 or pose.x < 2.0 or pose.y > 9.0 or pose.y < 2.0:
+            cmd.linear.x = 1.0
+            cmd.angular.z = 1.5
+        else:
+            cmd.linear.x = 5.0
+        self.cmd_vel_publisher_.publish(cmd)
+        if pose.y > 5.5 and self.previous_y_ <= 5.5:
+            self.previous_y_ = pose.y
+            self.client_.call_async(SetPen.Request(r=255, g=0, b=0, width=3, off=0))
+        elif pose.y <= 5.5 and self.previous_y_ > 5.5:
+            self.previous_y_ = pose.y
+            self.client_.call_async(SetPen.Request(r=0, g=255, b=0, width=3, off=0))
+
+
+def main(args=None):
+    rclpy.init(args=args)
+    node = TurtleControllerNode()
+    rclpy.spin(node)
+    rclpy.shutdown()
+
+
+if __name__ == "__main__":
+    main()
