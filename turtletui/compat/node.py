@@ -103,7 +103,7 @@ _RCL_EXPAND_AT = "at /project/src/rcl/expand_topic_name.c:"
 _SUBSTITUTION = re.compile(r"\{[^}]*\}")
 
 
-def _check_for_type_support(interface: Any) -> None:
+def check_for_type_support(interface: Any) -> None:
     """rclpy's type_support.check_for_type_support: what is not an interface class has no
     ``_TYPE_SUPPORT``, and rclpy adds its ROS 1 hint to Python's AttributeError."""
     if isinstance(interface, type) and issubclass(interface, (Message, ServiceType, ActionType)):
@@ -121,7 +121,7 @@ def _check_for_type_support(interface: Any) -> None:
 
 def _check_msg_type(msg_type: Any) -> None:
     """rclpy's check_is_valid_msg_type."""
-    _check_for_type_support(msg_type)
+    check_for_type_support(msg_type)
     if not issubclass(msg_type, Message):
         raise RuntimeError(
             f"The message type provided is not valid ({msg_type}), this might be a service or action"
@@ -1347,7 +1347,7 @@ def _check_callable(callback: Any) -> None:
 
 def _check_srv_type(srv_type: Any) -> None:
     """rclpy's check_is_valid_srv_type."""
-    _check_for_type_support(srv_type)
+    check_for_type_support(srv_type)
     if not (hasattr(srv_type, "Request") and hasattr(srv_type, "Response")):
         raise RuntimeError(
             f"The service type provided is not valid ({srv_type}), this might be a message or action"
