@@ -159,6 +159,13 @@ def spin_until_future_complete(
             executor.remove_node(node)
 
 
+def timeout_sec_to_nsec(timeout_sec: float | None) -> int:
+    """rclpy.utilities': a timeout in seconds as rcl_wait's nanoseconds (-1: for ever)."""
+    if timeout_sec is None or timeout_sec < 0:
+        return -1
+    return int(float(timeout_sec) * 1_000_000_000)
+
+
 def utilities_remove_ros_args(args: list[str] | None = None) -> list[str]:
     import sys
 
