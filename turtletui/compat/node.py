@@ -676,11 +676,20 @@ class Node(Destroyable):
         return name
 
     def _expand(self, topic: str) -> str:
+        record = self._record
+        for substitution in _SUBSTITUTION.findall(topic):  # rcl's
+            if substitution not in ("{node}", "{ns}", "{namespace}"):
+                raise ValueError(
+                    f"topic name '{topic}' is invalid: unknown substitution: {substitution}, {_RCL_EXPAND_AT}164"
+                )
         if topic.startswith("~"):
-            return self._record.fqn + topic[1:]
+            topic = record.fqn + topic[1:]
+        if "{" in topic:
+            namespace = record.namespace or "/"
+            topic = topic.replace("{node}", record.name).replace("{ns}", namespace).replace("{namespace}", namespace)
         if topic.startswith("/"):
             return topic
-        return f"{self._record.namespace.rstrip('/')}/{topic}"
+        return f"{record.namespace.rstrip('/')}/{topic}"
 
     # -- entities ---------------------------------------------------------------
     def create_publisher(
