@@ -71,6 +71,7 @@ from turtletui.compat.qos import (
     qos_profile_services_default,
 )
 from turtletui.compat.rcl_error import RCLError, topic_type_error
+from turtletui.compat.serialization import deserialize_message, raw_callback
 from turtletui.compat.task import Future
 from turtletui.compat.time import Clock, ClockType, Duration, clock_for
 from turtletui.compat.time_source import TimeSource
@@ -82,11 +83,10 @@ from turtletui.compat.timer import (
     with_timer_info,
 )
 from turtletui.compat.type_description_service import TypeDescriptionService
+from turtletui.compat.type_support import check_for_type_support
 from turtletui.graph import core
 from turtletui.graph.logs import WARN
-from turtletui.interfaces import Action as ActionType
 from turtletui.interfaces import Message, copier, float32_rounder, interface_name
-from turtletui.interfaces import Service as ServiceType
 from turtletui.interfaces.rcl_interfaces import Log, ParameterEvent
 from turtletui.interfaces.rcl_interfaces import Parameter as ParameterMsg
 from turtletui.messages import LOST_REQUEST_ADVICE
@@ -101,22 +101,6 @@ def _no_call() -> None:
 _RCL_EXPAND_AT = "at /project/src/rcl/expand_topic_name.c:"
 """Where rcl's errors for a name it cannot expand say they come from (the Kilted wheels' build)."""
 _SUBSTITUTION = re.compile(r"\{[^}]*\}")
-
-
-def check_for_type_support(interface: Any) -> None:
-    """rclpy's type_support.check_for_type_support: what is not an interface class has no
-    ``_TYPE_SUPPORT``, and rclpy adds its ROS 1 hint to Python's AttributeError."""
-    if isinstance(interface, type) and issubclass(interface, (Message, ServiceType, ActionType)):
-        return
-    try:
-        interface._TYPE_SUPPORT  # noqa: B018 - the AttributeError, in Python's own words
-    except AttributeError as err:
-        err.args = (
-            err.args[0] + " This might be a ROS 1 message type but it should be a ROS 2 message type."
-            " Make sure to source your ROS 2 workspace after your ROS 1 workspace.",
-            *err.args[1:],
-        )
-        raise
 
 
 def _check_msg_type(msg_type: Any) -> None:
@@ -159,6 +143,8 @@ class Publisher(Destroyable):
         middleware that serialises, changing ``msg`` afterwards changes nothing sent."""
         if self._destroyed:
             self._require_alive()
+        if type(msg) is bytes:  # serialized, as rclpy publishes bytes
+            msg = deserialize_message(msg, self.msg_type)
         if type(msg) is not self.msg_type:
             raise TypeError(
                 f"publish() on {self._topic.name} expects a {self._topic.type_name} message, got "
@@ -740,7 +726,8 @@ class Node(Destroyable):
         host = self._context.host
         with_info = takes_message_info(callback)  # after the name's checks, as rclpy
         info = message_info_maker(self._graph) if with_info else None
-        run = dispatcher(host, self._group(callback_group), callback, info, float32_rounder(msg_type))
+        delivered = raw_callback(callback, with_info) if raw else callback
+        run = dispatcher(host, self._group(callback_group), delivered, info, float32_rounder(msg_type))
         try:
             record = self._graph.add_subscription(
                 self._record,

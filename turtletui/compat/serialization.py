@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+import functools
+from collections.abc import Callable
 from typing import Any
 
-from turtletui.compat.node import check_for_type_support
 from turtletui.compat.rcl_error import RMWError
+from turtletui.compat.type_support import check_for_type_support
 from turtletui.interfaces import Message
 from turtletui.interfaces.cdr import CODES, SIZES, fixed_size, serialize
 from turtletui.interfaces.cdr_reader import CdrError, deserialize
@@ -55,6 +57,23 @@ def _size(cls: type, message: Any, pos: int) -> int:
 
 def _aligned(pos: int, size: int) -> int:
     return pos + -(pos - 4) % size
+
+
+def raw_callback(callback: Callable[..., Any], with_info: bool) -> Callable[..., Any]:
+    """The callback of a subscription made with ``raw=True``: it gets each message's bytes."""
+    if with_info:
+
+        @functools.wraps(callback)
+        def with_bytes_and_info(msg: Any, info: Any) -> Any:
+            return callback(serialize_message(msg), info)
+
+        return with_bytes_and_info
+
+    @functools.wraps(callback)
+    def with_bytes(msg: Any) -> Any:
+        return callback(serialize_message(msg))
+
+    return with_bytes
 
 
 def deserialize_message(serialized_message: bytes, message_type: type) -> Any:
