@@ -1086,6 +1086,7 @@ class Node(Destroyable):
             if (
                 expected is not Parameter.Type.NOT_SET
                 and not descriptor.dynamic_typing
+                and override is not None  # not set (``[]`` in YAML): rclpy declares it so
                 and not type_matches(expected, override)
             ):
                 raise InvalidParameterTypeException(Parameter(name, value=override), expected)
