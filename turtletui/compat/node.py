@@ -968,11 +968,16 @@ class Node(Destroyable):
         ]
 
     def wait_for_node(self, fully_qualified_node_name: str, timeout: float) -> bool:
-        """Wait (in simulated time) until the node is in the graph; False on timeout."""
+        """Wait (in simulated time) until the node is in the graph; False on timeout
+        (at once for a timeout of 0 or less, as rclpy's loop never looks then)."""
+        if not fully_qualified_node_name.startswith("/"):
+            fully_qualified_node_name = f"/{fully_qualified_node_name}"
 
         def found() -> bool:
             return fully_qualified_node_name in self.get_fully_qualified_node_names()
 
+        if timeout <= 0:
+            return False
         if found():
             return True
         return self._context.host.spin_until(found, int(timeout * _NS), callbacks=False)
