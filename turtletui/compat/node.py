@@ -72,6 +72,14 @@ from turtletui.compat.qos import (
 )
 from turtletui.compat.rcl_error import RCLError, topic_type_error
 from turtletui.compat.serialization import deserialize_message, raw_callback
+from turtletui.compat.service_introspection import (
+    Introspection,
+    ServiceIntrospectionState,
+    client_gid,
+    request_answered,
+    request_received,
+    request_sent,
+)
 from turtletui.compat.task import Future
 from turtletui.compat.time import Clock, ClockType, Duration, clock_for
 from turtletui.compat.time_source import TimeSource
@@ -89,6 +97,7 @@ from turtletui.graph.logs import WARN
 from turtletui.interfaces import Message, copier, float32_rounder, interface_name
 from turtletui.interfaces.rcl_interfaces import Log, ParameterEvent
 from turtletui.interfaces.rcl_interfaces import Parameter as ParameterMsg
+from turtletui.interfaces.service_msgs import ServiceEventInfo
 from turtletui.messages import LOST_REQUEST_ADVICE
 
 _NS = 1_000_000_000
@@ -261,11 +270,21 @@ class Client(Destroyable):
         """The name as given to create_client, as rclpy keeps it (service_name: resolved)."""
         self.callback_group = callback_group
         self._told_undiscovered = False
+        self._sequence = 0
+        self._gid = client_gid(node.get_fully_qualified_name(), record.name, len(node._entities))
+        self._introspection = Introspection(node, self.srv_type, record.name)
 
     @property
     def service_name(self) -> str:
         """The fully qualified name of the service (rcl's)."""
         return self._record.name
+
+    def configure_introspection(
+        self, clock: Any, service_event_qos_profile: QoSProfile, introspection_state: ServiceIntrospectionState
+    ) -> None:
+        """Publish this client's requests and responses on ``<service>/_service_event``."""
+        self._require_alive()
+        self._introspection.configure(clock, service_event_qos_profile, introspection_state)
 
     def call_async(self, request: Any) -> Future:
         """Send ``request``; the Future completes when the response arrives
@@ -279,12 +298,18 @@ class Client(Destroyable):
         future = Future()
         host = self._node.context.host
         graph = host.graph
+        self._sequence += 1
+        sequence, gid, introspection = self._sequence, self._gid, self._introspection
+        introspection.publish(ServiceEventInfo.REQUEST_SENT, gid, sequence, request=request)
+        request_sent(request, gid, sequence)
         if self.service_name in graph.services and not graph.service_matched(self._record):
             self._tell_request_lost()  # and never answered, as in ROS 2
             return future
         node = self._node
 
         def take_response(response: Any) -> None:
+            request_answered(request)
+            introspection.publish(ServiceEventInfo.RESPONSE_RECEIVED, gid, sequence, response=response)
             # As rclpy's executor taking a response: the future's done callbacks become its tasks.
             future._set_executor(node.executor)
             future.set_result(response)
@@ -364,6 +389,7 @@ class Client(Destroyable):
         )
 
     def destroy(self) -> None:
+        self._introspection.destroy()
         self._node._release_entity(self, self._node._graph.remove_client)
 
 
@@ -402,13 +428,22 @@ class Service(Destroyable):
         self.srv_name = srv_name
         """The name as given to create_service, as rclpy keeps it (service_name: resolved)."""
         self.callback = callback
+        self._introspection = Introspection(node, self.srv_type, record.name)
 
     @property
     def service_name(self) -> str:
         """The fully qualified name of the service (rcl's)."""
         return self._record.name
 
+    def configure_introspection(
+        self, clock: Any, service_event_qos_profile: QoSProfile, introspection_state: ServiceIntrospectionState
+    ) -> None:
+        """Publish the requests this service takes and its responses on ``<service>/_service_event``."""
+        self._require_alive()
+        self._introspection.configure(clock, service_event_qos_profile, introspection_state)
+
     def destroy(self) -> None:
+        self._introspection.destroy()
         self._node._release_entity(self, self._node._graph.remove_service)
 
 
@@ -827,13 +862,19 @@ class Node(Destroyable):
         host = self._context.host
         name = self._resolve(srv_name, True)
 
+        made: list[Service] = []
+
         def handler(request: Any, respond: Callable[[Any], None]) -> None:
+            gid, sequence = request_received(request)
+            introspection = made[0]._introspection
+            introspection.publish(ServiceEventInfo.REQUEST_RECEIVED, gid, sequence, request=request)
             response = callback(request, srv_type.Response())
             if type(response) is not srv_type.Response:
                 raise TypeError(
                     f"service {name}: the callback must return a {interface_name(srv_type)}.Response, "
                     f"got {response!r}"
                 )
+            introspection.publish(ServiceEventInfo.RESPONSE_SENT, gid, sequence, response=response)
             respond(response)
 
         handler.__name__ = getattr(callback, "__name__", "handler")
@@ -841,6 +882,7 @@ class Node(Destroyable):
             self._record, name, srv_type, dispatcher(host, self._group(callback_group), handler)
         )
         service = Service(self, record, callback, srv_name)
+        made.append(service)
         self._entities.append(service)
         return service
 
