@@ -70,6 +70,7 @@ from turtletui.compat.qos import (
     qos_profile_rosout_default,
     qos_profile_services_default,
 )
+from turtletui.compat.qos_overriding_options import declare_qos_parameters
 from turtletui.compat.rcl_error import RCLError, topic_type_error
 from turtletui.compat.serialization import deserialize_message, raw_callback
 from turtletui.compat.service_introspection import (
@@ -727,6 +728,8 @@ class Node(Destroyable):
         self._require_alive()
         qos_profile = profile_of(qos_profile)  # rclpy's order: the QoS, the name, the type
         name = self.resolve_topic_name(topic)
+        if qos_overriding_options is not None:
+            declare_qos_parameters("publisher", self, name, qos_profile, qos_overriding_options)
         _check_msg_type(msg_type)
         depth = depth_of(qos_profile)
         try:
@@ -756,6 +759,8 @@ class Node(Destroyable):
         self._require_alive()
         qos_profile = profile_of(qos_profile)  # rclpy's order: the QoS, the name, the type
         name = self.resolve_topic_name(topic)
+        if qos_overriding_options is not None:
+            declare_qos_parameters("subscription", self, name, qos_profile, qos_overriding_options)
         _check_msg_type(msg_type)
         depth = depth_of(qos_profile)
         host = self._context.host
