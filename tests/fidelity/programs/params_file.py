@@ -4,6 +4,9 @@ every YAML type (int, float, string, bool, lists), an empty list (a parameter no
 later file or a -p winning over an earlier one, automatically declared overrides, what a node
 that declares nothing sees, and the files and -p values rclpy.init refuses (a list mixing
 integers and floats, a file that does not exist)."""
+import os
+import tempfile
+
 import rclpy
 from rclpy.exceptions import InvalidParameterTypeException, ParameterUninitializedException
 from rclpy.node import Node
@@ -49,7 +52,7 @@ turtle_controller:
 
 
 def write(name, text):
-    with open(name, "w") as file:  # in the current folder: rcl's errors name the path given
+    with open(name, "w") as file:  # by a relative name: rcl's errors name the path given
         file.write(text)
     return name
 
@@ -67,6 +70,8 @@ def show(node, names):
 
 
 def main():
+    # a folder of its own (turtletui's sandbox starts a program in its file's folder)
+    os.chdir(tempfile.mkdtemp())
     first, second, mixed = write("first.yaml", FIRST), write("second.yaml", SECOND), write("mixed.yaml", MIXED)
     for args in (["--params-file", mixed], ["--params-file", "missing.yaml"], ["-p", "waypoints:=[1, 2.5]"],
                  ["-p", "flags:=[true, 0]"]):
