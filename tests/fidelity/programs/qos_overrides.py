@@ -30,7 +30,7 @@ def main():
                                    qos_overriding_options=QoSOverridingOptions.with_default_policies())
     other = node.create_publisher(String, "chatter", 10, qos_overriding_options=QoSOverridingOptions(
         [QoSPolicyKind.DURABILITY, QoSPolicyKind.LIFESPAN, QoSPolicyKind.DEADLINE], entity_id="second"))
-    plain = node.create_publisher(String, "plain", 10)
+    node.create_publisher(String, "plain", 10)
     for name in sorted(node._parameters):
         if name.startswith("qos_overrides"):
             parameter = node.get_parameter(name)
