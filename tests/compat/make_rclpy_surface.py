@@ -53,6 +53,15 @@ FUNCTIONS = {
     "rclpy.logging": ["get_logger", "set_logger_level", "get_logger_effective_level"],
     "rclpy.wait_for_message": ["wait_for_message"],
     "rclpy.signals": ["install_signal_handlers", "get_current_signal_handlers_options", "uninstall_signal_handlers"],
+    "rclpy.serialization": ["serialize_message", "deserialize_message"],
+    "rclpy.type_support": ["check_for_type_support"],
+    "rclpy.utilities": ["ok", "shutdown", "try_shutdown", "get_default_context", "remove_ros_args", "timeout_sec_to_nsec"],
+    "rclpy.validate_node_name": ["validate_node_name"],
+    "rclpy.validate_namespace": ["validate_namespace"],
+    "rclpy.validate_topic_name": ["validate_topic_name"],
+    "rclpy.validate_full_topic_name": ["validate_full_topic_name"],
+    "rclpy.expand_topic_name": ["expand_topic_name"],
+    "rclpy.topic_or_service_is_hidden": ["topic_or_service_is_hidden"],
 }
 
 NODE_METHODS = [
@@ -126,7 +135,25 @@ COMPARISONS = ["__eq__", "__ne__", "__lt__", "__le__", "__gt__", "__ge__", "__ha
 SURFACE = {
     "rclpy.node.Node": ["__init__", *NODE_METHODS],
     "rclpy.publisher.Publisher": ["publish", "get_subscription_count", "topic_name"],
-    "rclpy.client.Client": ["call_async", "call", "wait_for_service", "service_is_ready"],
+    "rclpy.client.Client": ["call_async", "call", "wait_for_service", "service_is_ready", "configure_introspection"],
+    "rclpy.service.Service": ["configure_introspection"],
+    "rclpy.parameter_event_handler.ParameterEventHandler": [
+        "__init__",
+        "destroy",
+        "get_parameter_from_event",
+        "get_parameters_from_event",
+        "add_parameter_callback",
+        "remove_parameter_callback",
+        "add_parameter_event_callback",
+        "remove_parameter_event_callback",
+    ],
+    "rclpy.qos_overriding_options.QoSOverridingOptions": [
+        "__init__",
+        "with_default_policies",
+        "policy_kinds",
+        "callback",
+        "entity_id",
+    ],
     "rclpy.timer.Timer": ["cancel", "reset", "is_canceled"],
     "rclpy.task.Future": [
         "__init__",
@@ -286,6 +313,7 @@ ENUMS = [
     "rclpy.lifecycle.TransitionCallbackReturn",
     "rclpy.qos.QoSPolicyKind",
     "rclpy.signals.SignalHandlerOptions",
+    "rclpy.service_introspection.ServiceIntrospectionState",
 ]
 
 ALIASES = {

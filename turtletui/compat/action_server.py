@@ -290,8 +290,9 @@ class ActionServer(Destroyable):
     def _notify_execute(self, goal_handle: ServerGoalHandle, execute_callback: Callable | None) -> None:
         callback = execute_callback or self._execute_callback
         host = self._node.context.host
-        # As rclpy's executor.create_task: a task outside any callback group.
-        start_task(host, ReentrantCallbackGroup(), self._execute_goal, (callback, goal_handle), now=False)
+        # As rclpy's executor.create_task: a task outside any callback group, which
+        # the executor runs before the callbacks ready meanwhile (other goal requests)
+        start_task(host, ReentrantCallbackGroup(), self._execute_goal, (callback, goal_handle), now=False, first=True)
 
     async def _execute_goal(self, execute_callback: Callable, goal_handle: ServerGoalHandle) -> None:
         try:

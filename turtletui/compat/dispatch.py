@@ -200,14 +200,16 @@ def start_task(
     kwargs: dict | None = None,
     *,
     now: bool,
+    first: bool = False,
     release: Callable[[Task], None] | None = None,
     executor: Any = None,
 ) -> Task:
     """Run ``handler`` (a coroutine, or a function called with ``args``) as a
-    Task: its first step now or queued, the next ones queued each time the
-    Future it awaits is done. With ``release``, the caller holds ``group`` for
-    the task and ``release(task)`` runs when it ends; else each step runs
-    under ``group``'s rules."""
+    Task: its first step now or queued (``first``: ahead of the callbacks
+    already ready), the next ones queued each time the Future it awaits is
+    done. With ``release``, the caller holds ``group`` for the task and
+    ``release(task)`` runs when it ends; else each step runs under
+    ``group``'s rules."""
     task = Task(handler, args, kwargs, executor=executor)
     ready = host.graph.ready
     owner = host.owner
@@ -223,6 +225,8 @@ def start_task(
     task._resume = lambda: ready.append((owner, step))
     if now:
         step()
+    elif first:
+        ready.appendleft((owner, step))
     else:
         task._resume()
     return task

@@ -222,11 +222,23 @@ def validate_topic_name(name: str, *, is_service: bool = False) -> None:
 
 
 def validate_full_topic_name(name: str, *, is_service: bool = False) -> None:
-    """The check rmw makes on the expanded name (``/foo//bar``)."""
+    """The check rmw makes on a fully qualified name (rmw_validate_full_topic_name)."""
     error = InvalidServiceNameException if is_service else InvalidTopicNameException
+    if not name:
+        raise error(name, "topic name must not be empty", 0)
+    if name[0] != "/":
+        raise error(name, "topic name must be absolute, it must lead with a '/'", 0)
+    if name.endswith("/"):
+        raise error(name, "topic name must not end with a '/'", len(name) - 1)
+    for i, char in enumerate(name):
+        if not (char.isascii() and (char.isalnum() or char in "_/")):
+            raise error(name, "topic name must not contain characters other than alphanumerics, '_', or '/'", i)
     for i in range(1, len(name)):
-        if name[i] == "/" and name[i - 1] == "/":
+        if name[i - 1] == "/" and name[i] == "/":
             raise error(name, "topic name must not contain repeated '/'", i)
+        if name[i - 1] == "/" and name[i].isdigit():
+            raise error(name, "topic name must not have a token that starts with a number", i)
+
 
 # as rclpy's classes print: <rclpy.node.Node object at ...> (turtletui.compat.identity)
 as_rclpy("rclpy.exceptions", NotInitializedException, NoTypeSupportImportedException, NameValidationException, InvalidNamespaceException, InvalidNodeNameException, InvalidTopicNameException, InvalidServiceNameException, ParameterException, ParameterNotDeclaredException, ParameterAlreadyDeclaredException, InvalidParameterException, InvalidParameterTypeException, InvalidParameterValueException, ParameterImmutableException, ParameterUninitializedException, ROSInterruptException)

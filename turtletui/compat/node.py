@@ -70,7 +70,17 @@ from turtletui.compat.qos import (
     qos_profile_rosout_default,
     qos_profile_services_default,
 )
+from turtletui.compat.qos_overriding_options import declare_qos_parameters
 from turtletui.compat.rcl_error import RCLError, topic_type_error
+from turtletui.compat.serialization import deserialize_message, raw_callback
+from turtletui.compat.service_introspection import (
+    Introspection,
+    ServiceIntrospectionState,
+    client_gid,
+    request_answered,
+    request_received,
+    request_sent,
+)
 from turtletui.compat.task import Future
 from turtletui.compat.time import Clock, ClockType, Duration, clock_for
 from turtletui.compat.time_source import TimeSource
@@ -82,13 +92,13 @@ from turtletui.compat.timer import (
     with_timer_info,
 )
 from turtletui.compat.type_description_service import TypeDescriptionService
+from turtletui.compat.type_support import check_for_type_support
 from turtletui.graph import core
 from turtletui.graph.logs import WARN
-from turtletui.interfaces import Action as ActionType
 from turtletui.interfaces import Message, copier, float32_rounder, interface_name
-from turtletui.interfaces import Service as ServiceType
 from turtletui.interfaces.rcl_interfaces import Log, ParameterEvent
 from turtletui.interfaces.rcl_interfaces import Parameter as ParameterMsg
+from turtletui.interfaces.service_msgs import ServiceEventInfo
 from turtletui.messages import LOST_REQUEST_ADVICE
 
 _NS = 1_000_000_000
@@ -103,25 +113,9 @@ _RCL_EXPAND_AT = "at /project/src/rcl/expand_topic_name.c:"
 _SUBSTITUTION = re.compile(r"\{[^}]*\}")
 
 
-def _check_for_type_support(interface: Any) -> None:
-    """rclpy's type_support.check_for_type_support: what is not an interface class has no
-    ``_TYPE_SUPPORT``, and rclpy adds its ROS 1 hint to Python's AttributeError."""
-    if isinstance(interface, type) and issubclass(interface, (Message, ServiceType, ActionType)):
-        return
-    try:
-        interface._TYPE_SUPPORT  # noqa: B018 - the AttributeError, in Python's own words
-    except AttributeError as err:
-        err.args = (
-            err.args[0] + " This might be a ROS 1 message type but it should be a ROS 2 message type."
-            " Make sure to source your ROS 2 workspace after your ROS 1 workspace.",
-            *err.args[1:],
-        )
-        raise
-
-
 def _check_msg_type(msg_type: Any) -> None:
     """rclpy's check_is_valid_msg_type."""
-    _check_for_type_support(msg_type)
+    check_for_type_support(msg_type)
     if not issubclass(msg_type, Message):
         raise RuntimeError(
             f"The message type provided is not valid ({msg_type}), this might be a service or action"
@@ -159,6 +153,8 @@ class Publisher(Destroyable):
         middleware that serialises, changing ``msg`` afterwards changes nothing sent."""
         if self._destroyed:
             self._require_alive()
+        if type(msg) is bytes:  # serialized, as rclpy publishes bytes
+            msg = deserialize_message(msg, self.msg_type)
         if type(msg) is not self.msg_type:
             raise TypeError(
                 f"publish() on {self._topic.name} expects a {self._topic.type_name} message, got "
@@ -275,11 +271,21 @@ class Client(Destroyable):
         """The name as given to create_client, as rclpy keeps it (service_name: resolved)."""
         self.callback_group = callback_group
         self._told_undiscovered = False
+        self._sequence = 0
+        self._gid = client_gid(node.get_fully_qualified_name(), record.name, len(node._entities))
+        self._introspection = Introspection(node, self.srv_type, record.name)
 
     @property
     def service_name(self) -> str:
         """The fully qualified name of the service (rcl's)."""
         return self._record.name
+
+    def configure_introspection(
+        self, clock: Any, service_event_qos_profile: QoSProfile, introspection_state: ServiceIntrospectionState
+    ) -> None:
+        """Publish this client's requests and responses on ``<service>/_service_event``."""
+        self._require_alive()
+        self._introspection.configure(clock, service_event_qos_profile, introspection_state)
 
     def call_async(self, request: Any) -> Future:
         """Send ``request``; the Future completes when the response arrives
@@ -293,12 +299,18 @@ class Client(Destroyable):
         future = Future()
         host = self._node.context.host
         graph = host.graph
+        self._sequence += 1
+        sequence, gid, introspection = self._sequence, self._gid, self._introspection
+        introspection.publish(ServiceEventInfo.REQUEST_SENT, gid, sequence, request=request)
+        request_sent(request, gid, sequence)
         if self.service_name in graph.services and not graph.service_matched(self._record):
             self._tell_request_lost()  # and never answered, as in ROS 2
             return future
         node = self._node
 
         def take_response(response: Any) -> None:
+            request_answered(request)
+            introspection.publish(ServiceEventInfo.RESPONSE_RECEIVED, gid, sequence, response=response)
             # As rclpy's executor taking a response: the future's done callbacks become its tasks.
             future._set_executor(node.executor)
             future.set_result(response)
@@ -378,6 +390,7 @@ class Client(Destroyable):
         )
 
     def destroy(self) -> None:
+        self._introspection.destroy()
         self._node._release_entity(self, self._node._graph.remove_client)
 
 
@@ -416,13 +429,22 @@ class Service(Destroyable):
         self.srv_name = srv_name
         """The name as given to create_service, as rclpy keeps it (service_name: resolved)."""
         self.callback = callback
+        self._introspection = Introspection(node, self.srv_type, record.name)
 
     @property
     def service_name(self) -> str:
         """The fully qualified name of the service (rcl's)."""
         return self._record.name
 
+    def configure_introspection(
+        self, clock: Any, service_event_qos_profile: QoSProfile, introspection_state: ServiceIntrospectionState
+    ) -> None:
+        """Publish the requests this service takes and its responses on ``<service>/_service_event``."""
+        self._require_alive()
+        self._introspection.configure(clock, service_event_qos_profile, introspection_state)
+
     def destroy(self) -> None:
+        self._introspection.destroy()
         self._node._release_entity(self, self._node._graph.remove_service)
 
 
@@ -676,11 +698,20 @@ class Node(Destroyable):
         return name
 
     def _expand(self, topic: str) -> str:
+        record = self._record
+        for substitution in _SUBSTITUTION.findall(topic):  # rcl's
+            if substitution not in ("{node}", "{ns}", "{namespace}"):
+                raise ValueError(
+                    f"topic name '{topic}' is invalid: unknown substitution: {substitution}, {_RCL_EXPAND_AT}164"
+                )
         if topic.startswith("~"):
-            return self._record.fqn + topic[1:]
+            topic = record.fqn + topic[1:]
+        if "{" in topic:
+            namespace = record.namespace or "/"
+            topic = topic.replace("{node}", record.name).replace("{ns}", namespace).replace("{namespace}", namespace)
         if topic.startswith("/"):
             return topic
-        return f"{self._record.namespace.rstrip('/')}/{topic}"
+        return f"{record.namespace.rstrip('/')}/{topic}"
 
     # -- entities ---------------------------------------------------------------
     def create_publisher(
@@ -697,6 +728,8 @@ class Node(Destroyable):
         self._require_alive()
         qos_profile = profile_of(qos_profile)  # rclpy's order: the QoS, the name, the type
         name = self.resolve_topic_name(topic)
+        if qos_overriding_options is not None:
+            declare_qos_parameters("publisher", self, name, qos_profile, qos_overriding_options)
         _check_msg_type(msg_type)
         depth = depth_of(qos_profile)
         try:
@@ -726,12 +759,15 @@ class Node(Destroyable):
         self._require_alive()
         qos_profile = profile_of(qos_profile)  # rclpy's order: the QoS, the name, the type
         name = self.resolve_topic_name(topic)
+        if qos_overriding_options is not None:
+            declare_qos_parameters("subscription", self, name, qos_profile, qos_overriding_options)
         _check_msg_type(msg_type)
         depth = depth_of(qos_profile)
         host = self._context.host
         with_info = takes_message_info(callback)  # after the name's checks, as rclpy
         info = message_info_maker(self._graph) if with_info else None
-        run = dispatcher(host, self._group(callback_group), callback, info, float32_rounder(msg_type))
+        delivered = raw_callback(callback, with_info) if raw else callback
+        run = dispatcher(host, self._group(callback_group), delivered, info, float32_rounder(msg_type))
         try:
             record = self._graph.add_subscription(
                 self._record,
@@ -831,13 +867,19 @@ class Node(Destroyable):
         host = self._context.host
         name = self._resolve(srv_name, True)
 
+        made: list[Service] = []
+
         def handler(request: Any, respond: Callable[[Any], None]) -> None:
+            gid, sequence = request_received(request)
+            introspection = made[0]._introspection
+            introspection.publish(ServiceEventInfo.REQUEST_RECEIVED, gid, sequence, request=request)
             response = callback(request, srv_type.Response())
             if type(response) is not srv_type.Response:
                 raise TypeError(
                     f"service {name}: the callback must return a {interface_name(srv_type)}.Response, "
                     f"got {response!r}"
                 )
+            introspection.publish(ServiceEventInfo.RESPONSE_SENT, gid, sequence, response=response)
             respond(response)
 
         handler.__name__ = getattr(callback, "__name__", "handler")
@@ -845,6 +887,7 @@ class Node(Destroyable):
             self._record, name, srv_type, dispatcher(host, self._group(callback_group), handler)
         )
         service = Service(self, record, callback, srv_name)
+        made.append(service)
         self._entities.append(service)
         return service
 
@@ -972,11 +1015,16 @@ class Node(Destroyable):
         ]
 
     def wait_for_node(self, fully_qualified_node_name: str, timeout: float) -> bool:
-        """Wait (in simulated time) until the node is in the graph; False on timeout."""
+        """Wait (in simulated time) until the node is in the graph; False on timeout
+        (at once for a timeout of 0 or less, as rclpy's loop never looks then)."""
+        if not fully_qualified_node_name.startswith("/"):
+            fully_qualified_node_name = f"/{fully_qualified_node_name}"
 
         def found() -> bool:
             return fully_qualified_node_name in self.get_fully_qualified_node_names()
 
+        if timeout <= 0:
+            return False
         if found():
             return True
         return self._context.host.spin_until(found, int(timeout * _NS), callbacks=False)
@@ -1090,6 +1138,7 @@ class Node(Destroyable):
             if (
                 expected is not Parameter.Type.NOT_SET
                 and not descriptor.dynamic_typing
+                and override is not None  # not set (``[]`` in YAML): rclpy declares it so
                 and not type_matches(expected, override)
             ):
                 raise InvalidParameterTypeException(Parameter(name, value=override), expected)
@@ -1347,7 +1396,7 @@ def _check_callable(callback: Any) -> None:
 
 def _check_srv_type(srv_type: Any) -> None:
     """rclpy's check_is_valid_srv_type."""
-    _check_for_type_support(srv_type)
+    check_for_type_support(srv_type)
     if not (hasattr(srv_type, "Request") and hasattr(srv_type, "Response")):
         raise RuntimeError(
             f"The service type provided is not valid ({srv_type}), this might be a message or action"

@@ -26,3 +26,10 @@ def topic_type_error(kind: str, name: str, type_name: str) -> RCLError:
         f"Failed to create {kind}: create_{kind}() called for existing topic name rt{name} "
         f"with incompatible type {package}::msg::dds_::{short}_"
     )
+
+
+class RMWError(RuntimeError):
+    """An error from the middleware, as ``rclpy._rclpy_pybind11.RMWError`` (bytes
+    that do not deserialize as the type asked)."""
+
+    __module__ = "rclpy._rclpy_pybind11"

@@ -63,16 +63,23 @@ def init(
 
 def shutdown(*, context: Context | None = None, uninstall_handlers: bool | None = None) -> None:
     """Shut the context down; RuntimeError if it is not initialised (or already shut down)."""
-    given = context
-    if context is None:
-        context = get_default_context(shutting_down=True)
-    context.shutdown()
-    _uninstall_handlers(given, uninstall_handlers)
+    utilities_shutdown(context=context)
+    _uninstall_handlers(context, uninstall_handlers)
 
 
 def try_shutdown(*, context: Context | None = None, uninstall_handlers: bool | None = None) -> None:
     """Shut the context down if it is initialised."""
-    context_given = context
+    utilities_try_shutdown(context=context)
+    _uninstall_handlers(context, uninstall_handlers)
+
+
+def utilities_shutdown(*, context: Context | None = None) -> None:
+    """rclpy.utilities.shutdown: rclpy.shutdown without removing the signal handlers."""
+    (get_default_context(shutting_down=True) if context is None else context).shutdown()
+
+
+def utilities_try_shutdown(*, context: Context | None = None) -> None:
+    """rclpy.utilities.try_shutdown: rclpy.try_shutdown without removing the signal handlers."""
     if context is None:
         context = get_default_context()
         context.try_shutdown()
@@ -80,7 +87,6 @@ def try_shutdown(*, context: Context | None = None, uninstall_handlers: bool | N
             get_default_context(shutting_down=True)
     else:
         context.try_shutdown()
-    _uninstall_handlers(context_given, uninstall_handlers)
 
 
 def _uninstall_handlers(context: Context | None, uninstall_handlers: bool | None) -> None:
@@ -157,6 +163,13 @@ def spin_until_future_complete(
     finally:
         if node_added:
             executor.remove_node(node)
+
+
+def timeout_sec_to_nsec(timeout_sec: float | None) -> int:
+    """rclpy.utilities': a timeout in seconds as rcl_wait's nanoseconds (-1: for ever)."""
+    if timeout_sec is None or timeout_sec < 0:
+        return -1
+    return int(float(timeout_sec) * 1_000_000_000)
 
 
 def utilities_remove_ros_args(args: list[str] | None = None) -> list[str]:

@@ -87,7 +87,7 @@ class RosArgs:
 
 
 def parse_value(text: str) -> Any:
-    """A parameter value as ROS reads it: YAML scalars and flat lists."""
+    """A parameter value as ROS reads it: YAML scalars and flat lists (``[]``: not set, None)."""
     value = text.strip()
     lowered = value.lower()
     if lowered in ("true", "yes", "on"):
@@ -113,13 +113,26 @@ def parse_value(text: str) -> Any:
     return value
 
 
-def _one_type(items: list, what: str) -> list:
-    """A list parameter as ROS holds it: one type (integers among floats become floats)."""
-    kinds = {type(item) for item in items}
-    if kinds == {int, float}:
-        return [float(item) for item in items]
-    if len(kinds) > 1:
-        raise RosArgsError(f"{what} mixes types: ROS needs one type per list")
+_YAML_TYPE = {bool: ("bool", 309), int: ("integer", 350), float: ("double", 391), str: ("string", 435)}
+"""rcl_yaml_param_parser's name of each type, and the line of parse.c that refuses it in a list of another."""
+
+
+def _one_type(items: list, what: str, lines: list[int] | None = None) -> list | None:
+    """A list parameter as ROS holds it: one type (RosArgsError for a mixture, with
+    rcl's sentence naming the first item of another type and its line, from ``lines``:
+    each item's in the YAML file); an empty list is a parameter not set (None), as
+    rcl reads ``[]``."""
+    if not items:
+        return None
+    for i, item in enumerate(items):
+        if type(item) is not type(items[0]):
+            line = lines[i] if lines else 1
+            name, at = _YAML_TYPE[type(item)]
+            raise RosArgsError(
+                f"{what} mixes types: ROS needs one type per list (write 1.0, not 1, among floats)",
+                rcl=f"Sequence should be of same type. Value type '{name}' do not belong at line_num {line},"
+                f" at /project/src/parse.c:{at}",
+            )
     return items
 
 
@@ -159,7 +172,15 @@ def parse_ros_args(argv: list[str]) -> RosArgs:
             i += 1
             if arg in ("-p", "--param"):
                 node, name, raw = _split_assignment(arg, text)
-                result.params.append((node, name, parse_value(raw)))
+                try:
+                    value = parse_value(raw)
+                except RosArgsError as err:
+                    raise RosArgsError(
+                        str(err),
+                        rcl=f"Couldn't parse parameter override rule: '{arg} {text}'. Error: {err.rcl},"
+                        " at /project/src/rcl/arguments.c:352",
+                    ) from None
+                result.params.append((node, name, value))
             elif arg in ("-r", "--remap"):
                 node, src, dst = _split_assignment(arg, text)
                 result.remaps.append((node, src, dst))
@@ -177,7 +198,16 @@ def parse_ros_args(argv: list[str]) -> RosArgs:
                 else:
                     result.log_level = level
             elif arg == "--params-file":
-                result.file_params.extend(read_params_file(text))
+                try:
+                    result.file_params.extend(read_params_file(text))
+                except RosArgsError as err:
+                    if err.rcl is None:
+                        raise
+                    raise RosArgsError(
+                        str(err),
+                        rcl=f"Couldn't parse params file: '{arg} {text}'. Error: {err.rcl},"
+                        " at /project/src/rcl/arguments.c:415",
+                    ) from None
         else:
             unknown.append(arg)
         i += 1
@@ -214,9 +244,10 @@ def read_params_file(path: str) -> list[tuple[str, str, Any]]:
     where = f"--params-file {path}"
     try:
         with open(path, encoding="utf-8") as stream:
-            data = yaml.safe_load(stream)
+            text = stream.read()
+        data = yaml.safe_load(text)
     except FileNotFoundError:
-        raise RosArgsError(f"{where}: no such file") from None
+        raise RosArgsError(f"{where}: no such file", rcl="Error opening YAML file, at /project/src/parser.c:271") from None
     except (OSError, UnicodeDecodeError) as err:
         raise RosArgsError(f"{where}: cannot read it ({getattr(err, 'strerror', None) or err})") from None
     except yaml.YAMLError as err:
@@ -226,6 +257,7 @@ def read_params_file(path: str) -> list[tuple[str, str, Any]]:
     if not isinstance(data, dict):
         raise RosArgsError(f"{where}: expected node names at the top, e.g. '/turtlesim:'")
     entries: list[tuple[str, str, Any]] = []
+    lines = _item_lines(yaml.compose(text))
     for node, section in data.items():
         if not isinstance(section, dict) or "ros__parameters" not in section:
             raise RosArgsError(f"{where}: node {node!r} needs a 'ros__parameters:' mapping under it")
@@ -233,7 +265,7 @@ def read_params_file(path: str) -> list[tuple[str, str, Any]]:
         if not isinstance(params, dict):
             raise RosArgsError(f"{where}: {node}: 'ros__parameters' must hold name: value pairs")
         for name, value in _flatten(params, ""):
-            entries.append((str(node), name, _file_value(value, f"{where}: {node}: {name}")))
+            entries.append((str(node), name, _file_value(value, f"{where}: {node}: {name}", lines.get((node, name)))))
     return entries
 
 
@@ -248,11 +280,34 @@ def _flatten(params: dict, prefix: str) -> list[tuple[str, Any]]:
     return flat
 
 
-def _file_value(value: Any, what: str) -> Any:
+def _item_lines(root: Any) -> dict[tuple[Any, str], list[int]]:
+    """The line of each item of each list parameter of a parameter file's YAML
+    (its composed nodes), by (node as YAML reads it, parameter name)."""
+    import yaml
+
+    found: dict[tuple[Any, str], list[int]] = {}
+
+    def walk(node: Any, mapping: Any, prefix: str) -> None:
+        for key, value in mapping.value:
+            name = f"{prefix}{key.value}"
+            if isinstance(value, yaml.MappingNode):
+                walk(node, value, f"{name}.")
+            elif isinstance(value, yaml.SequenceNode):
+                found[(node, name)] = [item.start_mark.line + 1 for item in value.value]
+
+    for key, section in root.value:
+        node = yaml.safe_load(key.value) if key.tag != "tag:yaml.org,2002:str" else key.value
+        for inner, params in section.value if isinstance(section, yaml.MappingNode) else ():
+            if inner.value == "ros__parameters" and isinstance(params, yaml.MappingNode):
+                walk(node, params, "")
+    return found
+
+
+def _file_value(value: Any, what: str, lines: list[int] | None = None) -> Any:
     if isinstance(value, (bool, int, float, str)):
         return value
     if isinstance(value, list):
         if not all(isinstance(v, (bool, int, float, str)) for v in value):
             raise RosArgsError(f"{what}: a list of parameters holds only numbers, booleans or strings")
-        return _one_type(value, f"{what}: the list")
+        return _one_type(value, f"{what}: the list", lines)
     raise RosArgsError(f"{what}: {value!r} is not a value a ROS parameter can hold")

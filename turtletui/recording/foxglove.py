@@ -25,8 +25,7 @@ from typing import Any
 from turtletui.errors import UsageError
 from turtletui.graph.logs import INFO, WARN
 from turtletui.graph.simulated_node import SimulatedNode
-from turtletui.interfaces import InterfaceError, from_dict, get_interface
-from turtletui.recording import cdr
+from turtletui.interfaces import InterfaceError, cdr, from_dict, get_interface
 from turtletui.recording.errors import FoxgloveError
 from turtletui.recording.qos import profiles_yaml
 from turtletui.recording.schema import message_definition, recorded_type_name

@@ -27,12 +27,11 @@ from dataclasses import dataclass
 from typing import Any, Protocol
 
 from turtletui.graph.logs import LogRecord, to_log_message
-from turtletui.interfaces import interface_name
+from turtletui.interfaces import cdr, interface_name
 from turtletui.interfaces.builtin_interfaces import Time
 from turtletui.interfaces.geometry_msgs import Quaternion, Transform, TransformStamped, Vector3
 from turtletui.interfaces.std_msgs import Header
 from turtletui.interfaces.tf2_msgs import TFMessage
-from turtletui.recording import cdr
 from turtletui.recording.qos import DEFAULT, LATCHED, ROSOUT, OfferedQos
 from turtletui.recording.scene import FRAME, Scene
 from turtletui.recording.schema import recorded_type_name

@@ -30,7 +30,7 @@ HEADER = b"\x00\x01\x00\x00"
 Writer = Callable[[Any, bytearray], None]
 """Appends one message to a buffer that began with HEADER."""
 
-_CODES = {
+CODES = {
     "bool": "?",
     "byte": "c",
     "char": "B",
@@ -45,7 +45,8 @@ _CODES = {
     "float32": "f",
     "float64": "d",
 }
-_SIZES = {code: struct.calcsize("<" + code) for code in set(_CODES.values())}
+"""The struct code of each primitive type."""
+SIZES = {code: struct.calcsize("<" + code) for code in set(CODES.values())}
 _U32 = struct.Struct("<I")
 _LITTLE = sys.byteorder == "little"
 _WRITERS: dict[type, Writer] = {}
@@ -58,6 +59,16 @@ def serialize(msg: Any) -> bytes:
     buf = bytearray(HEADER)
     writer_for(type(msg))(msg, buf)
     return bytes(buf)
+
+
+def fixed_size(cls: type) -> bool:
+    """Whether every message of ``cls`` serializes to the same size: primitives,
+    fixed arrays of them and nested messages of fixed size only, no strings."""
+    return all(
+        spec.array in (0, 3)
+        and (fixed_size(spec.msg_cls) if spec.kind == "msg" else spec.strlen is None and spec.base in CODES)
+        for spec in cls._FIELDS
+    )
 
 
 def writer_for(cls: type) -> Writer:
@@ -81,7 +92,7 @@ def _phased(codes: list[str]) -> list[struct.Struct]:
     for phase in range(8):
         offset, fmt = phase, "<"
         for code in codes:
-            size = _SIZES[code]
+            size = SIZES[code]
             pad = -offset % size
             fmt += "x" * pad + code
             offset += pad + size
@@ -113,10 +124,6 @@ class _Compiler:
         self.lines.append(f"b += {structs}[(len(b) - 4) & 7].pack({', '.join(self.run_values)})")
         self.run_codes, self.run_values = [], []
 
-    def align(self, size: int) -> None:
-        if size > 1:
-            self.lines.append(f"b.extend(bytes(-(len(b) - 4) % {size}))")
-
     def message(self, cls: type, expr: str) -> None:
         fields: tuple[FieldSpec, ...] = cls._FIELDS
         if not fields:
@@ -128,7 +135,7 @@ class _Compiler:
 
     def field(self, spec: FieldSpec, expr: str) -> None:
         base = "string" if spec.strlen is not None else spec.base
-        code = _CODES.get(base)
+        code = CODES.get(base)
         if spec.array == 0:
             if spec.kind == "msg":
                 self.message(spec.msg_cls, expr)
@@ -161,12 +168,14 @@ class _Compiler:
         elif code == "?":
             self.lines.append(f"b += bytes({expr})")
         else:
-            self.align(_SIZES[code])
             typecode = self.name(code if code not in "?c" else "B", "_T")
             self.lines.append(f"v = {expr}")
+            # Fast CDR aligns an array's first element, so an empty sequence is its count alone
+            if SIZES[code] > 1:
+                self.lines.append(f"if len(v): b.extend(bytes(-(len(b) - 4) % {SIZES[code]}))")
             self.lines.append(f"if v.__class__ is not _array or v.typecode != {typecode}:")
             self.lines.append(f"    v = _array({typecode}, v)")
-            if _LITTLE or _SIZES[code] == 1:
+            if _LITTLE or SIZES[code] == 1:
                 self.lines.append("b += v.tobytes()")
             else:
                 self.lines.append("v = _array(v.typecode, v)")

@@ -3,6 +3,7 @@ for every message type turtletui knows, with every field set."""
 
 from __future__ import annotations
 
+import struct
 from typing import Any
 
 import numpy as np
@@ -11,7 +12,8 @@ from mcap_ros2._dynamic import generate_dynamic
 from rosbags.typesys import Stores, get_types_from_msg, get_typestore
 
 from turtletui.interfaces import Message, all_interfaces, from_dict, get_interface, to_dict
-from turtletui.recording.cdr import serialize
+from turtletui.interfaces.cdr import serialize
+from turtletui.interfaces.cdr_reader import CdrError, deserialize
 from turtletui.recording.schema import message_definition, recorded_type_name
 
 
@@ -117,3 +119,38 @@ def test_a_pose_is_the_bytes_ros_puts_on_the_wire() -> None:
     data = serialize(Pose(x=1.0, y=2.0, theta=0.5, linear_velocity=1.0, angular_velocity=-0.5))
     # encapsulation header (CDR little endian), then five float32
     assert data.hex() == "00010000" "0000803f" "00000040" "0000003f" "0000803f" "000000bf"
+
+
+def test_an_empty_sequence_is_its_count_alone() -> None:
+    """Fast CDR aligns an array's first element, not an empty one: an empty float64
+    sequence before a full one is 4 bytes, as rmw_fastrtps (and rosbags) write it."""
+    from turtletui.interfaces.sensor_msgs import JointState
+
+    msg = JointState(name=["left"], position=[0.5], velocity=[], effort=[1.0])
+    store = get_typestore(Stores.ROS2_JAZZY)
+    assert serialize(msg) == store.serialize_cdr(store.deserialize_cdr(serialize(msg), "sensor_msgs/msg/JointState"),
+                                                 "sensor_msgs/msg/JointState")
+    assert serialize(msg).hex().endswith("00000000" "01000000" "000000000000f03f")  # no padding between
+
+
+@pytest.mark.parametrize("cls", CLASSES, ids=lambda cls: cls._TYPE_NAME)
+def test_every_message_reads_back_as_written(cls: type) -> None:
+    for msg in (from_dict(cls, _filled(cls)), cls()):
+        assert deserialize(serialize(msg), cls) == msg
+
+
+def test_the_header_says_the_byte_order() -> None:
+    from turtletui.interfaces.geometry_msgs import Vector3
+
+    assert deserialize(b"\x00\x00\x00\x00" + struct.pack(">3d", 1.0, 2.0, -3.0), Vector3) == Vector3(x=1.0, y=2.0, z=-3.0)
+
+
+def test_bytes_that_end_too_soon_are_a_cdr_error() -> None:
+    from turtletui.interfaces.geometry_msgs import Twist, Vector3
+    from turtletui.interfaces.std_msgs import String
+
+    with pytest.raises(CdrError):
+        deserialize(serialize(Vector3(x=1.0)), Twist)
+    with pytest.raises(CdrError):
+        deserialize(b"\x00\x01\x00\x00\x09\x00\x00\x00abc", String)
+    assert deserialize(b"\x00\x01\x00\x00\x03\x00\x00\x00abc", String) == String(data="abc")  # no NUL: Fast CDR's too

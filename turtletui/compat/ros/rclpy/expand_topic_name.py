@@ -1,0 +1,1 @@
+from turtletui.compat.names import expand_topic_name  # noqa: F401

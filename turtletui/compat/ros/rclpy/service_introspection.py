@@ -1,0 +1,1 @@
+from turtletui.compat.service_introspection import ServiceIntrospectionState  # noqa: F401

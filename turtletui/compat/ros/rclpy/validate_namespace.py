@@ -1,0 +1,1 @@
+from turtletui.compat.names import validate_namespace  # noqa: F401

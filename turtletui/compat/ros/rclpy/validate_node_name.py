@@ -1,0 +1,1 @@
+from turtletui.compat.names import validate_node_name  # noqa: F401
