@@ -20,9 +20,7 @@ from turtletui.compat.qos import (
     ReliabilityPolicy,
 )
 from turtletui.graph.qos import Policies, adapted, offered
-
-DEFAULT_DEPTH = 10
-"""What a profile without a depth of its own (system_default) gets here."""
+from turtletui.ros2cli.streams import DEFAULT_DEPTH
 
 
 def add_qos_arguments(parser: ArgumentParser, subscribe_or_publish: str, default_profile: str) -> None:
@@ -70,7 +68,7 @@ def asked_qos(args: Namespace) -> tuple[Policies, int]:
         depth = 1
     if history == HistoryPolicy.KEEP_ALL:
         depth = KEEP_ALL_DEPTH
-    return Policies(reliability, durability), depth if depth > 0 else DEFAULT_DEPTH
+    return Policies(reliability, durability), depth if depth > 0 else DEFAULT_DEPTH  # system_default: none
 
 
 def echo_qos(args: Namespace, publishers: Sequence[Any]) -> tuple[Policies, int, list[str]]:

@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any
 
 from turtletui.graph.core import NS_PER_S, GoalHandle, NodeRecord, Topic
 from turtletui.graph.logs import LogRecord, to_log_message
-from turtletui.graph.qos import SENSOR_DATA, SENSOR_DATA_DEPTH, Policies, adapted
+from turtletui.graph.qos import SENSOR_DATA, SENSOR_DATA_DEPTH, Policies
 from turtletui.interfaces import Message, from_dict, to_dict
 from turtletui.ros2cli.common import message_repr
 from turtletui.ros2cli.values import message_yaml, yaml_lines
@@ -120,6 +120,7 @@ class EchoStream(Stream):
 
     def __init__(self, cli: Ros2Cli, command: str, topic: Topic, once: bool,
                  field_path: list[str], qos: Policies | None = None, depth: int = DEFAULT_DEPTH) -> None:
+        """``qos`` and ``depth``: what ``ros2 topic echo``'s options chose (ros2cli.qos_args.echo_qos)."""
         super().__init__(cli, command)
         self._once = once
         self._field = field_path
@@ -128,9 +129,8 @@ class EchoStream(Stream):
         self._subscribe(topic)
 
     def _subscribe(self, topic: Topic) -> None:
-        qos = self._qos if self._qos is not None else adapted(topic.publishers)
         self.subscription = self._graph.add_subscription(
-            self.node, topic.name, topic.msg_type, self._depth, self._on_message, qos=qos)
+            self.node, topic.name, topic.msg_type, self._depth, self._on_message, qos=self._qos)
 
     def _on_message(self, msg: Any) -> None:
         if self.done:
