@@ -92,8 +92,7 @@ class Simulation:
         second from now, when its node has made its endpoints and discovery is over."""
         if node.owner == "sim":  # the simulator's own (turtlesim, ros2 tools, rosbag2)
             return
-        self._topic_check.canceled = True
-        self._topic_check = self.graph.add_timer(self.turtlesim.node, TOPIC_CHECK_AFTER_NS, self._warn_of_endpoints)
+        self.graph.reset_timer(self._topic_check)
 
     def _warn_of_endpoints(self) -> None:
         """Say what ROS 2 would leave silent: topics nothing is at the other end
