@@ -497,6 +497,39 @@ def test_what_a_node_destroys_is_gone_for_the_nodes_of_another_process(controlle
     assert node_logs(result, "leaver") == ["ping answered"]
 
 
+def test_a_node_nothing_spins_runs_none_of_its_callbacks(controller_host):
+    # A student's two nodes, only one of them spun: the other's timer never
+    # drives the turtle and its server never answers, as in ROS 2.
+    result = controller_host.run(
+        HEADER
+        + """
+def main():
+    rclpy.init()
+    main_node = Node("main_node")
+    driver = Node("driver")
+    pub = driver.create_publisher(Twist, "/turtle1/cmd_vel", 10)
+    twist = Twist()
+    twist.linear.x = 1.0
+    driver.create_timer(0.1, lambda: pub.publish(twist))
+    driver.create_service(Empty, "ping", lambda request, response: response)
+    client = main_node.create_client(Empty, "ping")
+    future = client.call_async(Empty.Request())
+    rclpy.spin_until_future_complete(main_node, future, timeout_sec=1.0)
+    main_node.get_logger().info(f"answered {future.done()}")
+    for _ in range(10):
+        rclpy.spin_once(main_node, timeout_sec=0.1)
+    rclpy.spin_until_future_complete(driver, future, timeout_sec=0.35)
+    main_node.get_logger().info(f"answered {future.done()}")  # the response waits for main_node
+    rclpy.spin_until_future_complete(main_node, future, timeout_sec=1.0)
+    main_node.get_logger().info(f"answered {future.done()}")
+""",
+        duration=3.0,
+    )
+    assert node_logs(result, "main_node") == ["answered False", "answered False", "answered True"]
+    # driven only from t=2 s, when the driver was first spun, to the run's end
+    assert result.turtles["turtle1"].distance == pytest.approx(1.0, abs=0.02)
+
+
 def test_the_same_program_logs_and_moves_the_same_in_both_hosts(tmp_path):
     """Not one expectation per host: both hosts' whole runs, side by side."""
     from support.hosts import HOSTS, ControllerHost

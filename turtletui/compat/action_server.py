@@ -230,12 +230,12 @@ class ActionServer(Destroyable):
         self._logger = node.get_logger().get_child("action_server")
         host = node.context.host
         self._goal_handles: dict[int, ServerGoalHandle] = {}
-        self._decide_cancel = dispatcher(host, self._group, self._execute_cancel_request)
+        self._decide_cancel = dispatcher(host, self._group, self._execute_cancel_request, node=node)
         self._record = node._graph.add_action_server(
             node._record,
             self._name,
             action_type,
-            dispatcher(host, self._group, self._execute_goal_request),
+            dispatcher(host, self._group, self._execute_goal_request, node=node),
             answers=True,
         )
         node._entities.append(self)  # destroyed with the node

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any, Protocol
 
+from turtletui.compat.dispatch import Parking
 from turtletui.compat.identity import as_rclpy
 from turtletui.compat.rcl_error import RCLError, UnknownROSArgsError
 from turtletui.compat.ros_args import RosArgs, RosArgsError, UnknownRosArgs, parse_ros_args
@@ -82,6 +83,8 @@ class Context:
         self._nodes: list[Any] = []
         self._callbacks: list[Any] = []
         self._made = 0
+        self.parking = Parking()
+        """Callbacks of nodes that wait for an executor that has them (turtletui.compat.dispatch)."""
         self.qos_events: list[tuple[int, int, Any, str, Any, Any]] = []
         """QoS warnings waiting for an executor (turtletui.compat.matching)."""
         self.ros_args = RosArgs()

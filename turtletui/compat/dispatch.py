@@ -7,6 +7,13 @@ through :func:`dispatcher`. A callback whose MutuallyExclusive group is busy
 up this one's stack) waits, and runs as soon as the group is free. A callback
 that returns a coroutine becomes a Task that goes on, in the same group, each
 time the Future it awaits is done.
+
+As in rclpy, an executor runs the callbacks of the nodes added to it only. A
+node's callback that becomes ready while an executor without the node spins
+(``rclpy.spin_once(other_node)``) waits, parked, until an executor with the
+node spins; a subscription's messages wait in its queue meanwhile, up to its
+depth. (When another thread's executor spins the node right then, the thread
+that took the callback runs it: one ready queue serves the process.)
 """
 
 from __future__ import annotations
@@ -21,6 +28,58 @@ from turtletui.compat.task import Task
 
 _running = threading.local()
 """The groups whose callbacks the calling thread is running, innermost last."""
+
+_spinning_here = threading.local()
+"""The executors the calling thread is inside a spin of, innermost last."""
+
+
+def spun_by_this_thread() -> list[Any]:
+    """The executors the calling thread is inside a spin of, innermost last."""
+    stack = getattr(_spinning_here, "executors", None)
+    if stack is None:
+        stack = _spinning_here.executors = []
+    return stack
+
+
+class Parking:
+    """Callbacks of nodes no executor spun when they became ready (one per
+    context), oldest first, and how many were ever parked: an executor's
+    ``spin_once`` that took one goes on waiting for a callback of its own."""
+
+    __slots__ = ("items", "count")
+
+    def __init__(self) -> None:
+        self.items: list[tuple[Any, tuple]] = []
+        """(node, ready-queue entry) pairs."""
+        self.count = 0
+
+    def park(self, node: Any, item: tuple) -> None:
+        """Keep ``item`` until an executor with ``node`` spins (once: a timer
+        that fires again while it waits still runs once, as in rclpy)."""
+        self.count += 1
+        callback = item[1]
+        if all(entry[1][1] is not callback for entry in self.items):
+            self.items.append((node, item))
+
+    def release(self, nodes: list[Any], ready: Any) -> None:
+        """Queue the parked callbacks of ``nodes`` ahead of what else is ready, oldest first."""
+        items = self.items
+        if not items:
+            return
+        released = [item for node, item in items if node in nodes]
+        if released:
+            items[:] = [entry for entry in items if entry[0] not in nodes]
+            ready.extendleft(reversed(released))
+
+
+def _parks(node: Any) -> bool:
+    """Whether a callback of ``node`` taken by the calling thread must wait: an
+    executor without the node runs it, and no executor with it spins now."""
+    spun = getattr(_spinning_here, "executors", None)
+    if not spun or node in spun[-1]._nodes:
+        return False  # no executor (a host's own wait), or the node's own
+    executor = node._executor
+    return executor is None or not executor._spinning or node not in executor._nodes
 
 
 def in_callback() -> bool:
@@ -42,6 +101,8 @@ def dispatcher(
     callback: Callable,
     message_info: Callable[[Any], dict] | None = None,
     received: Callable[[Any], None] | None = None,
+    *,
+    node: Any = None,
 ) -> Callable:
     """``callback`` as the graph should call it: counted as a callback (as
     host.wrap_callback counts, inline: this runs for every delivery), run
@@ -52,14 +113,19 @@ def dispatcher(
     ``stamped`` subscriptions) and ``message_info(origin)`` makes the second
     argument of each call. ``received(msg)``, if given, does to each message
     what the middleware does on its way (float32 fields rounded) before the
-    callback has it."""
+    callback has it. ``node``, the node the callback is of, waits parked
+    while an executor without it spins (see the module's docstring)."""
     depth = host.callback_counter
     ready = host.graph.ready
     owner = host.owner
     # Every node's default group: its begin/end rules inline, a call less each.
     exclusive = type(group) is MutuallyExclusiveCallbackGroup
+    parking: Parking | None = None if node is None else node.context.parking
 
     def run(*args: Any) -> Any:
+        if parking is not None and _parks(node):
+            parking.park(node, (owner, (lambda: run(*args)) if args else run))
+            return None
         if exclusive and group._active_entity is None:
             group._active_entity = run
         elif exclusive or not group.beginning_execution(run):
@@ -135,6 +201,9 @@ def dispatcher(
                 if not queue:
                     sub.pending = False
                     return
+                if parking is not None and _parks(node):
+                    parking.park(node, sub.ready_item)  # the messages wait in the queue
+                    return
                 msg, origin = take()
                 run(msg, message_info(origin))
 
@@ -143,6 +212,9 @@ def dispatcher(
         def deliver() -> None:
             if not queue:
                 sub.pending = False
+                return
+            if parking is not None and _parks(node):
+                parking.park(node, sub.ready_item)  # the messages wait in the queue
                 return
             msg = popleft()  # take()'s steps written out: a frame less per message
             if queue:

@@ -27,7 +27,7 @@ from typing import Any
 
 from turtletui.compat.callback_groups import MutuallyExclusiveCallbackGroup, ReentrantCallbackGroup
 from turtletui.compat.context import Context, get_default_context
-from turtletui.compat.dispatch import running_groups, start_task
+from turtletui.compat.dispatch import running_groups, spun_by_this_thread, start_task
 from turtletui.compat.identity import as_rclpy
 from turtletui.compat.rcl_error import RCLError
 from turtletui.compat.task import Future, Task
@@ -94,11 +94,19 @@ class Executor:
             return False
         self._nodes.append(node)
         node.executor = self
+        if self._spinning:
+            self._release_parked()
         return True
 
     def remove_node(self, node: Any) -> None:
         if node in self._nodes:
             self._nodes.remove(node)
+
+    def _release_parked(self) -> None:
+        """Queue the callbacks of this executor's nodes that waited for it (turtletui.compat.dispatch)."""
+        host = self._context._host
+        if host is not None:
+            self._context.parking.release(self._nodes, host.graph.ready)
 
     def get_nodes(self) -> list[Any]:
         return list(self._nodes)
@@ -178,8 +186,21 @@ class Executor:
         host = self._guard("spin_once()")
         if not self._stopped():
             with self._counted():
-                host.spin_once(_timeout_ns(timeout_sec))
+                self._spin_once(host, _timeout_ns(timeout_sec))
         self._raise_failure()
+
+    def _spin_once(self, host: Any, timeout_ns: int | None) -> None:
+        """Run one callback of this executor's nodes (the first ready), waiting
+        up to ``timeout_ns``. Another node's callback the host took meanwhile
+        waits parked, and the wait goes on (rclpy's wait set never wakes for it)."""
+        parking = self._context.parking
+        graph = host.graph
+        deadline = None if timeout_ns is None else graph.now_ns + max(timeout_ns, 0)
+        while True:
+            parked = parking.count
+            host.spin_once(None if deadline is None else max(deadline - graph.now_ns, 0))
+            if parking.count == parked or self._stopped():
+                return
 
     def spin_until_future_complete(self, future: Future, timeout_sec: float | None = None) -> None:
         host = self._guard("spin_until_future_complete()")
@@ -213,12 +234,14 @@ class _Spinning:
         self._executor = executor
 
     def __enter__(self) -> None:
-        self._executor._spinning += 1
-        _spun_by_this_thread().append(self._executor)
+        executor = self._executor
+        executor._spinning += 1
+        spun_by_this_thread().append(executor)
+        executor._release_parked()
 
     def __exit__(self, *exc: object) -> None:
         self._executor._spinning -= 1
-        _spun_by_this_thread().pop()
+        spun_by_this_thread().pop()
 
 
 class SingleThreadedExecutor(Executor):
@@ -349,7 +372,7 @@ def _run_others_while_waiting(host: Any, done: Callable[[], bool], timeout_ns: i
     thread meanwhile (no other thread can). One of them that raises is, for
     the MultiThreadedExecutor this thread spins, a callback of another of its
     threads: its error waits for spin() to raise it, and this wait goes on."""
-    spun = _spun_by_this_thread()
+    spun = spun_by_this_thread()
     executor = spun[-1] if spun else None
     if not isinstance(executor, MultiThreadedExecutor):
         return host.spin_until(done, timeout_ns)
@@ -370,16 +393,6 @@ def busy_exclusive_group(group: Any) -> bool:
 
 _FAILURES_KEPT = 16
 """Errors of callbacks an executor keeps for spin() to raise (it raises the first)."""
-
-_spinning_here = threading.local()
-"""The executors the calling thread is inside a spin of, innermost last."""
-
-
-def _spun_by_this_thread() -> list[Executor]:
-    stack = getattr(_spinning_here, "executors", None)
-    if stack is None:
-        stack = _spinning_here.executors = []
-    return stack
 
 
 _global_executor: Executor | None = None

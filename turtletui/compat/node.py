@@ -315,7 +315,9 @@ class Client(Destroyable):
             future._set_executor(node.executor)
             future.set_result(response)
 
-        graph.call(self.service_name, request, dispatcher(host, self.callback_group, take_response), host.owner)
+        graph.call(
+            self.service_name, request, dispatcher(host, self.callback_group, take_response, node=node), host.owner
+        )
         return future
 
     def _tell_request_lost(self) -> None:
@@ -529,6 +531,8 @@ class Node(Destroyable):
         self._post_set: list[Callable] = []
         """Post-set parameters callbacks (Iron on): told what was set."""
         self._entities: list[Any] = []
+        self._executor: Any = None
+        """The executor the node was last added to (rclpy's ``node.executor``)."""
         self._default_callback_group = MutuallyExclusiveCallbackGroup()
         self._rate_group = ReentrantCallbackGroup()
         """Where the timers of the node's rates run, as rclpy's (never busy: a rate can always tick)."""
@@ -562,12 +566,12 @@ class Node(Destroyable):
 
     @property
     def executor(self) -> Any:
-        return getattr(self, "_executor", None)
+        return self._executor
 
     @executor.setter
     def executor(self, value: Any) -> None:
         """As rclpy: a node is in one executor at a time; joining another leaves the first."""
-        current = getattr(self, "_executor", None)
+        current = self._executor
         if current is value:
             return
         if current is not None:
@@ -767,7 +771,7 @@ class Node(Destroyable):
         with_info = takes_message_info(callback)  # after the name's checks, as rclpy
         info = message_info_maker(self._graph) if with_info else None
         delivered = raw_callback(callback, with_info) if raw else callback
-        run = dispatcher(host, self._group(callback_group), delivered, info, float32_rounder(msg_type))
+        run = dispatcher(host, self._group(callback_group), delivered, info, float32_rounder(msg_type), node=self)
         try:
             record = self._graph.add_subscription(
                 self._record,
@@ -814,7 +818,7 @@ class Node(Destroyable):
         record = self._graph.add_timer(
             self._record,
             scheduled_period(period_ns),  # a period of 0 is ready at every spin in rcl
-            dispatcher(host, group, callback),  # a callback that is not callable fails when called, as in rclpy
+            dispatcher(host, group, callback, node=self),  # a callback that is not callable fails when called, as in rclpy
             # rclpy lets a destroyed node make a timer; no executor calls it
             autostart=autostart and not self._destroyed,
         )
@@ -830,7 +834,7 @@ class Node(Destroyable):
         """A condition ``trigger()`` sets; the executor spinning this node then runs ``callback``."""
         self._require_alive()
         group = self._group(callback_group)
-        run = dispatcher(self._context.host, group, callback) if callback is not None else None
+        run = dispatcher(self._context.host, group, callback, node=self) if callback is not None else None
         guard = GuardCondition(self, callback, group, run)
         self._entities.append(guard)
         return guard
@@ -884,7 +888,7 @@ class Node(Destroyable):
 
         handler.__name__ = getattr(callback, "__name__", "handler")
         record = self._graph.add_service(
-            self._record, name, srv_type, dispatcher(host, self._group(callback_group), handler)
+            self._record, name, srv_type, dispatcher(host, self._group(callback_group), handler, node=self)
         )
         service = Service(self, record, callback, srv_name)
         made.append(service)
