@@ -526,6 +526,8 @@ def main():
         duration=3.0,
     )
     assert node_logs(result, "main_node") == ["answered False", "answered False", "answered True"]
+    notes = [line for line in node_logs(result, "turtletui") if "no executor has this node" in line]
+    assert len(notes) == 1 and notes[0].startswith("/driver: ")
     # driven only from t=2 s, when the driver was first spun, to the run's end
     assert result.turtles["turtle1"].distance == pytest.approx(1.0, abs=0.02)
 

@@ -25,6 +25,7 @@ from typing import Any
 
 from turtletui.compat.callback_groups import CallbackGroup, MutuallyExclusiveCallbackGroup
 from turtletui.compat.task import Task
+from turtletui.graph.logs import WARN
 
 _running = threading.local()
 """The groups whose callbacks the calling thread is running, innermost last."""
@@ -46,12 +47,14 @@ class Parking:
     context), oldest first, and how many were ever parked: an executor's
     ``spin_once`` that took one goes on waiting for a callback of its own."""
 
-    __slots__ = ("items", "count")
+    __slots__ = ("items", "count", "told")
 
     def __init__(self) -> None:
         self.items: list[tuple[Any, tuple]] = []
         """(node, ready-queue entry) pairs."""
         self.count = 0
+        self.told: set[int] = set()
+        """The ids of the nodes turtletui said no executor ever spun."""
 
     def park(self, node: Any, item: tuple) -> None:
         """Keep ``item`` until an executor with ``node`` spins (once: a timer
@@ -60,6 +63,10 @@ class Parking:
         callback = item[1]
         if all(entry[1][1] is not callback for entry in self.items):
             self.items.append((node, item))
+        if node._executor is None and id(node) not in self.told:
+            # ROS 2 says nothing: the node's callbacks just never run
+            self.told.add(id(node))
+            node._graph.log("turtletui", WARN, _NEVER_SPUN.format(node=node.get_fully_qualified_name()))
 
     def release(self, nodes: list[Any], ready: Any) -> None:
         """Queue the parked callbacks of ``nodes`` ahead of what else is ready, oldest first."""
@@ -70,6 +77,13 @@ class Parking:
         if released:
             items[:] = [entry for entry in items if entry[0] not in nodes]
             ready.extendleft(reversed(released))
+
+
+_NEVER_SPUN = (
+    "{node}: a callback of this node is ready, but no executor has this node, so in ROS 2 none of its "
+    "callbacks (timers, subscriptions, services) run until one does. Spin it: rclpy.spin(node), or "
+    "executor.add_node(node) for each node of an executor you spin."
+)
 
 
 def _parks(node: Any) -> bool:
