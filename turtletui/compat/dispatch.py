@@ -86,14 +86,11 @@ _NEVER_SPUN = (
 )
 
 
-def _parks(node: Any) -> bool:
-    """Whether a callback of ``node`` taken by the calling thread must wait: an
-    executor without the node runs it, and no executor with it spins now."""
-    spun = getattr(_spinning_here, "executors", None)
-    if not spun or node in spun[-1]._nodes:
-        return False  # no executor (a host's own wait), or the node's own
-    executor = node._executor
-    return executor is None or not executor._spinning or node not in executor._nodes
+def _in_a_spin() -> bool:
+    """Whether the calling thread spins an executor (not a host's own wait):
+    a node's callback it takes while no executor that has the node spins
+    (``node._spinners`` is 0) must wait."""
+    return bool(getattr(_spinning_here, "executors", None))
 
 
 def in_callback() -> bool:
@@ -137,7 +134,7 @@ def dispatcher(
     parking: Parking | None = None if node is None else node.context.parking
 
     def run(*args: Any) -> Any:
-        if parking is not None and _parks(node):
+        if parking is not None and not node._spinners and _in_a_spin():
             parking.park(node, (owner, (lambda: run(*args)) if args else run))
             return None
         if exclusive and group._active_entity is None:
@@ -215,7 +212,7 @@ def dispatcher(
                 if not queue:
                     sub.pending = False
                     return
-                if parking is not None and _parks(node):
+                if parking is not None and not node._spinners and _in_a_spin():
                     parking.park(node, sub.ready_item)  # the messages wait in the queue
                     return
                 msg, origin = take()
@@ -227,7 +224,7 @@ def dispatcher(
             if not queue:
                 sub.pending = False
                 return
-            if parking is not None and _parks(node):
+            if parking is not None and not node._spinners and _in_a_spin():
                 parking.park(node, sub.ready_item)  # the messages wait in the queue
                 return
             msg = popleft()  # take()'s steps written out: a frame less per message

@@ -93,6 +93,7 @@ class Executor:
         if node in self._nodes:
             return False
         self._nodes.append(node)
+        node._spinners += self._spinning
         node.executor = self
         if self._spinning:
             self._release_parked()
@@ -101,6 +102,7 @@ class Executor:
     def remove_node(self, node: Any) -> None:
         if node in self._nodes:
             self._nodes.remove(node)
+            node._spinners -= self._spinning
 
     def _release_parked(self) -> None:
         """Queue the callbacks of this executor's nodes that waited for it (turtletui.compat.dispatch)."""
@@ -119,6 +121,8 @@ class Executor:
     def shutdown(self, timeout_sec: float | None = None) -> bool:
         """Stop spinning and forget the nodes."""
         self._is_shutdown = True
+        for node in self._nodes:
+            node._spinners -= self._spinning
         self._nodes.clear()
         return True
 
@@ -236,11 +240,16 @@ class _Spinning:
     def __enter__(self) -> None:
         executor = self._executor
         executor._spinning += 1
+        for node in executor._nodes:
+            node._spinners += 1
         spun_by_this_thread().append(executor)
         executor._release_parked()
 
     def __exit__(self, *exc: object) -> None:
-        self._executor._spinning -= 1
+        executor = self._executor
+        executor._spinning -= 1
+        for node in executor._nodes:
+            node._spinners -= 1
         spun_by_this_thread().pop()
 
 

@@ -533,6 +533,9 @@ class Node(Destroyable):
         self._entities: list[Any] = []
         self._executor: Any = None
         """The executor the node was last added to (rclpy's ``node.executor``)."""
+        self._spinners = 0
+        """Spins in progress of executors that have this node (one per thread
+        inside one): while none, an executor without it parks its callbacks."""
         self._default_callback_group = MutuallyExclusiveCallbackGroup()
         self._rate_group = ReentrantCallbackGroup()
         """Where the timers of the node's rates run, as rclpy's (never busy: a rate can always tick)."""
