@@ -532,6 +532,28 @@ def main():
     assert result.turtles["turtle1"].distance == pytest.approx(1.0, abs=0.02)
 
 
+def test_a_program_starts_in_the_folder_it_is_run_from(controller_host, tmp_path, monkeypatch):
+    # as python3 FILE: a relative path is the caller's, not the file's folder's
+    here = tmp_path / "here"
+    here.mkdir()
+    (here / "speed.txt").write_text("1.5")
+    monkeypatch.chdir(here)
+    result = controller_host.run(
+        HEADER
+        + """
+import os
+
+def main():
+    rclpy.init()
+    node = Node("reader")
+    with open("speed.txt") as f:
+        node.get_logger().info(f"{os.path.basename(os.getcwd())} {f.read()}")
+""",
+        duration=0.1,
+    )
+    assert node_logs(result, "reader") == ["here 1.5"]
+
+
 def test_the_same_program_logs_and_moves_the_same_in_both_hosts(tmp_path):
     """Not one expectation per host: both hosts' whole runs, side by side."""
     from support.hosts import HOSTS, ControllerHost

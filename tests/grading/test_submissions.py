@@ -32,6 +32,21 @@ def test_a_ros_package_is_graded_by_its_console_scripts_executable(tmp_path: Pat
     assert sub["graded"] == f"{PACKAGE}/{EXECUTABLE}.py ({PACKAGE} {EXECUTABLE}: main())"
 
 
+def test_a_submission_is_graded_in_its_own_folder(tmp_path: Path, lesson: Path, monkeypatch):
+    # a file read by a relative path, beside the controller: graded as the student ran it
+    folder = tmp_path / "ann"
+    folder.mkdir()
+    (folder / "speed.txt").write_text("5.0\n")
+    (folder / "my_controller.py").write_text(
+        HONEST.replace("cmd.linear.x = 5.0", "cmd.linear.x = float(open('speed.txt').read())")
+    )
+    monkeypatch.chdir(tmp_path)
+    result = grade_cli(folder, "--lesson", lesson, "--format", "json", "--results", tmp_path / "res", "--same-user")
+    assert result.exit_code == 0, result.stderr
+    sub = json.loads(result.stdout)["submissions"][0]
+    assert sub["error"] is None and sub["score"] == 3.0, sub
+
+
 def test_a_workspace_and_nested_uploads_are_found(tmp_path: Path):
     workspace = write_workspace(tmp_path)
     chosen = choose_controller(workspace, executable=EXECUTABLE)  # build/ and install/ are skipped

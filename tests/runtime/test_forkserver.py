@@ -16,6 +16,7 @@ import pytest
 
 from turtletui.api import run
 from turtletui.runtime import forkserver
+from turtletui.runtime.sandbox import Limits
 
 NODE = """\
 import os, random, signal
@@ -26,7 +27,7 @@ from turtlesim.msg import Pose
 
 
 def note(name, value):
-    with open(name, "a") as f:
+    with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), name), "a") as f:
         f.write(f"{value}\\n")
 
 
@@ -73,15 +74,18 @@ def test_a_forked_run_is_the_same_run_as_a_fresh_one(tmp_path: Path) -> None:
     fresh = controller(tmp_path / "fresh")
     forked = controller(tmp_path / "forked")
     expected = run([fresh], duration=3.0, seed=5, keep_poses=True)
+    graded = controller(tmp_path / "graded")
     with forkserver.serving():
         got = run([forked], duration=3.0, seed=5, keep_poses=True)
         again = run([forked], duration=3.0, seed=5, keep_poses=True)
+        run([graded], duration=0.5, limits=Limits(file_folder=True))
     assert got.poses["turtle1"] == expected.poses["turtle1"] == again.poses["turtle1"]
     assert got.turtles["turtle1"].distance > 3.0
     for folder in (tmp_path / "fresh", tmp_path / "forked"):
         assert noted(folder, "parent")[0] == str(os.getpid()), "its parent is the grader"
         assert set(noted(folder, "group")) == {"True"}, "it leads its own process group"
-        assert noted(folder, "cwd")[0] == str(folder.resolve())
+        assert set(noted(folder, "cwd")) == {os.getcwd()}, "it starts where turtletui runs, as python3 FILE"
+    assert noted(tmp_path / "graded", "cwd") == [str((tmp_path / "graded").resolve())], "graded: in its own folder"
 
 
 def test_the_runs_of_one_submission_share_a_server_and_others_get_their_own(tmp_path: Path) -> None:
@@ -102,7 +106,7 @@ def test_the_runs_of_one_submission_share_a_server_and_others_get_their_own(tmp_
 
 
 DISTRO_PROBE = """\
-import importlib
+import importlib, os
 
 import rclpy
 
@@ -115,7 +119,7 @@ def main():
             found.append(package)
         except ImportError:
             pass
-    with open("found", "a") as f:
+    with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "found"), "a") as f:
         f.write(",".join(found) + "\\n")
     rclpy.init()
 """

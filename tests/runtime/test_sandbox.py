@@ -618,6 +618,7 @@ def test_unbounded_allocation_is_stopped(tmp_path: Path) -> None:
             # A daemon with a clean environment, orphaned while the child lives.
             subprocess.run(
                 ["sh", "-c", "sleep 60 & echo $! > grandchild_pid"],
+                cwd=os.path.dirname(os.path.abspath(__file__)),
                 start_new_session=True,
                 env={"PATH": os.environ.get("PATH", "/usr/bin:/bin")},
             )

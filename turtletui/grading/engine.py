@@ -314,7 +314,10 @@ def run_scenario(
     file or not). ``start`` and ``duration`` replace the run's own (a twin
     run). Raises KeyboardInterrupt if Ctrl-C cut the run short."""
     from turtletui.api import run as run_controllers
+    from turtletui.runtime.sandbox import Limits
 
+    # a submission's relative paths (a params file beside it) are its own
+    limits = replace(limits or Limits(), file_folder=True)
     scenario = run.scenario
     start = run.start if start is None else start
     duration = scenario.duration if duration is None else duration

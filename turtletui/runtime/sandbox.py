@@ -70,6 +70,10 @@ class Limits:
     takes: None, the fast path where it pays (see replica.FAST_PATH_MIN_NS);
     True, lockstep; False, the fast path. The run is the same on both: tests
     and benchmarks choose to compare them."""
+    file_folder: bool = False
+    """Start the child in its controller file's folder (grading: a
+    submission's relative paths are its own) instead of the folder turtletui
+    runs in, as ``python3 FILE`` and in-process runs keep it."""
     run_as: tuple[int, int] | None = None
     """(uid, gid) the child runs as, with no supplementary groups: a grader
     running as root drops the student's code to an unprivileged user."""

@@ -109,7 +109,7 @@ class ChildProcess:
         to_child_r, to_child_w = os.pipe()
         from_child_r, from_child_w = os.pipe()
         config = {**config, "fd_in": to_child_r, "fd_out": from_child_w, "spin_seconds": self._spin}
-        cwd = str(self.spec.path.resolve().parent) if self.spec.path else None
+        cwd = _start_folder(self.spec, self.limits)
         fds: tuple[int, ...] = (to_child_r, from_child_w)
         if self.journal_fd is not None:
             fds += (self.journal_fd,)
@@ -449,3 +449,14 @@ def _signal_name(sig: int) -> str:
         return signal.Signals(sig).name
     except ValueError:
         return f"{sig}"
+
+
+def _start_folder(spec: ControllerSpec, limits: Limits) -> str | None:
+    """The folder the child starts in (named even when it is this process's:
+    a fork server started elsewhere must not choose it)."""
+    if limits.file_folder and spec.path is not None:
+        return str(spec.path.resolve().parent)
+    try:
+        return os.getcwd()
+    except OSError:  # this process's folder was removed: the child starts where the server is
+        return None

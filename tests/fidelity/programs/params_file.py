@@ -70,7 +70,7 @@ def show(node, names):
 
 
 def main():
-    # a folder of its own (turtletui's sandbox starts a program in its file's folder)
+    # a folder of its own: the files it writes are not left where it was run from
     os.chdir(tempfile.mkdtemp())
     first, second, mixed = write("first.yaml", FIRST), write("second.yaml", SECOND), write("mixed.yaml", MIXED)
     for args in (["--params-file", mixed], ["--params-file", "missing.yaml"], ["-p", "waypoints:=[1, 2.5]"],
