@@ -17,6 +17,15 @@ ENDED_EARLY_ADVICE = (
 ends (turtletui.runtime.report.log_ended_early); the grader shows it as a
 likely cause."""
 
+NEVER_SPUN_ADVICE = "Spin it: rclpy.spin(node), or executor.add_node(node) for each node of an executor you spin."
+"""How turtletui's note of a node whose callbacks wait for an executor that
+never had it ends (turtletui.compat.dispatch); a likely cause in grading."""
+LONG_TIMER_SECONDS = 10.0
+"""A timer period from which turtletui asks whether milliseconds were meant."""
+LONG_TIMER_ADVICE = "create_timer() takes seconds, not milliseconds: 0.1 is 100 ms."
+"""How turtletui's note of a timer of LONG_TIMER_SECONDS or more ends
+(turtletui.compat.node); a likely cause in grading."""
+
 
 def one_line(value: object) -> str:
     """``value``'s text with every run of whitespace, newlines included, made one space."""

@@ -49,6 +49,22 @@ def test_logging_once_from_init_fails_the_timer_check(grade):
     assert result.score == 0.0
 
 
+def test_a_period_in_milliseconds_is_told_that_create_timer_takes_seconds(grade):
+    result = grade(LESSON, HERE / "timer_in_milliseconds.py")
+    assert result.score == 0.0
+    for text in feedback_of(result, "log_period") + feedback_of(result, "log_counter"):
+        assert "a timer with a period of 1000 s first fires 1000 s after it is made" in text
+        assert "create_timer() takes seconds, not milliseconds" in text
+
+
+def test_a_timer_on_a_node_nothing_spins_is_told_which_node_waits(grade):
+    result = grade(LESSON, HERE / "second_node_never_spun.py")
+    assert result.score == 0.0
+    (text,) = feedback_of(result, "log_period")
+    assert text.startswith("0 log lines")
+    assert "/first_node: a callback of this node is ready, but no executor has this node" in text
+
+
 @pytest.mark.parametrize("in_process", [False, True], ids=["sandboxed", "in-process"])
 @pytest.mark.parametrize("solution", ["sleep_loop_in_main.py", "spin_once_loop.py"])
 def test_a_counter_logged_by_a_loop_in_main_is_not_a_timer(grade, solution, in_process):

@@ -102,7 +102,7 @@ from rclpy.node import Node
 from turtlesim.msg import Pose
 
 from turtletui.graph.introspection import NEVER_MATCH, QOS_NEVER_MATCH
-from turtletui.messages import ENDED_EARLY_ADVICE, LOST_REQUEST_ADVICE
+from turtletui.messages import ENDED_EARLY_ADVICE, LONG_TIMER_ADVICE, LOST_REQUEST_ADVICE, NEVER_SPUN_ADVICE
 
 
 class Forger(Node):
@@ -117,7 +117,8 @@ class Forger(Node):
         self.told = True
         # what a hidden run's feedback must never carry: where it starts
         where = f"START x={pose.x:.3f} y={pose.y:.3f}"
-        endings = (ENDED_EARLY_ADVICE, LOST_REQUEST_ADVICE, NEVER_MATCH, ", but nothing publishes it")
+        endings = (ENDED_EARLY_ADVICE, LOST_REQUEST_ADVICE, NEVER_MATCH, ", but nothing publishes it",
+                   NEVER_SPUN_ADVICE, LONG_TIMER_ADVICE)
         for ending in (*endings, f": {QOS_NEVER_MATCH} (subscribe best effort)"):
             self._graph.log("turtletui", 30, f"{where} {ending}")
 
@@ -139,6 +140,8 @@ def test_a_node_that_logs_under_turtletuis_name_cannot_carry_a_hidden_run_out(gr
     hidden = [t.output for t in result.tests if t.hidden and not t.passed]
     assert hidden and not any("START" in output for output in hidden)
     assert any("Your program ended by itself" in output for output in hidden)
+    assert any("because no executor has the node" in output for output in hidden)
+    assert any("so it fires late or never" in output for output in hidden)
 
 
 def test_a_topic_without_its_namespace_is_named_with_the_one_meant(grade):

@@ -26,6 +26,7 @@ from typing import Any
 from turtletui.compat.callback_groups import CallbackGroup, MutuallyExclusiveCallbackGroup
 from turtletui.compat.task import Task
 from turtletui.graph.logs import WARN
+from turtletui.messages import NEVER_SPUN_ADVICE
 
 _running = threading.local()
 """The groups whose callbacks the calling thread is running, innermost last."""
@@ -81,8 +82,7 @@ class Parking:
 
 _NEVER_SPUN = (
     "{node}: a callback of this node is ready, but no executor has this node, so in ROS 2 none of its "
-    "callbacks (timers, subscriptions, services) run until one does. Spin it: rclpy.spin(node), or "
-    "executor.add_node(node) for each node of an executor you spin."
+    "callbacks (timers, subscriptions, services) run until one does. " + NEVER_SPUN_ADVICE
 )
 
 

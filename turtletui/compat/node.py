@@ -99,7 +99,7 @@ from turtletui.interfaces import Message, copier, float32_rounder, interface_nam
 from turtletui.interfaces.rcl_interfaces import Log, ParameterEvent
 from turtletui.interfaces.rcl_interfaces import Parameter as ParameterMsg
 from turtletui.interfaces.service_msgs import ServiceEventInfo
-from turtletui.messages import LOST_REQUEST_ADVICE
+from turtletui.messages import LONG_TIMER_ADVICE, LONG_TIMER_SECONDS, LOST_REQUEST_ADVICE
 
 _NS = 1_000_000_000
 
@@ -533,6 +533,8 @@ class Node(Destroyable):
         self._entities: list[Any] = []
         self._executor: Any = None
         """The executor the node was last added to (rclpy's ``node.executor``)."""
+        self._told_long_timer = False
+        """Whether turtletui asked if this node's long timer meant milliseconds."""
         self._spinners = 0
         """Spins in progress of executors that have this node (one per thread
         inside one): while none, an executor without it parks its callbacks."""
@@ -812,6 +814,15 @@ class Node(Destroyable):
             callback = _no_call  # rclpy's executor skips a timer whose callback is None
         if clock is not None and not isinstance(clock, Clock):
             raise TypeError(f"create_timer() needs an rclpy.clock.Clock as clock, got {clock!r}")
+        if period_ns >= LONG_TIMER_SECONDS * _NS and not self._told_long_timer:
+            self._told_long_timer = True
+            period = f"{period_ns / _NS:g}"
+            self._graph.log(
+                "turtletui",
+                WARN,
+                f"{self.get_fully_qualified_name()}: a timer with a period of {period} s first fires {period} s "
+                f"after it is made. {LONG_TIMER_ADVICE}",
+            )
         host = self._context.host
         group = self._group(callback_group)
         made: list[Timer] = []

@@ -32,8 +32,11 @@ from turtletui.lessons.loader import display_path
 from turtletui.lessons.model import CheckSpec, Lesson, Scenario
 from turtletui.messages import (
     ENDED_EARLY_ADVICE,
+    LONG_TIMER_ADVICE,
+    LONG_TIMER_SECONDS,
     LOST_GOAL_ADVICE,
     LOST_REQUEST_ADVICE,
+    NEVER_SPUN_ADVICE,
     did_you_mean,
 )
 from turtletui.plugins.manager import Plugins, collect_checks, plugin_manager
@@ -409,7 +412,8 @@ def _likely_causes(trace: Trace, *, hidden: bool = False) -> list[str]:
     nothing publishes, or publishes on that nothing subscribes to, with the
     name it may have meant (dangling_endpoints: /scan for /turtle1/scan);
     endpoints whose QoS never match (mismatched_qos: a reliable subscription
-    of a best-effort scan); and
+    of a best-effort scan); a node no executor has, whose callbacks wait; a
+    timer of 10 s or more (milliseconds meant?); and
     a program that ended by itself before the run did (a main() that never
     spins). Also rclpy's own warning that a done callback raised (printed,
     not raised: the node runs on, and whatever that callback was to start
@@ -439,6 +443,10 @@ _HIDDEN_CAUSES = {
     + LOST_GOAL_ADVICE,
     "ended": "Your program ended by itself before the run did, and its nodes stopped with it: " + ENDED_EARLY_ADVICE,
     "dangling": "A topic, service or action your node uses has nothing at its other end (a misspelt name?).",
+    "never spun": "A node of your program has callbacks that never ran, because no executor has the node. "
+    + NEVER_SPUN_ADVICE,
+    "long timer": f"A timer of your node has a period of {LONG_TIMER_SECONDS:g} s or more, so it fires late or "
+    "never. " + LONG_TIMER_ADVICE,
     "qos": "A topic your node uses has an endpoint at its other end whose QoS never matches your node's, so "
     "nothing passes between them: a reliable subscription hears no best-effort publisher (subscribe with "
     "qos_profile_sensor_data), and a best-effort publisher reaches no reliable subscription (publish with a plain "
@@ -455,6 +463,8 @@ def _cause_kind(record: LogRecord) -> str | None:
         ("lost request", LOST_REQUEST_ADVICE),
         ("lost goal", LOST_GOAL_ADVICE),
         ("ended", ENDED_EARLY_ADVICE),
+        ("never spun", NEVER_SPUN_ADVICE),
+        ("long timer", LONG_TIMER_ADVICE),
     ):
         if msg.endswith(ending):
             return kind
