@@ -204,6 +204,18 @@ def test_a_controller_that_teleports_away_from_the_random_start_still_starts_the
     assert report.end_poses["turtle1"] == (3.0, 3.0, 0.0)
 
 
+def test_a_controller_reading_a_file_runs_in_the_same_folder_in_both_hosts(tmp_path, monkeypatch):
+    # a relative path is the caller's in both hosts, as python3 FILE: the hosts check agrees
+    here = tmp_path / "here"
+    here.mkdir()
+    (here / "target.txt").write_text("3.0 3.0")
+    path = tmp_path / "jumper.py"
+    path.write_text(TELEPORTER.replace("x=3.0, y=3.0", "x=float(open('target.txt').read().split()[0]), y=3.0"))
+    monkeypatch.chdir(here)
+    report = check_controller(path, lesson="part6-closed-loop", scenario="random starts", seconds=0.5)
+    assert report.end_poses["turtle1"] == (3.0, 3.0, 0.0)
+
+
 NOISY_WORLD = """
 [[circles]]
 x = 8.0

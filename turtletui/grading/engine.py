@@ -317,10 +317,7 @@ def run_scenario(
     file or not). ``start`` and ``duration`` replace the run's own (a twin
     run). Raises KeyboardInterrupt if Ctrl-C cut the run short."""
     from turtletui.api import run as run_controllers
-    from turtletui.runtime.sandbox import Limits
 
-    # a submission's relative paths (a params file beside it) are its own
-    limits = replace(limits or Limits(), file_folder=True)
     scenario = run.scenario
     start = run.start if start is None else start
     duration = scenario.duration if duration is None else duration
@@ -526,8 +523,12 @@ def grade_run(
     its recording there as ``<label>.mcap`` (or ``.jsonl``, the
     ``recording_format``) for ``turtletui replay``, Foxglove or ros2 bag.
     """
+    from turtletui.runtime.sandbox import Limits
+
     if recording_format not in RECORDING_FORMATS:
         raise UsageError(f"recording format {recording_format!r}: choose one of {', '.join(RECORDING_FORMATS)}")
+    # a submission's relative paths (a file it handed in beside it) are its own
+    limits = replace(limits or Limits(), file_folder=True)
     run = plan.runs[run_index]
     # hidden runs are not recorded: a recording would show where they start
     name = f"{_file_name(run.label)}.{recording_format}"
