@@ -134,8 +134,11 @@ def dispatcher(
     parking: Parking | None = None if node is None else node.context.parking
 
     def run(*args: Any) -> Any:
-        if parking is not None and not node._spinners and _in_a_spin():
-            parking.park(node, (owner, (lambda: run(*args)) if args else run))
+        if parking is not None and (node._destroyed or (not node._spinners and _in_a_spin())):
+            # A destroyed node's callback (one that waited parked, or was queued) never
+            # runs: rclpy's executor no longer has the node's entities.
+            if not node._destroyed:
+                parking.park(node, (owner, (lambda: run(*args)) if args else run))
             return None
         if exclusive and group._active_entity is None:
             group._active_entity = run
