@@ -57,20 +57,23 @@ class Parking:
         self.told: set[int] = set()
         """The ids of the nodes turtletui said no executor ever spun."""
 
-    def park(self, node: Any, item: tuple) -> None:
+    def park(self, node: Any, item: tuple, *, tell: bool = True) -> None:
         """Keep ``item`` until an executor with ``node`` spins (once: a timer
-        that fires again while it waits still runs once, as in rclpy)."""
+        that fires again while it waits still runs once, as in rclpy). ``node``
+        may be an executor too: a task of its own waits until it spins
+        (``tell`` False: no note of a node no executor has)."""
         self.count += 1
         callback = item[1]
         if all(entry[1][1] is not callback for entry in self.items):
             self.items.append((node, item))
-        if node._executor is None and id(node) not in self.told:
+        if tell and node._executor is None and id(node) not in self.told:
             # ROS 2 says nothing: the node's callbacks just never run
             self.told.add(id(node))
             node._graph.log("turtletui", WARN, _NEVER_SPUN.format(node=node.get_fully_qualified_name()))
 
     def release(self, nodes: list[Any], ready: Any) -> None:
-        """Queue the parked callbacks of ``nodes`` ahead of what else is ready, oldest first."""
+        """Queue the parked callbacks of ``nodes`` (and tasks of the executors among them)
+        ahead of what else is ready, oldest first."""
         items = self.items
         if not items:
             return
@@ -134,8 +137,11 @@ def dispatcher(
     parking: Parking | None = None if node is None else node.context.parking
 
     def run(*args: Any) -> Any:
-        if parking is not None and not node._spinners and _in_a_spin():
-            parking.park(node, (owner, (lambda: run(*args)) if args else run))
+        if parking is not None and (node._destroyed or (not node._spinners and _in_a_spin())):
+            # A destroyed node's callback (one that waited parked, or was queued) never
+            # runs: rclpy's executor no longer has the node's entities.
+            if not node._destroyed:
+                parking.park(node, (owner, (lambda: run(*args)) if args else run))
             return None
         if exclusive and group._active_entity is None:
             group._active_entity = run
@@ -159,7 +165,7 @@ def dispatcher(
             if result is not None and isinstance(result, CoroutineType):
                 # As rclpy: the task holds its group until the coroutine ends.
                 held = True
-                start_task(host, group, result, now=True, release=lambda _task: release(run))
+                start_task(host, group, result, now=True, release=lambda _task: release(run), node=node)
                 return None
             return result
         finally:
@@ -252,7 +258,7 @@ def dispatcher(
                     depth.n -= 1
                 if result is not None and isinstance(result, CoroutineType):
                     held = True
-                    start_task(host, group, result, now=True, release=lambda _task: release(run))
+                    start_task(host, group, result, now=True, release=lambda _task: release(run), node=node)
             finally:
                 stack.pop()
                 if not held:
@@ -286,13 +292,19 @@ def start_task(
     first: bool = False,
     release: Callable[[Task], None] | None = None,
     executor: Any = None,
+    node: Any = None,
 ) -> Task:
     """Run ``handler`` (a coroutine, or a function called with ``args``) as a
     Task: its first step now or queued (``first``: ahead of the callbacks
     already ready), the next ones queued each time the Future it awaits is
     done. With ``release``, the caller holds ``group`` for the task and
     ``release(task)`` runs when it ends; else each step runs under
-    ``group``'s rules."""
+    ``group``'s rules.
+
+    As rclpy's executor keeps its tasks to itself: a step of the task of
+    ``node`` (an ``async def`` callback of it) waits parked while no executor
+    with the node spins, and one of a task ``executor`` made (its
+    create_task, a Future's done callback) while that executor does not spin."""
     task = Task(handler, args, kwargs, executor=executor)
     ready = host.graph.ready
     owner = host.owner
@@ -305,6 +317,8 @@ def start_task(
             _in_group(group, counted)
 
         task._add_done_hook(release)
+    if node is not None or executor is not None:
+        step = _bound(step, owner, node, executor)
     task._resume = lambda: ready.append((owner, step))
     if now:
         step()
@@ -313,6 +327,29 @@ def start_task(
     else:
         task._resume()
     return task
+
+
+def _bound(step: Callable[[], None], owner: str, node: Any, executor: Any) -> Callable[[], None]:
+    """``step``, parked (turtletui.compat.dispatch.Parking) when a spin takes it while
+    neither an executor with ``node`` (if given) nor ``executor`` spins."""
+    if node is not None:
+        key, parking = node, node.context.parking
+
+        def spun() -> bool:
+            return node._spinners > 0
+    else:
+        key, parking = executor, executor.context.parking
+
+        def spun() -> bool:
+            return executor._spinning > 0
+
+    def bound() -> None:
+        if not spun() and _in_a_spin():
+            parking.park(key, (owner, bound), tell=False)
+            return
+        step()
+
+    return bound
 
 
 def _in_group(group: CallbackGroup, step: Callable[[], Any]) -> None:

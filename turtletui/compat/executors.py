@@ -108,7 +108,7 @@ class Executor:
         """Queue the callbacks of this executor's nodes that waited for it (turtletui.compat.dispatch)."""
         host = self._context._host
         if host is not None:
-            self._context.parking.release(self._nodes, host.graph.ready)
+            self._context.parking.release([*self._nodes, self], host.graph.ready)
 
     def get_nodes(self) -> list[Any]:
         return list(self._nodes)

@@ -248,10 +248,20 @@ class Timer:
     """When it fires next, in simulated ns; None while it is off the simulated clock (Graph.park_timer)."""
     canceled: bool = False
     seq: int = 0
+    queued: bool = False
+    """Whether a call is in the ready queue, not yet taken: a timer due again
+    meanwhile is not queued twice (rcl's timer is ready or not, and its call
+    skips the periods it missed), so a callback that waited a second for an
+    executor runs once, not once per period."""
     ready_item: tuple = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
-        self.ready_item = (self.owner, self.callback)
+        self.ready_item = (self.owner, self.take)
+
+    def take(self) -> None:
+        """What the ready queue runs: the call taken (the timer may be queued again), then the callback."""
+        self.queued = False
+        self.callback()
 
     def reset(self, now_ns: int) -> None:
         self.canceled = False
@@ -582,7 +592,9 @@ class Graph:
         ready = self.ready
         timer.next_due = next_due = due + timer.period_ns
         heapreplace(timers, (next_due, seq, timer))  # pop and push in one
-        ready.append(timer.ready_item)
+        if not timer.queued:
+            timer.queued = True
+            ready.append(timer.ready_item)
         while timers[0][0] <= now:
             due, seq, timer = timers[0]
             if timer.canceled or due != timer.next_due:
@@ -592,7 +604,9 @@ class Graph:
                 continue
             timer.next_due = next_due = due + timer.period_ns
             heapreplace(timers, (next_due, seq, timer))
-            ready.append(timer.ready_item)
+            if not timer.queued:
+                timer.queued = True
+                ready.append(timer.ready_item)
         return True
 
     def run_ready(self) -> None:
