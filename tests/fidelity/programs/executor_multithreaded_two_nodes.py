@@ -12,6 +12,31 @@ from rclpy.node import Node
 from rclpy.task import Future
 
 
+def overlap(executor, node, group):
+    """Two busy timers of ``group`` on ``node``: how many calls ran at once at most, and how many ran."""
+    running, most, calls = [0], [0], [0]
+    lock = threading.Lock()
+    finished = Future()
+
+    def busy():
+        with lock:
+            running[0] += 1
+            calls[0] += 1
+            most[0] = max(most[0], running[0])
+            if calls[0] >= 6 and not finished.done():
+                finished.set_result(True)
+        threading.Event().wait(0.25)
+        with lock:
+            running[0] -= 1
+
+    timers = [node.create_timer(0.1, busy, callback_group=group) for _ in range(2)]
+    executor.spin_until_future_complete(finished, timeout_sec=10.0)
+    for timer in timers:
+        timer.cancel()
+    executor.spin_until_future_complete(Future(), timeout_sec=0.6)
+    return most[0], calls[0]
+
+
 def main():
     rclpy.init()
     waiter = Node("mt_waiter")
@@ -38,29 +63,8 @@ def main():
     print("other node's timer set the event:", got)
 
     for name, group in (("exclusive", MutuallyExclusiveCallbackGroup()), ("reentrant", ReentrantCallbackGroup())):
-        running = [0]
-        most = [0]
-        calls = [0]
-        lock = threading.Lock()
-        finished = Future()
-
-        def busy():
-            with lock:
-                running[0] += 1
-                calls[0] += 1
-                most[0] = max(most[0], running[0])
-                if calls[0] >= 6 and not finished.done():
-                    finished.set_result(True)
-            threading.Event().wait(0.25)
-            with lock:
-                running[0] -= 1
-
-        timers = [waiter.create_timer(0.1, busy, callback_group=group) for _ in range(2)]
-        executor.spin_until_future_complete(finished, timeout_sec=10.0)
-        for timer in timers:
-            timer.cancel()
-        executor.spin_until_future_complete(Future(), timeout_sec=0.6)
-        print(name, "overlapped:", most[0] > 1, "calls enough:", calls[0] >= 6)
+        most, calls = overlap(executor, waiter, group)
+        print(name, "overlapped:", most > 1, "calls enough:", calls >= 6)
 
     executor.remove_node(waiter)
     ticks = {"waiter": 0, "setter": 0}
