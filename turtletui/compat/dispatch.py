@@ -117,6 +117,7 @@ def dispatcher(
     received: Callable[[Any], None] | None = None,
     *,
     node: Any = None,
+    timer: list[Any] | None = None,
 ) -> Callable:
     """``callback`` as the graph should call it: counted as a callback (as
     host.wrap_callback counts, inline: this runs for every delivery), run
@@ -128,7 +129,10 @@ def dispatcher(
     argument of each call. ``received(msg)``, if given, does to each message
     what the middleware does on its way (float32 fields rounded) before the
     callback has it. ``node``, the node the callback is of, waits parked
-    while an executor without it spins (see the module's docstring)."""
+    while an executor without it spins (see the module's docstring).
+    ``timer``, for a timer's callback, holds its graph record once made: a
+    parked call is the timer's one ready call, so the timer, due again
+    meanwhile, is not queued beside it (rcl's timer is ready or not)."""
     depth = host.callback_counter
     ready = host.graph.ready
     owner = host.owner
@@ -140,7 +144,13 @@ def dispatcher(
         if parking is not None and (node._destroyed or (not node._spinners and _in_a_spin())):
             # A destroyed node's callback (one that waited parked, or was queued) never
             # runs: rclpy's executor no longer has the node's entities.
-            if not node._destroyed:
+            if node._destroyed:
+                pass
+            elif timer:
+                record = timer[0]
+                record.queued = True  # taken again (Timer.take) when released
+                parking.park(node, record.ready_item)
+            else:
                 parking.park(node, (owner, (lambda: run(*args)) if args else run))
             return None
         if exclusive and group._active_entity is None:

@@ -829,13 +829,16 @@ class Node(Destroyable):
         info_parameter = timer_info_parameter(callback) if callable(callback) else None
         if info_parameter is not None:
             callback = with_timer_info(callback, info_parameter, made)
+        record_of: list[Any] = []
         record = self._graph.add_timer(
             self._record,
             scheduled_period(period_ns),  # a period of 0 is ready at every spin in rcl
-            dispatcher(host, group, callback, node=self),  # a callback that is not callable fails when called, as in rclpy
+            # a callback that is not callable fails when called, as in rclpy
+            dispatcher(host, group, callback, node=self, timer=record_of),
             # rclpy lets a destroyed node make a timer; no executor calls it
             autostart=autostart and not self._destroyed,
         )
+        record_of.append(record)
         timer = Timer(self, record, self._clock if clock is None else clock, period_ns)
         made.append(timer)
         timer.callback_group = group
