@@ -532,6 +532,55 @@ def main():
     assert result.turtles["turtle1"].distance == pytest.approx(1.0, abs=0.02)
 
 
+def test_a_node_added_to_an_executor_soon_after_is_not_said_to_be_unspun(controller_host):
+    # A node added a moment later (after some spin_once calls of another) is
+    # spun as the student meant: no note, and its missed timer runs once.
+    result = controller_host.run(
+        HEADER
+        + """
+from rclpy.executors import SingleThreadedExecutor
+
+def main():
+    rclpy.init()
+    a = Node("a")
+    b = Node("b")
+    calls = []
+    a.create_timer(0.2, lambda: calls.append("a"))
+    b.create_timer(0.3, lambda: calls.append("b"))
+    executor = SingleThreadedExecutor()
+    executor.add_node(a)
+    for _ in range(3):
+        executor.spin_once(timeout_sec=1.0)
+    executor.add_node(b)
+    for _ in range(4):
+        executor.spin_once(timeout_sec=1.0)
+    a.get_logger().info(" ".join(calls))
+""",
+        duration=3.0,
+    )
+    assert node_logs(result, "a") == ["a a a b a b a"]
+    assert not [line for line in node_logs(result, "turtletui") if "no executor has this node" in line]
+
+
+def test_a_node_never_spun_by_a_program_that_ends_soon_is_said_at_shutdown(controller_host):
+    result = controller_host.run(
+        HEADER
+        + """
+def main():
+    rclpy.init()
+    spun = Node("spun")
+    forgotten = Node("forgotten")
+    forgotten.create_timer(0.1, lambda: None)
+    for _ in range(3):
+        rclpy.spin_once(spun, timeout_sec=0.1)
+    rclpy.shutdown()
+""",
+        duration=2.0,
+    )
+    notes = [line for line in node_logs(result, "turtletui") if "no executor has this node" in line]
+    assert len(notes) == 1 and notes[0].startswith("/forgotten: ")
+
+
 def test_a_program_starts_in_the_folder_it_is_run_from(controller_host, tmp_path, monkeypatch):
     # as python3 FILE: a relative path is the caller's, not the file's folder's
     here = tmp_path / "here"

@@ -132,6 +132,7 @@ class Context:
 
     def _shutdown(self) -> None:
         self._ok = False
+        self.parking.tell_waiting()  # the note of a node no executor had, before it goes
         for callback in list(self._callbacks):
             callback()
         for node in list(self._nodes):

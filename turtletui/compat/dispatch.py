@@ -43,19 +43,27 @@ def spun_by_this_thread() -> list[Any]:
     return stack
 
 
+NEVER_SPUN_GRACE_NS = 1_000_000_000
+"""How long a callback of a node no executor has waits before turtletui says
+so: a program may add the node to an executor a moment later (a thread that
+starts rclpy.spin(node), an executor.add_node after some spin_once calls)."""
+
+
 class Parking:
     """Callbacks of nodes no executor spun when they became ready (one per
     context), oldest first, and how many were ever parked: an executor's
     ``spin_once`` that took one goes on waiting for a callback of its own."""
 
-    __slots__ = ("items", "count", "told")
+    __slots__ = ("items", "count", "told", "waiting")
 
     def __init__(self) -> None:
         self.items: list[tuple[Any, tuple]] = []
         """(node, ready-queue entry) pairs."""
         self.count = 0
         self.told: set[int] = set()
-        """The ids of the nodes turtletui said no executor ever spun."""
+        """The ids of the nodes turtletui considered saying no executor ever spun."""
+        self.waiting: list[Any] = []
+        """The nodes whose note waits for its grace (NEVER_SPUN_GRACE_NS) to end."""
 
     def park(self, node: Any, item: tuple, *, tell: bool = True) -> None:
         """Keep ``item`` until an executor with ``node`` spins (once: a timer
@@ -67,8 +75,28 @@ class Parking:
         if all(entry[1][1] is not callback for entry in self.items):
             self.items.append((node, item))
         if tell and node._executor is None and id(node) not in self.told:
-            # ROS 2 says nothing: the node's callbacks just never run
+            # ROS 2 says nothing: the node's callbacks just never run. Said
+            # after a grace, and only if no executor has had the node by then.
             self.told.add(id(node))
+            self.waiting.append(node)
+            node._graph._soon(node._record, NEVER_SPUN_GRACE_NS, lambda: self._grace_over(node))
+
+    def _grace_over(self, node: Any) -> None:
+        # not a callback of the executor spinning now: its spin_once goes on waiting
+        self.count += 1
+        if node in self.waiting:
+            self.waiting.remove(node)
+            self._tell(node)
+
+    def tell_waiting(self) -> None:
+        """Say, before the nodes go (the context shuts down), which nodes no
+        executor ever had, whose grace has not ended yet."""
+        waiting, self.waiting = self.waiting, []
+        for node in waiting:
+            self._tell(node)
+
+    def _tell(self, node: Any) -> None:
+        if node._executor is None and not node._destroyed:
             node._graph.log("turtletui", WARN, _NEVER_SPUN.format(node=node.get_fully_qualified_name()))
 
     def release(self, nodes: list[Any], ready: Any) -> None:
