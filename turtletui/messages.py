@@ -22,7 +22,10 @@ NEVER_SPUN_ADVICE = "Spin it: rclpy.spin(node), or executor.add_node(node) for e
 never had it ends (turtletui.compat.dispatch); a likely cause in grading."""
 LONG_TIMER_SECONDS = 10.0
 """A timer period from which turtletui asks whether milliseconds were meant."""
-LONG_TIMER_ADVICE = "create_timer() takes seconds, not milliseconds: 0.1 is 100 ms."
+LONG_TIMER_ADVICE = (
+    "If you meant milliseconds: create_timer() takes seconds, not milliseconds (0.1 is 100 ms); "
+    "a timer meant to be slow is fine."
+)
 """How turtletui's note of a timer of LONG_TIMER_SECONDS or more ends
 (turtletui.compat.node); a likely cause in grading."""
 

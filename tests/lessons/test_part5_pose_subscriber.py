@@ -141,7 +141,7 @@ def test_a_node_that_logs_under_turtletuis_name_cannot_carry_a_hidden_run_out(gr
     assert hidden and not any("START" in output for output in hidden)
     assert any("Your program ended by itself" in output for output in hidden)
     assert any("because no executor has the node" in output for output in hidden)
-    assert any("so it fires late or never" in output for output in hidden)
+    assert any("or more: it first fires that long after it is made" in output for output in hidden)
 
 
 def test_a_topic_without_its_namespace_is_named_with_the_one_meant(grade):

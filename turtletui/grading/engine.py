@@ -442,8 +442,8 @@ _HIDDEN_CAUSES = {
     "dangling": "A topic, service or action your node uses has nothing at its other end (a misspelt name?).",
     "never spun": "A node of your program has callbacks that never ran, because no executor has the node. "
     + NEVER_SPUN_ADVICE,
-    "long timer": f"A timer of your node has a period of {LONG_TIMER_SECONDS:g} s or more, so it fires late or "
-    "never. " + LONG_TIMER_ADVICE,
+    "long timer": f"A timer of your node has a period of {LONG_TIMER_SECONDS:g} s or more: it first fires that "
+    "long after it is made. " + LONG_TIMER_ADVICE,
     "qos": "A topic your node uses has an endpoint at its other end whose QoS never matches your node's, so "
     "nothing passes between them: a reliable subscription hears no best-effort publisher (subscribe with "
     "qos_profile_sensor_data), and a best-effort publisher reaches no reliable subscription (publish with a plain "
