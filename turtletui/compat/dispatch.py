@@ -79,7 +79,7 @@ class Parking:
             # after a grace, and only if no executor has had the node by then.
             self.told.add(id(node))
             self.waiting.append(node)
-            node._graph._soon(node._record, NEVER_SPUN_GRACE_NS, lambda: self._grace_over(node))
+            node._graph.soon(node._record, NEVER_SPUN_GRACE_NS, lambda: self._grace_over(node))
 
     def _grace_over(self, node: Any) -> None:
         # not a callback of the executor spinning now: its spin_once goes on waiting

@@ -1373,7 +1373,7 @@ class Graph:
             return
         if self._in_rosout_callback and not now:
             if not self._rosout_later:
-                self._soon(publisher.node, ROSOUT_ECHO_NS, self._deliver_rosout_later)
+                self.soon(publisher.node, ROSOUT_ECHO_NS, self._deliver_rosout_later)
             self._rosout_later.append((record, origin))
             return
         msg = to_log_message(record, origin)
@@ -1404,9 +1404,10 @@ class Graph:
 
         return counted
 
-    def _soon(self, node: NodeRecord, delay_ns: int, callback: Callable[[], None]) -> None:
+    def soon(self, node: NodeRecord, delay_ns: int, callback: Callable[[], None]) -> None:
         """Call ``callback`` once, ``delay_ns`` from now, as a timer of ``node``
-        that no other process is told of (the graph's own business)."""
+        that no other process is told of (the graph's own business, or a note
+        turtletui's rclpy makes later: turtletui.compat.dispatch)."""
         self._seq += 1
         timer = Timer(node, delay_ns, callback, node.owner, self.now_ns + delay_ns, seq=self._seq)
 
