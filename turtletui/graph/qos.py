@@ -60,15 +60,23 @@ def offered(qos: Any) -> Policies:
     return Policies(*_effective(qos))
 
 
+def offer_counts(publishers: Any) -> tuple[int, int, int]:
+    """How many of ``publishers`` (each with a ``qos``) offer reliable, how many
+    transient local, and how many there are."""
+    offers = [_effective(pub.qos) for pub in publishers]
+    reliable = sum(r == _RELIABLE for r, _ in offers)
+    kept = sum(d == _TRANSIENT_LOCAL for _, d in offers)
+    return reliable, kept, len(offers)
+
+
 def adapted(publishers: Any) -> Policies:
     """The policies ``ros2 topic echo`` and rosbag2's recorder subscribe with
     (ros2topic's choose_qos): reliable and transient local only if every
     publisher (each with a ``qos``) offers it, so they hear them all."""
-    offers = [_effective(pub.qos) for pub in publishers]
-    everyone = bool(offers)
+    reliable, kept, total = offer_counts(publishers)
     return Policies(
-        _RELIABLE if everyone and all(r == _RELIABLE for r, _ in offers) else _BEST_EFFORT,
-        _TRANSIENT_LOCAL if everyone and all(d == _TRANSIENT_LOCAL for _, d in offers) else _VOLATILE,
+        _RELIABLE if total and reliable == total else _BEST_EFFORT,
+        _TRANSIENT_LOCAL if total and kept == total else _VOLATILE,
     )
 
 

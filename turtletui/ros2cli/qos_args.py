@@ -19,7 +19,7 @@ from turtletui.compat.qos import (
     QoSPresetProfiles,
     ReliabilityPolicy,
 )
-from turtletui.graph.qos import Policies, adapted, offered
+from turtletui.graph.qos import Policies, adapted, offer_counts
 from turtletui.ros2cli.streams import DEFAULT_DEPTH
 
 
@@ -78,14 +78,12 @@ def echo_qos(args: Namespace, publishers: Sequence[Any]) -> tuple[Policies, int,
     policies, depth = asked_qos(args)
     if _overridden(args) or not publishers:
         return policies, depth, []
-    offers = [offered(pub.qos) for pub in publishers]
+    reliable, kept, total = offer_counts(publishers)
     notes = []
-    reliable = sum(offer.reliability == ReliabilityPolicy.RELIABLE for offer in offers)
-    if 0 < reliable < len(offers):
+    if 0 < reliable < total:
         notes.append("Some, but not all, publishers are offering QoSReliabilityPolicy.RELIABLE. Falling back to "
                      "QoSReliabilityPolicy.BEST_EFFORT as it will connect to all publishers")
-    kept = sum(offer.durability == DurabilityPolicy.TRANSIENT_LOCAL for offer in offers)
-    if 0 < kept < len(offers):
+    if 0 < kept < total:
         notes.append("Some, but not all, publishers are offering QoSDurabilityPolicy.TRANSIENT_LOCAL. Falling "
                      "back to QoSDurabilityPolicy.VOLATILE as it will connect to all publishers")
     return adapted(publishers), depth, notes
