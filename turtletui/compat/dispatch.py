@@ -169,18 +169,19 @@ def dispatcher(
     parking: Parking | None = None if node is None else node.context.parking
 
     def run(*args: Any) -> Any:
-        if parking is not None and (node._destroyed or (not node._spinners and _in_a_spin())):
-            # A destroyed node's callback (one that waited parked, or was queued) never
-            # runs: rclpy's executor no longer has the node's entities.
+        if parking is not None:
             if node._destroyed:
-                pass
-            elif timer:
-                record = timer[0]
-                record.queued = True  # taken again (Timer.take) when released
-                parking.park(node, record.ready_item)
-            else:
-                parking.park(node, (owner, (lambda: run(*args)) if args else run))
-            return None
+                # A destroyed node's callback (one that waited parked, or was queued) never
+                # runs: rclpy's executor no longer has the node's entities.
+                return None
+            if not node._spinners and _in_a_spin():
+                if timer:
+                    record = timer[0]
+                    record.queued = True  # taken again (Timer.take) when released
+                    parking.park(node, record.ready_item)
+                else:
+                    parking.park(node, (owner, (lambda: run(*args)) if args else run))
+                return None
         if exclusive and group._active_entity is None:
             group._active_entity = run
         elif exclusive or not group.beginning_execution(run):
