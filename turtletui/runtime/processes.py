@@ -14,8 +14,9 @@ from collections.abc import Iterator
 TOKEN_VAR = "TURTLETUI_SANDBOX"
 
 
-def _processes() -> Iterator[tuple[int, bytes, int]]:
-    """(pid, state, parent pid) of every process in /proc (none elsewhere)."""
+def _processes() -> Iterator[tuple[int, bytes, int, int]]:
+    """(pid, state, parent pid, start time in clock ticks after boot) of every
+    process in /proc (none elsewhere)."""
     try:
         entries = os.listdir("/proc")
     except OSError:
@@ -23,31 +24,73 @@ def _processes() -> Iterator[tuple[int, bytes, int]]:
     for entry in entries:
         if not entry.isdigit():
             continue
+        fields = _stat(entry)
+        if fields is not None:
+            yield int(entry), *fields
+
+
+def _stat(pid: int | str) -> tuple[bytes, int, int] | None:
+    """(state, parent pid, start time) of process ``pid``; None if it is gone."""
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as f:
+            fields = f.read().rpartition(b")")[2].split()
+        return fields[0], int(fields[1]), int(fields[19])  # fields 3, 4 and 22 of proc(5)
+    except (OSError, ValueError, IndexError):
+        return None
+
+
+def _started(pid: int) -> int | None:
+    fields = _stat(pid)
+    return None if fields is None else fields[2]
+
+
+def _own_children() -> list[tuple[int, bytes]]:
+    """(pid, state) of this process's children. Read from each thread's
+    children list (Linux 3.5 on, CONFIG_PROC_CHILDREN), not from a walk of
+    every process on the machine, whose cost grows with the machine's load;
+    the walk where the lists are missing."""
+    me = os.getpid()
+    if not os.path.exists(f"/proc/{me}/task/{me}/children"):
+        return [(pid, state) for pid, state, ppid, _ in _processes() if ppid == me]
+    pids: list[int] = []
+    try:
+        tasks = os.listdir(f"/proc/{me}/task")
+    except OSError:
+        tasks = []
+    for task in tasks:
         try:
-            with open(f"/proc/{entry}/stat", "rb") as f:
-                fields = f.read().rpartition(b")")[2].split()
-            state, ppid = fields[0], int(fields[1])
-        except (OSError, ValueError, IndexError):
-            continue
-        yield int(entry), state, ppid
+            with open(f"/proc/{me}/task/{task}/children", "rb") as f:
+                pids.extend(int(pid) for pid in f.read().split())
+        except (OSError, ValueError):
+            continue  # the thread ended: its children are another thread's now
+    children = []
+    for pid in pids:
+        fields = _stat(pid)
+        if fields is not None:
+            children.append((pid, fields[0]))
+    return children
 
 
 _HALTED = frozenset({b"T", b"t", b"Z", b"X"})
 """Process states in which a process cannot start another: stopped, traced, dead."""
 
 
-def _sandboxed(root: int, token: bytes) -> tuple[set[int], bool]:
+def _sandboxed(root: int, token: bytes, since: int | None = None) -> tuple[set[int], bool]:
     """Processes the child ``root`` started (Linux /proc; empty elsewhere): its
     descendants, and any process whose environment holds ``token``; and
-    whether ``root`` is halted (stopped or dead) or gone."""
+    whether ``root`` is halted (stopped or dead) or gone. ``since``: the start
+    time (clock ticks after boot) of the first process that held ``token``;
+    no process started before it can hold it, and their environments go unread."""
     children: dict[int, list[int]] = {}
     marked: set[int] = set()
     me = os.getpid()
     halted = True
-    for pid, state, ppid in _processes():
+    for pid, state, ppid, started in _processes():
         if pid == root:
             halted = state in _HALTED
         children.setdefault(ppid, []).append(pid)
+        if since is not None and started < since:
+            continue
         try:
             with open(f"/proc/{pid}/environ", "rb") as f:
                 if token in f.read().split(b"\0"):
@@ -85,12 +128,15 @@ def kill_tree(pid: int, token: str, *, reaped: bool = False, spare: int | None =
     ``spare`` is a process holding the token that must live on (a fork server)."""
     marker = f"{TOKEN_VAR}={token}".encode()
     stopped: set[int] = set()
+    # What holds the token started after the process it was made for: ``spare``
+    # (a fork server, whose runs share its token), or else ``pid``.
+    since = _started(spare) if spare is not None else None if reaped else _started(pid)
     try:
         _signal(pid, signal.SIGSTOP, group=True)
         if not reaped:
             _signal(pid, signal.SIGSTOP)
         for _ in range(8):
-            found, halted = _sandboxed(-1 if reaped else pid, marker)
+            found, halted = _sandboxed(-1 if reaped else pid, marker, since)
             fresh = found - stopped
             fresh.discard(spare)
             if not fresh or (not reaped and halted and fresh == {pid}):
@@ -112,9 +158,8 @@ def kill_children(keep: set[int]) -> None:
     """Kill this process's children but ``keep``, and theirs that it inherits
     meanwhile (a child subreaper inherits the orphans of what it started),
     each frozen first so that none can fork away."""
-    me = os.getpid()
     for _ in range(8):
-        found = {pid for pid, state, ppid in _processes() if ppid == me and pid not in keep and state not in (b"Z", b"X")}
+        found = {pid for pid, state in _own_children() if pid not in keep and state not in (b"Z", b"X")}
         if not found:
             break
         for pid in found:
@@ -127,9 +172,8 @@ def kill_children(keep: set[int]) -> None:
 def reap_zombie_children() -> None:
     """Reap this process's children that have died and that nobody waits for:
     a child subreaper inherits the orphans of what it started and kills them."""
-    me = os.getpid()
-    for pid, state, ppid in _processes():
-        if state == b"Z" and ppid == me:
+    for pid, state in _own_children():
+        if state == b"Z":
             try:
                 os.waitpid(pid, os.WNOHANG)
             except ChildProcessError:
