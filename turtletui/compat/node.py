@@ -297,6 +297,7 @@ class Client(Destroyable):
                 + _describe(request)
             )
         future = Future()
+        future._deliverable = self._response_can_run
         host = self._node.context.host
         graph = host.graph
         self._sequence += 1
@@ -376,6 +377,16 @@ class Client(Destroyable):
                 "exclusive callback group as the callback that waits, so it cannot run until that returns"
             )
         return ""
+
+    def _response_can_run(self) -> bool:
+        """Whether, while the calling thread runs a callback, the response
+        to a call (and the service's handler, if this controller serves it)
+        could be handled: neither waits for a mutually exclusive group busy
+        with that callback."""
+        if busy_exclusive_group(self.callback_group):
+            return False
+        service = self._node._graph.services.get(self.service_name)
+        return service is None or not busy_exclusive_group(getattr(service.handler, "group", None))
 
     def service_is_ready(self) -> bool:
         """Whether the service's server exists and this client has discovered it."""

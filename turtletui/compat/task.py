@@ -33,6 +33,9 @@ class Future:
         self._hooks: list[Callable[[Future], None]] = []
         """turtletui's own callbacks (a task resuming, a group released): run at once."""
         self._executor = executor
+        self._deliverable: Callable[[], bool] | None = None
+        """For a service call's future: whether its response could be handled
+        now, while a callback waits for it (Executor.spin_until_future_complete)."""
 
     def __await__(self):
         # Yields None, as rclpy's does (a coroutine driven by hand sees it); the
