@@ -214,6 +214,9 @@ class Executor:
             failures = self._failures
             if not self._stopped():
                 host.spin_until(lambda: future.done() or future.cancelled() or bool(failures), _timeout_ns(timeout_sec))
+                client = future._client
+                if not future.done() and client is not None and host.running and not client._response_can_run():
+                    client._tell_response_waits()  # ROS 2 says nothing
             self._raise_failure()
             return
         host = self._guard("spin_until_future_complete()")
@@ -236,8 +239,8 @@ class Executor:
             return False
         if timeout_sec is not None and timeout_sec >= 0:
             return True
-        deliverable = getattr(future, "_deliverable", None)
-        return deliverable is not None and deliverable()
+        client = getattr(future, "_client", None)
+        return client is not None and client._response_can_run()
 
     def spin_once_until_future_complete(self, future: Future, timeout_sec: float | None = None) -> None:
         self.spin_once(timeout_sec)
