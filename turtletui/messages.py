@@ -28,6 +28,12 @@ LONG_TIMER_ADVICE = (
 )
 """How turtletui's note of a timer of LONG_TIMER_SECONDS or more ends
 (turtletui.compat.node); a likely cause in grading."""
+RESPONSE_WAITS_ADVICE = (
+    "Use call_async() with add_done_callback(), or give the client a callback group of its own."
+)
+"""How turtletui's note of a wait inside a callback that ran out its timeout,
+the response stuck behind the callback's own group, ends (turtletui.compat.node);
+a likely cause in grading."""
 
 
 def one_line(value: object) -> str:

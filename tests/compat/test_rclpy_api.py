@@ -390,6 +390,58 @@ def test_spin_until_future_complete_inside_a_callback_is_a_crash_not_a_hang(tmp_
     assert not result.ok
 
 
+NESTED_WAIT = """
+    import rclpy
+    from rclpy.callback_groups import MutuallyExclusiveCallbackGroup
+    from rclpy.node import Node
+    from std_srvs.srv import Empty
+
+
+    class Clearer(Node):
+        def __init__(self):
+            super().__init__("clearer")
+            group = MutuallyExclusiveCallbackGroup() if OWN_GROUP else None
+            self.client = self.create_client(Empty, "/clear", callback_group=group)
+            self.ticks = 0
+            self.create_timer(0.5, self.tick)
+
+        def tick(self):
+            self.ticks += 1
+            future = self.client.call_async(Empty.Request())
+            rclpy.spin_until_future_complete(self, future, timeout_sec=TIMEOUT)
+            self.get_logger().info(f"tick {self.ticks} done={future.done()}")
+
+
+    def main():
+        rclpy.init()
+        rclpy.spin(Clearer())
+    """
+
+
+@pytest.mark.parametrize(
+    ("own_group", "timeout", "done"),
+    [
+        # the client in a group of its own: the nested spin handles its response
+        (True, None, "True"),
+        (True, 1.0, "True"),
+        # in the timer's (the node's default) group: its response waits until the
+        # timer returns, so the nested spin waits out its timeout, and the timer goes on
+        (False, 0.2, "False"),
+    ],
+)
+def test_spin_until_future_complete_in_a_callback_spins_as_rclpy_does(
+    tmp_path, controller_host, own_group, timeout, done
+):
+    # rclpy spins the executor again inside the callback: what other callback
+    # groups have ready runs, and a timeout ends the wait (Kilted's rclpy, run;
+    # https://github.com/ros2/rclpy/issues/1018, /issues/1313)
+    source = NESTED_WAIT.replace("OWN_GROUP", str(own_group)).replace("TIMEOUT", str(timeout))
+    path = write(tmp_path, "nested_wait.py", source)
+    result = run([path], duration=2.9, sandbox=controller_host.sandboxed)
+    assert result.crashes == []
+    assert node_logs(result, "clearer") == [f"tick {n} done={done}" for n in range(1, 6)]
+
+
 def test_client_call_inside_a_callback_is_refused_with_an_explanation(tmp_path, controller_host):
     path = write(
         tmp_path,

@@ -143,3 +143,15 @@ def test_a_timer_that_sets_the_pen_every_tick_is_a_flood_too(grade):
     assert result.score == 6.0
     text = feedback(result, "calls_per_side_change")
     assert "119 calls of /turtle1/set_pen for 3 crossings" in text and "nor from every tick of a timer" in text
+
+
+def test_a_wait_with_a_timeout_in_the_callback_runs_as_in_ros_and_is_named(grade):
+    # rclpy spins again inside the callback and returns at the timeout (no deadlock,
+    # no crash): each side change freezes the node for 1 s, at 5 m/s, into the wall
+    # https://github.com/ros2/rclpy/issues/1018
+    result = grade(LESSON, HERE / "waits_with_a_timeout_in_the_callback.py")
+    assert {"pen_colour_by_side", "wall_hits"} <= failed_checks(result)
+    assert result.score < 5.0
+    text = "\n".join(feedback_of(result, "wall_hits"))
+    assert "with spin_until_future_complete(), for a service's response that could only be handled" in text
+    assert "give the client a callback group of its own" in text

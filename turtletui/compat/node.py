@@ -99,7 +99,12 @@ from turtletui.interfaces import Message, copier, float32_rounder, interface_nam
 from turtletui.interfaces.rcl_interfaces import Log, ParameterEvent
 from turtletui.interfaces.rcl_interfaces import Parameter as ParameterMsg
 from turtletui.interfaces.service_msgs import ServiceEventInfo
-from turtletui.messages import LONG_TIMER_ADVICE, LONG_TIMER_SECONDS, LOST_REQUEST_ADVICE
+from turtletui.messages import (
+    LONG_TIMER_ADVICE,
+    LONG_TIMER_SECONDS,
+    LOST_REQUEST_ADVICE,
+    RESPONSE_WAITS_ADVICE,
+)
 
 _NS = 1_000_000_000
 
@@ -203,6 +208,13 @@ _UNDISCOVERED = (
     "or wait until publisher.get_subscription_count() > 0 before the first message."
 )
 
+_RESPONSE_WAITS = (
+    "{node}: spin_until_future_complete() inside a callback waited its whole timeout for {service}'s "
+    "response, which is handled in the callback's own mutually exclusive group (the node's default, "
+    "if you gave none) only after the callback returns; meanwhile the node handled nothing else. "
+    + RESPONSE_WAITS_ADVICE
+)
+
 _UNDISCOVERED_SERVICE = (
     "{node} called {service} before it had discovered the service's server, so the request was lost "
     "and will never be answered: ROS 2 nodes take a moment to discover each other, here and on a real "
@@ -271,6 +283,7 @@ class Client(Destroyable):
         """The name as given to create_client, as rclpy keeps it (service_name: resolved)."""
         self.callback_group = callback_group
         self._told_undiscovered = False
+        self._told_response_waits = False
         self._sequence = 0
         self._gid = client_gid(node.get_fully_qualified_name(), record.name, len(node._entities))
         self._introspection = Introspection(node, self.srv_type, record.name)
@@ -297,6 +310,7 @@ class Client(Destroyable):
                 + _describe(request)
             )
         future = Future()
+        future._client = self
         host = self._node.context.host
         graph = host.graph
         self._sequence += 1
@@ -376,6 +390,24 @@ class Client(Destroyable):
                 "exclusive callback group as the callback that waits, so it cannot run until that returns"
             )
         return ""
+
+    def _response_can_run(self) -> bool:
+        """Whether, while the calling thread runs a callback, the response
+        to a call (and the service's handler, if this controller serves it)
+        could be handled: neither waits for a mutually exclusive group busy
+        with that callback."""
+        if busy_exclusive_group(self.callback_group):
+            return False
+        service = self._node._graph.services.get(self.service_name)
+        return service is None or not busy_exclusive_group(getattr(service.handler, "group", None))
+
+    def _tell_response_waits(self) -> None:
+        """Say, once, that a wait inside a callback ran out its timeout because
+        the response could not be handled before the callback returned."""
+        if not self._told_response_waits:
+            self._told_response_waits = True
+            node = self._node.get_fully_qualified_name()
+            self._node._graph.log("turtletui", WARN, _RESPONSE_WAITS.format(node=node, service=self.service_name))
 
     def service_is_ready(self) -> bool:
         """Whether the service's server exists and this client has discovered it."""

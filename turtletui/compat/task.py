@@ -33,6 +33,10 @@ class Future:
         self._hooks: list[Callable[[Future], None]] = []
         """turtletui's own callbacks (a task resuming, a group released): run at once."""
         self._executor = executor
+        self._client: Any = None
+        """For a service call's future, the rclpy Client that made it
+        (Executor.spin_until_future_complete asks it whether its response
+        could be handled while a callback waits)."""
 
     def __await__(self):
         # Yields None, as rclpy's does (a coroutine driven by hand sees it); the

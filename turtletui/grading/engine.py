@@ -37,6 +37,7 @@ from turtletui.messages import (
     LOST_GOAL_ADVICE,
     LOST_REQUEST_ADVICE,
     NEVER_SPUN_ADVICE,
+    RESPONSE_WAITS_ADVICE,
     did_you_mean,
 )
 from turtletui.plugins.manager import Plugins, collect_checks, plugin_manager
@@ -410,7 +411,9 @@ def _likely_causes(trace: Trace, *, hidden: bool = False) -> list[str]:
     name it may have meant (dangling_endpoints: /scan for /turtle1/scan);
     endpoints whose QoS never match (mismatched_qos: a reliable subscription
     of a best-effort scan); a node no executor has, whose callbacks wait; a
-    timer of 10 s or more (milliseconds meant?); and
+    timer of 10 s or more (milliseconds meant?); a wait inside a callback
+    that ran out its timeout, the response stuck behind the callback's own
+    group; and
     a program that ended by itself before the run did (a main() that never
     spins). Also rclpy's own warning that a done callback raised (printed,
     not raised: the node runs on, and whatever that callback was to start
@@ -444,6 +447,9 @@ _HIDDEN_CAUSES = {
     + NEVER_SPUN_ADVICE,
     "long timer": f"A timer of your node has a period of {LONG_TIMER_SECONDS:g} s or more: it first fires that "
     "long after it is made. " + LONG_TIMER_ADVICE,
+    "response waits": "Your node waited inside a callback, with spin_until_future_complete(), for a service's "
+    "response that could only be handled after that callback returned: each wait lasted its whole timeout, and "
+    "the node handled nothing else meanwhile. " + RESPONSE_WAITS_ADVICE,
     "qos": "A topic your node uses has an endpoint at its other end whose QoS never matches your node's, so "
     "nothing passes between them: a reliable subscription hears no best-effort publisher (subscribe with "
     "qos_profile_sensor_data), and a best-effort publisher reaches no reliable subscription (publish with a plain "
@@ -462,6 +468,7 @@ def _cause_kind(record: LogRecord) -> str | None:
         ("ended", ENDED_EARLY_ADVICE),
         ("never spun", NEVER_SPUN_ADVICE),
         ("long timer", LONG_TIMER_ADVICE),
+        ("response waits", RESPONSE_WAITS_ADVICE),
     ):
         if msg.endswith(ending):
             return kind
