@@ -14,8 +14,8 @@ def main(args=None):
 
             def set_bool(request, response):
                 response.success = not request.data
-                response.message = "flipped %s" % request.data
-                node.get_logger().info("Incoming request data: %s" % request.data)
+                response.message = f"flipped {request.data}"
+                node.get_logger().info(f"Incoming request data: {request.data}")
                 return response
 
             node.create_service(SetBool, "set_bool", set_bool)
@@ -39,7 +39,7 @@ def main(args=None):
                     future = cli.call_async(req)
                     result = await future
                     node.get_logger().info(
-                        "Result of set_bool: for %s -> %s %r" % (req.data, result.success, result.message)
+                        f"Result of set_bool: for {req.data} -> {result.success} {result.message!r}"
                     )
                     print("result:", result)
                 finally:

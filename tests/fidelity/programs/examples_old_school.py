@@ -13,7 +13,7 @@ heard = []
 
 def chatter_callback(msg):
     global g_node
-    g_node.get_logger().info('I heard: "%s"' % msg.data)
+    g_node.get_logger().info(f'I heard: "{msg.data}"')
     heard.append(msg.data)
 
 
@@ -31,9 +31,9 @@ def main(args=None):
             msg = String()
             i = 0
             while rclpy.ok():
-                msg.data = "Hello World: %d" % i
+                msg.data = f"Hello World: {i}"
                 i += 1
-                node.get_logger().info('Publishing: "%s"' % msg.data)
+                node.get_logger().info(f'Publishing: "{msg.data}"')
                 publisher.publish(msg)
                 sleep(0.05)
                 while len(heard) < i:

@@ -52,9 +52,9 @@ class ThrottledTalker(Node):
 
     def timer_callback(self):
         msg = String()
-        msg.data = "Hello World: {0}".format(self.i)
+        msg.data = f"Hello World: {self.i}"
         self.i += 1
-        self.get_logger().info('Publishing: "{0}"'.format(msg.data))
+        self.get_logger().info(f'Publishing: "{msg.data}"')
         self.pub.publish(msg)
         if self.i == 5:
             print("refills before the fifth:", self.group.refills >= 1)

@@ -2,9 +2,9 @@
 f-string with non-str values, %-formatting and str.format, a message with a newline, and a
 log call of each severity from a helper that a loop calls (one call site, one severity)."""
 import rclpy
+from geometry_msgs.msg import Twist
 from rclpy.node import Node
 from std_msgs.msg import String
-from geometry_msgs.msg import Twist
 
 
 def attempt(label, action):
@@ -28,7 +28,7 @@ def main():
     twist = Twist()
     twist.linear.x = 0.5
     log.info(f"twist: {twist.linear.x} {twist.angular} {[1, 2.0]} {None} {True}")
-    log.info("%s says %d and %.2f" % ("turtle", 3, 2.0 / 3))
+    log.info("%s says %d and %.2f" % ("turtle", 3, 2.0 / 3))  # noqa: UP031 - as students write it
     log.info("{} at {:.1f}".format("speed", 1.25))
     log.warning("two\nlines")
     log.info("")

@@ -3,7 +3,7 @@ f-strings, array fields as they come back (float32 lists, float64, bytes, string
 arrays assigned to array fields, a list assigned to a float32 field rounded, and repr of
 one field."""
 import numpy as np
-from geometry_msgs.msg import Point, PoseArray, Pose, Twist, Vector3
+from geometry_msgs.msg import Point, Pose, PoseArray, Twist, Vector3
 from sensor_msgs.msg import JointState, LaserScan
 from std_msgs.msg import ColorRGBA, Float32MultiArray, Header, String
 

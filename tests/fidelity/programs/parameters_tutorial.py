@@ -28,7 +28,7 @@ class MinimalParam(rclpy.node.Node):
 
     def timer_callback(self):
         my_param = self.get_parameter("my_parameter").get_parameter_value().string_value
-        self.get_logger().info("Hello %s!" % my_param)
+        self.get_logger().info(f"Hello {my_param}!")
         new = ["world", "forbidden", "turtle"][self.ticks % 3]
         results = self.set_parameters([rclpy.parameter.Parameter("my_parameter", rclpy.Parameter.Type.STRING, new)])
         print("set", new, "->", [(r.successful, r.reason) for r in results])

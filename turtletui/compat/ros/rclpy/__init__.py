@@ -14,6 +14,7 @@ from rclpy import (  # noqa: F401,E402
     task,
     time,
 )
+
 # the names rclpy's __init__ imports, which programs use as rclpy.X (the parameters
 # tutorial's rclpy.Parameter.Type.STRING)
 from rclpy.context import Context  # noqa: F401
