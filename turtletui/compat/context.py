@@ -7,6 +7,8 @@ then attaches the default context to it. Controller code never sees the host.
 
 from __future__ import annotations
 
+import inspect
+import weakref
 from typing import TYPE_CHECKING, Any, Protocol
 
 from turtletui.compat.dispatch import Parking
@@ -133,13 +135,27 @@ class Context:
     def _shutdown(self) -> None:
         self._ok = False
         self.parking.tell_waiting()  # the note of a node no executor had, before it goes
-        for callback in list(self._callbacks):
-            callback()
+        # As rclpy's Context._cleanup: the nodes go first, then the on_shutdown callbacks run
+        # (one that uses a node finds it destroyed).
         for node in list(self._nodes):
             node.destroy_node()
+        callbacks, self._callbacks = self._callbacks, []
+        for entry in callbacks:
+            # rclpy keeps a method as a WeakMethod and calls what calling the entry gives:
+            # a plain function runs as entry(), and whatever it returns, unless None, is called too
+            callback = entry()
+            if callback is not None:
+                callback()
 
     def on_shutdown(self, callback: Any) -> None:
-        self._callbacks.append(callback)
+        """Call ``callback`` when this context shuts down (at once if it has already)."""
+        if not callable(callback):
+            # rclpy's own error, its text never formatted: str() shows the tuple
+            raise TypeError("callback should be a callable, got {}", type(callback))
+        if self._host is not None and not self._ok:
+            callback()  # initialized once and shut down since: rclpy calls it now
+            return
+        self._callbacks.append(weakref.WeakMethod(callback) if inspect.ismethod(callback) else callback)
 
     def get_domain_id(self) -> int:
         return 0

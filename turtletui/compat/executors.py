@@ -367,7 +367,8 @@ class MultiThreadedExecutor(Executor):
 
 
 class EventsExecutor(SingleThreadedExecutor):
-    pass
+    """``rclpy.experimental.EventsExecutor`` (Kilted on): callbacks one at a time, as the
+    SingleThreadedExecutor runs them (turtletui's executors already wait on events)."""
 
 
 def threads_that_can_help(node: Any) -> bool:
@@ -442,3 +443,4 @@ def get_global_executor() -> Executor:
 
 # as rclpy's classes print: <rclpy.node.Node object at ...> (turtletui.compat.identity)
 as_rclpy("rclpy.executors", Executor, SingleThreadedExecutor, MultiThreadedExecutor, ExternalShutdownException, ShutdownException, TimeoutException)
+as_rclpy("rclpy.experimental.events_executor", EventsExecutor)

@@ -1,0 +1,1 @@
+from rclpy.experimental.events_executor import EventsExecutor  # noqa: F401

@@ -1,0 +1,1 @@
+from turtletui.compat.executors import EventsExecutor  # noqa: F401
