@@ -322,17 +322,6 @@ def test_sequence_checks():
                   [action_msgs.GoalInfo()])
 
 
-def test_numpy_arrays_go_into_sequence_fields_as_their_lists():
-    import numpy as np  # turtletui's own dependency (the simulator)
-    scan = LaserScan()
-    scan.intensities = np.array([1.5, 2.25], dtype=np.float32)
-    assert scan.intensities == array.array('f', [1.5, 2.25])  # as ROS stores a sequence
-    joints = sensor_msgs.JointState()
-    joints.velocity = np.array([1.0, 2.0])
-    assert joints.velocity == array.array('d', [1.0, 2.0])
-    assert 'write 1.0' in raises_assert(set_field, scan, 'ranges', np.array([1, 2]))  # ints, as a list of them
-
-
 def test_no_new_attributes():
     t = Twist()
     with pytest.raises(AttributeError):

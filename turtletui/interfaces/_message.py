@@ -205,10 +205,9 @@ def _make_sequence_check(spec: FieldSpec) -> tuple[Callable, Callable]:
             if value.typecode == tc and (kind != _BOUNDED or len(value) <= size):
                 return value  # stored as is, like ROS
             raise _error('array_error', spec, value)
-        if tc is not None and hasattr(value, 'tolist') and not isinstance(value, (list, tuple)):
-            # a numpy array, taken as the list it holds: ROS keeps a fixed-size array's as
-            # numpy, and makes a sequence's an array.array (what `msg.ranges = np.array(...)` gives)
-            value = value.tolist()
+        if kind == _FIXED and tc is not None and hasattr(value, 'tolist') \
+                and not isinstance(value, (list, tuple)):
+            value = value.tolist()  # numpy array (ROS keeps these as numpy)
         from collections import UserList, UserString
         from collections.abc import Sequence, Set
 
