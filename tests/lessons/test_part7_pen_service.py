@@ -143,3 +143,22 @@ def test_a_timer_that_sets_the_pen_every_tick_is_a_flood_too(grade):
     assert result.score == 6.0
     text = feedback(result, "calls_per_side_change")
     assert "119 calls of /turtle1/set_pen for 3 crossings" in text and "nor from every tick of a timer" in text
+
+
+def test_the_course_package_is_graded_by_its_turtle_controller_without_naming_it(tmp_path):
+    # Part 7 grows Part 6's turtle_controller in the same my_robot_controller
+    # package, beside test_node: without the lesson's default every package
+    # hand-in was "several possible controllers" until --executable was given
+    import json
+
+    from support.grading import grade_cli
+    from support.ros_package import EXECUTABLE, PACKAGE, write_package
+
+    reference = Path(__file__).parents[2] / "plugins" / "reference" / "turtle_controller_pen.py"
+    package = write_package(tmp_path / "alice", reference.read_text())
+    result = grade_cli(package, "--lesson", LESSON, "--format", "json", "--results", tmp_path / "res", "--same-user")
+    assert result.exit_code == 0, result.stderr
+    (sub,) = json.loads(result.stdout)["submissions"]
+    assert sub["error"] is None, sub["error"]
+    assert sub["graded"] == f"{PACKAGE}/{EXECUTABLE}.py ({PACKAGE} {EXECUTABLE}: main())"
+    assert sub["score"] == sub["max_score"] == 10.0
