@@ -137,6 +137,19 @@ def test_a_notebook_or_an_archive_handed_in_instead_of_a_py_file_is_named_with_w
     assert errors["cat"].endswith("cat: no controller: the folder has no Python (.py) file")
 
 
+def test_a_text_file_is_named_only_when_it_holds_the_code(tmp_path: Path):
+    # a note to the instructor is no misnamed controller ("but notes.txt, text:
+    # name a Python file .py" read as if the note should have been code)
+    klass = tmp_path / "class"
+    (klass / "dan").mkdir(parents=True)
+    (klass / "dan" / "notes.txt").write_text("I could not get it to work, sorry\n")
+    (klass / "eve").mkdir()
+    (klass / "eve" / "node.txt").write_text(HONEST)
+    errors = {s.student: s.error for s in find_submissions([klass])}
+    assert errors["dan"].endswith("dan: no controller: the folder has no Python (.py) file")
+    assert errors["eve"].endswith("no Python (.py) file, but node.txt, Python saved as text: name it node.py")
+
+
 COURSE_NODES = {  # the course's my_robot_controller: executable, module, reference file
     "test_node": ("my_first_node", "my_first_node.py"),
     "draw_circle": ("draw_circle", "draw_circle.py"),
