@@ -1006,6 +1006,32 @@ def test_sys_exit_with_an_error_status_is_reported(tmp_path, controller_host):
     assert [(c.kind, c.message) for c in result.crashes] == [("exit", "exited with status 3")]
 
 
+@pytest.mark.parametrize(("code", "message"), [("1", "exited with status 1"), ('"bye"', "exited with status 1: bye")])
+def test_sys_exit_in_a_callback_says_where_and_the_status_python_exits_with(tmp_path, controller_host, code, message):
+    # sys.exit("bye") prints bye and exits with status 1, as python3 FILE does;
+    # the report named neither the status nor the line that exited
+    path = write(
+        tmp_path,
+        "exits.py",
+        f"""
+        import sys
+        import rclpy
+        from rclpy.node import Node
+
+
+        def main():
+            rclpy.init()
+            node = Node("quitter")
+            node.create_timer(0.25, lambda: sys.exit({code}))  # EXIT
+            rclpy.spin(node)
+        """,
+    )
+    result = run([path], duration=0.5, sandbox=controller_host.sandboxed)
+    assert [(c.kind, c.message) for c in result.crashes] == [("exit", message)]
+    summary = result.crashes[0].summary()
+    assert summary.endswith(f'(File "{path}", line {line_of(path, "EXIT")}, in <lambda>)'), summary
+
+
 def test_run_refuses_a_bad_duration(tmp_path):
     path = write(tmp_path, "speedy_dur.py", PARAM_NODE)
     for bad in (0.0, -1.0, math.nan):

@@ -135,3 +135,53 @@ def test_a_notebook_or_an_archive_handed_in_instead_of_a_py_file_is_named_with_w
     )
     assert errors["ben"].endswith("no Python (.py) file, but node.ZIP, an archive: unpack it into the folder")
     assert errors["cat"].endswith("cat: no controller: the folder has no Python (.py) file")
+
+
+def test_a_text_file_is_named_only_when_it_holds_the_code(tmp_path: Path):
+    # a note to the instructor is no misnamed controller ("but notes.txt, text:
+    # name a Python file .py" read as if the note should have been code)
+    klass = tmp_path / "class"
+    (klass / "dan").mkdir(parents=True)
+    (klass / "dan" / "notes.txt").write_text("I could not get it to work, sorry\n")
+    (klass / "eve").mkdir()
+    (klass / "eve" / "node.txt").write_text(HONEST)
+    errors = {s.student: s.error for s in find_submissions([klass])}
+    assert errors["dan"].endswith("dan: no controller: the folder has no Python (.py) file")
+    assert errors["eve"].endswith("no Python (.py) file, but node.txt, Python saved as text: name it node.py")
+
+
+COURSE_NODES = {  # the course's my_robot_controller: executable, module, reference file
+    "test_node": ("my_first_node", "my_first_node.py"),
+    "draw_circle": ("draw_circle", "draw_circle.py"),
+    "pose_subscriber": ("pose_subscriber", "pose_subscriber.py"),
+    "turtle_controller": ("turtle_controller", "turtle_controller_pen.py"),
+}
+
+
+@pytest.mark.parametrize(("lesson_id", "executable"), [
+    ("part3-first-node", "test_node"),
+    ("part4-open-loop-circle", "draw_circle"),
+    ("part5-pose-subscriber", "pose_subscriber"),
+    ("part7-pen-service", "turtle_controller"),
+])
+def test_the_course_package_is_graded_by_each_parts_node_without_naming_it(tmp_path: Path, lesson_id, executable):
+    # by Part 7 the package has all four nodes; only Part 6 named its own, so
+    # every other part's package hand-in was "several possible controllers"
+    reference = Path(__file__).parents[2] / "plugins" / "reference"
+    root = tmp_path / "alice" / PACKAGE
+    (root / PACKAGE).mkdir(parents=True)
+    scripts = ", ".join(f"'{name} = {PACKAGE}.{module}:main'" for name, (module, _) in COURSE_NODES.items())
+    (root / "setup.py").write_text(
+        f"from setuptools import setup\nsetup(name='{PACKAGE}', packages=['{PACKAGE}'],\n"
+        f"      entry_points={{'console_scripts': [{scripts}]}})\n"
+    )
+    (root / PACKAGE / "__init__.py").write_text("")
+    for module, source in COURSE_NODES.values():
+        (root / PACKAGE / f"{module}.py").write_text((reference / source).read_text())
+    result = grade_cli(root, "--lesson", lesson_id, "--format", "json", "--results", tmp_path / "res", "--same-user")
+    assert result.exit_code == 0, result.stderr
+    (sub,) = json.loads(result.stdout)["submissions"]
+    assert sub["error"] is None, sub["error"]
+    module = COURSE_NODES[executable][0]
+    assert sub["graded"] == f"{PACKAGE}/{module}.py ({PACKAGE} {executable}: main())"
+    assert sub["score"] == sub["max_score"], sub["tests"]

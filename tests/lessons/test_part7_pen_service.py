@@ -155,3 +155,22 @@ def test_a_wait_with_a_timeout_in_the_callback_runs_as_in_ros_and_is_named(grade
     text = "\n".join(feedback_of(result, "wall_hits"))
     assert "with spin_until_future_complete(), for a service's response that could only be handled" in text
     assert "give the client a callback group of its own" in text
+
+
+def test_the_course_package_is_graded_by_its_turtle_controller_without_naming_it(tmp_path):
+    # Part 7 grows Part 6's turtle_controller in the same my_robot_controller
+    # package, beside test_node: without the lesson's default every package
+    # hand-in was "several possible controllers" until --executable was given
+    import json
+
+    from support.grading import grade_cli
+    from support.ros_package import EXECUTABLE, PACKAGE, write_package
+
+    reference = Path(__file__).parents[2] / "plugins" / "reference" / "turtle_controller_pen.py"
+    package = write_package(tmp_path / "alice", reference.read_text())
+    result = grade_cli(package, "--lesson", LESSON, "--format", "json", "--results", tmp_path / "res", "--same-user")
+    assert result.exit_code == 0, result.stderr
+    (sub,) = json.loads(result.stdout)["submissions"]
+    assert sub["error"] is None, sub["error"]
+    assert sub["graded"] == f"{PACKAGE}/{EXECUTABLE}.py ({PACKAGE} {EXECUTABLE}: main())"
+    assert sub["score"] == sub["max_score"] == 10.0

@@ -293,3 +293,48 @@ def test_a_child_that_dies_on_its_way_out_after_the_run_is_no_crash(tmp_path: Pa
     result = run([path], duration=3.0, limits=Limits(lockstep=host == "lockstep"))
     assert result.ok, result.crashes
     assert [r.msg for r in result.logs if r.node == "looper"] == ["line 0", "line 1", "line 2"]
+
+
+WAITS_FOR_A_MISSPELT_SERVICE = """
+import rclpy
+from rclpy.node import Node
+from turtlesim.srv import SetPen
+
+
+class PenNode(Node):
+    def __init__(self):
+        super().__init__("pen")
+        self.create_timer(0.5, self.change_pen)
+
+    def change_pen(self):
+        client = self.create_client(SetPen, "/turtle1/setpen")  # the course's loop, a typo in the name
+        for _ in range(10_000):  # bounded, so that a host that never stops it still ends the test
+            if client.wait_for_service(1.0):
+                return
+            self.get_logger().warning("Waiting for service...")
+        self.get_logger().info("never stopped")
+
+
+def main():
+    rclpy.init()
+    node = PenNode()
+    try:
+        rclpy.spin(node)
+    except KeyboardInterrupt:
+        node.get_logger().info("stopped")
+"""
+
+
+@pytest.mark.parametrize("host", ["in-process", "fast", "lockstep"])
+def test_a_callback_waiting_for_a_service_that_never_comes_is_stopped_at_the_end(tmp_path: Path, host: str) -> None:
+    # Part 7's `while not client.wait_for_service(1.0)` with a misspelt name: once
+    # the run is over each wait returned at once, so the loop went on for ever
+    # (in-process: endless warnings; sandboxed: killed a second later as "still busy").
+    path = tmp_path / "pen.py"
+    path.write_text(WAITS_FOR_A_MISSPELT_SERVICE)
+    spec = ControllerSpec("pen", path, trusted=host == "in-process")
+    result = run([spec], duration=3.0, limits=None if host == "in-process" else Limits(lockstep=host == "lockstep"))
+    assert result.ok, result.crashes
+    logged = [(r.t, r.msg) for r in result.logs if r.node == "pen"]
+    assert logged == [(1.5, "Waiting for service..."), (2.5, "Waiting for service..."), (3.0, "stopped")]
+    assert not [r.msg for r in result.logs if "still busy" in r.msg]

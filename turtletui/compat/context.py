@@ -48,6 +48,10 @@ class Host(Protocol):
     def running(self) -> bool:
         """False once the run has ended (the context then shuts down)."""
 
+    def waited_after_end(self) -> bool:
+        """What a wait that returned because the run is over returns (False),
+        unless the waiter is stopped (turtletui.runtime.host.RunEnded)."""
+
 
 _current_host: Host | None = None
 """The host controllers in this process run under. Process-wide, neither passed

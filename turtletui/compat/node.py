@@ -439,8 +439,10 @@ def wait_for_server(
     while not ready():
         if not host.running:
             # the program is on its way out (as sleeps, this returns at once): a
-            # wait in a loop must not keep it waiting for a discovery that never comes
-            return server() is not None
+            # wait in a loop must not keep it waiting for a discovery that never
+            # comes, nor loop for ever (`while not wait_for_service(1.0)` in a
+            # callback is stopped as Ctrl-C stops it)
+            return server() is not None or host.waited_after_end()
         left = None if deadline is None else deadline - graph.now_ns
         if left is not None and left <= 0:
             return False

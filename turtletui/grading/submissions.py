@@ -342,7 +342,6 @@ _NOT_PYTHON = {
     ".zip": "an archive: unpack it into the folder",
     ".tar": "an archive: unpack it into the folder",
     ".gz": "an archive: unpack it into the folder",
-    ".txt": "text: name a Python file .py",
     ".pyc": "compiled Python: hand in the .py source",
 }
 """What a student sometimes hands in instead of a .py file, and what to do about it."""
@@ -357,9 +356,17 @@ def _not_python(folder: Path) -> str:
         return ""
     for path in files:
         what = _NOT_PYTHON.get(path.suffix.lower())
+        if what is None and path.suffix.lower() == ".txt" and _looks_like_python(path):
+            what = f"Python saved as text: name it {path.stem}.py"
         if what is not None:
             return f", but {path.relative_to(folder)}, {what}"
     return ""
+
+
+def _looks_like_python(path: Path) -> bool:
+    """A text file that holds a node's code (not a note to the instructor)."""
+    head = _read_head(path)
+    return b"import rclpy" in head or b"from rclpy" in head
 
 
 def choose_controller(

@@ -239,6 +239,7 @@ def main(config: dict[str, Any] | None = None) -> None:
         spin_nodes,
         user_frames,
     )
+    from turtletui.runtime.report import exit_message
 
     distro = resolve_distro(config.get("distro"))
     compat.install(distro)
@@ -292,7 +293,7 @@ def main(config: dict[str, Any] | None = None) -> None:
         crash = protocol.Crash("load", str(err), ())
     except SystemExit as exc:
         if exc.code not in (None, 0):
-            crash = protocol.Crash("exit", f"exited with status {exc.code}", ())
+            crash = protocol.Crash("exit", exit_message(exc.code), tuple(user_frames(exc.__traceback__, spec.path)))
     except MemoryError as exc:
         # Free what the failed frames hold before building the report.
         traceback.clear_frames(exc.__traceback__)

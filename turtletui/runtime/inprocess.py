@@ -21,10 +21,12 @@ from turtletui.runtime.loader import (
     ControllerSpec,
     run_controller,
     seed_numpy,
+    user_frames,
 )
 from turtletui.runtime.report import (
     CrashReport,
     crash_from_exception,
+    exit_message,
     log_ended_early,
     stop_turtles,
 )
@@ -167,7 +169,7 @@ def run_in_process(
         raise
     except SystemExit as exc:
         if exc.code not in (None, 0):
-            crash = CrashReport(spec.label, sim.t, "exit", f"exited with status {exc.code}", [])
+            crash = CrashReport(spec.label, sim.t, "exit", exit_message(exc.code), user_frames(exc.__traceback__, spec.path))
         else:
             ended = True
     except BaseException as exc:  # noqa: BLE001 - controller code may raise anything

@@ -69,6 +69,15 @@ def log_ended_early(graph: Graph, label: str, t: float) -> None:
     graph.log("turtletui", INFO, f"{label} ended at t={t:.3f} s, before the run did, and its nodes stopped with it: {ENDED_EARLY_ADVICE}")
 
 
+def exit_message(code: object) -> str:
+    """What ``sys.exit(code)`` with a failing ``code`` tells: the status
+    ``python3 FILE`` exits with (1 for anything but a whole number, whose text
+    Python prints), and that text."""
+    if isinstance(code, int):
+        return f"exited with status {int(code)}"
+    return f"exited with status 1: {code}"
+
+
 def crash_from_exception(spec: ControllerSpec, t: float, exc: BaseException) -> CrashReport:
     from turtletui.runtime.loader import user_frames
 
