@@ -1006,7 +1006,10 @@ def test_sys_exit_with_an_error_status_is_reported(tmp_path, controller_host):
     assert [(c.kind, c.message) for c in result.crashes] == [("exit", "exited with status 3")]
 
 
-@pytest.mark.parametrize(("code", "message"), [("1", "exited with status 1"), ('"bye"', "exited with status 1: bye")])
+@pytest.mark.parametrize(
+    ("code", "message"),
+    [("1", "exited with status 1"), ('"bye"', "exited with status 1: bye"), ('"bye\\n  now"', "exited with status 1: bye now")],
+)
 def test_sys_exit_in_a_callback_says_where_and_the_status_python_exits_with(tmp_path, controller_host, code, message):
     # sys.exit("bye") prints bye and exits with status 1, as python3 FILE does;
     # the report named neither the status nor the line that exited

@@ -6,7 +6,7 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
 from turtletui.graph.logs import ERROR, INFO
-from turtletui.messages import ENDED_EARLY_ADVICE
+from turtletui.messages import ENDED_EARLY_ADVICE, one_line
 
 if TYPE_CHECKING:
     from turtletui.graph.core import Graph
@@ -75,7 +75,7 @@ def exit_message(code: object) -> str:
     Python prints), and that text."""
     if isinstance(code, int):
         return f"exited with status {int(code)}"
-    return f"exited with status 1: {code}"
+    return f"exited with status 1: {one_line(code)}"
 
 
 def crash_from_exception(spec: ControllerSpec, t: float, exc: BaseException) -> CrashReport:
