@@ -305,25 +305,37 @@ def test_multi_line_message_gives_a_one_line_summary(tmp_path: Path) -> None:
 
 
 @pytest.mark.parametrize(
-    "body",
+    ("body", "stuck_at", "stuck_in"),
     [
-        """
-        def misbehave(node):
-            while True:
-                pass
-        """,
-        """
-        def misbehave(node):
-            block(10)
-        """,
+        (
+            """
+            def misbehave(node):
+                while True: pass
+            """,
+            "while True: pass",
+            "misbehave",
+        ),
+        (
+            """
+            def misbehave(node):
+                block(10)
+            """,
+            "waiting.recv(1)",
+            "block",
+        ),
     ],
     ids=["endless-loop", "blocking-wait"],
 )
-def test_hung_callback_times_out(tmp_path: Path, body: str) -> None:
+@pytest.mark.parametrize("lockstep", [True, False], ids=["lockstep", "fast-path"])
+def test_hung_callback_times_out_where_it_is_stuck(
+    tmp_path: Path, body: str, stuck_at: str, stuck_in: str, lockstep: bool
+) -> None:
     path = write(tmp_path, body)
-    result = go(path, step_timeout=0.5)
+    result = go(path, step_timeout=0.5, lockstep=lockstep)
     crash = only_crash(result, "timeout", path)  # the step deadline, not the CPU limit, stopped it
     assert "did not answer within 0.5 s" in crash.message
+    # the report names the line it was stuck on, as an exception's names where it was raised
+    assert crash.summary().endswith(f'(File "{path.resolve()}", line {line_of(path, stuck_at)}, in {stuck_in})')
     assert crash.t == pytest.approx(CRASH_T)
     assert_stopped(result, CRASH_T)
     assert_gone(read_pid(tmp_path))

@@ -226,6 +226,10 @@ def main(config: dict[str, Any] | None = None) -> None:
     os.set_inheritable(fd_out, False)
     _become_subreaper()
     _apply_limits(config.get("limits", {}))
+    if config.get("fd_stack") is not None:
+        from turtletui.runtime import stuck
+
+        stuck.install(config["fd_stack"])  # where a callback is stuck, when the simulator asks
     from turtletui import compat
     from turtletui.compat import context as compat_context
     from turtletui.compat.distro import resolve_distro, type_description_names, type_namer

@@ -345,7 +345,7 @@ class FastHost(SandboxHost):
             if self._ending:
                 self._no_last_report(failure)  # its answer to the run's end never came
             else:
-                self._fail(failure.kind, failure.message)
+                self._fail(failure.kind, failure.message, failure.frames)
             raise _Stop
         return records.popleft()
 

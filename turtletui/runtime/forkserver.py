@@ -100,9 +100,9 @@ def _serve_runs(sock: socket.socket, main: Callable[[dict[str, Any]], None]) -> 
     descriptors) forks a run child."""
 
     def run_child(request: Any, fds: list[int]) -> int:
-        return _fork(request, fds, sock, main) if len(fds) in (3, 4) else 0
+        return _fork(request, fds, sock, main) if 3 <= len(fds) <= 3 + len(_EXTRA_FDS) else 0
 
-    _answer(sock, 1 << 20, 4, run_child)
+    _answer(sock, 1 << 20, 3 + len(_EXTRA_FDS), run_child)
 
 
 def _answer(sock: socket.socket, size: int, max_fds: int, fork: Callable[[Any, list[int]], int]) -> None:
@@ -240,6 +240,12 @@ def _wait_for_new_parent(middle: int) -> None:
         _real_sleep(0.0002)
 
 
+_EXTRA_FDS = ("fd_stack", "fd_journal")
+"""A run child's optional descriptors after its input, answers and output: the
+memory file for its stack dump (turtletui.runtime.stuck) and the fast path's
+journal (turtletui.runtime.fastpath)."""
+
+
 def _fork(request: dict[str, Any], fds: list[int], sock: socket.socket, main: Any) -> int:
     """Fork the run child (handed over to the caller). Its pid, or 0."""
     return _handed_over(lambda middle: _run(request, fds, sock, main, middle))
@@ -276,7 +282,7 @@ def _run(request: dict[str, Any], fds: list[int], sock: socket.socket, main: Any
         sock.close()
         os.setsid()
         _prctl(_PR_SET_DUMPABLE, 1)  # an ordinary process again, as if freshly started
-        fd_in, fd_out, output, *journal = fds
+        fd_in, fd_out, output, *extra = fds
         devnull = os.open(os.devnull, os.O_RDONLY)
         os.dup2(devnull, 0)
         os.dup2(output, 1)
@@ -287,8 +293,9 @@ def _run(request: dict[str, Any], fds: list[int], sock: socket.socket, main: Any
         if request.get("cwd"):
             os.chdir(request["cwd"])
         config = dict(request["config"], fd_in=fd_in, fd_out=fd_out)
-        if journal:
-            config["fd_journal"] = journal[0]  # the fast path's (turtletui.runtime.fastpath)
+        # the optional descriptors the config names, in _EXTRA_FDS's order, are this process's now
+        names = [name for name in _EXTRA_FDS if request["config"].get(name) is not None]
+        config.update(zip(names, extra, strict=True))  # (ValueError: not as many: the child exits)
         sys.argv = ["-c", json.dumps(config)]
         # the controller sees the caller as its parent (os.getppid(), a signal
         # to its parent), as a child started by subprocess does
@@ -387,9 +394,9 @@ class ForkServer:
 
     def spawn(self, config: dict[str, Any], cwd: str | None, fds: tuple[int, ...], timeout: float) -> ForkedChild | None:
         """Fork a run child reading ``fds[0]`` and answering on ``fds[1]`` (and
-        keeping its journal in ``fds[2]``, on the fast path); its output comes
-        from the returned child's ``stdout``. None if the server
-        did not answer with a child of this process within ``timeout``."""
+        given the descriptors after them that its config names: _EXTRA_FDS);
+        its output comes from the returned child's ``stdout``. None if the
+        server did not answer with a child of this process within ``timeout``."""
         output_r, output_w = os.pipe()
         try:
             payload = json.dumps({"config": config, "cwd": cwd}).encode()

@@ -276,7 +276,7 @@ class SandboxHost:
         try:
             self.process.send(protocol.encode_tick(tick), timeout)
         except ChildFailed as failed:
-            self._fail(failed.kind, failed.message)
+            self._fail(failed.kind, failed.message, failed.frames)
             return True
         if self.sim.realtime and not wait:
             self._awaiting = _monotonic()
@@ -337,14 +337,14 @@ class SandboxHost:
                     break
                 process.wait_for_answer(remaining)
         except ChildFailed as failed:
-            self._fail(failed.kind, failed.message)
+            self._fail(failed.kind, failed.message, failed.frames)
             return True
         except _Stop:
             return True
         assert self._awaiting is not None
         if _monotonic() - self._awaiting > self.limits.step_timeout:
             failed = process.no_answer()
-            self._fail(failed.kind, failed.message)
+            self._fail(failed.kind, failed.message, failed.frames)
             return True
         return False
 
@@ -355,7 +355,7 @@ class SandboxHost:
         try:
             payload = self.process.receive(timeout)
         except ChildFailed as failed:
-            self._fail(failed.kind, failed.message)
+            self._fail(failed.kind, failed.message, failed.frames)
             raise _Stop from None
         report = self._decode(payload)
         if not first:

@@ -23,7 +23,7 @@ from time import monotonic as _monotonic  # bound at import: an in-process run s
 from typing import TYPE_CHECKING, Any
 
 from turtletui.graph.logs import INFO, OUTPUT_SUFFIX, WARN
-from turtletui.runtime import forkserver, wire
+from turtletui.runtime import forkserver, stuck, wire
 from turtletui.runtime.budget import OutputBudget, size_text
 from turtletui.runtime.loader import ControllerSpec
 from turtletui.runtime.processes import (
@@ -49,12 +49,14 @@ _LIVENESS_SECONDS = 0.1
 
 
 class ChildFailed(Exception):
-    """The child must be stopped: ``kind`` as in CrashReport, ``message`` one line."""
+    """The child must be stopped: ``kind`` as in CrashReport, ``message`` one
+    line, ``frames`` where in the controller's file (as CrashReport's)."""
 
-    def __init__(self, kind: str, message: str) -> None:
+    def __init__(self, kind: str, message: str, frames: list[str] | None = None) -> None:
         super().__init__(message)
         self.kind = kind
         self.message = message
+        self.frames = frames or []
 
 
 Log = Callable[[str, int, str], object]
@@ -91,6 +93,9 @@ class ChildProcess:
         self.journal_fd: int | None = None
         """Fast path: the shared memory the child also writes its answers to
         (turtletui.runtime.fastpath), given to the child at its start."""
+        self.stack_fd: int | None = None
+        """The memory file the child dumps its stack into when asked where it is stuck
+        (turtletui.runtime.stuck)."""
         self._output = OutputBudget(
             self._show_output,
             max_bytes=limits.output_bytes,
@@ -111,9 +116,12 @@ class ChildProcess:
         config = {**config, "fd_in": to_child_r, "fd_out": from_child_w, "spin_seconds": self._spin}
         cwd = _start_folder(self.spec, self.limits)
         fds: tuple[int, ...] = (to_child_r, from_child_w)
-        if self.journal_fd is not None:
-            fds += (self.journal_fd,)
-            config["fd_journal"] = self.journal_fd
+        # in forkserver._EXTRA_FDS's order
+        self.stack_fd = stuck.stack_file() if self.spec.path is not None else None
+        for name, fd in (("fd_stack", self.stack_fd), ("fd_journal", self.journal_fd)):
+            if fd is not None:
+                fds += (fd,)
+                config[name] = fd
         self.proc = self._fork(config, cwd, fds)
         if self.proc is None:
             # A server that did not answer in time (then stopped with all it
@@ -197,6 +205,7 @@ class ChildProcess:
                 "timeout",
                 f"did not take the next step within {self.limits.step_timeout:g} s of wall time "
                 "(it stopped reading what turtletui sends)",
+                self.where_stuck(),
             ) from None
         except OSError:
             raise self._death() from None
@@ -233,7 +242,15 @@ class ChildProcess:
             "timeout",
             f"did not answer within {self.limits.step_timeout:g} s of wall time "
             "(an endless loop, a sleep or a blocking call in a callback?)",
+            self.where_stuck(),
         )
+
+    def where_stuck(self) -> list[str]:
+        """The line of the controller's file the child is stuck on (asked now), or []."""
+        proc, path = self.proc, self.spec.path
+        if proc is None or path is None or self.stack_fd is None or proc.returncode is not None:
+            return []
+        return stuck.where_stuck(proc.pid, self.stack_fd, path)
 
     def _wait_for_answer(self, fd: int, remaining: float | None) -> None:
         """How the reader waits: showing output as it comes, and waking up now and
@@ -368,13 +385,14 @@ class ChildProcess:
         except subprocess.TimeoutExpired:
             pass
         self.drain_output(final=True)
-        for fd in (self._to_child, None if self._answers is None else self._answers.fd):
+        for fd in (self._to_child, None if self._answers is None else self._answers.fd, self.stack_fd):
             if fd is None or fd < 0:
                 continue
             try:
                 os.close(fd)
             except OSError:
                 pass
+        self.stack_fd = None
         if proc.stdout:
             proc.stdout.close()
         self.proc = None
