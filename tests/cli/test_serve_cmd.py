@@ -5,6 +5,7 @@ no terminal), which is what every browser tab runs."""
 from __future__ import annotations
 
 import os
+import re
 import socket
 import subprocess
 import sys
@@ -73,6 +74,20 @@ def test_behind_a_proxy_the_page_connects_to_the_public_url(tmp_path: Path) -> N
     with served("a.py", "--public-url", "https://hub.example.edu/user/ann/proxy/8000", cwd=tmp_path) as url:
         html = page(url)
     assert 'data-session-websocket-url="wss://hub.example.edu/user/ann/proxy/8000/ws"' in html
+
+
+def test_the_page_asks_no_other_site_for_anything(tmp_path: Path) -> None:
+    # textual-serve's own page fetched its font from Google's font service:
+    # every student's browser told Google each time it opened the app
+    (tmp_path / "a.py").write_text("")
+    with served("a.py", cwd=tmp_path) as url:
+        html = page(url)
+        fetched = re.findall(r'(?:href|src)=["\']([^"\']+)', html) + re.findall(r'url\(["\']?([^"\')]+)', html)
+        font = next(link for link in fetched if link.endswith("RobotoMono-VariableFont_wght.ttf"))
+        with urllib.request.urlopen(font, timeout=10) as response:
+            assert response.status == 200 and len(response.read()) > 10_000
+    assert "googleapis" not in html
+    assert fetched and all(link.startswith(url) for link in fetched), fetched
 
 
 @pytest.mark.parametrize(
