@@ -19,7 +19,7 @@ from turtletui.runtime.resolve import resolve_controllers
 from turtletui.tui.app import TurtleApp
 from turtletui.tui.screens.help import HelpScreen
 from turtletui.tui.widgets.keybar import KeyBar
-from turtletui.tui.widgets.panels import ConsolePanel, graph_text, topic_columns
+from turtletui.tui.widgets.panels import FLOOD_LINES_PER_S, ConsolePanel, graph_text, topic_columns
 from turtletui.tui.widgets.textlog import TextLog
 
 SMALL = (80, 24)
@@ -60,7 +60,9 @@ async def test_a_node_that_floods_shows_its_rate(tmp_path: Path) -> None:
         rate = app.query_one("#log-rate")
         await wait_for(pilot, lambda: rate.display and "chatty:" in str(rate.render()), timeout=60)
         lines_per_s = float(str(rate.render()).split("chatty:")[1].split()[0].replace(",", ""))
-        assert lines_per_s > 100  # 500 lines per simulated second, at x1
+        # 500 lines per simulated second; at x1 simulated time never runs ahead of
+        # the wall clock, but falls behind on a busy machine: per wall second, at most 500
+        assert FLOOD_LINES_PER_S <= lines_per_s <= 600
 
 
 @pilot_test
