@@ -98,9 +98,6 @@ class Context:
         """Whether a node was told why its use_sim_time clock stands still."""
         self.told_event_callbacks = False
         """Whether turtletui said which QoS event callbacks it never calls."""
-        self.interrupted = False
-        """Shut down by rclpy's SIGINT handler (rcl's context only: its nodes and
-        on_shutdown callbacks wait for a shutdown() of the program's own)."""
 
     @property
     def host(self) -> Host:
@@ -126,11 +123,9 @@ class Context:
         Context.inits += 1
         self.ros_args = ros_args
         self._ok = True
-        self.interrupted = False
-        _initialized.add(self)
 
     def ok(self) -> bool:
-        return self._ok and not self.interrupted and self._host is not None and self._host.running
+        return self._ok and self._host is not None and self._host.running
 
     def shutdown(self) -> None:
         if not self._ok:
@@ -138,7 +133,7 @@ class Context:
         self._shutdown()
 
     def try_shutdown(self) -> None:
-        if self._ok and not self.interrupted:  # rclpy's: only a context rcl still has as ok
+        if self._ok:
             self._shutdown()
 
     def _shutdown(self) -> None:
@@ -201,20 +196,6 @@ class Context:
     def untrack_node(self, node: Any) -> None:
         if node in self._nodes:
             self._nodes.remove(node)
-
-
-_initialized: weakref.WeakSet[Context] = weakref.WeakSet()
-"""The contexts rclpy.init() started, which its SIGINT handler shuts down."""
-
-
-def interrupt_contexts() -> None:
-    """What rclpy's SIGINT handler does before Python's KeyboardInterrupt: every
-    initialised context stops being ok (rcl_shutdown), so a publish in ``except
-    KeyboardInterrupt`` fails; nodes and on_shutdown callbacks are left to the
-    program's own rclpy.shutdown()."""
-    for context in list(_initialized):
-        if context._ok:
-            context.interrupted = True
 
 
 _default_context: Context | None = Context()

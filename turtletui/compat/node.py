@@ -158,8 +158,6 @@ class Publisher(Destroyable):
         middleware that serialises, changing ``msg`` afterwards changes nothing sent."""
         if self._destroyed:
             self._require_alive()
-        if self._node.context.interrupted:  # Ctrl-C with rclpy's handler: rcl's context is gone
-            raise RCLError("Failed to publish: publisher's context is invalid, at /project/src/rcl/publisher.c:427")
         if type(msg) is bytes:  # serialized, as rclpy publishes bytes
             msg = deserialize_message(msg, self.msg_type)
         if type(msg) is not self.msg_type:

@@ -56,8 +56,8 @@ def init(
 ) -> InitContextManager:
     """Initialise the context (reads ``--ros-args`` from ``args`` or sys.argv).
 
-    ``signal_handler_options`` installs rclpy's SIGINT handler (``rclpy.signals``):
-    Ctrl-C shuts the context down, then raises KeyboardInterrupt."""
+    ``signal_handler_options`` is recorded (``rclpy.signals``), not acted on:
+    turtletui ends the run itself, Ctrl-C included."""
     return InitContextManager(args, context, domain_id, signal_handler_options)
 
 
