@@ -207,26 +207,27 @@ class Executor:
                 return
 
     def spin_until_future_complete(self, future: Future, timeout_sec: float | None = None) -> None:
+        failures = self._failures
+
+        def settled() -> bool:
+            # As rclpy: a cancelled future is not done(), but ends the wait too.
+            return future.done() or future.cancelled() or bool(failures)
+
+        timeout_ns = _timeout_ns(timeout_sec)
         host = self._context.host
         if host is not None and host.callback_depth and self._spins_again(future, timeout_sec):
             # rclpy spins the executor again, inside the callback: what other
             # callback groups have ready runs meanwhile, and a timeout ends the wait
-            failures = self._failures
             if not self._stopped():
-                host.spin_until(lambda: future.done() or future.cancelled() or bool(failures), _timeout_ns(timeout_sec))
+                host.spin_until(settled, timeout_ns)
                 client = future._client
                 if not future.done() and client is not None and host.running and not client._response_can_run():
                     client._tell_response_waits()  # ROS 2 says nothing
             self._raise_failure()
             return
         host = self._guard("spin_until_future_complete()")
-        if self._stopped():
-            self._raise_failure()
-            return
-        # As rclpy: a cancelled future is not done(), but ends the wait too.
-        timeout_ns = _timeout_ns(timeout_sec)
-        failures = self._failures
-        self._run(host, lambda: host.spin_until(lambda: future.done() or future.cancelled() or bool(failures), timeout_ns))
+        if not self._stopped():
+            self._run(host, lambda: host.spin_until(settled, timeout_ns))
         self._raise_failure()
 
     def _spins_again(self, future: Future, timeout_sec: float | None) -> bool:
