@@ -364,18 +364,22 @@ def test_sleep_in_a_callback_blocks_the_node_in_simulated_time(tmp_path: Path) -
     assert still and len({p[1:] for p in still}) == 1
 
 
-def test_endless_loop_in_main_before_spin(tmp_path: Path) -> None:
+@pytest.mark.parametrize("lockstep", [True, False], ids=["lockstep", "fast-path"])
+def test_endless_loop_in_main_before_spin(tmp_path: Path, lockstep: bool) -> None:
     path = write(tmp_path, """
         def before_spin():
-            while True:
-                pass
+            while True: pass
 
         def misbehave(node):
             pass
     """)
-    result = go(path, step_timeout=0.5, start_timeout=2.0)
+    result = go(path, step_timeout=0.5, start_timeout=2.0, lockstep=lockstep)
     crash = only_crash(result, "timeout", path)
-    assert "did not answer" in crash.message
+    # it was given the start's 2 s, not a step's 0.5 s, and was in no callback:
+    # the report names where it was stuck, and says neither
+    assert crash.message.startswith("did not answer within 2 s of wall time while starting")
+    assert "callback" not in crash.message
+    assert crash.summary().endswith(f'(File "{path.resolve()}", line {line_of(path, "while True")}, in before_spin)')
     assert result.turtles["turtle1"].distance == 0.0
     assert_gone(read_pid(tmp_path))
 

@@ -74,6 +74,9 @@ class ChildProcess:
         self._spin = spin
         self.started = False
         """Whether it has loaded: it sent its first answer."""
+        self.running = False
+        """Whether the controller has run up to its first wait (rclpy.spin,
+        a sleep): an answer came after the first."""
         self.proc: Any = None
         """A subprocess.Popen, or a forkserver.ForkedChild; None once ended."""
         self._token = ""
@@ -214,9 +217,11 @@ class ChildProcess:
         """The child's next frame, which must come within ``timeout`` seconds."""
         assert self._answers is not None
         try:
-            return self._answers.read_frame(_monotonic() + timeout)
+            frame = self._answers.read_frame(_monotonic() + timeout)
+            self.running = self.started
+            return frame
         except wire.WireTimeout:
-            raise self.no_answer() from None
+            raise self.no_answer(timeout) from None
         except wire.FrameTooLarge as err:
             raise ChildFailed("flood", str(err)) from None
         except wire.WireClosed:
@@ -237,13 +242,18 @@ class ChildProcess:
         assert self._answers is not None
         select.select([self._answers.fd], [], [], timeout)
 
-    def no_answer(self) -> ChildFailed:
-        return ChildFailed(
-            "timeout",
-            f"did not answer within {self.limits.step_timeout:g} s of wall time "
-            "(an endless loop, a sleep or a blocking call in a callback?)",
-            self.where_stuck(),
+    def no_answer(self, waited: float | None = None) -> ChildFailed:
+        """The child gave no answer within ``waited`` seconds (the step timeout
+        unless said): stopped, with the line it is stuck on."""
+        seconds = self.limits.step_timeout if waited is None else waited
+        # until it answers the first step it is still starting: its file's
+        # code, a node's __init__, main() before it spins; no callback has run
+        guess = (
+            "(an endless loop, a sleep or a blocking call in a callback?)"
+            if self.running
+            else "while starting (an endless loop or a blocking call before it spins?)"
         )
+        return ChildFailed("timeout", f"did not answer within {seconds:g} s of wall time {guess}", self.where_stuck())
 
     def where_stuck(self) -> list[str]:
         """The line of the controller's file the child is stuck on (asked now), or []."""
