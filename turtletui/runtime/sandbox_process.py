@@ -50,13 +50,21 @@ _LIVENESS_SECONDS = 0.1
 
 class ChildFailed(Exception):
     """The child must be stopped: ``kind`` as in CrashReport, ``message`` one
-    line, ``frames`` where in the controller's file (as CrashReport's)."""
+    line; ``where()`` finds the frames of the controller's file it is at (as
+    CrashReport's), asked only when the failure is reported (:attr:`frames`)."""
 
-    def __init__(self, kind: str, message: str, frames: list[str] | None = None) -> None:
+    def __init__(self, kind: str, message: str, where: Callable[[], list[str]] | None = None) -> None:
         super().__init__(message)
         self.kind = kind
         self.message = message
-        self.frames = frames or []
+        self._where = where
+        self._frames: list[str] | None = None
+
+    @property
+    def frames(self) -> list[str]:
+        if self._frames is None:
+            self._frames = self._where() if self._where is not None else []
+        return self._frames
 
 
 Log = Callable[[str, int, str], object]
@@ -208,7 +216,7 @@ class ChildProcess:
                 "timeout",
                 f"did not take the next step within {self.limits.step_timeout:g} s of wall time "
                 "(it stopped reading what turtletui sends)",
-                self.where_stuck(),
+                self.where_stuck,
             ) from None
         except OSError:
             raise self._death() from None
@@ -253,7 +261,9 @@ class ChildProcess:
             if self.running
             else "while starting (an endless loop or a blocking call before it spins?)"
         )
-        return ChildFailed("timeout", f"did not answer within {seconds:g} s of wall time {guess}", self.where_stuck())
+        # where it is stuck is asked when the failure is reported: a fast-path child that
+        # is slow, not stuck (its journal has new answers), is never signalled
+        return ChildFailed("timeout", f"did not answer within {seconds:g} s of wall time {guess}", self.where_stuck)
 
     def where_stuck(self) -> list[str]:
         """The line of the controller's file the child is stuck on (asked now), or []."""
