@@ -295,4 +295,10 @@ def user_frames(tb: Any, path: Path | None) -> list[str]:
         # "<turtletui pkg/msg/Name>": a message class's generated methods (turtletui.interfaces)
         own = [f for f in frames if not f.filename.startswith((package, "<turtletui "))]
     frames = own or frames[-1:]
-    return [f"  File \"{f.filename}\", line {f.lineno}, in {f.name}\n    {(f.line or '').strip()}" for f in frames]
+    return [frame_text(f.filename, f.lineno, f.name, f.line or "") for f in frames]
+
+
+def frame_text(filename: str, lineno: int | None, name: str, source: str) -> str:
+    """One frame as a crash report carries it: a traceback's two lines
+    (CrashReport.summary shows the first)."""
+    return f'  File "{filename}", line {lineno}, in {name}\n    {source.strip()}'

@@ -20,6 +20,8 @@ import signal
 import time
 from pathlib import Path
 
+from turtletui.runtime.loader import frame_text
+
 SIGNAL = signal.SIGUSR2
 _DUMP_LIMIT = 1 << 16
 """Bytes of a dump read at most."""
@@ -50,7 +52,7 @@ def install(fd: int) -> None:
 
 def where_stuck(pid: int, fd: int, path: Path) -> list[str]:
     """The stuck thread's innermost frame in the controller file ``path`` (as
-    turtletui.runtime.loader.user_frames formats frames), asked of the child
+    turtletui.runtime.loader.frame_text formats frames), asked of the child
     ``pid`` now; [] if it says nothing usable in time."""
     try:
         start = os.fstat(fd).st_size
@@ -88,6 +90,5 @@ def stuck_frame(dump: str, path: Path) -> list[str]:
         for filename, line, name in frames:  # most recent call first
             if filename == target and line.isdigit():
                 linecache.checkcache(target)  # the file may have changed since it was last read
-                source = linecache.getline(target, int(line)).strip()
-                return [f'  File "{target}", line {int(line)}, in {name}\n    {source}']
+                return [frame_text(target, int(line), name, linecache.getline(target, int(line)))]
     return []
