@@ -215,12 +215,12 @@ class Executor:
 
         timeout_ns = _timeout_ns(timeout_sec)
         host = self._context.host
-        if host is not None and host.callback_depth and self._spins_again(future, timeout_sec):
+        client = getattr(future, "_client", None)  # a service call's (not a task's, nor another kind of future's)
+        if host is not None and host.callback_depth and self._spins_again(client, timeout_sec):
             # rclpy spins the executor again, inside the callback: what other
             # callback groups have ready runs meanwhile, and a timeout ends the wait
             if not self._stopped():
                 host.spin_until(settled, timeout_ns)
-                client = future._client
                 if not future.done() and client is not None and host.running and not client._response_can_run():
                     client._tell_response_waits()  # ROS 2 says nothing
             self._raise_failure()
@@ -230,17 +230,16 @@ class Executor:
             self._run(host, lambda: host.spin_until(settled, timeout_ns))
         self._raise_failure()
 
-    def _spins_again(self, future: Future, timeout_sec: float | None) -> bool:
-        """Whether a wait for ``future`` inside a callback this (single-threaded)
+    def _spins_again(self, client: Any, timeout_sec: float | None) -> bool:
+        """Whether a wait for a future inside a callback this (single-threaded)
         executor runs ends in ROS 2: at its timeout, or when what completes the
-        future (a service's response) is in a callback group free to run. Else
-        rclpy would wait for ever, and turtletui says why instead (_guard)."""
+        future (the response to ``client``'s call) is in a callback group free
+        to run. Else rclpy would wait for ever, and turtletui says why instead (_guard)."""
         spun = spun_by_this_thread()
         if not spun or spun[-1] is not self or isinstance(self, MultiThreadedExecutor):
             return False
         if timeout_sec is not None and timeout_sec >= 0:
             return True
-        client = getattr(future, "_client", None)
         return client is not None and client._response_can_run()
 
     def spin_once_until_future_complete(self, future: Future, timeout_sec: float | None = None) -> None:
