@@ -497,12 +497,17 @@ class _Spinning:
 
 
 def _entity_of(node: Any, item: tuple) -> Any:
-    """The timer, subscription, service or guard condition of ``node`` a parked ``item`` calls (or None)."""
+    """The timer, subscription, service, client or guard condition of ``node`` a parked ``item`` calls (or None)."""
     run = item[2] if len(item) > 2 else item[1]
+    entity = getattr(run, "entity", None)  # a client's call
+    if entity is not None:
+        return entity
     for entity in getattr(node, "_entities", ()):
         record = getattr(entity, "_record", None)
         if record is not None and (
-            getattr(record, "ready_item", None) is item or getattr(record, "callback", None) is run
+            getattr(record, "ready_item", None) is item
+            or getattr(record, "callback", None) is run
+            or getattr(record, "handler", None) is run
         ):
             return entity
         if getattr(entity, "_run", None) is run:

@@ -329,9 +329,9 @@ class Client(Destroyable):
             future._set_executor(node.executor)
             future.set_result(response)
 
-        graph.call(
-            self.service_name, request, dispatcher(host, self.callback_group, take_response, node=node), host.owner
-        )
+        run = dispatcher(host, self.callback_group, take_response, node=node)
+        run.entity = self  # type: ignore[attr-defined]  # what Executor.wait_for_ready_callbacks names
+        graph.call(self.service_name, request, run, host.owner)
         return future
 
     def _tell_request_lost(self) -> None:

@@ -2,8 +2,9 @@
 SingleThreadedExecutor whose spin_once counts itself (spin() and rclpy.spin() call it,
 spin_until_future_complete does not), and an Executor whose spin_once takes work with
 wait_for_ready_callbacks and runs each handler itself: what it returns (a Task, the entity,
-the node; a task of create_task first), its timeout, a callback's error kept in the handler,
-spin_until_future_complete refused, and wait_for_ready_callbacks after shutdown."""
+the node; a task of create_task first; a guard condition, a service and a client's response),
+its timeout, a callback's error kept in the handler, spin_until_future_complete refused, and
+wait_for_ready_callbacks after shutdown."""
 import rclpy
 from rclpy.executors import (
     Executor,
@@ -14,6 +15,7 @@ from rclpy.executors import (
 from rclpy.node import Node
 from rclpy.task import Future
 from std_msgs.msg import String
+from std_srvs.srv import Trigger
 
 
 class CountingExecutor(SingleThreadedExecutor):
@@ -134,6 +136,24 @@ def by_hand():
     node.destroy_node()
 
 
+def served():
+    executor = HandExecutor()
+    node = Node("served")
+    node.create_service(Trigger, "ask", lambda request, response: response)
+    guard = node.create_guard_condition(lambda: None)
+    client = node.create_client(Trigger, "ask")
+    print("service ready:", client.wait_for_service(timeout_sec=2.0))
+    executor.add_node(node)
+    guard.trigger()
+    executor.spin_once(timeout_sec=1.0)
+    future = client.call_async(Trigger.Request())
+    while not future.done():
+        executor.spin_once(timeout_sec=1.0)
+    print("served:", executor.ran)
+    executor.shutdown()
+    node.destroy_node()
+
+
 def spun_by_rclpy():
     executor = CountingExecutor()
     node = Ticker("spun", shutdown_at=3)
@@ -149,6 +169,7 @@ def main():
         print("a bare Executor: NotImplementedError")
     counting()
     by_hand()
+    served()
     spun_by_rclpy()
 
 
