@@ -90,6 +90,10 @@ async def await_or_execute(callback: Callable[..., Any], *args: Any) -> Any:
     return callback(*args)
 
 
+def _seconds(timeout_sec: float | TimeoutObject | None) -> float | None:
+    return timeout_sec.timeout if isinstance(timeout_sec, TimeoutObject) else timeout_sec
+
+
 def _timeout_ns(timeout_sec: float | TimeoutObject | None) -> int | None:
     if isinstance(timeout_sec, TimeoutObject):
         timeout_sec = timeout_sec.timeout
@@ -250,21 +254,6 @@ class Executor:
         """Run one callback: a custom executor (a subclass of Executor) defines it,
         taking work with :meth:`wait_for_ready_callbacks`, as in rclpy."""
         raise NotImplementedError()
-
-    def _spin_one(self, timeout_sec: float | TimeoutObject | None) -> None:
-        """SingleThreadedExecutor's and MultiThreadedExecutor's spin_once, straight off the host."""
-        if not self._context._ok:
-            # rclpy makes a timer for the timeout, then a wait set: rcl refuses both after shutdown
-            if timeout_sec is not None and timeout_sec > 0:
-                raise RCLError(f"failed to create timer: {_CONTEXT_INVALID}, at /project/src/rcl/guard_condition.c:65")
-            if not self._is_shutdown:
-                raise RCLError(f"failed to initialize wait set: {_CONTEXT_INVALID}, at /project/src/rcl/wait.c:105")
-            return
-        host = self._guard("spin_once()")
-        if not self._stopped():
-            with self._counted():
-                self._run_one(host, _timeout_ns(timeout_sec))
-        self._raise_failure()
 
     def _run_one(self, host: Any, timeout_ns: int | None) -> None:
         """Run one callback of this executor's nodes (the first ready), waiting
@@ -522,15 +511,27 @@ class _RunsCallbacks(Executor):
     _runs_callbacks = True
 
     def spin_once(self, timeout_sec: float | None = None) -> None:
-        if self._takes_itself:
-            self._spin_one(timeout_sec)
-        else:
+        if not self._takes_itself:
             self._spin_once_impl(timeout_sec)
+            return
+        # straight off the host (every spin_once of a program that subclasses nothing)
+        if not self._context._ok:
+            # rclpy makes a timer for the timeout, then a wait set: rcl refuses both after shutdown
+            if timeout_sec is not None and timeout_sec > 0:
+                raise RCLError(f"failed to create timer: {_CONTEXT_INVALID}, at /project/src/rcl/guard_condition.c:65")
+            if not self._is_shutdown:
+                raise RCLError(f"failed to initialize wait set: {_CONTEXT_INVALID}, at /project/src/rcl/wait.c:105")
+            return
+        host = self._guard("spin_once()")
+        if not self._stopped():
+            with self._counted():
+                self._run_one(host, _timeout_ns(timeout_sec))
+        self._raise_failure()
 
     def spin_once_until_future_complete(self, future: Future, timeout_sec: float | TimeoutObject | None = None) -> None:
         if self._waits_itself:
             if not future.done():
-                self._spin_one(timeout_sec)
+                _RunsCallbacks.spin_once(self, _seconds(timeout_sec))
             return
         future.add_done_callback(lambda _future: self.wake())
         self._spin_once_until_future_complete(future, timeout_sec)
@@ -540,7 +541,7 @@ class _RunsCallbacks(Executor):
     ) -> None:
         if self._takes_itself:
             if not future.done():
-                self._spin_one(timeout_sec)
+                _RunsCallbacks.spin_once(self, _seconds(timeout_sec))
             return
         self._spin_once_impl(timeout_sec, future.done)
 
