@@ -358,3 +358,34 @@ def test_after_a_callbacks_error_left_spin_the_executor_spins_on_and_shutdown_wa
     else:
         # in-process the handler ran inside ask()'s wait, so spin() raises after it
         assert said == [(0.6, "no answer in time"), (0.6, "spin raised cannot check"), (0.65, "shut down: True")]
+
+
+@pytest.mark.parametrize("sandbox", HOSTS)
+def test_a_custom_executor_that_spins_for_ever_stops_with_the_run(tmp_path, sandbox):
+    # ROS 2 would spin until Ctrl-C; here the run's end stops it, without a crash,
+    # and its spin_once took every tick through wait_for_ready_callbacks.
+    path = write(tmp_path, "custom.py", """
+import rclpy
+from rclpy.executors import Executor
+from rclpy.node import Node
+
+
+class HandExecutor(Executor):
+    def spin_once(self, timeout_sec=None):
+        handler, entity, node = self.wait_for_ready_callbacks(timeout_sec=timeout_sec)
+        node.get_logger().info(f"{type(entity).__name__} of {node.get_name()}")
+        handler()
+
+
+def main():
+    rclpy.init()
+    node = Node("ticker")
+    node.create_timer(0.5, lambda: None)
+    executor = HandExecutor()
+    executor.add_node(node)
+    executor.spin()
+""")
+    result = run([path], duration=2.0, sandbox=sandbox)
+    assert result.ok, result.crashes
+    assert result.sim_time == 2.0
+    assert [r.msg for r in result.logs if r.node == "ticker"] == ["Timer of ticker"] * 4

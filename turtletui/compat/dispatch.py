@@ -180,7 +180,8 @@ def dispatcher(
                     record.queued = True  # taken again (Timer.take) when released
                     parking.park(node, record.ready_item)
                 else:
-                    parking.park(node, (owner, (lambda: run(*args)) if args else run))
+                    # with ``run`` beside the call, for Executor.wait_for_ready_callbacks to name its entity
+                    parking.park(node, (owner, lambda: run(*args), run) if args else (owner, run))
                 return None
         if exclusive and group._active_entity is None:
             group._active_entity = run
@@ -358,6 +359,7 @@ def start_task(
         task._add_done_hook(release)
     if node is not None or executor is not None:
         step = _bound(step, owner, node, executor)
+        step.task = task  # type: ignore[attr-defined]  # what Executor.wait_for_ready_callbacks hands out
     task._resume = lambda: ready.append((owner, step))
     if now:
         step()

@@ -16,6 +16,13 @@ its next dispatch, so that callback runs too (and if none ever becomes ready,
 it never raises); turtletui raises it when the thread that spins next has its
 turn (once its own callback, if it runs one, returns), without waiting for
 another callback to become ready.
+
+A program may subclass them, as rclpy's docs tell a custom executor to: its
+own ``spin_once`` (spin() and rclpy.spin() call it), taking work with
+``wait_for_ready_callbacks`` and running each handler itself or in a thread
+pool (ros2/examples' PriorityExecutor). Only then do spins go through those
+methods one callback at a time; an executor that overrides none of them spins
+as before, without the per-callback calls.
 """
 
 from __future__ import annotations
@@ -23,7 +30,7 @@ from __future__ import annotations
 import inspect
 import threading
 from collections.abc import Callable
-from typing import Any
+from typing import Any, ClassVar
 
 from turtletui.compat.callback_groups import MutuallyExclusiveCallbackGroup, ReentrantCallbackGroup
 from turtletui.compat.context import Context, get_default_context
@@ -56,6 +63,26 @@ class TimeoutException(Exception):
     pass
 
 
+class ConditionReachedException(Exception):
+    """Raised by ``wait_for_ready_callbacks`` when its condition holds (rclpy's)."""
+
+
+class TimeoutObject:
+    """A timeout that ``spin_until_future_complete`` shortens as it goes, as rclpy's:
+    what a subclass's ``_spin_once_until_future_complete`` is given."""
+
+    def __init__(self, timeout: float) -> None:
+        self._timeout = timeout
+
+    @property
+    def timeout(self) -> float:
+        return self._timeout
+
+    @timeout.setter
+    def timeout(self, timeout: float) -> None:
+        self._timeout = timeout
+
+
 async def await_or_execute(callback: Callable[..., Any], *args: Any) -> Any:
     """Await ``callback(*args)`` if it is an ``async def`` function, else call it (as rclpy's)."""
     if inspect.iscoroutinefunction(callback):
@@ -63,14 +90,48 @@ async def await_or_execute(callback: Callable[..., Any], *args: Any) -> Any:
     return callback(*args)
 
 
-def _timeout_ns(timeout_sec: float | None) -> int | None:
+def _seconds(timeout_sec: float | TimeoutObject | None) -> float | None:
+    return timeout_sec.timeout if isinstance(timeout_sec, TimeoutObject) else timeout_sec
+
+
+def _timeout_ns(timeout_sec: float | TimeoutObject | None) -> int | None:
+    if isinstance(timeout_sec, TimeoutObject):
+        timeout_sec = timeout_sec.timeout
     if timeout_sec is None or timeout_sec < 0:
         return None
     return int(min(timeout_sec, 1e9) * _NS)
 
 
+_TAKE_POINTS = ("_spin_once_impl", "wait_for_ready_callbacks", "_wait_for_ready_callbacks")
+"""How rclpy's executors take a callback: a subclass that overrides one of them has
+turtletui's executors take callbacks through them (see Executor.__init_subclass__)."""
+
+
+def _ours(cls: type, names: tuple[str, ...]) -> bool:
+    """Whether every one of ``names`` on ``cls`` is this module's (not a subclass's own)."""
+    return all(getattr(getattr(cls, name, None), "__module__", None) == __name__ for name in names)
+
+
 class Executor:
     """Runs the callbacks of the nodes added to it."""
+
+    _runs_callbacks: ClassVar[bool] = False
+    """Whether the class runs callbacks itself (SingleThreadedExecutor, MultiThreadedExecutor):
+    a subclass of Executor must define spin_once, as in rclpy."""
+    _takes_itself: ClassVar[bool] = False
+    """Whether spin_once may run a callback straight off the host (no subclass
+    overrides how a callback is taken: _TAKE_POINTS)."""
+    _spins_itself: ClassVar[bool] = False
+    """Whether spin() may run callbacks straight off the host (as _takes_itself, and spin_once is ours)."""
+    _waits_itself: ClassVar[bool] = False
+    """Whether spin_until_future_complete may (as _takes_itself, and
+    _spin_once_until_future_complete is ours)."""
+
+    def __init_subclass__(cls, **kwargs: Any) -> None:
+        super().__init_subclass__(**kwargs)
+        cls._takes_itself = cls._runs_callbacks and _ours(cls, _TAKE_POINTS)
+        cls._spins_itself = cls._takes_itself and _ours(cls, ("spin_once",))
+        cls._waits_itself = cls._takes_itself and _ours(cls, ("_spin_once_until_future_complete",))
 
     def __init__(self, *, context: Context | None = None) -> None:
         self._context = context or get_default_context()
@@ -84,6 +145,10 @@ class Executor:
         self._failures: list[Exception] = []
         """Errors of callbacks run beside the thread that spins, for spin() to
         raise there, oldest first (MultiThreadedExecutor)."""
+        # wait_for_ready_callbacks' generator, reused while its arguments stay the same (rclpy's)
+        self._cb_iter: Any = None
+        self._last_args: tuple | None = None
+        self._last_kwargs: dict | None = None
 
     @property
     def context(self) -> Context:
@@ -124,6 +189,7 @@ class Executor:
         for node in self._nodes:
             node._spinners -= self._spinning
         self._nodes.clear()
+        self._cb_iter = self._last_args = self._last_kwargs = None
         return True
 
     def __enter__(self) -> Executor:
@@ -174,26 +240,22 @@ class Executor:
             raise self._failures.pop(0)
 
     def spin(self) -> None:
+        if not self._spins_itself:
+            # rclpy's: the executor's own spin_once (a subclass's), until shutdown
+            while self._context.ok() and not self._is_shutdown:
+                self.spin_once()
+            return
         host = self._guard("spin()")
         if not self._stopped():
             self._run(host, lambda: host.spin(self._stopped))
         self._raise_failure()
 
     def spin_once(self, timeout_sec: float | None = None) -> None:
-        if not self._context._ok:
-            # rclpy makes a timer for the timeout, then a wait set: rcl refuses both after shutdown
-            if timeout_sec is not None and timeout_sec > 0:
-                raise RCLError(f"failed to create timer: {_CONTEXT_INVALID}, at /project/src/rcl/guard_condition.c:65")
-            if not self._is_shutdown:
-                raise RCLError(f"failed to initialize wait set: {_CONTEXT_INVALID}, at /project/src/rcl/wait.c:105")
-            return
-        host = self._guard("spin_once()")
-        if not self._stopped():
-            with self._counted():
-                self._spin_once(host, _timeout_ns(timeout_sec))
-        self._raise_failure()
+        """Run one callback: a custom executor (a subclass of Executor) defines it,
+        taking work with :meth:`wait_for_ready_callbacks`, as in rclpy."""
+        raise NotImplementedError()
 
-    def _spin_once(self, host: Any, timeout_ns: int | None) -> None:
+    def _run_one(self, host: Any, timeout_ns: int | None) -> None:
         """Run one callback of this executor's nodes (the first ready), waiting
         up to ``timeout_ns``. Another node's callback the host took meanwhile
         waits parked, and the wait goes on (rclpy's wait set never wakes for it)."""
@@ -207,6 +269,9 @@ class Executor:
                 return
 
     def spin_until_future_complete(self, future: Future, timeout_sec: float | None = None) -> None:
+        if not self._waits_itself:
+            self._spin_steps_until(future, timeout_sec)
+            return
         failures = self._failures
 
         def settled() -> bool:
@@ -242,8 +307,150 @@ class Executor:
             return True
         return client is not None and client._response_can_run()
 
-    def spin_once_until_future_complete(self, future: Future, timeout_sec: float | None = None) -> None:
-        self.spin_once(timeout_sec)
+    def _spin_steps_until(self, future: Future, timeout_sec: float | None) -> None:
+        """rclpy's spin_until_future_complete: ``_spin_once_until_future_complete``
+        (a subclass's, or one that takes work through a subclass's methods) until
+        the future is done, the executor or context shuts down, or the timeout
+        passes (on the run's time, which rclpy reads from time.monotonic)."""
+        future.add_done_callback(lambda _future: self.wake())
+        context = self._context
+
+        def going() -> bool:
+            return context.ok() and not future.done() and not future.cancelled() and not self._is_shutdown
+
+        if timeout_sec is None or timeout_sec < 0:
+            while going():
+                self._spin_once_until_future_complete(future, timeout_sec)
+            return
+        graph = context.host.graph
+        end = graph.now_ns + int(timeout_sec * _NS)
+        left = TimeoutObject(timeout_sec)
+        while going():
+            self._spin_once_until_future_complete(future, left)
+            now = graph.now_ns
+            if now >= end:
+                return
+            left.timeout = (end - now) / _NS
+
+    def spin_once_until_future_complete(self, future: Future, timeout_sec: float | TimeoutObject | None = None) -> None:
+        """Run one callback, unless ``future`` is done: a custom executor defines it."""
+        raise NotImplementedError()
+
+    def _spin_once_until_future_complete(
+        self, future: Future, timeout_sec: float | TimeoutObject | None = None
+    ) -> None:
+        raise NotImplementedError()
+
+    def wait_for_ready_callbacks(self, *args: Any, **kwargs: Any) -> tuple[Task, Any, Any]:
+        """The next callback ready to run, as ``(handler, entity, node)``: calling
+        ``handler`` (a Task) runs it and keeps its error. ``entity`` is the timer,
+        subscription, service or guard condition (None for a task of
+        create_task, and for a client's response), ``node`` its node. Arguments
+        go to ``_wait_for_ready_callbacks``: ``timeout_sec`` (TimeoutException
+        when it passes), ``nodes``, ``condition``. As rclpy's."""
+        while True:
+            if self._cb_iter is None or self._last_args != args or self._last_kwargs != kwargs:
+                self._last_args = args
+                self._last_kwargs = kwargs
+                self._cb_iter = self._wait_for_ready_callbacks(*args, **kwargs)
+            try:
+                return next(self._cb_iter)
+            except StopIteration:
+                self._cb_iter = None
+
+    def _wait_for_ready_callbacks(
+        self,
+        timeout_sec: float | TimeoutObject | None = None,
+        nodes: list[Any] | None = None,
+        condition: Callable[[], bool] = lambda: False,
+    ) -> Any:
+        """Yield the callbacks of the executor's nodes (or of ``nodes``) and its
+        tasks that are ready, waiting up to ``timeout_sec`` for one.
+
+        The host runs what becomes ready; a callback of these nodes, with none
+        of them spun (this thread counts as spinning no executor meanwhile),
+        waits parked (turtletui.compat.dispatch.Parking) and is taken from there.
+        Raises ShutdownException (the executor shut down), ExternalShutdownException
+        (the context did), TimeoutException, or ConditionReachedException."""
+        timeout_ns = _timeout_ns(timeout_sec)
+        host = self._guard("wait_for_ready_callbacks()")
+        graph = host.graph
+        context = self._context
+        deadline = None if timeout_ns is None else graph.now_ns + timeout_ns
+        yielded = False
+        while not yielded and not self._is_shutdown and not condition():
+            chosen = self.get_nodes() if nodes is None else nodes
+            work = self._parked_work(chosen)
+            if not work:
+                self._wait_for_work(host, deadline)
+                if self._is_shutdown:
+                    raise ShutdownException()
+                if not context._ok:
+                    raise ExternalShutdownException()
+                work = self._parked_work(chosen)
+            for key, item in work:
+                if self._unpark(key, item):
+                    yielded = True
+                    yield self._handler(key, item)
+            if not yielded and deadline is not None and graph.now_ns >= deadline and host.running:
+                raise TimeoutException()
+        if self._is_shutdown:
+            raise ShutdownException()
+        if condition():
+            raise ConditionReachedException()
+
+    def _parked_work(self, nodes: list[Any]) -> list[tuple[Any, tuple]]:
+        """The parked callbacks of ``nodes`` and this executor's tasks, oldest first."""
+        return [(key, item) for key, item in self._context.parking.items if key is self or key in nodes]
+
+    def _unpark(self, key: Any, item: tuple) -> bool:
+        """Take ``item`` out of the parked callbacks; False if something else took it meanwhile."""
+        items = self._context.parking.items
+        for index, entry in enumerate(items):
+            if entry[0] is key and entry[1] is item:
+                del items[index]
+                return True
+        return False
+
+    def _wait_for_work(self, host: Any, deadline: int | None) -> None:
+        """Let the host run what becomes ready, up to ``deadline``, until one callback of
+        this host ran: this thread counts as inside a spin of no node, so a callback
+        of this executor's nodes waits parked."""
+        spun = spun_by_this_thread()
+        spun.append(self)
+        try:
+            host.spin_once(None if deadline is None else max(deadline - host.graph.now_ns, 0))
+        finally:
+            spun.pop()
+
+    def _handler(self, key: Any, item: tuple) -> tuple[Task, Any, Any]:
+        """``(handler, entity, node)`` for a parked ``item``: a task of this
+        executor's is its own handler, as in rclpy."""
+        call = item[1]
+        task = getattr(call, "task", None)
+        if key is self and task is not None:
+            handler, entity, node = task, None, None
+        else:
+
+            def run() -> None:
+                # a callback runs here as in a thread that spins nothing: not parked again
+                spun = spun_by_this_thread()
+                if not spun:
+                    call()
+                    return
+                saved = spun[:]
+                spun.clear()
+                try:
+                    call()
+                finally:
+                    spun[:] = saved
+
+            handler, node = Task(run, executor=self), key
+            entity = _entity_of(key, item) if key is not self else None
+            if key is self:
+                node = None
+        handler._raises = False
+        return handler, entity, node
 
     def _run(self, host: Any, spin: Callable[[], Any]) -> None:
         """Run ``spin`` (which runs callbacks on the calling thread) as this executor."""
@@ -278,11 +485,86 @@ class _Spinning:
         spun_by_this_thread().pop()
 
 
-class SingleThreadedExecutor(Executor):
+def _entity_of(node: Any, item: tuple) -> Any:
+    """The timer, subscription, service, client or guard condition of ``node`` a parked ``item`` calls (or None)."""
+    run = item[2] if len(item) > 2 else item[1]
+    entity = getattr(run, "entity", None)  # a client's call
+    if entity is not None:
+        return entity
+    for entity in getattr(node, "_entities", ()):
+        record = getattr(entity, "_record", None)
+        if record is not None and (
+            getattr(record, "ready_item", None) is item
+            or getattr(record, "callback", None) is run
+            or getattr(record, "handler", None) is run
+        ):
+            return entity
+        if getattr(entity, "_run", None) is run:
+            return entity
+    return None
+
+
+class _RunsCallbacks(Executor):
+    """What SingleThreadedExecutor and MultiThreadedExecutor share: spin_once and its kin,
+    straight off the host unless a subclass changes how a callback is taken."""
+
+    _runs_callbacks = True
+
+    def spin_once(self, timeout_sec: float | None = None) -> None:
+        if not self._takes_itself:
+            self._spin_once_impl(timeout_sec)
+            return
+        # straight off the host (every spin_once of a program that subclasses nothing)
+        if not self._context._ok:
+            # rclpy makes a timer for the timeout, then a wait set: rcl refuses both after shutdown
+            if timeout_sec is not None and timeout_sec > 0:
+                raise RCLError(f"failed to create timer: {_CONTEXT_INVALID}, at /project/src/rcl/guard_condition.c:65")
+            if not self._is_shutdown:
+                raise RCLError(f"failed to initialize wait set: {_CONTEXT_INVALID}, at /project/src/rcl/wait.c:105")
+            return
+        host = self._guard("spin_once()")
+        if not self._stopped():
+            with self._counted():
+                self._run_one(host, _timeout_ns(timeout_sec))
+        self._raise_failure()
+
+    def spin_once_until_future_complete(self, future: Future, timeout_sec: float | TimeoutObject | None = None) -> None:
+        if self._waits_itself:
+            if not future.done():
+                _RunsCallbacks.spin_once(self, _seconds(timeout_sec))
+            return
+        future.add_done_callback(lambda _future: self.wake())
+        self._spin_once_until_future_complete(future, timeout_sec)
+
+    def _spin_once_until_future_complete(
+        self, future: Future, timeout_sec: float | TimeoutObject | None = None
+    ) -> None:
+        if self._takes_itself:
+            if not future.done():
+                _RunsCallbacks.spin_once(self, _seconds(timeout_sec))
+            return
+        self._spin_once_impl(timeout_sec, future.done)
+
+    def _spin_once_impl(
+        self, timeout_sec: float | TimeoutObject | None = None, wait_condition: Callable[[], bool] = lambda: False
+    ) -> None:
+        """rclpy's: one callback from wait_for_ready_callbacks, run here."""
+        try:
+            handler, _entity, _node = self.wait_for_ready_callbacks(timeout_sec, None, wait_condition)
+        except (ShutdownException, TimeoutException, ConditionReachedException):
+            pass
+        else:
+            handler()
+            exception = handler.exception()
+            if exception is not None:
+                raise exception
+
+
+class SingleThreadedExecutor(_RunsCallbacks):
     """Runs one callback at a time."""
 
 
-class MultiThreadedExecutor(Executor):
+class MultiThreadedExecutor(_RunsCallbacks):
     """Runs callbacks of different callback groups (or of a Reentrant one) at
     the same time, in ``num_threads`` threads taking turns (sandboxed)."""
 
@@ -295,6 +577,39 @@ class MultiThreadedExecutor(Executor):
         self._num_threads = num_threads or DEFAULT_THREADS
         self._left_running: list[threading.Thread] = []
         """Threads still running a callback when an error left spin()."""
+        self._pool: Any = None
+        self._futures: list[Any] = []
+        """rclpy's: the handlers _spin_once_impl gave the pool, until they are done."""
+
+    @property
+    def _executor(self) -> Any:
+        """rclpy's thread pool, which a subclass's spin_once may submit handlers to;
+        made when first asked for (turtletui's own spins use threads of their own)."""
+        if self._pool is None:
+            from concurrent.futures import ThreadPoolExecutor
+
+            self._pool = ThreadPoolExecutor(self._num_threads)
+        return self._pool
+
+    @_executor.setter
+    def _executor(self, pool: Any) -> None:
+        self._pool = pool
+
+    def _spin_once_impl(
+        self, timeout_sec: float | TimeoutObject | None = None, wait_condition: Callable[[], bool] = lambda: False
+    ) -> None:
+        """rclpy's: one callback from wait_for_ready_callbacks, given to the pool."""
+        try:
+            handler, _entity, _node = self.wait_for_ready_callbacks(timeout_sec, None, wait_condition)
+        except (ExternalShutdownException, ShutdownException, TimeoutException, ConditionReachedException):
+            pass
+        else:
+            self._executor.submit(handler)
+            self._futures.append(handler)
+            for future in self._futures[:]:
+                if future.done():
+                    self._futures.remove(future)
+                    future.result()  # raise any exceptions
 
     def _run(self, host: Any, spin: Callable[[], Any]) -> None:
         """Run ``spin`` on the calling thread with ``num_threads - 1`` more
@@ -357,6 +672,8 @@ class MultiThreadedExecutor(Executor):
         for the callbacks still running in this executor's threads, as rclpy
         waits for its pool (they run on after a callback's error left spin())."""
         done = super().shutdown(timeout_sec)
+        if self._pool is not None:
+            self._pool.shutdown(wait=wait_for_threads)
         me = threading.current_thread()
         left, self._left_running = self._left_running, []
         for worker in left:
@@ -442,5 +759,15 @@ def get_global_executor() -> Executor:
     return _global_executor
 
 # as rclpy's classes print: <rclpy.node.Node object at ...> (turtletui.compat.identity)
-as_rclpy("rclpy.executors", Executor, SingleThreadedExecutor, MultiThreadedExecutor, ExternalShutdownException, ShutdownException, TimeoutException)
+as_rclpy(
+    "rclpy.executors",
+    Executor,
+    SingleThreadedExecutor,
+    MultiThreadedExecutor,
+    ExternalShutdownException,
+    ShutdownException,
+    TimeoutException,
+    ConditionReachedException,
+    TimeoutObject,
+)
 as_rclpy("rclpy.experimental.events_executor", EventsExecutor)

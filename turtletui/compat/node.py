@@ -329,9 +329,9 @@ class Client(Destroyable):
             future._set_executor(node.executor)
             future.set_result(response)
 
-        graph.call(
-            self.service_name, request, dispatcher(host, self.callback_group, take_response, node=node), host.owner
-        )
+        run = dispatcher(host, self.callback_group, take_response, node=node)
+        run.entity = self  # type: ignore[attr-defined]  # what Executor.wait_for_ready_callbacks names
+        graph.call(self.service_name, request, run, host.owner)
         return future
 
     def _tell_request_lost(self) -> None:
@@ -844,8 +844,7 @@ class Node(Destroyable):
         period_ns = int(float(timer_period_sec) * _NS)
         if period_ns < 0:
             raise RCLError("failed to create timer: timer period must be non-negative")
-        if not callback:
-            callback = _no_call  # rclpy's executor skips a timer whose callback is None
+        given = callback
         if clock is not None and not isinstance(clock, Clock):
             raise TypeError(f"create_timer() needs an rclpy.clock.Clock as clock, got {clock!r}")
         if period_ns >= LONG_TIMER_SECONDS * _NS and not self._told_long_timer:
@@ -857,27 +856,33 @@ class Node(Destroyable):
                 f"{self.get_fully_qualified_name()}: a timer with a period of {period} s first fires {period} s "
                 f"after it is made. {LONG_TIMER_ADVICE}",
             )
-        host = self._context.host
         group = self._group(callback_group)
         made: list[Timer] = []
-        info_parameter = timer_info_parameter(callback) if callable(callback) else None
-        if info_parameter is not None:
-            callback = with_timer_info(callback, info_parameter, made)
         record_of: list[Any] = []
         record = self._graph.add_timer(
             self._record,
             scheduled_period(period_ns),  # a period of 0 is ready at every spin in rcl
-            # a callback that is not callable fails when called, as in rclpy
-            dispatcher(host, group, callback, node=self, timer=record_of),
+            self._timer_run(given, group, made, record_of),
             # rclpy lets a destroyed node make a timer; no executor calls it
             autostart=autostart and not self._destroyed,
         )
         record_of.append(record)
         timer = Timer(self, record, self._clock if clock is None else clock, period_ns)
+        timer._callback = given
         made.append(timer)
         timer.callback_group = group
         self._entities.append(timer)
         return timer
+
+    def _timer_run(self, callback: Any, group: Any, timer: list[Timer], record: list[Any]) -> Callable:
+        """What the graph calls for a timer (``timer[0]``, ``record[0]`` once made) whose callback is ``callback``."""
+        if not callback:
+            callback = _no_call  # rclpy's executor skips a timer whose callback is None
+        info_parameter = timer_info_parameter(callback) if callable(callback) else None
+        if info_parameter is not None:
+            callback = with_timer_info(callback, info_parameter, timer)
+        # a callback that is not callable fails when called, as in rclpy
+        return dispatcher(self._context.host, group, callback, node=self, timer=record)
 
     def create_guard_condition(
         self, callback: Callable[[], Any] | None, callback_group: CallbackGroup | None = None

@@ -136,7 +136,12 @@ def spin(node: Node, executor: Executor | None = None) -> None:
     executor = get_global_executor() if executor is None else executor
     try:
         executor.add_node(node)
-        executor.spin()
+        if getattr(executor, "_spins_itself", True):
+            executor.spin()
+        else:
+            # rclpy's loop, which a custom executor's spin_once drives (its spin() is not called)
+            while executor.context.ok():
+                executor.spin_once()
     finally:
         executor.remove_node(node)
 

@@ -128,6 +128,11 @@ class Task(Future):
     group, once that Future is done. The Task is done when the coroutine
     returns (or raises)."""
 
+    _raises = True
+    """Whether calling the task raises its handler's error after keeping it: turtletui's
+    executors run a task to raise it from spin; one a program runs itself (a handler of
+    Executor.wait_for_ready_callbacks) only keeps it, as rclpy's Task does."""
+
     def __init__(self, handler: Any, args: tuple = (), kwargs: dict | None = None, *, executor: Any = None) -> None:
         super().__init__(executor=executor)
         self._handler = handler
@@ -150,7 +155,9 @@ class Task(Future):
                 result = handler(*self._args, **self._kwargs)
             except Exception as exc:
                 self.set_exception(exc)
-                raise
+                if self._raises:
+                    raise
+                return
             if not inspect.iscoroutine(result):
                 self.set_result(result)
                 return
@@ -163,7 +170,9 @@ class Task(Future):
             return
         except Exception as exc:
             self.set_exception(exc)
-            raise
+            if self._raises:
+                raise
+            return
         finally:
             awaited, _awaiting.future = _awaiting.future, None
         if isinstance(awaited, Future) and self._resume is not None:

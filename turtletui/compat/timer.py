@@ -110,6 +110,7 @@ class Timer(Destroyable):
         self._record = record
         self._graph = node._graph
         self._clock = clock
+        self._callback: Any = None
         self.callback_group = None
         # rcl's state, in the clock's nanoseconds, while /clock drives the timer
         self._on_clock = False
@@ -128,6 +129,18 @@ class Timer(Destroyable):
     @property
     def clock(self) -> Clock:
         return self._clock
+
+    @property
+    def callback(self) -> Any:
+        """The function the timer calls, as given to create_timer."""
+        return self._callback
+
+    @callback.setter
+    def callback(self, callback: Any) -> None:
+        """Call ``callback`` from the next call on, as rclpy's executor reads
+        ``timer.callback`` at each (a TimerInfo parameter, too)."""
+        self._callback = callback
+        self._record.callback = self._node._timer_run(callback, self.callback_group, [self], [self._record])
 
     @property
     def timer_period_ns(self) -> int:
