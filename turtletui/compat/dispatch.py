@@ -51,6 +51,13 @@ def _spun_here() -> Any:
     return stack[-1] if stack else None
 
 
+spinning_executors = 0
+"""Executors spinning now, on any thread (turtletui.compat.executors counts
+them). While at most one does, a node with a spinner is that executor's, and
+a thread in a spin spins it: its callbacks run wherever taken, and the hot
+paths skip the check of which executor the calling thread spins."""
+
+
 class _Parks(threading.local):
     n = 0
 
@@ -220,7 +227,7 @@ def dispatcher(
                 # A destroyed node's callback (one that waited parked, or was queued) never
                 # runs: rclpy's executor no longer has the node's entities.
                 return None
-            if _not_here(node):
+            if (not node._spinners or spinning_executors > 1) and _not_here(node):
                 if timer:
                     record = timer[0]
                     record.queued = True  # taken again (Timer.take) when released
@@ -303,7 +310,7 @@ def dispatcher(
                 if not queue:
                     sub.pending = False
                     return
-                if parking is not None and _not_here(node):
+                if parking is not None and (not node._spinners or spinning_executors > 1) and _not_here(node):
                     parking.park(node, sub.ready_item)  # the messages wait in the queue
                     return
                 msg, origin = take()
@@ -315,7 +322,7 @@ def dispatcher(
             if not queue:
                 sub.pending = False
                 return
-            if parking is not None and _not_here(node):
+            if parking is not None and (not node._spinners or spinning_executors > 1) and _not_here(node):
                 parking.park(node, sub.ready_item)  # the messages wait in the queue
                 return
             msg = popleft()  # take()'s steps written out: a frame less per message

@@ -25,6 +25,7 @@ import threading
 from collections.abc import Callable
 from typing import Any
 
+from turtletui.compat import dispatch
 from turtletui.compat.callback_groups import MutuallyExclusiveCallbackGroup, ReentrantCallbackGroup
 from turtletui.compat.context import Context, get_default_context
 from turtletui.compat.dispatch import running_groups, spun_by_this_thread, start_task
@@ -312,6 +313,8 @@ class _Spinning:
 
     def __enter__(self) -> None:
         executor = self._executor
+        if not executor._spinning:
+            dispatch.spinning_executors += 1
         executor._spinning += 1
         for node in executor._nodes:
             node._spinners += 1
@@ -321,6 +324,8 @@ class _Spinning:
     def __exit__(self, *exc: object) -> None:
         executor = self._executor
         executor._spinning -= 1
+        if not executor._spinning:
+            dispatch.spinning_executors -= 1
         for node in executor._nodes:
             node._spinners -= 1
         spun_by_this_thread().pop()
