@@ -2,23 +2,23 @@
 with node ``server_b`` (its service, its timer), the main thread's rclpy.spin_once and
 rclpy.spin_until_future_complete on node ``caller_a`` run all of caller_a's callbacks (its
 timer, its guard condition, its client's response and the future's done callbacks) on the
-main thread, never on the other one. Sandboxed only: threads need turtletui's sandbox."""
+main thread, never on the other one, whether the other thread spins a SingleThreadedExecutor or a
+MultiThreadedExecutor. Sandboxed only: threads need turtletui's sandbox."""
 import threading
 
 import rclpy
-from rclpy.executors import SingleThreadedExecutor
+from rclpy.executors import MultiThreadedExecutor, SingleThreadedExecutor
 from rclpy.node import Node
 from std_srvs.srv import Trigger
 
 
 def here():
-    return threading.current_thread().name
+    return "main" if threading.current_thread() is threading.main_thread() else "the other thread"
 
 
-def main():
-    rclpy.init()
-    caller = Node("caller_a")
-    server = Node("server_b")
+def compare(executor, round_):
+    caller = Node(f"caller_a{round_}")
+    server = Node(f"server_b{round_}")
     threads = {"service": set(), "server timer": set(), "caller timer": set(), "guard": set(), "done": set()}
 
     def handle(request, response):
@@ -26,7 +26,7 @@ def main():
         response.success = True
         return response
 
-    server.create_service(Trigger, "ping", handle)
+    server.create_service(Trigger, f"ping{round_}", handle)
     server_ticks = []
 
     def server_tick():
@@ -34,12 +34,11 @@ def main():
         threads["server timer"].add(here())
 
     server.create_timer(0.05, server_tick)
-    executor = SingleThreadedExecutor()
     executor.add_node(server)
     spinner = threading.Thread(target=executor.spin, name="spinner", daemon=True)
     spinner.start()
 
-    client = caller.create_client(Trigger, "ping")
+    client = caller.create_client(Trigger, f"ping{round_}")
     print("service found:", client.wait_for_service(timeout_sec=10.0))
     caller_ticks = []
 
@@ -67,13 +66,19 @@ def main():
     timer.cancel()
     while len(server_ticks) < 3:
         rclpy.spin_once(caller, timeout_sec=0.1)
-    print("results:", results, "done callbacks:", done_calls)
+    print(type(executor).__name__, "results:", results, "done callbacks:", done_calls)
     for what, names in threads.items():
-        print(what, "ran on:", sorted(names))
+        print(" ", what, "ran on:", sorted(names))
     executor.shutdown()
     spinner.join(timeout=5.0)
     caller.destroy_node()
     server.destroy_node()
+
+
+def main():
+    rclpy.init()
+    compare(SingleThreadedExecutor(), 1)
+    compare(MultiThreadedExecutor(num_threads=2), 2)
     rclpy.shutdown()
 
 
