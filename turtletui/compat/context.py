@@ -34,9 +34,10 @@ class Host(Protocol):
         """Run this host's callbacks as they become ready until ``stop()``
         holds or the run ends (rclpy.spin)."""
 
-    def spin_once(self, timeout_ns: int | None) -> bool:
-        """Run callbacks of this host (advancing time as needed) until one ran
-        or ``timeout_ns`` simulated ns passed. False when the run has ended."""
+    def spin_once(self, timeout_ns: int | None, wake: Any = None) -> bool:
+        """Run callbacks of this host (advancing time as needed) until one ran,
+        ``timeout_ns`` simulated ns passed or ``wake()`` holds. False when the
+        run has ended, or (a host with threads) when none ran."""
 
     def spin_until(self, done: Any, timeout_ns: int | None) -> bool:
         """Spin until ``done()`` is true, the timeout passes or the run ends."""

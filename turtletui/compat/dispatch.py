@@ -12,8 +12,10 @@ As in rclpy, an executor runs the callbacks of the nodes added to it only. A
 node's callback that becomes ready while an executor without the node spins
 (``rclpy.spin_once(other_node)``) waits, parked, until an executor with the
 node spins; a subscription's messages wait in its queue meanwhile, up to its
-depth. (When another thread's executor spins the node right then, the thread
-that took the callback runs it: one ready queue serves the process.)
+depth. One ready queue serves the process: a thread whose executor takes a
+callback of a node that another thread's executor spins right then hands it
+over (``Executor._handed``), and that thread runs it, as each rclpy executor
+waits on its own nodes' entities only.
 """
 
 from __future__ import annotations
@@ -43,6 +45,27 @@ def spun_by_this_thread() -> list[Any]:
     return stack
 
 
+def _spun_here() -> Any:
+    """The executor the calling thread spins (innermost), or None."""
+    stack = getattr(_spinning_here, "executors", None)
+    return stack[-1] if stack else None
+
+
+spinning_executors = 0
+"""Executors spinning now, on any thread (turtletui.compat.executors counts
+them). While at most one does, a node with a spinner is that executor's, and
+a thread in a spin spins it: its callbacks run wherever taken, and the hot
+paths skip the check of which executor the calling thread spins."""
+
+
+class _Parks(threading.local):
+    n = 0
+
+
+_parks = _Parks()
+"""Callbacks the calling thread parked or handed over (Parking.count)."""
+
+
 NEVER_SPUN_GRACE_NS = 1_000_000_000
 """How long a callback of a node no executor has waits before turtletui says
 so: a program may add the node to an executor a moment later (a thread that
@@ -54,26 +77,30 @@ class Parking:
     context), oldest first, and how many were ever parked: an executor's
     ``spin_once`` that took one goes on waiting for a callback of its own."""
 
-    __slots__ = ("items", "count", "told", "waiting")
+    __slots__ = ("items", "told", "waiting")
 
     def __init__(self) -> None:
         self.items: list[tuple[Any, tuple]] = []
         """(node, ready-queue entry) pairs."""
-        self.count = 0
         self.told: set[int] = set()
         """The ids of the nodes turtletui considered saying no executor ever spun."""
         self.waiting: list[Any] = []
         """The nodes whose note waits for its grace (NEVER_SPUN_GRACE_NS) to end."""
 
+    @property
+    def count(self) -> int:
+        """How many callbacks the calling thread parked or handed over: an
+        executor's ``spin_once`` whose callback did so goes on waiting."""
+        return _parks.n
+
     def park(self, node: Any, item: tuple, *, tell: bool = True) -> None:
         """Keep ``item`` until an executor with ``node`` spins (once: a timer
-        that fires again while it waits still runs once, as in rclpy). ``node``
-        may be an executor too: a task of its own waits until it spins
-        (``tell`` False: no note of a node no executor has)."""
-        self.count += 1
-        callback = item[1]
-        if all(entry[1][1] is not callback for entry in self.items):
-            self.items.append((node, item))
+        that fires again while it waits still runs once, as in rclpy); hand it
+        to that executor if it spins now, on another thread. ``node`` may be
+        an executor too: a task of its own waits until it spins (``tell``
+        False: no note of a node no executor has)."""
+        _parks.n += 1
+        self._keep(node, item)
         if tell and node._executor is None and id(node) not in self.told:
             # ROS 2 says nothing: the node's callbacks just never run. Said
             # after a grace, and only if no executor has had the node by then.
@@ -81,9 +108,25 @@ class Parking:
             self.waiting.append(node)
             node._graph.soon(node._record, NEVER_SPUN_GRACE_NS, lambda: self._grace_over(node))
 
+    def _keep(self, key: Any, item: tuple) -> None:
+        """Keep ``item`` of ``key`` (a node, or an executor for its tasks): handed to
+        the executor that spins it now (on another thread), else parked."""
+        owner = _spinning_owner(key)
+        items = self.items if owner is None else owner._handed
+        callback = item[1]
+        if all(entry[1][1] is not callback for entry in items):
+            items.append((key, item))
+
+    def unhand(self, executor: Any) -> None:
+        """Park again what was handed to ``executor`` and is still waiting
+        when it stops spinning (or hand it on, to where its node is spun now)."""
+        handed, executor._handed = executor._handed, []
+        for key, item in handed:
+            self._keep(key, item)
+
     def _grace_over(self, node: Any) -> None:
         # not a callback of the executor spinning now: its spin_once goes on waiting
-        self.count += 1
+        _parks.n += 1
         if node in self.waiting:
             self.waiting.remove(node)
             self._tell(node)
@@ -117,11 +160,21 @@ _NEVER_SPUN = (
 )
 
 
-def _in_a_spin() -> bool:
-    """Whether the calling thread spins an executor (not a host's own wait):
-    a node's callback it takes while no executor that has the node spins
-    (``node._spinners`` is 0) must wait."""
-    return bool(getattr(_spinning_here, "executors", None))
+def _spinning_owner(key: Any) -> Any:
+    """The executor that spins now and has ``key`` (a node), or is ``key``; None if none does."""
+    spinners = getattr(key, "_spinners", None)
+    if spinners is None:  # an executor, for its own tasks
+        return key if key._spinning else None
+    return key._executor if spinners else None
+
+
+def _not_here(node: Any) -> bool:
+    """Whether the calling thread spins an executor that does not have ``node``:
+    the node's callback it took must wait for one that has (parked, or handed
+    to the one spinning now on another thread). A host's own wait, outside
+    any spin, runs it."""
+    stack = getattr(_spinning_here, "executors", None)
+    return bool(stack) and (not node._spinners or node._executor is not stack[-1])
 
 
 def in_callback() -> bool:
@@ -174,7 +227,7 @@ def dispatcher(
                 # A destroyed node's callback (one that waited parked, or was queued) never
                 # runs: rclpy's executor no longer has the node's entities.
                 return None
-            if not node._spinners and _in_a_spin():
+            if (not node._spinners or spinning_executors > 1) and _not_here(node):
                 if timer:
                     record = timer[0]
                     record.queued = True  # taken again (Timer.take) when released
@@ -258,7 +311,7 @@ def dispatcher(
                 if not queue:
                     sub.pending = False
                     return
-                if parking is not None and not node._spinners and _in_a_spin():
+                if parking is not None and (not node._spinners or spinning_executors > 1) and _not_here(node):
                     parking.park(node, sub.ready_item)  # the messages wait in the queue
                     return
                 msg, origin = take()
@@ -270,7 +323,7 @@ def dispatcher(
             if not queue:
                 sub.pending = False
                 return
-            if parking is not None and not node._spinners and _in_a_spin():
+            if parking is not None and (not node._spinners or spinning_executors > 1) and _not_here(node):
                 parking.park(node, sub.ready_item)  # the messages wait in the queue
                 return
             msg = popleft()  # take()'s steps written out: a frame less per message
@@ -371,21 +424,22 @@ def start_task(
 
 
 def _bound(step: Callable[[], None], owner: str, node: Any, executor: Any) -> Callable[[], None]:
-    """``step``, parked (turtletui.compat.dispatch.Parking) when a spin takes it while
-    neither an executor with ``node`` (if given) nor ``executor`` spins."""
+    """``step``, parked or handed over (turtletui.compat.dispatch.Parking) when the
+    executor spinning on the calling thread is not one with ``node`` (if given), or
+    is not ``executor``."""
     if node is not None:
         key, parking = node, node.context.parking
 
-        def spun() -> bool:
-            return node._spinners > 0
+        def elsewhere() -> bool:
+            return _not_here(node)
     else:
         key, parking = executor, executor.context.parking
 
-        def spun() -> bool:
-            return executor._spinning > 0
+        def elsewhere() -> bool:
+            return _spun_here() not in (None, executor)
 
     def bound() -> None:
-        if not spun() and _in_a_spin():
+        if elsewhere():
             parking.park(key, (owner, bound), tell=False)
             return
         step()

@@ -32,6 +32,7 @@ import threading
 from collections.abc import Callable
 from typing import Any, ClassVar
 
+from turtletui.compat import dispatch
 from turtletui.compat.callback_groups import MutuallyExclusiveCallbackGroup, ReentrantCallbackGroup
 from turtletui.compat.context import Context, get_default_context
 from turtletui.compat.dispatch import running_groups, spun_by_this_thread, start_task
@@ -149,6 +150,10 @@ class Executor:
         self._cb_iter: Any = None
         self._last_args: tuple | None = None
         self._last_kwargs: dict | None = None
+        self._handed: list[tuple[Any, tuple]] = []
+        """Callbacks of this executor's nodes (or its tasks) that another
+        thread's executor took while this one spins: its own thread runs them
+        (turtletui.compat.dispatch.Parking)."""
 
     @property
     def context(self) -> Context:
@@ -174,6 +179,17 @@ class Executor:
         host = self._context._host
         if host is not None:
             self._context.parking.release([*self._nodes, self], host.graph.ready)
+            self._take_handed()
+
+    def _take_handed(self) -> None:
+        """Queue, ahead of what else is ready, the callbacks another thread's executor handed over."""
+        handed = self._handed
+        if handed:
+            self._handed = []
+            self._context._host.graph.ready.extendleft([item for _, item in reversed(handed)])
+
+    def _was_handed(self) -> bool:
+        return bool(self._handed)
 
     def get_nodes(self) -> list[Any]:
         return list(self._nodes)
@@ -247,8 +263,20 @@ class Executor:
             return
         host = self._guard("spin()")
         if not self._stopped():
-            self._run(host, lambda: host.spin(self._stopped))
+            self._run(host, lambda: self._spin_host(host, self._stopped))
         self._raise_failure()
+
+    def _spin_host(self, host: Any, stop: Callable[[], bool]) -> None:
+        """``host.spin(stop)``, taking in what other threads' executors hand over meanwhile."""
+
+        def stop_or_handed() -> bool:
+            return stop() or bool(self._handed)
+
+        while True:
+            self._take_handed()
+            host.spin(stop_or_handed)
+            if not self._handed or stop():
+                return
 
     def spin_once(self, timeout_sec: float | None = None) -> None:
         """Run one callback: a custom executor (a subclass of Executor) defines it,
@@ -258,14 +286,19 @@ class Executor:
     def _run_one(self, host: Any, timeout_ns: int | None) -> None:
         """Run one callback of this executor's nodes (the first ready), waiting
         up to ``timeout_ns``. Another node's callback the host took meanwhile
-        waits parked, and the wait goes on (rclpy's wait set never wakes for it)."""
+        waits parked (or goes to the executor spinning it on another thread),
+        and the wait goes on (rclpy's wait set never wakes for it); one that
+        another thread's executor handed over runs here."""
         parking = self._context.parking
         graph = host.graph
         deadline = None if timeout_ns is None else graph.now_ns + max(timeout_ns, 0)
         while True:
+            self._take_handed()
             parked = parking.count
-            host.spin_once(None if deadline is None else max(deadline - graph.now_ns, 0))
-            if parking.count == parked or self._stopped():
+            ran = host.spin_once(None if deadline is None else max(deadline - graph.now_ns, 0), self._was_handed)
+            if self._stopped():
+                return
+            if parking.count == parked and (ran or not self._handed):
                 return
 
     def spin_until_future_complete(self, future: Future, timeout_sec: float | None = None) -> None:
@@ -285,15 +318,31 @@ class Executor:
             # rclpy spins the executor again, inside the callback: what other
             # callback groups have ready runs meanwhile, and a timeout ends the wait
             if not self._stopped():
-                host.spin_until(settled, timeout_ns)
+                self._spin_until(host, settled, timeout_ns)
                 if not future.done() and client is not None and host.running and not client._response_can_run():
                     client._tell_response_waits()  # ROS 2 says nothing
             self._raise_failure()
             return
         host = self._guard("spin_until_future_complete()")
         if not self._stopped():
-            self._run(host, lambda: host.spin_until(settled, timeout_ns))
+            self._run(host, lambda: self._spin_until(host, settled, timeout_ns))
         self._raise_failure()
+
+    def _spin_until(self, host: Any, settled: Callable[[], bool], timeout_ns: int | None) -> None:
+        """``host.spin_until(settled, timeout_ns)``, taking in what other threads' executors hand over meanwhile."""
+
+        def settled_or_handed() -> bool:
+            return settled() or bool(self._handed)
+
+        graph = host.graph
+        deadline = None if timeout_ns is None else graph.now_ns + max(timeout_ns, 0)
+        while True:
+            self._take_handed()
+            host.spin_until(settled_or_handed, None if deadline is None else max(deadline - graph.now_ns, 0))
+            if settled() or not self._handed or self._stopped():
+                return
+            if deadline is not None and graph.now_ns >= deadline:
+                return
 
     def _spins_again(self, client: Any, timeout_sec: float | None) -> bool:
         """Whether a wait for a future inside a callback this (single-threaded)
@@ -417,7 +466,7 @@ class Executor:
         this host ran: this thread counts as inside a spin of no node, so a callback
         of this executor's nodes waits parked."""
         spun = spun_by_this_thread()
-        spun.append(self)
+        spun.append(_NO_EXECUTOR)
         try:
             host.spin_once(None if deadline is None else max(deadline - host.graph.now_ns, 0))
         finally:
@@ -471,6 +520,8 @@ class _Spinning:
 
     def __enter__(self) -> None:
         executor = self._executor
+        if not executor._spinning:
+            dispatch.spinning_executors += 1
         executor._spinning += 1
         for node in executor._nodes:
             node._spinners += 1
@@ -480,9 +531,18 @@ class _Spinning:
     def __exit__(self, *exc: object) -> None:
         executor = self._executor
         executor._spinning -= 1
+        if not executor._spinning:
+            dispatch.spinning_executors -= 1
         for node in executor._nodes:
             node._spinners -= 1
         spun_by_this_thread().pop()
+        if not executor._spinning and executor._handed:
+            executor._context.parking.unhand(executor)
+
+
+_NO_EXECUTOR = object()
+"""What a thread waiting in wait_for_ready_callbacks spins: no executor, so every
+callback it takes (of a node, or a task of an executor) waits parked for it."""
 
 
 def _entity_of(node: Any, item: tuple) -> Any:
@@ -656,7 +716,7 @@ class MultiThreadedExecutor(_RunsCallbacks):
     ) -> None:
         with self._counted():
             try:
-                host.spin(stop)
+                self._spin_host(host, stop)
             except KeyboardInterrupt as interrupt:
                 # the run's end stopping a callback here (turtletui.runtime.host.RunEnded):
                 # the thread that spins gets it, as Ctrl-C goes to the main thread

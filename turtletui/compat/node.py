@@ -285,6 +285,8 @@ class Client(Destroyable):
         self._told_undiscovered = False
         self._told_response_waits = False
         self._sequence = 0
+        self._pending_requests: dict[int, Future] = {}
+        """The futures of calls sent and not yet answered, by sequence number (rclpy's)."""
         self._gid = client_gid(node.get_fully_qualified_name(), record.name, len(node._entities))
         self._introspection = Introspection(node, self.srv_type, record.name)
 
@@ -317,6 +319,10 @@ class Client(Destroyable):
         sequence, gid, introspection = self._sequence, self._gid, self._introspection
         introspection.publish(ServiceEventInfo.REQUEST_SENT, gid, sequence, request=request)
         request_sent(request, gid, sequence)
+        # As rclpy: the future leaves the pending requests in a done callback, a task
+        # of the executor that takes the response, which runs before the program's own.
+        self._pending_requests[sequence] = future
+        future.add_done_callback(self.remove_pending_request)
         if self.service_name in graph.services and not graph.service_matched(self._record):
             self._tell_request_lost()  # and never answered, as in ROS 2
             return future
@@ -325,6 +331,8 @@ class Client(Destroyable):
         def take_response(response: Any) -> None:
             request_answered(request)
             introspection.publish(ServiceEventInfo.RESPONSE_RECEIVED, gid, sequence, response=response)
+            if self._pending_requests.get(sequence) is not future:
+                return  # removed (remove_pending_request, a cancel): rclpy drops the response
             # As rclpy's executor taking a response: the future's done callbacks become its tasks.
             future._set_executor(node.executor)
             future.set_result(response)
@@ -333,6 +341,18 @@ class Client(Destroyable):
         run.entity = self  # type: ignore[attr-defined]  # what Executor.wait_for_ready_callbacks names
         graph.call(self.service_name, request, run, host.owner)
         return future
+
+    def get_pending_request(self, sequence_number: int) -> Future:
+        """The future of the call numbered ``sequence_number``; KeyError if it is not pending."""
+        return self._pending_requests[sequence_number]
+
+    def remove_pending_request(self, future: Future) -> None:
+        """Forget the call of ``future``: its response, if it comes, is dropped and
+        its done callbacks never run (rclpy's)."""
+        for sequence, pending in self._pending_requests.items():
+            if pending is future:
+                del self._pending_requests[sequence]
+                break
 
     def _tell_request_lost(self) -> None:
         if not self._told_undiscovered:

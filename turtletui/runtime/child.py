@@ -101,14 +101,15 @@ class ChildHost(CallbackTracking):
         wire.write_frame(self.fd_out, protocol.encode_report(report))
         return protocol.decode_from_parent(self.reader.read_frame())
 
-    def spin_once(self, timeout_ns: int | None) -> bool:
+    def spin_once(self, timeout_ns: int | None, wake: Callable[[], bool] | None = None) -> bool:
         ready = self.graph.ready
         if not ready and self.running:
             if timeout_ns == 0:
                 self.scheduler.poll()
             else:
                 deadline = None if timeout_ns is None else self.graph.now_ns + max(timeout_ns, 0)
-                self.scheduler.wait(lambda: bool(ready), deadline, spinning=True)
+                woken = (lambda: bool(ready)) if wake is None else (lambda: bool(ready) or wake())
+                self.scheduler.wait(woken, deadline, spinning=True)
         if ready and self.running:
             ready.popleft()[1]()
             return True

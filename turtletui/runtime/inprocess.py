@@ -100,7 +100,9 @@ class InProcessHost(CallbackTracking):
     def _deadline(self, timeout_ns: int | None) -> int | None:
         return None if timeout_ns is None else self.graph.now_ns + max(timeout_ns, 0)
 
-    def spin_once(self, timeout_ns: int | None) -> bool:
+    def spin_once(self, timeout_ns: int | None, wake: Callable[[], bool] | None = None) -> bool:
+        """Run one callback, waiting up to ``timeout_ns`` (``wake`` is for hosts
+        with threads: here no other thread can hand a callback over)."""
         self._one_thread()
         if not self.running:
             return self.waited_after_end()

@@ -94,7 +94,9 @@ def by_hand():
     sub = node.create_subscription(String, "words", lambda msg: heard.append(msg.data), 10)
     executor.add_node(node)
     print("nodes:", [n.get_name() for n in executor.get_nodes()], executor.context is node.context)
+    node.timer.cancel()  # the timeout, not the timer, however long the start took
     executor.spin_once(timeout_sec=0.05)
+    node.timer.reset()
     task = executor.create_task(lambda: "task done")
     handler, entity, owner = executor.wait_for_ready_callbacks(timeout_sec=1.0)
     print("first ready:", handler is task, entity, owner)
