@@ -259,17 +259,33 @@ def _shows(numbers: list[tuple[float, float]], x: float, y: float) -> bool:
     return False
 
 
+_LABELLED = tuple(
+    re.compile(rf"(?<![A-Za-z0-9_]){axis}\s*[:=]\s*({_NUMBER.pattern})", re.IGNORECASE) for axis in "xy"
+)
+"""A coordinate named in the line: "x=5.54", "y: 3.2", "pose.x = 5.54"."""
+
+
+def _read_pose(text: str) -> list[tuple[float, float]]:
+    """The numbers of a log line as log_pose reads them: when the line names
+    both coordinates ("y=3.20 x=5.54"), x's number then y's, in whichever
+    order the line has them; else every number, in order (x must come first)."""
+    found = [pattern.search(text) for pattern in _LABELLED]
+    if all(found):
+        return [_logged_numbers(match.group(1))[0] for match in found if match]
+    return _logged_numbers(text)
+
+
 @check(
     "log_pose",
     "The matching log lines (default: lines with two numbers or more) carry the turtle's x and "
-    "then y as they were when the line was logged (the pose of the last `max_age` seconds, "
+    "then y (or, named x= and y=, in either order) as they were when the line was logged (the pose of the last `max_age` seconds, "
     "default 0.1), to the digits they print: share of such lines, threshold `min` (default 0.9).",
     {**_LOG, **TURTLE, "min": "number", "max_age": "number"},
 )
 def log_pose(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     poses = trace.pose_array(turtle_of(th))
     max_age = th.get("max_age", 0.1)
-    lines = [(r, _logged_numbers(r.msg)) for r in _matching_logs(trace, th)]
+    lines = [(r, _read_pose(r.msg)) for r in _matching_logs(trace, th)]
     if "pattern" not in th:
         lines = [(r, numbers) for r, numbers in lines if len(numbers) >= 2]
     if not lines:
@@ -290,7 +306,7 @@ def log_pose(trace: Trace, th: Mapping[str, Any]) -> Verdict:
         record, pose = wrong
         where = f"the turtle was at x={pose[1]:.3f}, y={pose[2]:.3f}" if pose is not None else "no pose yet"
         text += f"; at t={record.t:.3f} s the line said {record.msg[:80]!r} but {where}"
-        lag = _lag(poses, record.t, max_age, _logged_numbers(record.msg))
+        lag = _lag(poses, record.t, max_age, _read_pose(record.msg))
         if lag is not None:
             text += (
                 f" (it was there {lag:.2f} s before: the lines lag behind the poses, as when the callback "
