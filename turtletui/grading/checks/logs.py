@@ -136,6 +136,7 @@ def _counts_up(records: list[Any], th: Mapping[str, Any]) -> Verdict:
     "which must lie between `min_period` and `max_period` seconds when given. Lines of one kind "
     "are judged, as by log_counter. With `in_callback = true` they must also come from "
     "callbacks the executor ran (a timer's), not from a loop outside spin (time.sleep in main()), "
+    "each from a call of its own (not a loop inside one callback), "
     "and only the logger's lines count (a printed line cannot say where it was printed).",
     {**_LOG, "min": "number", "tolerance": "number", "min_period": "number", "max_period": "number",
      "in_callback": "boolean"},
@@ -197,6 +198,9 @@ def _log_period(trace: Trace, th: Mapping[str, Any]) -> Verdict:
             "loop that sleeps or calls spin_once between lines, not from a timer callback that rclpy.spin runs",
         )
     verdict = _one_per_period(lines, th)
+    looped = _one_call(lines) if th.get("in_callback") else None
+    if looped is not None and verdict.passed:
+        return looped
     if outside and not verdict.passed:
         when = ", ".join(f"t={record.t:.3f} s" for record in outside[:3])
         return Verdict(
@@ -205,6 +209,25 @@ def _log_period(trace: Trace, th: Mapping[str, Any]) -> Verdict:
             "__init__ or main(), not by a timer's callback",
         )
     return verdict
+
+
+def _one_call(records: list[Any]) -> Verdict | None:
+    """A failing verdict when one call of a callback logged several of the
+    lines (a timer callback that loops and sleeps instead of returning: the
+    timer fired once, and the executor is stuck in it); else None."""
+    calls: dict[int, list[Any]] = {}
+    for record in records:
+        if record.call:
+            calls.setdefault(record.call, []).append(record)
+    lines = max(calls.values(), key=len, default=[])
+    if len(lines) < 2:
+        return None
+    return Verdict(
+        False,
+        f"{len(lines)} of the {plural(len(records), 'log line')} were logged by one call of a callback, from "
+        f"t={lines[0].t:.3f} s to t={lines[-1].t:.3f} s: it loops (and sleeps) instead of returning, so the "
+        "executor is stuck in it; a timer callback logs one line and returns, and the timer calls it again",
+    )
 
 
 def _one_per_period(records: list[Any], th: Mapping[str, Any]) -> Verdict:
