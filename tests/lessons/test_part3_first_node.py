@@ -137,3 +137,15 @@ def test_a_callback_called_instead_of_passed_logs_once_from_init_and_is_told_so(
     (text,) = feedback_of(result, "log_period")
     assert "1 log line matching" in text
     assert "logged outside any callback (t=0.000 s): by code that runs once, such as __init__ or main()" in text
+
+
+@pytest.mark.parametrize("in_process", [False, True], ids=["sandboxed", "in-process"])
+def test_a_loop_that_sleeps_inside_the_timer_callback_is_no_timer(grade, in_process):
+    # the timer fires once and its callback never returns: evenly spaced lines,
+    # from a callback, counting up - it used to score 10/10
+    result = grade(LESSON, HERE / "loop_in_the_timer_callback.py", in_process=in_process)
+    assert failed_checks(result) == {"log_period"}
+    assert result.score == 0.0
+    text = feedback_of(result, "log_period")[0]
+    assert "10 of the 10 log lines were logged by one call of a callback" in text
+    assert "the timer fires once and its callback never returns" in text

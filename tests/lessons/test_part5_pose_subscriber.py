@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from support.corpus import CORPUS
 from support.lessons import SOLUTIONS, failed_checks, feedback_of, not_judged
 
 LESSON = "part5-pose-subscriber"
@@ -163,3 +164,19 @@ def test_print_from_a_closure_passes_too(grade):
     # sandboxed only: print() is the controller's output there, as a terminal shows it
     result = grade(LESSON, HERE / "right_print_from_a_closure.py")
     assert result.score == result.max_score
+
+
+def test_coordinates_named_in_another_order_are_read_by_their_names(grade):
+    # "row y=5.545, column x=5.560" says where the turtle is: it used to fail,
+    # told that the turtle "was at x=5.560, y=5.545" - what the line said
+    right = grade(LESSON, CORPUS / "part5-pose-subscriber" / "right_y_named_before_x.py")
+    assert result_is_full(right)
+    # and names are trusted, not any order: y's number named x is wrong
+    swapped = grade(LESSON, HERE / "labels_swapped.py")
+    assert failed_checks(swapped) == {"logs_the_pose"}
+    assert "line said 'x=" in feedback_of(swapped, "logs_the_pose")[0]
+    assert swapped.score == 0.0
+
+
+def result_is_full(result) -> bool:
+    return failed_checks(result) == set() and result.score == result.max_score

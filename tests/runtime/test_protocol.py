@@ -168,13 +168,14 @@ REFUSED = [
     # (report entries, what the ProtocolError says)
     ({"teleport": []}, "unknown report entry 'teleport'"),
     ({"log": {"a": 1}}, "log: must be an array of Log records"),
-    ({"log": [[20, "n"]]}, r"log\[0\]: a Log has 4 fields \(level, node, text, in_callback\), got 2"),
-    ({"log": [[20, "n", "m", True, "extra"]]}, "a Log has 4 fields"),
-    ({"log": [[20, "n", "m", "yes"]]}, r"log\[0\]: Log.in_callback must be true or false, got str 'yes'"),
-    ({"log": [["loud", "n", "m", True]]}, r"log\[0\]: Log.level must be an integer, got str 'loud'"),
-    ({"log": [[True, "n", "m", True]]}, "Log.level must be an integer, got bool True"),
-    ({"log": [[20, 5, "m", True]]}, "Log.node must be a string, got int 5"),
-    ({"log": [[20, "n", "m", True], 7]}, r"log\[1\]: a Log must be an array of its fields, got int 7"),
+    ({"log": [[20, "n"]]}, r"log\[0\]: a Log has 5 fields \(level, node, text, in_callback, call\), got 2"),
+    ({"log": [[20, "n", "m", True, 0, "extra"]]}, "a Log has 5 fields"),
+    ({"log": [[20, "n", "m", "yes", 0]]}, r"log\[0\]: Log.in_callback must be true or false, got str 'yes'"),
+    ({"log": [[20, "n", "m", True, "first"]]}, r"log\[0\]: Log.call must be an integer, got str 'first'"),
+    ({"log": [["loud", "n", "m", True, 0]]}, r"log\[0\]: Log.level must be an integer, got str 'loud'"),
+    ({"log": [[True, "n", "m", True, 0]]}, "Log.level must be an integer, got bool True"),
+    ({"log": [[20, 5, "m", True, 0]]}, "Log.node must be a string, got int 5"),
+    ({"log": [[20, "n", "m", True, 0], 7]}, r"log\[1\]: a Log must be an array of its fields, got int 7"),
     ({"pub": [["/t", {"x": 1}, 0, False]]}, "Publish.values must be a list of field values, got dict"),
     ({"pub": [[5, [], 0, False]]}, "Publish.topic must be a string"),
     ({"call": [[1.0, "/spawn", []]]}, "CallService.call_id must be an integer, got float 1.0"),
@@ -217,7 +218,7 @@ def test_a_report_of_the_wrong_shape_is_refused_naming_the_record_and_field(entr
 
 def test_a_long_forged_value_is_shown_cut_short():
     with pytest.raises(protocol.ProtocolError) as caught:
-        protocol.decode_report(json.dumps({"log": [["x" * 10_000, "n", "m", True]]}).encode())
+        protocol.decode_report(json.dumps({"log": [["x" * 10_000, "n", "m", True, 0]]}).encode())
     assert len(str(caught.value)) < 200
 
 

@@ -20,6 +20,7 @@ waits on its own nodes' entities only.
 
 from __future__ import annotations
 
+import itertools
 import threading
 from collections.abc import Callable
 from types import CoroutineType
@@ -31,7 +32,11 @@ from turtletui.graph.logs import WARN
 from turtletui.messages import NEVER_SPUN_ADVICE
 
 _running = threading.local()
-"""The groups whose callbacks the calling thread is running, innermost last."""
+"""The groups whose callbacks the calling thread is running, innermost last
+(``groups``), and the number of the innermost call (``call``)."""
+
+_calls = itertools.count(1)
+"""Numbers the callback calls: lines a call logs carry its number (LogRecord.call)."""
 
 _spinning_here = threading.local()
 """The executors the calling thread is inside a spin of, innermost last."""
@@ -182,6 +187,12 @@ def in_callback() -> bool:
     return bool(getattr(_running, "groups", None))
 
 
+def current_call() -> int:
+    """The number of the callback call the calling thread is running (the
+    innermost), 0 outside any: lines one call logs share it."""
+    return getattr(_running, "call", 0) if getattr(_running, "groups", None) else 0
+
+
 def running_groups() -> list[CallbackGroup]:
     """The callback groups the calling thread is inside, innermost last."""
     stack = getattr(_running, "groups", None)
@@ -251,10 +262,13 @@ def dispatcher(
         stack.append(group)
         try:
             depth.n += 1
+            outer = getattr(_running, "call", 0)
+            _running.call = next(_calls)
             try:
                 result = callback(*args)
             finally:
                 depth.n -= 1
+                _running.call = outer
             if result is not None and isinstance(result, CoroutineType):
                 # As rclpy: the task holds its group until the coroutine ends.
                 held = True
@@ -345,10 +359,13 @@ def dispatcher(
             stack.append(group)
             try:
                 depth.n += 1
+                outer = getattr(_running, "call", 0)
+                _running.call = next(_calls)
                 try:
                     result = callback(msg)
                 finally:
                     depth.n -= 1
+                    _running.call = outer
                 if result is not None and isinstance(result, CoroutineType):
                     held = True
                     start_task(host, group, result, now=True, release=lambda _task: release(run), node=node)
@@ -451,7 +468,10 @@ def _in_group(group: CallbackGroup, step: Callable[[], Any]) -> None:
     """Run a task's step as inside a callback of ``group``."""
     stack = running_groups()
     stack.append(group)
+    outer = getattr(_running, "call", 0)
+    _running.call = next(_calls)
     try:
         step()
     finally:
         stack.pop()
+        _running.call = outer

@@ -15,7 +15,7 @@ from enum import IntEnum
 from typing import Any
 
 from turtletui.compat import context as _context
-from turtletui.compat.dispatch import in_callback
+from turtletui.compat.dispatch import current_call, in_callback
 from turtletui.compat.identity import as_rclpy
 from turtletui.graph import core
 from turtletui.graph.logs import parse_level
@@ -84,7 +84,7 @@ def _severity_method(name: str, severity: LoggingSeverity, doc: str | None = Non
             return False
         text = message if message.__class__ is str else _text(message)
         graph = (_context._current_host or _context.current_host()).graph
-        graph.log(self.name, level, text, _call_site, in_callback=in_callback())
+        graph.log(self.name, level, text, _call_site, in_callback=in_callback(), call=current_call())
         return True
 
     method.__name__ = name
@@ -143,6 +143,7 @@ class RcutilsLogger:
             _text(message),
             _origin(caller) if graph.hears_rosout() else None,
             in_callback=in_callback(),
+            call=current_call(),
         )
         return True
 

@@ -1328,13 +1328,14 @@ class Graph:
         origin: tuple[str, str, int] | Callable[[], tuple[str, str, int]] | None = None,
         *,
         in_callback: bool = True,
+        call: int = 0,
     ) -> LogRecord:
         """Log ``msg`` as the logger ``node``; ``origin`` is the call site
         (file, function, line) that /rosout subscriptions see, or what finds
         it, called only when one will (see ``hears_rosout``); ``in_callback``
-        whether an executor's callback logged it (LogRecord)."""
+        whether an executor's callback logged it, ``call`` which call (LogRecord)."""
         now = self.now_ns
-        record = _new_tuple(LogRecord, (self.epoch_ns + now, now / NS_PER_S, level, node, msg, in_callback))
+        record = _new_tuple(LogRecord, (self.epoch_ns + now, now / NS_PER_S, level, node, msg, in_callback, call))
         # Taps (the recorder) first: a line a Ctrl-C cuts short after it was
         # shown (sinks print it) is in the record too.
         if self.taps:

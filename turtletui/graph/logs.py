@@ -27,6 +27,9 @@ class LogRecord(NamedTuple):
     in_callback: bool = True
     """Whether a callback the executor ran logged it (a timer's, a subscription's...),
     not code outside spin such as a loop in main() that sleeps between lines."""
+    call: int = 0
+    """Which callback call logged it, 0 outside any: the lines of one call (a
+    timer callback that loops and sleeps instead of returning) share it."""
 
     @property
     def level_name(self) -> str:

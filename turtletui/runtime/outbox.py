@@ -255,7 +255,7 @@ class ParentOutbox:
     def logged(self, record: LogRecord) -> None:
         if self.log_budget > 0:
             self.log_budget -= 1
-            self.logs.append(Log(record.level, str(record.node), record.msg, record.in_callback))
+            self.logs.append(Log(record.level, str(record.node), record.msg, record.in_callback, record.call))
         else:
             self.logs_dropped += 1
 

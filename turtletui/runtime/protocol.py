@@ -163,6 +163,8 @@ class Log(NamedTuple):
     text: str
     in_callback: bool = True
     """Whether a callback the executor ran logged it (turtletui.graph.logs.LogRecord)."""
+    call: int = 0
+    """Which callback call logged it, 0 outside any (LogRecord.call)."""
 
 
 class Publish(NamedTuple):
@@ -664,7 +666,7 @@ _FIELDS: dict[type, tuple[Callable[[Any], Any], ...]] = {
     DeclareActionServer: (_int, _str, _str),
     RemoveRecord: (_removable, _int, _str),
     SetParameter: (_int, _str, _parameter_value, _bool),
-    Log: (_int, _str, _str, _bool),
+    Log: (_int, _str, _str, _bool, _int),
     Publish: (_str, _values, _int, _bool),
     CallService: (_int, _str, _values),
     SendGoal: (_int, _str, _values),

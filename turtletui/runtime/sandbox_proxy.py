@@ -174,7 +174,7 @@ class GraphProxy:
             # The child knows what it did itself: no exchange just to tell it.
             self._mirrored_version = graph.version
         for log in report.logs:
-            self._log(log.level, log.node, log.text, log.in_callback)
+            self._log(log.level, log.node, log.text, log.in_callback, log.call)
         if report.logs_dropped > self._logs_dropped_there:
             self._logs_dropped_there = report.logs_dropped  # the child's own count: only ever shown
         owner = self.owner
@@ -237,13 +237,13 @@ class GraphProxy:
             if respond is not None:
                 respond(values)
 
-    def _log(self, level: int, node: str, text: str, in_callback: bool = True) -> None:
+    def _log(self, level: int, node: str, text: str, in_callback: bool = True, call: int = 0) -> None:
         graph = self.graph
         text = text[:10_000]
         self._logs_kept += 1
         self._log_bytes_kept += len(text) + 1
         if self._logs_kept <= self.log_lines and self._log_bytes_kept <= self.log_bytes:
-            graph.log(node[:200], level, text, in_callback=in_callback)
+            graph.log(node[:200], level, text, in_callback=in_callback, call=call)
             return
         self._logs_dropped_here += 1
         if self._logs_dropped_here == 1:

@@ -136,6 +136,7 @@ def _counts_up(records: list[Any], th: Mapping[str, Any]) -> Verdict:
     "which must lie between `min_period` and `max_period` seconds when given. Lines of one kind "
     "are judged, as by log_counter. With `in_callback = true` they must also come from "
     "callbacks the executor ran (a timer's), not from a loop outside spin (time.sleep in main()), "
+    "each from a call of its own (not a loop inside one callback), "
     "and only the logger's lines count (a printed line cannot say where it was printed).",
     {**_LOG, "min": "number", "tolerance": "number", "min_period": "number", "max_period": "number",
      "in_callback": "boolean"},
@@ -197,6 +198,9 @@ def _log_period(trace: Trace, th: Mapping[str, Any]) -> Verdict:
             "loop that sleeps or calls spin_once between lines, not from a timer callback that rclpy.spin runs",
         )
     verdict = _one_per_period(lines, th)
+    looped = _one_call(lines) if th.get("in_callback") else None
+    if looped is not None and verdict.passed:
+        return looped
     if outside and not verdict.passed:
         when = ", ".join(f"t={record.t:.3f} s" for record in outside[:3])
         return Verdict(
@@ -205,6 +209,25 @@ def _log_period(trace: Trace, th: Mapping[str, Any]) -> Verdict:
             "__init__ or main(), not by a timer's callback",
         )
     return verdict
+
+
+def _one_call(records: list[Any]) -> Verdict | None:
+    """A failing verdict when one call of a callback logged several of the
+    lines (a timer callback that loops and sleeps instead of returning: the
+    timer fired once, and the executor is stuck in it); else None."""
+    calls: dict[int, list[Any]] = {}
+    for record in records:
+        if record.call:
+            calls.setdefault(record.call, []).append(record)
+    lines = max(calls.values(), key=len, default=[])
+    if len(lines) < 2:
+        return None
+    return Verdict(
+        False,
+        f"{len(lines)} of the {plural(len(records), 'log line')} were logged by one call of a callback, from "
+        f"t={lines[0].t:.3f} s to t={lines[-1].t:.3f} s: it loops (and sleeps) instead of returning, so the "
+        "executor is stuck in it; a timer callback logs one line and returns, and the timer calls it again",
+    )
 
 
 def _one_per_period(records: list[Any], th: Mapping[str, Any]) -> Verdict:
@@ -259,17 +282,33 @@ def _shows(numbers: list[tuple[float, float]], x: float, y: float) -> bool:
     return False
 
 
+_LABELLED = tuple(
+    re.compile(rf"(?<![A-Za-z0-9_]){axis}\s*[:=]\s*({_NUMBER.pattern})", re.IGNORECASE) for axis in "xy"
+)
+"""A coordinate named in the line: "x=5.54", "y: 3.2", "pose.x = 5.54"."""
+
+
+def _read_pose(text: str) -> list[tuple[float, float]]:
+    """The numbers of a log line as log_pose reads them: when the line names
+    both coordinates ("y=3.20 x=5.54"), x's number then y's, in whichever
+    order the line has them; else every number, in order (x must come first)."""
+    found = [pattern.search(text) for pattern in _LABELLED]
+    if all(found):
+        return [_logged_numbers(match.group(1))[0] for match in found if match]
+    return _logged_numbers(text)
+
+
 @check(
     "log_pose",
     "The matching log lines (default: lines with two numbers or more) carry the turtle's x and "
-    "then y as they were when the line was logged (the pose of the last `max_age` seconds, "
+    "then y (or, named x= and y=, in either order) as they were when the line was logged (the pose of the last `max_age` seconds, "
     "default 0.1), to the digits they print: share of such lines, threshold `min` (default 0.9).",
     {**_LOG, **TURTLE, "min": "number", "max_age": "number"},
 )
 def log_pose(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     poses = trace.pose_array(turtle_of(th))
     max_age = th.get("max_age", 0.1)
-    lines = [(r, _logged_numbers(r.msg)) for r in _matching_logs(trace, th)]
+    lines = [(r, _read_pose(r.msg)) for r in _matching_logs(trace, th)]
     if "pattern" not in th:
         lines = [(r, numbers) for r, numbers in lines if len(numbers) >= 2]
     if not lines:
@@ -290,7 +329,7 @@ def log_pose(trace: Trace, th: Mapping[str, Any]) -> Verdict:
         record, pose = wrong
         where = f"the turtle was at x={pose[1]:.3f}, y={pose[2]:.3f}" if pose is not None else "no pose yet"
         text += f"; at t={record.t:.3f} s the line said {record.msg[:80]!r} but {where}"
-        lag = _lag(poses, record.t, max_age, _logged_numbers(record.msg))
+        lag = _lag(poses, record.t, max_age, _read_pose(record.msg))
         if lag is not None:
             text += (
                 f" (it was there {lag:.2f} s before: the lines lag behind the poses, as when the callback "
