@@ -612,3 +612,42 @@ def test_the_same_program_logs_and_moves_the_same_in_both_hosts(tmp_path):
     assert logs[0] == logs[1]
     assert runs[0].poses == runs[1].poses
     assert set(runs[0].poses) == {"turtle1", "t2"}
+
+
+CALLS = (
+    HEADER
+    + """
+class Calls(Node):
+    def __init__(self):
+        super().__init__("calls")
+        self.get_logger().info("made")
+        self.create_timer(0.25, self.tick)
+        self.create_subscription(Pose, "/turtle1/pose", self.pose, 10)
+        self.poses = 0
+
+    def tick(self):
+        self.get_logger().info("tick")
+        self.get_logger().info("tock")
+
+    def pose(self, msg):
+        self.poses += 1
+        if self.poses % 20 == 0:
+            self.get_logger().info("pose")
+"""
+)
+
+
+def test_the_lines_of_one_callback_call_share_its_number_the_same_in_every_run(tmp_path):
+    """LogRecord.call: 0 outside callbacks, one number per call (both lines of a
+    tick share it), numbered from 1 in each run, in both hosts alike."""
+    from support.hosts import HOSTS, ControllerHost
+
+    runs = [ControllerHost(host, tmp_path).run(CALLS, duration=1.0) for host in HOSTS for _ in range(2)]
+    calls = [[(r.msg, r.call) for r in result.logs if r.node == "calls"] for result in runs]
+    assert calls[0] == calls[1] == calls[2] == calls[3]
+    assert calls[0][0] == ("made", 0)
+    ticks = [(msg, call) for msg, call in calls[0] if msg in ("tick", "tock")]
+    assert len(ticks) == 8
+    assert all(ticks[i][1] == ticks[i + 1][1] for i in range(0, 8, 2))
+    numbers = [call for msg, call in calls[0][1:] if msg != "tock"]
+    assert numbers == sorted(set(numbers)) and numbers[0] > 0

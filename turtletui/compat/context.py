@@ -29,6 +29,9 @@ class Host(Protocol):
     callback_counter: Any
     """Counts callbacks as they run: ``callback_counter.n`` is how deep the
     calling thread is (callback_depth); turtletui.compat.dispatch bumps it."""
+    call_numbers: Any
+    """Numbers this host's callback calls, from 1 in every run: the lines one
+    call logs carry its number (LogRecord.call)."""
 
     def spin(self, stop: Any) -> None:
         """Run this host's callbacks as they become ready until ``stop()``

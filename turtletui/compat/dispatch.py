@@ -20,9 +20,8 @@ waits on its own nodes' entities only.
 
 from __future__ import annotations
 
-import itertools
 import threading
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from types import CoroutineType
 from typing import Any
 
@@ -34,9 +33,6 @@ from turtletui.messages import NEVER_SPUN_ADVICE
 _running = threading.local()
 """The groups whose callbacks the calling thread is running, innermost last
 (``groups``), and the number of the innermost call (``call``)."""
-
-_calls = itertools.count(1)
-"""Numbers the callback calls: lines a call logs carry its number (LogRecord.call)."""
 
 _spinning_here = threading.local()
 """The executors the calling thread is inside a spin of, innermost last."""
@@ -226,6 +222,7 @@ def dispatcher(
     parked call is the timer's one ready call, so the timer, due again
     meanwhile, is not queued beside it (rcl's timer is ready or not)."""
     depth = host.callback_counter
+    calls = host.call_numbers
     ready = host.graph.ready
     owner = host.owner
     # Every node's default group: its begin/end rules inline, a call less each.
@@ -263,7 +260,7 @@ def dispatcher(
         try:
             depth.n += 1
             outer = getattr(_running, "call", 0)
-            _running.call = next(_calls)
+            _running.call = next(calls)
             try:
                 result = callback(*args)
             finally:
@@ -360,7 +357,7 @@ def dispatcher(
             try:
                 depth.n += 1
                 outer = getattr(_running, "call", 0)
-                _running.call = next(_calls)
+                _running.call = next(calls)
                 try:
                     result = callback(msg)
                 finally:
@@ -424,7 +421,7 @@ def start_task(
         counted = host.wrap_callback(task)
 
         def step() -> None:
-            _in_group(group, counted)
+            _in_group(group, counted, host.call_numbers)
 
         task._add_done_hook(release)
     if node is not None or executor is not None:
@@ -464,12 +461,12 @@ def _bound(step: Callable[[], None], owner: str, node: Any, executor: Any) -> Ca
     return bound
 
 
-def _in_group(group: CallbackGroup, step: Callable[[], Any]) -> None:
+def _in_group(group: CallbackGroup, step: Callable[[], Any], calls: Iterator[int]) -> None:
     """Run a task's step as inside a callback of ``group``."""
     stack = running_groups()
     stack.append(group)
     outer = getattr(_running, "call", 0)
-    _running.call = next(_calls)
+    _running.call = next(calls)
     try:
         step()
     finally:

@@ -18,6 +18,7 @@ path's copy of the simulation imports numpy when it is taken).
 from __future__ import annotations
 
 import errno
+import itertools
 import json
 import os
 import random
@@ -57,6 +58,7 @@ class ChildHost(CallbackTracking):
         self.running = True
         self.scheduler = Scheduler(graph, self.exchange, lambda: self.running)
         self.controller_thread = threading.get_ident()
+        self.call_numbers = itertools.count(1)
 
     def spin(self, stop: Callable[[], bool]) -> None:
         """Run every callback as it becomes ready until ``stop()`` or the end."""

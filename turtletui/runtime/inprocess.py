@@ -7,6 +7,7 @@ the shared simulation, so lockstep needs no threads and no copies.
 
 from __future__ import annotations
 
+import itertools
 import random
 import sys
 import threading
@@ -51,6 +52,7 @@ class InProcessHost(CallbackTracking):
         self._reads = 0
         self.controller_thread = threading.get_ident()
         self._depth = Depth()
+        self.call_numbers = itertools.count(1)
 
     @property
     def callback_depth(self) -> int:

@@ -215,10 +215,10 @@ def _one_call(records: list[Any]) -> Verdict | None:
     """A failing verdict when one call of a callback logged several of the
     lines (a timer callback that loops and sleeps instead of returning: the
     timer fired once, and the executor is stuck in it); else None."""
-    calls: dict[int, list[Any]] = {}
+    calls: dict[tuple[str, int], list[Any]] = {}
     for record in records:
-        if record.call:
-            calls.setdefault(record.call, []).append(record)
+        if record.call:  # numbered by each controller's host: with its logger, one call
+            calls.setdefault((record.node, record.call), []).append(record)
     lines = max(calls.values(), key=len, default=[])
     if len(lines) < 2:
         return None
