@@ -28,7 +28,8 @@ class Host(Protocol):
     callback_depth: int
     callback_counter: Any
     """Counts callbacks as they run: ``callback_counter.n`` is how deep the
-    calling thread is (callback_depth); turtletui.compat.dispatch bumps it."""
+    calling thread is (callback_depth), ``.call`` the number of the call it
+    runs (0 outside any); turtletui.compat.dispatch keeps both."""
     call_numbers: Any
     """Numbers this host's callback calls, from 1 in every run: the lines one
     call logs carry its number (LogRecord.call)."""

@@ -21,7 +21,7 @@ waits on its own nodes' entities only.
 from __future__ import annotations
 
 import threading
-from collections.abc import Callable, Iterator
+from collections.abc import Callable
 from types import CoroutineType
 from typing import Any
 
@@ -31,8 +31,7 @@ from turtletui.graph.logs import WARN
 from turtletui.messages import NEVER_SPUN_ADVICE
 
 _running = threading.local()
-"""The groups whose callbacks the calling thread is running, innermost last
-(``groups``), and the number of the innermost call (``call``)."""
+"""The groups whose callbacks the calling thread is running, innermost last."""
 
 _spinning_here = threading.local()
 """The executors the calling thread is inside a spin of, innermost last."""
@@ -183,10 +182,10 @@ def in_callback() -> bool:
     return bool(getattr(_running, "groups", None))
 
 
-def current_call() -> int:
+def current_call(host: Any) -> int:
     """The number of the callback call the calling thread is running (the
     innermost), 0 outside any: lines one call logs share it."""
-    return getattr(_running, "call", 0) if getattr(_running, "groups", None) else 0
+    return host.callback_counter.call
 
 
 def running_groups() -> list[CallbackGroup]:
@@ -259,13 +258,13 @@ def dispatcher(
         stack.append(group)
         try:
             depth.n += 1
-            outer = getattr(_running, "call", 0)
-            _running.call = next(calls)
+            outer = depth.call
+            depth.call = next(calls)
             try:
                 result = callback(*args)
             finally:
                 depth.n -= 1
-                _running.call = outer
+                depth.call = outer
             if result is not None and isinstance(result, CoroutineType):
                 # As rclpy: the task holds its group until the coroutine ends.
                 held = True
@@ -356,13 +355,13 @@ def dispatcher(
             stack.append(group)
             try:
                 depth.n += 1
-                outer = getattr(_running, "call", 0)
-                _running.call = next(calls)
+                outer = depth.call
+                depth.call = next(calls)
                 try:
                     result = callback(msg)
                 finally:
                     depth.n -= 1
-                    _running.call = outer
+                    depth.call = outer
                 if result is not None and isinstance(result, CoroutineType):
                     held = True
                     start_task(host, group, result, now=True, release=lambda _task: release(run), node=node)
@@ -421,7 +420,7 @@ def start_task(
         counted = host.wrap_callback(task)
 
         def step() -> None:
-            _in_group(group, counted, host.call_numbers)
+            _in_group(group, counted, host)
 
         task._add_done_hook(release)
     if node is not None or executor is not None:
@@ -461,14 +460,15 @@ def _bound(step: Callable[[], None], owner: str, node: Any, executor: Any) -> Ca
     return bound
 
 
-def _in_group(group: CallbackGroup, step: Callable[[], Any], calls: Iterator[int]) -> None:
+def _in_group(group: CallbackGroup, step: Callable[[], Any], host: Any) -> None:
     """Run a task's step as inside a callback of ``group``."""
     stack = running_groups()
     stack.append(group)
-    outer = getattr(_running, "call", 0)
-    _running.call = next(calls)
+    depth = host.callback_counter
+    outer = depth.call
+    depth.call = next(host.call_numbers)
     try:
         step()
     finally:
         stack.pop()
-        _running.call = outer
+        depth.call = outer

@@ -83,8 +83,8 @@ def _severity_method(name: str, severity: LoggingSeverity, doc: str | None = Non
         if level < (_effective_level(self.name) if _LEVELS else _DEFAULT_LEVEL):
             return False
         text = message if message.__class__ is str else _text(message)
-        graph = (_context._current_host or _context.current_host()).graph
-        graph.log(self.name, level, text, _call_site, in_callback=in_callback(), call=current_call())
+        host = _context._current_host or _context.current_host()
+        host.graph.log(self.name, level, text, _call_site, in_callback=in_callback(), call=current_call(host))
         return True
 
     method.__name__ = name
@@ -136,14 +136,15 @@ class RcutilsLogger:
         for kind in filters:
             if not _SHOULD_LOG[kind](context):
                 return False
-        graph = (_context._current_host or _context.current_host()).graph
+        host = _context._current_host or _context.current_host()
+        graph = host.graph
         graph.log(
             name,
             int(severity),
             _text(message),
             _origin(caller) if graph.hears_rosout() else None,
             in_callback=in_callback(),
-            call=current_call(),
+            call=current_call(host),
         )
         return True
 

@@ -26,16 +26,19 @@ out: a node destroyed, a last sleep) before it is stopped."""
 
 class _ThreadDepth(threading.local):
     n = 0
+    call = 0
 
 
 class Depth:
     """A plain depth counter, for a host whose callbacks run on one thread
-    (slots: bumped twice for every delivery)."""
+    (slots: bumped twice for every delivery), and the number of the call
+    running (turtletui.compat.dispatch numbers them: LogRecord.call)."""
 
-    __slots__ = ("n",)
+    __slots__ = ("n", "call")
 
     def __init__(self) -> None:
         self.n = 0
+        self.call = 0
 
 
 class CallbackTracking:
