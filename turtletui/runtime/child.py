@@ -243,7 +243,7 @@ def main(config: dict[str, Any] | None = None) -> None:
         spin_nodes,
         user_frames,
     )
-    from turtletui.runtime.report import exit_message
+    from turtletui.runtime.report import exit_message, exited_in_callback
 
     distro = resolve_distro(config.get("distro"))
     compat.install(distro)
@@ -298,6 +298,8 @@ def main(config: dict[str, Any] | None = None) -> None:
     except SystemExit as exc:
         if exc.code not in (None, 0):
             crash = protocol.Crash("exit", exit_message(exc.code), tuple(user_frames(exc.__traceback__, spec.path)))
+        elif exited_in_callback(exc):  # said in the log, as the program's clean end (no crash)
+            crash = protocol.Crash(protocol.EXITED, "exited with status 0", tuple(user_frames(exc.__traceback__, spec.path)))
     except MemoryError as exc:
         # Free what the failed frames hold before building the report.
         traceback.clear_frames(exc.__traceback__)

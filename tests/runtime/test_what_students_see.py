@@ -1,0 +1,85 @@
+"""What a student sees of their program's end and output is the truth, and
+the same under both hosts: a clean ``sys.exit(0)``, a deadlock, a crash in a
+helper module of their package, what they write to stderr."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import pytest
+from support.hosts import HOSTS, write_controller
+
+from turtletui.api import RunResult, run
+
+pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="the sandbox needs POSIX processes")
+
+TICKING = """
+import sys, threading, warnings
+import rclpy
+from rclpy.node import Node
+
+
+class Ticker(Node):
+    def __init__(self):
+        super().__init__("ticker")
+        self.n = 0
+        self.create_timer(0.5, self.tick)
+
+    def tick(self):
+        self.n += 1
+        self.get_logger().info(f"tick {{self.n}}")
+        if self.n == 2:
+{misbehave}
+
+
+def main():
+    rclpy.init()
+    rclpy.spin(Ticker())
+    print("after spin")
+
+
+if __name__ == "__main__":
+    main()
+"""
+
+
+def ticking(folder: Path, misbehave: str, filename: str = "ticker.py") -> Path:
+    body = "\n".join("            " + line for line in misbehave.strip().splitlines())
+    return write_controller(folder, TICKING.format(misbehave=body), filename)
+
+
+def go(path: Path, host: str, duration: float = 3.0) -> RunResult:
+    result = run([path], duration=duration, sandbox=host == "sandboxed")
+    assert result.sim_time == pytest.approx(duration)
+    return result
+
+
+def line_of(path: Path, marker: str) -> int:
+    (line,) = [i for i, text in enumerate(path.read_text().splitlines(), 1) if marker in text]
+    return line
+
+
+def turtletui_says(result: RunResult) -> list[str]:
+    return [r.msg for r in result.logs if r.node == "turtletui"]
+
+
+# -- sys.exit(0) in a callback ----------------------------------------------------------------
+
+
+@pytest.mark.parametrize("host", HOSTS)
+@pytest.mark.parametrize("call", ["sys.exit(0)", "sys.exit()"])
+def test_sys_exit_0_in_a_callback_is_a_clean_exit_at_its_line(tmp_path: Path, host: str, call: str) -> None:
+    # Under rclpy (Kilted) SystemExit goes out of rclpy.spin: the program ends
+    # with status 0, the code after spin never runs.
+    path = ticking(tmp_path, call)
+    result = go(path, host)
+    assert result.crashes == []
+    assert not [r for r in result.logs if r.level_name == "ERROR"]
+    assert [r.msg for r in result.logs if r.node == "ticker"] == ["tick 1", "tick 2"]
+    (note,) = turtletui_says(result)
+    assert note.startswith(
+        f'{path} exited with status 0 at t=1.000 s (File "{path.resolve()}", line {line_of(path, call)}, in tick)'
+    )
+    assert "spin" not in note  # no advice to spin: it did, and chose to leave
+    assert "after spin" not in "".join(r.msg for r in result.logs)
