@@ -83,3 +83,75 @@ def test_sys_exit_0_in_a_callback_is_a_clean_exit_at_its_line(tmp_path: Path, ho
     )
     assert "spin" not in note  # no advice to spin: it did, and chose to leave
     assert "after spin" not in "".join(r.msg for r in result.logs)
+
+
+# -- a course package: the helper module's line is named ---------------------------------------
+
+CONTROLLER = """
+import rclpy
+from rclpy.node import Node
+from my_robot_controller import helpers
+
+
+class Controller(Node):
+    def __init__(self):
+        super().__init__("controller")
+        self.n = 0
+        self.create_timer(0.5, self.tick)
+
+    def tick(self):
+        self.n += 1
+        self.get_logger().info(f"v {helpers.compute(self.n)}")
+
+
+def main():
+    rclpy.init()
+    rclpy.spin(Controller())
+"""
+
+HELPERS = """
+import json
+
+
+def compute(n):
+    if n == 2:
+        {misbehave}
+    return n
+"""
+
+
+def course_package(folder: Path, misbehave: str) -> tuple[Path, Path]:
+    package = folder / "my_robot_controller"
+    package.mkdir()
+    (package / "__init__.py").write_text("")
+    helpers = write_controller(package, HELPERS.replace("{misbehave}", misbehave), "helpers.py")
+    return write_controller(package, CONTROLLER, "turtle_controller.py"), helpers
+
+
+@pytest.mark.parametrize("host", HOSTS)
+def test_an_exception_in_a_helper_module_names_the_helper_s_line(tmp_path: Path, host: str) -> None:
+    controller, helpers = course_package(tmp_path, "return json.loads('{')")
+    result = go(controller, host)
+    (crash,) = result.crashes
+    assert crash.kind == "exception" and crash.t == pytest.approx(1.0)
+    # as Python's traceback: the call site in the controller, then the helper's
+    # line (innermost), never json's or turtletui's own frames
+    assert [frame.splitlines()[0] for frame in crash.frames][-2:] == [
+        f'  File "{controller.resolve()}", line {line_of(controller, "helpers.compute")}, in tick',
+        f'  File "{helpers.resolve()}", line {line_of(helpers, "json.loads")}, in compute',
+    ]
+    assert not [frame for frame in crash.frames if "json" + "/" in frame or "turtletui" + "/" in frame]
+    assert crash.summary().endswith(f'(File "{helpers.resolve()}", line {line_of(helpers, "json.loads")}, in compute)')
+
+
+def test_a_helper_module_stuck_in_a_loop_is_named_at_its_line(tmp_path: Path) -> None:
+    # Sandboxed only: in this process nothing stops an endless loop (trusted code).
+    controller, helpers = course_package(tmp_path, "while True:\n            pass")
+    result = go(controller, "sandboxed")
+    (crash,) = result.crashes
+    assert crash.kind == "timeout"
+    loop = line_of(helpers, "while True")
+    assert [frame.splitlines()[0] for frame in crash.frames] in (
+        [f'  File "{helpers.resolve()}", line {loop}, in compute'],
+        [f'  File "{helpers.resolve()}", line {loop + 1}, in compute'],
+    )
