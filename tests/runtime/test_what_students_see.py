@@ -155,3 +155,107 @@ def test_a_helper_module_stuck_in_a_loop_is_named_at_its_line(tmp_path: Path) ->
         [f'  File "{helpers.resolve()}", line {loop}, in compute'],
         [f'  File "{helpers.resolve()}", line {loop + 1}, in compute'],
     )
+
+
+# -- deadlocks ----------------------------------------------------------------------------------
+# Sandboxed only: in this process the locks are the interpreter's own, and a
+# deadlock hangs the program as it does under ROS (in-process code is trusted).
+
+
+def test_a_callback_taking_its_lock_twice_is_a_deadlock_at_that_line(tmp_path: Path) -> None:
+    # Under rclpy (Kilted) the program hangs after "tick 2", even on SIGTERM.
+    path = ticking(tmp_path, """
+self.lock = getattr(self, "lock", threading.Lock())
+with self.lock:
+    self.get_logger().info("holding it")
+    with self.lock:  # taken twice
+        self.get_logger().info("never")
+""")
+    result = go(path, "sandboxed")
+    (crash,) = result.crashes
+    assert crash.kind == "deadlock" and crash.t == pytest.approx(1.0)
+    assert "deadlock" in crash.message and "release unlocked lock" not in crash.message
+    assert crash.frames == [f'  File "{path.resolve()}", line {line_of(path, "taken twice")}, in tick\n'
+                            "    with self.lock:  # taken twice"]
+    assert [r.msg for r in result.logs if r.node == "ticker"] == ["tick 1", "tick 2", "holding it"]
+
+
+def test_two_threads_each_waiting_for_the_other_s_lock_are_a_deadlock_naming_both(tmp_path: Path) -> None:
+    path = write_controller(tmp_path, """
+        import threading, time
+        import rclpy
+        from rclpy.node import Node
+
+        a, b = threading.Lock(), threading.Lock()
+
+
+        def worker():
+            with b:
+                time.sleep(1.0)
+                with a:  # the worker waits here
+                    pass
+
+
+        class Holder(Node):
+            def __init__(self):
+                super().__init__("holder")
+                self.create_timer(0.5, self.tick)
+
+            def tick(self):
+                with a:
+                    time.sleep(1.0)
+                    with b:  # the callback waits here
+                        pass
+
+
+        def main():
+            rclpy.init()
+            node = Holder()
+            threading.Thread(target=worker, daemon=True).start()
+            rclpy.spin(node)
+    """, "holder.py")
+    result = go(path, "sandboxed")
+    (crash,) = result.crashes
+    assert crash.kind == "deadlock", crash.details()
+    assert crash.t == pytest.approx(1.5)  # the callback took a at 0.5 and waits for b from 1.5
+    assert "2 threads" in crash.message
+    lines = sorted(frame.splitlines()[0] for frame in crash.frames)
+    assert lines == sorted([
+        f'  File "{path.resolve()}", line {line_of(path, "worker waits")}, in worker',
+        f'  File "{path.resolve()}", line {line_of(path, "callback waits")}, in tick',
+    ])
+
+
+def test_a_lock_another_thread_releases_later_is_no_deadlock(tmp_path: Path) -> None:
+    path = write_controller(tmp_path, """
+        import threading, time
+        import rclpy
+        from rclpy.node import Node
+
+        lock = threading.Lock()
+
+
+        def worker():
+            with lock:
+                time.sleep(1.0)
+
+
+        class Waiter(Node):
+            def __init__(self):
+                super().__init__("waiter")
+                self.create_timer(0.5, self.tick)
+
+            def tick(self):
+                with lock:
+                    self.get_logger().info("got it")
+
+
+        def main():
+            rclpy.init()
+            node = Waiter()
+            threading.Thread(target=worker).start()
+            rclpy.spin(node)
+    """, "waiter.py")
+    result = go(path, "sandboxed", duration=2.0)
+    assert result.crashes == []
+    assert [r.t for r in result.logs if r.node == "waiter"][:2] == [pytest.approx(1.0), pytest.approx(1.0)]

@@ -18,7 +18,7 @@ if TYPE_CHECKING:
 class CrashReport:
     """A controller that stopped abnormally.
 
-    ``kind`` is "exception", "exit", "timeout", "memory", "cpu", "killed",
+    ``kind`` is "exception", "exit", "timeout", "deadlock", "memory", "cpu", "killed",
     "slow" (too slow for real time) or "time" (over the run's time limit);
     ``frames`` are traceback lines from the controller's own file.
     """
@@ -45,6 +45,7 @@ _VERB = {
     "exception": "crashed",
     "exit": "exited",
     "timeout": "was stopped",
+    "deadlock": "was stopped",
     "memory": "was stopped",
     "cpu": "was stopped",
     "slow": "was stopped",

@@ -85,7 +85,7 @@ class Limits:
     running as root drops the student's code to an unprivileged user."""
 
 
-_CRASH_KINDS = frozenset({"exception", "exit", "memory", "load", "cpu", "timeout", "killed"})
+_CRASH_KINDS = frozenset({"exception", "exit", "memory", "load", "cpu", "timeout", "deadlock", "killed"})
 """Kinds a child may report about itself (anything else is reported as an exception)."""
 _DECODED_KEPT = 64
 _DECODED_BYTES = 2048
