@@ -4,6 +4,7 @@ helper module of their package, what they write to stderr."""
 
 from __future__ import annotations
 
+import subprocess
 import sys
 from pathlib import Path
 
@@ -11,6 +12,8 @@ import pytest
 from support.hosts import HOSTS, write_controller
 
 from turtletui.api import RunResult, run
+from turtletui.runtime import forkserver
+from turtletui.runtime.sandbox import Limits
 
 pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="the sandbox needs POSIX processes")
 
@@ -259,3 +262,80 @@ def test_a_lock_another_thread_releases_later_is_no_deadlock(tmp_path: Path) -> 
     result = go(path, "sandboxed", duration=2.0)
     assert result.crashes == []
     assert [r.t for r in result.logs if r.node == "waiter"][:2] == [pytest.approx(1.0), pytest.approx(1.0)]
+
+
+# -- stdout and stderr ----------------------------------------------------------------------------
+
+WRITER = """
+import sys, warnings
+import rclpy
+from rclpy.node import Node
+
+
+class Writer(Node):
+    def __init__(self):
+        super().__init__("writer")
+        self.n = 0
+        self.create_timer(0.5, self.tick)
+
+    def tick(self):
+        self.n += 1
+        print(f"out {self.n}")
+        print(f"err {self.n}", file=sys.stderr)
+        if self.n == 1:
+            warnings.warn("careful")
+            self.get_logger().warn("old warn")  # rclpy: a DeprecationWarning, on stderr
+        print(f"out {self.n} again")
+
+
+def main():
+    rclpy.init()
+    rclpy.spin(Writer())
+"""
+STDOUT = ["out 1", "out 1 again", "out 2", "out 2 again"]
+
+
+def stderr_of_writer(text: str) -> list[str]:
+    return [line for line in text.splitlines() if line.startswith("err ") or "Warning" in line]
+
+
+@pytest.mark.parametrize("host", HOSTS)
+def test_what_a_program_writes_to_stderr_goes_to_stderr(tmp_path: Path, host: str) -> None:
+    path = write_controller(tmp_path, WRITER, "writer.py")
+    command = ["run", str(path), "--headless", "--duration", "1.2", *(["--in-process"] if host == "in-process" else [])]
+    # as a student runs it (pytest would catch the warnings of a run in its own process)
+    result = subprocess.run(
+        [sys.executable, "-m", "turtletui", *command], capture_output=True, text=True, timeout=120, check=False
+    )
+    assert result.returncode == 0, result.stderr
+    assert [line for line in result.stdout.splitlines() if line.startswith("out ")] == STDOUT
+    assert "err" not in result.stdout and "Warning" not in result.stdout
+    errors = stderr_of_writer(result.stderr)
+    assert errors[0] == "err 1" and errors[-1] == "err 2"
+    assert any(line.endswith("UserWarning: careful") for line in errors)
+    assert any("DeprecationWarning" in line for line in errors)
+
+
+@pytest.mark.parametrize("launcher", ["fresh", "forked"])
+@pytest.mark.parametrize("lockstep", [True, False], ids=["lockstep", "fast-path"])
+def test_a_sandboxed_program_s_stderr_lines_are_told_from_its_stdout_lines_at_their_instants(
+    tmp_path: Path, launcher: str, lockstep: bool
+) -> None:
+    path = write_controller(tmp_path, WRITER, "writer.py")
+    limits = Limits(lockstep=lockstep)
+    if launcher == "forked":
+        with forkserver.serving():
+            result = run([path], duration=1.2, limits=limits)
+    else:
+        result = run([path], duration=1.2, limits=limits)
+    printed = [(r.t, r.node, r.msg) for r in result.logs if r.node.startswith("writer:")]
+    out = [(t, msg) for t, node, msg in printed if node == "writer:stdout"]
+    err = [(t, msg) for t, node, msg in printed if node == "writer:stderr"]
+    assert out == [(0.5, "out 1"), (0.5, "out 1 again"), (1.0, "out 2"), (1.0, "out 2 again")]
+    assert [msg for _, msg in err if msg.startswith("err")] == ["err 1", "err 2"]
+    assert [t for t, msg in err if msg.startswith("err")] == [0.5, 1.0]
+    assert any(msg.endswith("UserWarning: careful") for _, msg in err)
+    assert len(out) + len(err) == len(printed)
+    # within an instant, what it printed comes before what it logged, as in lockstep before
+    (warned,) = [i for i, r in enumerate(result.logs) if r.node == "writer" and r.msg == "old warn"]
+    assert all(i < warned for i, r in enumerate(result.logs) if r.node.startswith("writer:") and r.t == 0.5)
