@@ -197,7 +197,7 @@ def main():
     )
     assert logs[1].startswith("Goal state not set, assuming aborted. Goal ID: ")
     assert node_logs(result, "server") == ["status 6"]
-    output = "\n".join(r.msg for r in result.logs if r.node.endswith(":stdout"))
+    output = "\n".join(r.msg for r in result.logs if r.node.endswith(":stderr"))
     if controller_host.sandboxed:  # what rclpy prints on stderr: the student's frames only
         assert "in execute" in output and "turtletui" not in output
 

@@ -14,7 +14,7 @@ from pathlib import Path
 import pytest
 
 from turtletui.api import RunResult, run
-from turtletui.graph.logs import OUTPUT_SUFFIX
+from turtletui.graph.logs import PRINTED_SUFFIXES
 from turtletui.runtime import fastpath
 from turtletui.runtime.sandbox import Limits
 
@@ -57,7 +57,7 @@ def both_paths(path: Path, fast_runs: list[str], **options) -> tuple[RunResult, 
 
 
 def logs(result: RunResult, *, printed: bool = True) -> list[tuple]:
-    return [(r.t, r.node, r.level, r.msg) for r in result.logs if printed or not r.node.endswith(OUTPUT_SUFFIX)]
+    return [(r.t, r.node, r.level, r.msg) for r in result.logs if printed or not r.node.endswith(PRINTED_SUFFIXES)]
 
 
 def assert_same(fast: RunResult, other: RunResult, *, printed: bool = True) -> None:

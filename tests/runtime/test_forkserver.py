@@ -484,7 +484,7 @@ def _late(self, config, cwd, fds, timeout):
     wire.write_frame(fds[1], protocol.encode_report(protocol.Report()))
     if len(fds) > 2:
         payload = protocol.encode_report(protocol.Report())
-        record = fastpath._RECORD.pack(123_000_000, 0.0, 0, 0, len(payload)) + payload
+        record = fastpath._RECORD.pack(123_000_000, 0.0, 0, 0, 0, len(payload)) + payload
         os.pwrite(fds[2], fastpath._HEADER.pack(0, len(record)) + record, 0)
     return None
 

@@ -331,8 +331,8 @@ def test_a_program_lives_as_long_as_its_threads_and_a_failing_thread_does_not_en
     assert result.turtles["turtle1"].distance == pytest.approx(2.0, abs=0.1)
     [stopped] = [r.t for r in result.logs if r.msg == "stopped"]
     assert stopped == pytest.approx(2.0, abs=0.11)
-    # Python's report of the failed thread, with the student's line
-    output = "\n".join(printed(result))
+    # Python's report of the failed thread, with the student's line, on stderr
+    output = "\n".join(r.msg for r in result.logs if r.node.endswith(":stderr"))
     assert "ValueError: a thread fails" in output and 'raise ValueError("a thread fails")' in output
 
 
@@ -349,10 +349,12 @@ def test_threads_in_an_in_process_controller_are_refused_with_a_clear_message(
     assert result.crashes == [] and result.sim_time == pytest.approx(1.0)
 
 
-def test_threads_waiting_for_ever_when_the_run_ends_let_the_program_end(tmp_path: Path) -> None:
+def test_threads_waiting_for_ever_on_each_other_are_a_deadlock_at_once(tmp_path: Path) -> None:
     """A thread waits for an event nobody sets, main() joins it: a hung
-    program on a robot. When the run ends, the waits end, so the program
-    finishes (it is not killed, and nothing is reported as a crash)."""
+    program on a robot. In simulated time nothing else can happen, so it is
+    reported then, as a deadlock at main()'s line (the waiting thread runs no
+    line of the student's), instead of ending the waits when the run ends as
+    if the program had gone on (it printed "joined")."""
     path = write(tmp_path, """
         import threading
         import rclpy
@@ -368,5 +370,7 @@ def test_threads_waiting_for_ever_when_the_run_ends_let_the_program_end(tmp_path
             print("joined", flush=True)
     """)
     result = run([path], duration=1.0)
-    assert result.crashes == []
-    assert printed(result) == ["joined"]
+    [crash] = result.crashes
+    assert crash.kind == "deadlock" and crash.t == 0.0
+    assert [frame.splitlines()[1].strip() for frame in crash.frames] == ["waiter.join()"]
+    assert printed(result) == []

@@ -107,7 +107,7 @@ def run(
         return
     from turtletui.api import run as run_controllers
     from turtletui.compat.ros_args import RosArgsError
-    from turtletui.graph.logs import OUTPUT_SUFFIX
+    from turtletui.graph.logs import ERROR_SUFFIX, OUTPUT_SUFFIX
     from turtletui.runtime.loader import ControllerError
     from turtletui.runtime.resolve import resolve_controllers
 
@@ -123,11 +123,14 @@ def run(
 
     def print_log(record) -> None:
         # As under ROS: a node's log lines go to stderr in rcutils' console
-        # format, what a sandboxed controller prints goes to stdout as it is.
+        # format, what a sandboxed controller prints goes to stdout as it is,
+        # and what it writes to stderr to stderr.
         if quiet:
             return
         if record.node.endswith(OUTPUT_SUFFIX):
             sys.stdout.write(record.msg + "\n")
+        elif record.node.endswith(ERROR_SUFFIX):
+            sys.stderr.write(record.msg + "\n")
         else:
             sys.stderr.write(record.format() + "\n")
 

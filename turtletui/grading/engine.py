@@ -27,7 +27,7 @@ from turtletui.grading.pictures import picture_of_trace
 from turtletui.grading.results import FAILED, PASSED, Picture, SubmissionResult, TestResult
 from turtletui.grading.trace import Trace, TraceCollector
 from turtletui.graph.introspection import NEVER_MATCH, is_dangling_warning, is_qos_warning
-from turtletui.graph.logs import OUTPUT_SUFFIX, LogRecord
+from turtletui.graph.logs import PRINTED_SUFFIXES, LogRecord
 from turtletui.lessons.loader import display_path
 from turtletui.lessons.model import CheckSpec, Lesson, Scenario
 from turtletui.messages import (
@@ -425,7 +425,7 @@ def _likely_causes(trace: Trace, *, hidden: bool = False) -> list[str]:
         kind = _cause_kind(r) if r.node == "turtletui" else None
         if kind is not None:
             causes.append(_HIDDEN_CAUSES[kind] if hidden else r.msg)
-        elif r.node.endswith(OUTPUT_SUFFIX) and DONE_CALLBACK_FAILED in r.msg:
+        elif r.node.endswith(PRINTED_SUFFIXES) and DONE_CALLBACK_FAILED in r.msg:
             error = "" if hidden else f" The error: {r.msg.split(DONE_CALLBACK_FAILED, 1)[1].strip()}"
             causes.append(
                 "A done callback of your node raised an error, which rclpy only prints as a warning "

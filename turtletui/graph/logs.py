@@ -10,6 +10,11 @@ LEVELS_BY_NAME = {name: level for level, name in LEVEL_NAMES.items()}
 LEVELS_BY_NAME["WARNING"] = WARN
 OUTPUT_SUFFIX = ":stdout"
 """Ends the node name of a record that holds a line a sandboxed controller printed (not logged)."""
+ERROR_SUFFIX = ":stderr"
+"""Ends the node name of a record that holds a line a sandboxed controller wrote
+to stderr (print(..., file=sys.stderr), a warning, a thread's traceback)."""
+PRINTED_SUFFIXES = (OUTPUT_SUFFIX, ERROR_SUFFIX)
+"""A record whose node name ends with one of these was printed, not logged (``str.endswith``)."""
 
 
 class LogRecord(NamedTuple):

@@ -133,16 +133,27 @@ def size_text(size: int) -> str:
 class OutputBudget:
     """Turns a controller's raw output into lines to show, within a budget of
     bytes and lines per run; a line longer than ``line_chars`` is cut. What is
-    over is counted: :meth:`dropped` says how much at the end."""
+    over is counted: :meth:`dropped` says how much at the end. The budget is
+    shared by stdout and stderr (``feed(..., stderr=True)``, shown by
+    ``show_stderr``), each stream cut into lines of its own."""
 
-    def __init__(self, show: Callable[[str], None], *, max_bytes: int, max_lines: int, line_chars: int) -> None:
-        self._show = show
+    def __init__(
+        self,
+        show: Callable[[str], None],
+        *,
+        max_bytes: int,
+        max_lines: int,
+        line_chars: int,
+        show_stderr: Callable[[str], None] | None = None,
+    ) -> None:
+        self._shows = (show, show_stderr or show)
         self.max_bytes = max_bytes
         self.max_lines = max_lines
         self.line_chars = line_chars
-        self._buffer = b""
-        self._skipping = False
-        """Past the cut of a long line: drop until its end."""
+        self._buffers = [b"", b""]
+        """Each stream's line not ended yet (stdout, stderr)."""
+        self._skipping = [False, False]
+        """Past the cut of a long line: drop until its end (each stream)."""
         self.over = False
         """The budget is spent: everything from now on is dropped."""
         self.shown_bytes = 0
@@ -151,26 +162,29 @@ class OutputBudget:
         self.dropped_lines = 0
         self.cut_lines = 0
 
-    def feed(self, data: bytes, final: bool = False) -> bool:
-        """Show the complete lines of ``data`` (all of it when ``final``).
-        Returns True when this call used up the budget."""
+    def feed(self, data: bytes, final: bool = False, *, stderr: bool = False) -> bool:
+        """Show the complete lines of ``data`` (all of it when ``final``),
+        written to stdout (or ``stderr``). Returns True when this call used up the budget."""
         if self.over:
             self._drop(data)
             return False
-        if self._skipping:
+        stream = int(stderr)
+        if self._skipping[stream]:
             rest, newline, data = data.partition(b"\n")
             self.dropped_bytes += len(rest)
             if not newline:
                 return False
-            self._skipping = False
-        *lines, self._buffer = (self._buffer + data).split(b"\n")
-        if final and self._buffer:
-            lines.append(self._buffer)
-            self._buffer = b""
-        elif len(self._buffer) > 4 * self.line_chars:  # a line without end yet: show its start
-            lines.append(self._buffer)
-            self._buffer = b""
-            self._skipping = True
+            self._skipping[stream] = False
+        *lines, buffer = (self._buffers[stream] + data).split(b"\n")
+        if final and buffer:
+            lines.append(buffer)
+            buffer = b""
+        elif len(buffer) > 4 * self.line_chars:  # a line without end yet: show its start
+            lines.append(buffer)
+            buffer = b""
+            self._skipping[stream] = True
+        self._buffers[stream] = buffer
+        show = self._shows[stream]
         for index, line in enumerate(lines):
             text, cut = self._cut(line)
             size = len(line) - cut + 1
@@ -178,16 +192,16 @@ class OutputBudget:
                 self.over = True
                 rest = lines[index:]
                 self.dropped_lines += len(rest)
-                self.dropped_bytes += sum(len(item) + 1 for item in rest) + len(self._buffer)
-                self._buffer = b""
-                self._skipping = False
+                self.dropped_bytes += sum(len(item) + 1 for item in rest) + sum(map(len, self._buffers))
+                self._buffers = [b"", b""]
+                self._skipping = [False, False]
                 return True
             self.shown_lines += 1
             self.shown_bytes += size
             if cut:
                 self.dropped_bytes += cut
                 self.cut_lines += 1
-            self._show(text)
+            show(text)
         return False
 
     def _cut(self, line: bytes) -> tuple[str, int]:

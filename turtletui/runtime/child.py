@@ -219,6 +219,46 @@ def _wait_to_be_ended(fd_in: int, seconds: float = 10.0) -> None:
             return
 
 
+def _finish(outbox: ParentOutbox, loopback: Any, fd_in: int, fd_out: int, crash: protocol.Crash | None) -> None:
+    """Send the last report (saying ``crash``), wait to be ended and exit."""
+    try:
+        sys.stdout.flush()
+        sys.stderr.flush()
+        last = outbox.report(None, done=True, crash=crash)
+        if loopback is not None:
+            loopback.finish(last)
+        else:
+            wire.write_frame(fd_out, protocol.encode_report(last))
+    except (OSError, wire.WireError):
+        pass
+    except Exception:  # noqa: BLE001 - the report itself failed; say so on stderr
+        traceback.print_exc()
+    _wait_to_be_ended(fd_in)
+    os._exit(0)
+
+
+def _deadlock_crash(idents: list[int], path: Any) -> protocol.Crash:
+    """The Crash of a deadlock among the threads ``idents`` (the one that found
+    it last): where each waits, its innermost line of the student's files."""
+    from turtletui.runtime.loader import frame_text, own_files
+
+    mine = own_files(path) if path is not None else None
+    stacks = sys._current_frames()
+    stacks[threading.get_ident()] = sys._getframe()
+    frames = []
+    for ident in idents:
+        stack = traceback.extract_stack(stacks[ident]) if ident in stacks else []
+        own = [f for f in stack if mine is not None and mine(f.filename)]
+        if own:
+            f = own[-1]
+            frames.append(frame_text(f.filename, f.lineno, f.name, f.line or ""))
+    if len(idents) == 1:
+        why = "it waits for a lock that only it could release (a threading.Lock taken twice?)"
+    else:
+        why = f"each of its {len(idents)} threads waits for a lock (or a join, an event) that only another could release"
+    return protocol.Crash("deadlock", f"deadlock: {why}; under ROS the program would hang here", tuple(frames))
+
+
 def main(config: dict[str, Any] | None = None) -> None:
     """Run the controller ``config`` describes (by default: the JSON in argv[1]),
     report to the parent and exit."""
@@ -246,7 +286,7 @@ def main(config: dict[str, Any] | None = None) -> None:
         spin_nodes,
         user_frames,
     )
-    from turtletui.runtime.report import exit_message
+    from turtletui.runtime.report import exit_message, exited_in_callback
 
     distro = resolve_distro(config.get("distro"))
     compat.install(distro)
@@ -266,6 +306,10 @@ def main(config: dict[str, Any] | None = None) -> None:
     compat_context.reset_default_context()
     compat_context.bind_host(host)
     scheduler.install(host.scheduler)
+    label_path = None if config.get("path") is None else __import__("pathlib").Path(config["path"])
+    host.scheduler.deadlocked = lambda idents: _finish(
+        outbox, loopback, fd_in, fd_out, _deadlock_crash(idents, label_path)
+    )
     virtual_time.install_simulated_sleep(host)
     virtual_time.install_simulated_select(host)
     if not config.get("realtime"):
@@ -301,6 +345,8 @@ def main(config: dict[str, Any] | None = None) -> None:
     except SystemExit as exc:
         if exc.code not in (None, 0):
             crash = protocol.Crash("exit", exit_message(exc.code), tuple(user_frames(exc.__traceback__, spec.path)))
+        elif exited_in_callback(exc):  # said in the log, as the program's clean end (no crash)
+            crash = protocol.Crash(protocol.EXITED, "exited with status 0", tuple(user_frames(exc.__traceback__, spec.path)))
     except MemoryError as exc:
         # Free what the failed frames hold before building the report.
         traceback.clear_frames(exc.__traceback__)
@@ -315,20 +361,7 @@ def main(config: dict[str, Any] | None = None) -> None:
         message = f"{type(exc).__name__}: {exc}" if str(exc) else type(exc).__name__
         kind = "memory" if _out_of_memory(exc) else "exception"
         crash = protocol.Crash(kind, message, tuple(user_frames(exc.__traceback__, spec.path)))
-    try:
-        sys.stdout.flush()
-        sys.stderr.flush()
-        last = outbox.report(None, done=True, crash=crash)
-        if loopback is not None:
-            loopback.finish(last)
-        else:
-            wire.write_frame(fd_out, protocol.encode_report(last))
-    except (OSError, wire.WireError):
-        pass
-    except Exception:  # noqa: BLE001 - the report itself failed; say so on stderr
-        traceback.print_exc()
-    _wait_to_be_ended(fd_in)
-    os._exit(0)
+    _finish(outbox, loopback, fd_in, fd_out, crash)
 
 
 if __name__ == "__main__":

@@ -14,12 +14,12 @@ Report stamped with another instant than the replay's, means the
 controller tampered with its copy: the run ends as ``tampered``.
 
 A batch is a frame (turtletui.runtime.wire) of records, each:
-``<q now_ns><d seconds><q output bytes><I digest length><I report length>``,
+``<q now_ns><d seconds><q stdout bytes><q stderr bytes><I digest length><I report length>``,
 then the digest (empty most of the time) and the Report's JSON
 (turtletui.runtime.protocol). ``seconds`` is the wall time the controller
-took to answer (the parent's budget.Pace charges it); ``output bytes``
-counts what the child had printed by then, so that the parent shows each
-printed line at the instant it was printed, as in lockstep.
+took to answer (the parent's budget.Pace charges it); ``stdout bytes`` and
+``stderr bytes`` count what the child had written to each by then, so that
+the parent shows each line at the instant it was printed, as in lockstep.
 """
 
 from __future__ import annotations
@@ -43,7 +43,7 @@ from turtletui.runtime.simulation import Simulation
 
 _HEADER = struct.Struct("<qq")
 """A batch's (and the journal's) head: the batch's number, the bytes of records after it."""
-_RECORD = struct.Struct("<qdqII")
+_RECORD = struct.Struct("<qdqqII")
 DIGEST_EVERY = 16
 """Every this many exchanges (counted from the first), the record carries the copy's digest."""
 _BATCH_RECORDS = 512
@@ -59,7 +59,7 @@ TAMPERED = "tampered"
 
 # -- the child's side --------------------------------------------------------------------------------
 class _CountedOutput(io.RawIOBase):
-    """The child's stdout and stderr: counts the bytes written through it."""
+    """The child's stdout or stderr: counts the bytes written through it."""
 
     def __init__(self, fd: int) -> None:
         super().__init__()
@@ -81,19 +81,21 @@ class _CountedOutput(io.RawIOBase):
         return done
 
 
-def count_output() -> _CountedOutput:
-    """Route sys.stdout and sys.stderr through one counter (the child's fd 1
-    and 2 are the same pipe)."""
+def count_output() -> tuple[_CountedOutput, _CountedOutput]:
+    """Route sys.stdout and sys.stderr (the child's fd 1 and 2, two pipes)
+    through a counter each."""
     import sys
 
-    counted = _CountedOutput(1)
-    for name in ("stdout", "stderr"):
+    counters = []
+    for fd, name in ((1, "stdout"), (2, "stderr")):
+        counted = _CountedOutput(fd)
         stream = getattr(sys, name)
         text = io.TextIOWrapper(
             counted, encoding=stream.encoding, errors=stream.errors, write_through=True, line_buffering=False
         )
         setattr(sys, name, text)
-    return counted
+        counters.append(counted)
+    return counters[0], counters[1]
 
 
 class Loopback(SandboxHost):
@@ -110,7 +112,7 @@ class Loopback(SandboxHost):
         self.proxy.build = _trusted_build
         self.end_ns = end_ns
         self.fd_out = fd_out
-        self.output = count_output()
+        self.output, self.errors = count_output()
         self._index = 0
         self._digest = b""
         self._tick_ns = 0
@@ -189,7 +191,9 @@ class Loopback(SandboxHost):
         if self._length + size > len(journal) - _HEADER.size:
             self.flush()
         at = _HEADER.size + self._length
-        _RECORD.pack_into(journal, at, self._tick_ns, seconds, self.output.count, len(digest), len(payload))
+        _RECORD.pack_into(
+            journal, at, self._tick_ns, seconds, self.output.count, self.errors.count, len(digest), len(payload)
+        )
         at += _RECORD.size
         journal[at : at + len(digest)] = digest
         journal[at + len(digest) : at + size - _RECORD.size] = payload
@@ -248,7 +252,7 @@ class FastHost(SandboxHost):
         os.ftruncate(fd, JOURNAL_BYTES)
         self.journal = mmap.mmap(fd, JOURNAL_BYTES)
         self.process.journal_fd = fd
-        self._records: deque[tuple[int, float, int, bytes, bytes]] = deque()
+        self._records: deque[tuple[int, float, int, int, bytes, bytes]] = deque()
         self._index = 0
         self._seq = 0
         """The number of the next batch."""
@@ -303,7 +307,7 @@ class FastHost(SandboxHost):
     def _replay(self, timeout: float, ours: bytes, due: bool) -> float:
         """Check and apply the child's next record; the wall seconds it took to
         answer. Raises _Stop when the run ended here."""
-        now_ns, seconds, printed, digest, payload = self._next_record(timeout)
+        now_ns, seconds, printed, errors, digest, payload = self._next_record(timeout)
         self._index += 1
         if now_ns != self.graph.now_ns:
             self._tampered(
@@ -312,7 +316,7 @@ class FastHost(SandboxHost):
             )
         if due and digest != ours:
             self._tampered(replica.describe_difference(digest, ours) if digest else "it did not say where its turtles were")
-        self.process.show_output_until(printed)
+        self.process.show_output_until(printed, errors)
         if payload[:1] == b"\0":
             self._fail("flood", f"sent {payload[1:20].decode(errors='replace')} bytes in one step (limit {wire.MAX_REPLY_BYTES})")
             raise _Stop
@@ -324,7 +328,7 @@ class FastHost(SandboxHost):
         self._fail(TAMPERED, f"tampered with the simulator: {why}; the run is not graded")
         raise _Stop
 
-    def _next_record(self, timeout: float) -> tuple[int, float, int, bytes, bytes]:
+    def _next_record(self, timeout: float) -> tuple[int, float, int, int, bytes, bytes]:
         """The child's next record, within ``timeout`` seconds of wall time;
         raises _Stop when the child is gone (or stuck) and every record it
         wrote is replayed."""
@@ -381,7 +385,7 @@ class FastHost(SandboxHost):
         return True
 
 
-def _records(payload: bytes, at: int) -> list[tuple[int, float, int, bytes, bytes]]:
+def _records(payload: bytes, at: int) -> list[tuple[int, float, int, int, bytes, bytes]]:
     """The records of one batch from byte ``at``; ValueError if they are malformed."""
     out = []
     view = memoryview(payload)
@@ -390,12 +394,13 @@ def _records(payload: bytes, at: int) -> list[tuple[int, float, int, bytes, byte
     while at < end:
         if at + size > end:
             raise ValueError("short record")
-        now_ns, seconds, printed, digest_len, report_len = unpack(view, at)
+        now_ns, seconds, printed, errors, digest_len, report_len = unpack(view, at)
         at += size
         stop = at + digest_len + report_len
         if stop > end:
             raise ValueError("short record")
-        out.append((now_ns, seconds, printed, bytes(view[at : at + digest_len]), bytes(view[at + digest_len : stop])))
+        digest = bytes(view[at : at + digest_len])
+        out.append((now_ns, seconds, printed, errors, digest, bytes(view[at + digest_len : stop])))
         at = stop
     return out
 

@@ -65,8 +65,8 @@ def _prctl(option: int, value: int) -> bool:
 
 
 def serve(sock_fd: int, parent: int, distro: str | None = None, template: bool = False) -> None:
-    """The server's loop: one request (a JSON config and three descriptors:
-    the child's input, its answers, its output) forks one run child of
+    """The server's loop: one request (a JSON config and four descriptors:
+    the child's input, its answers, its stdout and its stderr) forks one run child of
     ROS 2 ``distro``; a ``template``'s request (a token and a socket) forks a
     server instead. It ends with the process that started it (``parent``),
     killed by the kernel then if it is still busy, not only when its socket closes."""
@@ -96,13 +96,13 @@ def serve(sock_fd: int, parent: int, distro: str | None = None, template: bool =
 
 
 def _serve_runs(sock: socket.socket, main: Callable[[dict[str, Any]], None]) -> None:
-    """A server's loop: each request (its config, and the run's three or four
+    """A server's loop: each request (its config, and the run's four to six
     descriptors) forks a run child."""
 
     def run_child(request: Any, fds: list[int]) -> int:
-        return _fork(request, fds, sock, main) if 3 <= len(fds) <= 3 + len(_EXTRA_FDS) else 0
+        return _fork(request, fds, sock, main) if _FIXED_FDS <= len(fds) <= _FIXED_FDS + len(_EXTRA_FDS) else 0
 
-    _answer(sock, 1 << 20, 3 + len(_EXTRA_FDS), run_child)
+    _answer(sock, 1 << 20, _FIXED_FDS + len(_EXTRA_FDS), run_child)
 
 
 def _answer(sock: socket.socket, size: int, max_fds: int, fork: Callable[[Any, list[int]], int]) -> None:
@@ -240,8 +240,11 @@ def _wait_for_new_parent(middle: int) -> None:
         _real_sleep(0.0002)
 
 
+_FIXED_FDS = 4
+"""A run child's descriptors in every request: its input, its answers, its
+stdout and its stderr (two pipes: the parent tells them apart, as a terminal does)."""
 _EXTRA_FDS = ("fd_stack", "fd_journal")
-"""A run child's optional descriptors after its input, answers and output: the
+"""A run child's optional descriptors after its input, answers, stdout and stderr: the
 memory file for its stack dump (turtletui.runtime.stuck) and the fast path's
 journal (turtletui.runtime.fastpath)."""
 
@@ -282,12 +285,12 @@ def _run(request: dict[str, Any], fds: list[int], sock: socket.socket, main: Any
         sock.close()
         os.setsid()
         _prctl(_PR_SET_DUMPABLE, 1)  # an ordinary process again, as if freshly started
-        fd_in, fd_out, output, *extra = fds
+        fd_in, fd_out, output, errors, *extra = fds
         devnull = os.open(os.devnull, os.O_RDONLY)
         os.dup2(devnull, 0)
         os.dup2(output, 1)
-        os.dup2(output, 2)
-        for fd in (devnull, output):
+        os.dup2(errors, 2)
+        for fd in (devnull, output, errors):
             if fd > 2:
                 os.close(fd)
         if request.get("cwd"):
@@ -315,10 +318,11 @@ class ForkedChild:
     """A run child (or a server) forked by a server (a template), seen like a
     subprocess.Popen of it."""
 
-    def __init__(self, pid: int, output_fd: int | None = None) -> None:
+    def __init__(self, pid: int, output_fd: int | None = None, errors_fd: int | None = None) -> None:
         self.pid = pid
         self.returncode: int | None = None
         self.stdout = None if output_fd is None else os.fdopen(output_fd, "rb", buffering=0)
+        self.stderr = None if errors_fd is None else os.fdopen(errors_fd, "rb", buffering=0)
 
     def poll(self) -> int | None:
         if self.returncode is None:
@@ -395,24 +399,28 @@ class ForkServer:
     def spawn(self, config: dict[str, Any], cwd: str | None, fds: tuple[int, ...], timeout: float) -> ForkedChild | None:
         """Fork a run child reading ``fds[0]`` and answering on ``fds[1]`` (and
         given the descriptors after them that its config names: _EXTRA_FDS);
-        its output comes from the returned child's ``stdout``. None if the
+        its output comes from the returned child's ``stdout`` and ``stderr``. None if the
         server did not answer with a child of this process within ``timeout``."""
         output_r, output_w = os.pipe()
+        errors_r, errors_w = os.pipe()
         try:
             payload = json.dumps({"config": config, "cwd": cwd}).encode()
             self.sock.settimeout(timeout)
-            socket.send_fds(self.sock, [payload], [*fds[:2], output_w, *fds[2:]])
+            socket.send_fds(self.sock, [payload], [*fds[:2], output_w, errors_w, *fds[2:]])
             answer = self.sock.recv(64)
             pid = int(answer) if answer else 0
         except (OSError, ValueError):
             pid = 0
         finally:
             os.close(output_w)
+            os.close(errors_w)
         if pid <= 0 or pid == self.proc.pid or not _is_my_child(pid):
             os.close(output_r)
+            os.close(errors_r)
             return None
         os.set_blocking(output_r, False)
-        return ForkedChild(pid, output_r)
+        os.set_blocking(errors_r, False)
+        return ForkedChild(pid, output_r, errors_r)
 
     def alive(self) -> bool:
         return self.proc.poll() is None

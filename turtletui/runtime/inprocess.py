@@ -28,7 +28,9 @@ from turtletui.runtime.report import (
     CrashReport,
     crash_from_exception,
     exit_message,
+    exited_in_callback,
     log_ended_early,
+    log_exited,
     stop_turtles,
 )
 from turtletui.runtime.scheduler import CLOCK_READS_PER_STEP, CLOCK_STEP_NS
@@ -174,6 +176,8 @@ def run_in_process(
     except SystemExit as exc:
         if exc.code not in (None, 0):
             crash = CrashReport(spec.label, sim.t, "exit", exit_message(exc.code), user_frames(exc.__traceback__, spec.path))
+        elif exited_in_callback(exc) and sim.graph.now_ns < end_ns:
+            log_exited(sim.graph, spec.label, sim.t, user_frames(exc.__traceback__, spec.path))
         else:
             ended = True
     except BaseException as exc:  # noqa: BLE001 - controller code may raise anything

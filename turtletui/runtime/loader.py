@@ -6,6 +6,7 @@ import ast
 import importlib.abc
 import importlib.util
 import inspect
+import os
 import sys
 import types
 from collections.abc import Callable
@@ -282,20 +283,52 @@ class _AfterImport(importlib.abc.MetaPathFinder):
 
 
 def user_frames(tb: Any, path: Path | None) -> list[str]:
-    """Traceback lines from the controller's own file; for a controller that is
-    not one file (a plugin's node factory), every frame outside turtletui."""
+    """Traceback lines from the student's own files (:func:`own_files`: the
+    controller file and the modules of its folder or package, such as a
+    helper it imports); for a controller that is not one file (a plugin's
+    node factory), every frame outside turtletui."""
     import traceback
 
     frames = traceback.extract_tb(tb)
     if path is not None:
-        target = str(path.resolve())
-        own = [f for f in frames if f.filename == target]
+        mine = own_files(path)
+        own = [f for f in frames if mine(f.filename)]
     else:
         package = str(Path(__file__).resolve().parents[1]) + "/"
         # "<turtletui pkg/msg/Name>": a message class's generated methods (turtletui.interfaces)
         own = [f for f in frames if not f.filename.startswith((package, "<turtletui "))]
     frames = own or frames[-1:]
     return [frame_text(f.filename, f.lineno, f.name, f.line or "") for f in frames]
+
+
+def own_files(path: Path) -> Callable[[str], bool]:
+    """Which source files are the student's, for the controller file ``path``:
+    ``.py`` files under the folder it sits in (for a file inside packages,
+    the folder above the outermost: the course's ``my_robot_controller/``
+    package and its helpers), but none of an interpreter's or a virtual
+    environment's (a venv in that folder, site-packages) and none of turtletui's."""
+    import sysconfig
+
+    target = str(path.resolve())
+    root = str(_enclosing_packages(Path(target))[1]) + os.sep
+    others = {str(Path(__file__).resolve().parents[1]) + os.sep}
+    for prefix in (sys.prefix, sys.base_prefix, sys.exec_prefix, *sysconfig.get_paths().values()):
+        others.add(os.path.join(prefix, ""))
+    others_tuple = tuple(others)
+
+    def mine(filename: str) -> bool:
+        if filename == target:
+            return True
+        if not filename.endswith(".py") or not filename.startswith(root) or filename.startswith(others_tuple):
+            return False
+        parts = filename[len(root):].split(os.sep)
+        return not any(part in _NOT_OWN_FOLDERS or part.startswith(".") for part in parts[:-1])
+
+    return mine
+
+
+_NOT_OWN_FOLDERS = frozenset({"site-packages", "dist-packages", "__pypackages__", "node_modules"})
+"""Folders whose modules are installed ones, wherever they are (a venv in the student's folder)."""
 
 
 def frame_text(filename: str, lineno: int | None, name: str, source: str) -> str:

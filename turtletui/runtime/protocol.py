@@ -264,6 +264,11 @@ class Crash(NamedTuple):
     """Traceback lines from the controller's own file."""
 
 
+EXITED = "exited"
+"""A Crash's kind for no crash: the program called ``sys.exit(0)`` in a
+callback and ended cleanly (the parent notes where, as a clean end)."""
+
+
 class Report(NamedTuple):
     """Child to parent, every exchange: what its nodes did since the last one."""
 

@@ -18,7 +18,7 @@ if TYPE_CHECKING:
 class CrashReport:
     """A controller that stopped abnormally.
 
-    ``kind`` is "exception", "exit", "timeout", "memory", "cpu", "killed",
+    ``kind`` is "exception", "exit", "timeout", "deadlock", "memory", "cpu", "killed",
     "slow" (too slow for real time) or "time" (over the run's time limit);
     ``frames`` are traceback lines from the controller's own file.
     """
@@ -45,6 +45,7 @@ _VERB = {
     "exception": "crashed",
     "exit": "exited",
     "timeout": "was stopped",
+    "deadlock": "was stopped",
     "memory": "was stopped",
     "cpu": "was stopped",
     "slow": "was stopped",
@@ -67,6 +68,30 @@ def log_ended_early(graph: Graph, label: str, t: float) -> None:
     main() that never spins, or returns at once), which alone explains a
     silent node."""
     graph.log("turtletui", INFO, f"{label} ended at t={t:.3f} s, before the run did, and its nodes stopped with it: {ENDED_EARLY_ADVICE}")
+
+
+def log_exited(graph: Graph, label: str, t: float, frames: list[str]) -> None:
+    """Note that controller ``label``'s program ended with ``sys.exit(0)`` (or
+    ``sys.exit()``) in a callback at ``t`` (seconds): as under ROS, SystemExit
+    goes out of rclpy.spin and the program ends with status 0, which is no
+    crash; its nodes stopped with it. ``frames`` (CrashReport's) say where."""
+    where = f" ({frames[-1].splitlines()[0].strip()})" if frames else ""
+    graph.log("turtletui", INFO, f"{label} exited with status 0 at t={t:.3f} s{where}, before the run did: its nodes stopped with it")
+
+
+def exited_in_callback(exc: BaseException) -> bool:
+    """Whether SystemExit ``exc`` was raised inside a callback: its traceback
+    goes through rclpy's spin (turtletui.compat), as a ``sys.exit()`` at the
+    end of the program's own code does not."""
+    import os
+
+    compat = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "compat") + os.sep
+    tb = exc.__traceback__
+    while tb is not None:
+        if tb.tb_frame.f_code.co_filename.startswith(compat):
+            return True
+        tb = tb.tb_next
+    return False
 
 
 def exit_message(code: object) -> str:

@@ -23,7 +23,13 @@ from turtletui.interfaces import InterfaceError
 from turtletui.runtime import protocol, wire
 from turtletui.runtime.budget import Pace
 from turtletui.runtime.loader import ControllerSpec, check_source, factory_reference, import_root
-from turtletui.runtime.report import CrashReport, log_crash, log_ended_early, stop_turtles
+from turtletui.runtime.report import (
+    CrashReport,
+    log_crash,
+    log_ended_early,
+    log_exited,
+    stop_turtles,
+)
 from turtletui.runtime.sandbox_process import ChildFailed, ChildProcess
 from turtletui.runtime.sandbox_proxy import GraphProxy
 from turtletui.runtime.simulation import MAX_ROUNDS_PER_INSTANT, Simulation
@@ -79,7 +85,7 @@ class Limits:
     running as root drops the student's code to an unprivileged user."""
 
 
-_CRASH_KINDS = frozenset({"exception", "exit", "memory", "load", "cpu", "timeout", "killed"})
+_CRASH_KINDS = frozenset({"exception", "exit", "memory", "load", "cpu", "timeout", "deadlock", "killed"})
 """Kinds a child may report about itself (anything else is reported as an exception)."""
 _DECODED_KEPT = 64
 _DECODED_BYTES = 2048
@@ -397,9 +403,13 @@ class SandboxHost:
             self.wake_ns, self._poll = wake, False
         if report.done:
             crash = report.crash
-            if crash is None:
-                if not self._ending:
+            if crash is None or crash.kind == protocol.EXITED:
+                if self._ending:
+                    pass  # it ended as the run did
+                elif crash is None:
                     log_ended_early(self.graph, self.spec.label, self.sim.t)
+                else:
+                    log_exited(self.graph, self.spec.label, self.sim.t, [frame[:1000] for frame in crash.frames[:50]])
                 self._terminate()
             else:
                 kind = crash.kind if crash.kind in _CRASH_KINDS else "exception"

@@ -22,7 +22,7 @@ from pathlib import Path
 from time import monotonic as _monotonic  # bound at import: an in-process run simulates time's
 from typing import TYPE_CHECKING, Any
 
-from turtletui.graph.logs import INFO, OUTPUT_SUFFIX, WARN
+from turtletui.graph.logs import ERROR_SUFFIX, INFO, OUTPUT_SUFFIX, WARN
 from turtletui.runtime import forkserver, stuck, wire
 from turtletui.runtime.budget import OutputBudget, size_text
 from turtletui.runtime.loader import ControllerSpec
@@ -72,8 +72,8 @@ Log = Callable[[str, int, str], object]
 
 
 class ChildProcess:
-    """One sandboxed controller's process and its three pipes (its input, its
-    answers, its printed output)."""
+    """One sandboxed controller's process and its four pipes (its input, its
+    answers, its stdout and its stderr)."""
 
     def __init__(self, spec: ControllerSpec, limits: Limits, log: Log, *, spin: float) -> None:
         self.spec = spec
@@ -92,13 +92,17 @@ class ChildProcess:
         """A process holding the token that is not this child's (its fork server)."""
         self._to_child = -1
         self._answers: wire.FrameReader | None = None
-        self._stdout = -1
-        self._stdout_open = True
-        self._stdout_poll = select.poll()
-        self._held: bytearray | None = None
-        """Fast path: output read but not yet shown (:meth:`hold_output`)."""
-        self._fed = 0
-        """Fast path: bytes of output shown or dropped so far."""
+        self._outputs = [-1, -1]
+        """The pipes of the child's stdout and stderr (read ends)."""
+        self._open = [True, True]
+        self._output_poll = select.poll()
+        self._errors = bytearray()
+        """Lockstep: stderr read while the child runs its step, shown with its
+        answer after the step's stdout, as the fast path shows them."""
+        self._held: list[bytearray] | None = None
+        """Fast path: stdout and stderr read but not yet shown (:meth:`hold_output`)."""
+        self._fed = [0, 0]
+        """Fast path: bytes of stdout and stderr shown or dropped so far."""
         self.max_frame = wire.MAX_REPLY_BYTES
         """The largest frame the child may send."""
         self.journal_fd: int | None = None
@@ -112,6 +116,7 @@ class ChildProcess:
             max_bytes=limits.output_bytes,
             max_lines=limits.output_lines,
             line_chars=limits.output_line_chars,
+            show_stderr=self._show_errors,
         )
 
     @property
@@ -155,10 +160,12 @@ class ChildProcess:
             # What the child printed before answering is logged before the answer.
             on_data=self.drain_output,
         )
-        self._stdout = self.proc.stdout.fileno()
-        os.set_blocking(self._stdout, False)
-        # asked every exchange whether there is output: cheaper than a read that fails
-        self._stdout_poll.register(self._stdout, select.POLLIN)
+        self._outputs = [self.proc.stdout.fileno(), self.proc.stderr.fileno()]
+        for fd in self._outputs:
+            os.set_blocking(fd, False)
+            # asked every exchange whether there is output (one poll for both):
+            # cheaper than a read that fails
+            self._output_poll.register(fd, select.POLLIN)
 
     def _exec(self, config: dict[str, Any], cwd: str | None, fds: tuple[int, ...]) -> subprocess.Popen:
         """Start a fresh interpreter for the child."""
@@ -169,7 +176,7 @@ class ChildProcess:
             [sys.executable, "-s", "-c", _BOOTSTRAP.format(root=_PACKAGE_ROOT), json.dumps(config)],
             stdin=subprocess.DEVNULL,
             stdout=subprocess.PIPE,
-            stderr=subprocess.STDOUT,
+            stderr=subprocess.PIPE,
             pass_fds=fds,
             start_new_session=True,
             cwd=cwd,
@@ -277,10 +284,13 @@ class ChildProcess:
         then to notice a child that died while something it started still holds
         the pipe open (no end of file then)."""
         timeout = _LIVENESS_SECONDS if remaining is None else min(remaining, _LIVENESS_SECONDS)
-        stdout = self._stdout
-        readable, _, _ = select.select([fd, stdout] if self._stdout_open else [fd], [], [], timeout)
-        if stdout in readable:
-            self.drain_output()
+        outputs = [out for out, is_open in zip(self._outputs, self._open, strict=True) if is_open]
+        readable, _, _ = select.select([fd, *outputs], [], [], timeout)
+        if fd in readable:
+            if len(readable) > 1 or self._errors:
+                self.drain_output()  # its answer is coming: everything of its step was written before
+        elif readable:
+            self.drain_output(answered=False)
         if not readable and self.proc is not None and has_exited(self.proc.pid):
             raise self._death()
 
@@ -311,67 +321,94 @@ class ChildProcess:
         return ChildFailed("exit", f"exited with status {code} without finishing its run")
 
     # -- output ---------------------------------------------------------------------------------
-    def drain_output(self, final: bool = False) -> None:
-        """Show what the child printed (within its budget), without waiting."""
-        data = self._read_output(final)
+    def drain_output(self, final: bool = False, *, answered: bool = True) -> None:
+        """Show what the child printed (within its budget), without waiting:
+        its stdout, then (once it ``answered`` its step, or at the ``final``
+        end) its stderr; lines written to each are shown in the order written."""
+        out, err = self._read_output(final)
+        if not (out or err or final or self._errors):
+            return  # the common case, every exchange: nothing written
         held = self._held
         if held is not None:
-            held += data or b""
-            if not final and not self._output.over and len(held) <= self.limits.output_bytes:
+            held[0] += out
+            held[1] += err
+            if not final and not self._output.over and len(held[0]) + len(held[1]) <= self.limits.output_bytes:
                 return  # shown when the step it was printed in is replayed
             # the end, or over its budget anyway: when it is shown no longer matters
-            data = bytes(held)
-            self._fed += len(held)
-            held.clear()
-            self._feed(data, final or not self._stdout_open)
-        elif data is not None:
-            self._feed(data, final or not self._stdout_open)
+            for stream, data in enumerate(held):
+                self._fed[stream] += len(data)
+                self._feed(bytes(data), final or not self._open[stream], stream)
+                data.clear()
+            return
+        if out or final:
+            self._feed(out, final or not self._open[0], 0)
+        errors = self._errors
+        errors += err
+        # a flood of stderr within one step is shown at once: its place no longer matters
+        if final or (errors and (answered or len(errors) > self.limits.output_bytes)):
+            data = bytes(errors)
+            errors.clear()
+            self._feed(data, final or not self._open[1], 1)
 
-    def _read_output(self, final: bool) -> bytes | None:
-        """What the child printed since the last read; None if the pipe was closed
-        before or had nothing."""
-        if self.proc is None or self.proc.stdout is None or not self._stdout_open:
-            return None
-        if not final and not self._stdout_poll.poll(0):
-            return None  # nothing printed (POLLHUP when closed counts as something)
-        chunks = []
-        read = 0
-        try:
-            while read < _OUTPUT_READ_LIMIT:
-                data = os.read(self._stdout, 65536)
-                if not data:
-                    self._stdout_open = False
-                    break
-                read += len(data)
-                chunks.append(data)
-        except (BlockingIOError, OSError, ValueError):
-            pass
-        return b"".join(chunks)
+    def _read_output(self, final: bool) -> tuple[bytes, bytes]:
+        """What the child wrote to stdout and stderr since the last read."""
+        if self.proc is None:
+            return b"", b""
+        if final:
+            streams = [stream for stream in (0, 1) if self._open[stream]]
+        else:
+            # one look at both pipes; nothing written: no read (POLLHUP when closed counts as something)
+            events = self._output_poll.poll(0)
+            if not events:
+                return b"", b""
+            ready = {fd for fd, _ in events}
+            streams = [stream for stream in (0, 1) if self._open[stream] and self._outputs[stream] in ready]
+        found = [b"", b""]
+        for stream in streams:
+            chunks = []
+            read = 0
+            try:
+                while read < _OUTPUT_READ_LIMIT:
+                    data = os.read(self._outputs[stream], 65536)
+                    if not data:
+                        self._open[stream] = False
+                        self._output_poll.unregister(self._outputs[stream])
+                        break
+                    read += len(data)
+                    chunks.append(data)
+            except (BlockingIOError, OSError, ValueError):
+                pass
+            found[stream] = b"".join(chunks)
+        return found[0], found[1]
 
     def hold_output(self) -> None:
         """Fast path: keep what the child prints until :meth:`show_output_until`
         says in which step it printed it."""
-        self._held = bytearray()
+        self._held = [bytearray(), bytearray()]
 
-    def show_output_until(self, total: int) -> None:
-        """Show what the child had printed, counted from its start, by the
-        step that counted ``total`` bytes; the rest waits for its own step."""
+    def show_output_until(self, out_total: int, err_total: int) -> None:
+        """Show what the child had written to stdout and stderr, counted from
+        its start, by the step that counted ``out_total`` and ``err_total``
+        bytes (stdout first); the rest waits for its own step."""
         held = self._held
         assert held is not None
-        if total <= self._fed:
-            return  # nothing printed since: not even a look at the pipe
-        if len(held) < total - self._fed:
+        fed = self._fed
+        if out_total <= fed[0] and err_total <= fed[1]:
+            return  # nothing printed since: not even a look at the pipes
+        if len(held[0]) < out_total - fed[0] or len(held[1]) < err_total - fed[1]:
             self.drain_output()
-        take = min(total - self._fed, len(held))
-        if take > 0:
-            chunk = bytes(held[:take])
-            del held[:take]
-            self._fed += take
-            self._feed(chunk, False)
+        for stream, total in enumerate((out_total, err_total)):
+            data = held[stream]
+            take = min(total - fed[stream], len(data))
+            if take > 0:
+                chunk = bytes(data[:take])
+                del data[:take]
+                fed[stream] += take
+                self._feed(chunk, False, stream)
 
-    def _feed(self, data: bytes, final: bool) -> None:
+    def _feed(self, data: bytes, final: bool, stream: int = 0) -> None:
         # past the budget the output is still read (so the child never blocks), then dropped
-        if self._output.feed(data, final=final):
+        if self._output.feed(data, final=final, stderr=stream == 1):
             self._log(
                 "turtletui",
                 WARN,
@@ -381,6 +418,9 @@ class ChildProcess:
 
     def _show_output(self, line: str) -> None:
         self._log(f"{self.spec.name}{OUTPUT_SUFFIX}", INFO, line)
+
+    def _show_errors(self, line: str) -> None:
+        self._log(f"{self.spec.name}{ERROR_SUFFIX}", INFO, line)
 
     def output_dropped(self) -> str:
         """How much output was not shown ("" if none)."""
@@ -413,8 +453,9 @@ class ChildProcess:
             except OSError:
                 pass
         self.stack_fd = None
-        if proc.stdout:
-            proc.stdout.close()
+        for pipe in (proc.stdout, proc.stderr):
+            if pipe:
+                pipe.close()
         self.proc = None
 
 

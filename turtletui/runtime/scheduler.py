@@ -62,7 +62,7 @@ def _always() -> bool:
 class _Turn:
     """One controller thread as the scheduler sees it."""
 
-    __slots__ = ("park", "ready", "deadline", "spinning", "result", "finished", "daemon")
+    __slots__ = ("park", "ready", "deadline", "spinning", "on_threads", "result", "finished", "daemon", "ident")
 
     def __init__(self, daemon: bool = False) -> None:
         self.park = _allocate_park()
@@ -70,6 +70,10 @@ class _Turn:
         self.ready: Callable[[], bool] | None = None
         self.deadline: int | None = None
         self.spinning = False
+        self.on_threads = False
+        """Its wait can end only by another controller thread (a lock, a join)."""
+        self.ident = 0
+        """The operating-system thread's ident (threading.get_ident())."""
         self.result = False
         self.finished = False
         self.daemon = daemon
@@ -92,27 +96,40 @@ class Scheduler:
         """Threads waiting for their turn, longest first."""
         self._clock_reads = 0
         self._forks = _forks
+        self.current.ident = _thread.get_ident()
+        self.deadlocked: Callable[[list[int]], None] | None = None
+        """Called (with the idents of the threads, the caller's last) when every
+        thread waits for ever on something only another could end: a deadlock,
+        where under ROS the program hangs. Meant not to return (the child ends
+        the run there); if it does, the waits end as at the run's end."""
 
     # -- waiting ------------------------------------------------------------
     def alone(self) -> bool:
         """Whether the controller has one thread (no one to hand over to)."""
         return len(self._threads) == 1 and self._forks == _forks
 
-    def wait(self, ready: Callable[[], bool] | None, deadline: int | None, *, spinning: bool = False) -> bool:
+    def wait(
+        self, ready: Callable[[], bool] | None, deadline: int | None, *, spinning: bool = False, on_threads: bool = False
+    ) -> bool:
         """Let the calling thread wait until ``ready()`` holds (True), or until
         simulated time reaches ``deadline`` ns (False).
 
         Other threads run meanwhile; ``spinning`` says the thread waits for
         its node's callbacks, so time stops at the node's next timer too.
-        Once the run is over, a timed wait ends at once (the clock jumps to
-        its deadline), and so does a wait for ever that nothing else can end.
+        ``on_threads`` says only another controller thread can make ``ready()``
+        hold (a lock, a join): when every thread waits so for ever, that is a
+        deadlock (:attr:`deadlocked`). Once the run is over, a timed wait ends
+        at once (the clock jumps to its deadline), and so does a wait for ever
+        that nothing else can end.
         """
         if self._forks != _forks:
             return self._wait_forked(ready, deadline)
         if len(self._threads) == 1:
+            if on_threads and deadline is None and not (ready is not None and ready()):
+                self._deadlock([self.current])
             return self._wait_alone(ready, deadline, spinning)
         me = self.current
-        me.ready, me.deadline, me.spinning = ready, deadline, spinning
+        me.ready, me.deadline, me.spinning, me.on_threads = ready, deadline, spinning, on_threads
         self._waiting.append(me)
         self._hand_over(me)
         return me.result
@@ -169,6 +186,9 @@ class Scheduler:
             turn = self._next()
             if turn is not None:
                 break
+            waiting = self._waiting
+            if waiting and all(t.on_threads and t.deadline is None for t in waiting):
+                self._deadlock([t for t in waiting if t is not me] + ([me] if me is not None else []))
             if not self._running():
                 # The run is over and nothing can go on: the caller's wait
                 # ends (False), or, if the caller is ending, the longest
@@ -216,6 +236,11 @@ class Scheduler:
             return turn
         return None
 
+    def _deadlock(self, turns: list[_Turn]) -> None:
+        """Every thread in ``turns`` waits for ever on another: say so (:attr:`deadlocked`)."""
+        if self.deadlocked is not None:
+            self.deadlocked([turn.ident for turn in turns])
+
     def _after_the_end(self, deadline: int | None) -> None:
         """The run is over and the simulation gone: a timed wait passes at
         once, and the clock jumps to its end, so that a loop that waits for
@@ -262,6 +287,7 @@ class Scheduler:
         self._waiting.append(turn)
 
         def run() -> None:
+            turn.ident = _thread.get_ident()
             turn.park.acquire()
             try:
                 function(*args, **(kwargs or {}))
@@ -283,7 +309,7 @@ class Scheduler:
         for hook in reversed(list(getattr(threading, "_threading_atexits", ()))):
             hook()
         others = self._threads[1:]
-        self.wait(lambda: all(t.finished or t.daemon for t in others), None)
+        self.wait(lambda: all(t.finished or t.daemon for t in others), None, on_threads=True)
 
 
 class Lock:
@@ -309,7 +335,7 @@ class Lock:
         if scheduler is None:
             raise RuntimeError("a turtletui lock was used with no scheduler")
         deadline = None if timeout == -1 else scheduler.graph.now_ns + seconds_to_ns(timeout)
-        if scheduler.wait(self._free, deadline):
+        if scheduler.wait(self._free, deadline, on_threads=True):
             self._locked = True
             return True
         return False
@@ -399,7 +425,7 @@ def _patch_thread(cls: type, scheduler: Scheduler) -> None:
         if turn is scheduler.current:
             raise RuntimeError("cannot join current thread")
         deadline = None if timeout is None else scheduler.graph.now_ns + seconds_to_ns(max(timeout, 0))
-        if scheduler.wait(lambda: turn.finished, deadline):
+        if scheduler.wait(lambda: turn.finished, deadline, on_threads=True):
             real_join(self)  # its operating-system thread is ending: at once
         return None
 

@@ -6,8 +6,9 @@ student's file it was on, as an exception's report does. The child has
 faulthandler dump every thread's stack, on SIGUSR2, into a memory file the
 parent made (:func:`stack_file`, :func:`install`); the parent signals it
 before stopping it and reads the dump (:func:`where_stuck`). What the child
-wrote is untrusted: only frames of the controller's own file are taken,
-each checked. Linux only (memfd); elsewhere reports say no more than before.
+wrote is untrusted: only frames of the student's own files are taken
+(turtletui.runtime.loader.own_files: the controller file and the modules of
+its folder), each checked. Linux only (memfd); elsewhere reports say no more than before.
 This module must not import numpy or Textual: the child imports it.
 """
 
@@ -17,10 +18,12 @@ import linecache
 import os
 import re
 import signal
+import stat
 import time
+from collections.abc import Callable
 from pathlib import Path
 
-from turtletui.runtime.loader import frame_text
+from turtletui.runtime.loader import frame_text, own_files
 
 SIGNAL = signal.SIGUSR2
 _DUMP_LIMIT = 1 << 16
@@ -51,7 +54,7 @@ def install(fd: int) -> None:
 
 
 def where_stuck(pid: int, fd: int, path: Path) -> list[str]:
-    """The stuck thread's innermost frame in the controller file ``path`` (as
+    """The stuck thread's innermost frame in the student's files (as
     turtletui.runtime.loader.frame_text formats frames), asked of the child
     ``pid`` now; [] if it says nothing usable in time."""
     try:
@@ -78,17 +81,30 @@ def where_stuck(pid: int, fd: int, path: Path) -> list[str]:
 
 
 def stuck_frame(dump: str, path: Path) -> list[str]:
-    """From a faulthandler dump of every thread: the innermost frame in
-    ``path`` of a thread that is not waiting in turtletui's runtime (for its
-    turn, a simulated sleep, the simulator's answer), formatted as a
-    traceback line; [] if none."""
-    target = str(path.resolve())
+    """From a faulthandler dump of every thread: the innermost frame in the
+    student's own files (the controller file ``path``, a helper module of its
+    folder or package) of a thread that is not waiting in turtletui's runtime
+    (for its turn, a simulated sleep, the simulator's answer), formatted as a
+    traceback line; [] if none. ``path`` is the controller file."""
+    mine = own_files(path)
     for block in re.split(r"\n(?=(?:Current thread|Thread) 0x)", dump):
         frames = [m.groups() for m in map(_FRAME.match, block.splitlines()) if m]
         if not frames or frames[0][0].startswith(_WAITING):
             continue  # waiting, or nothing to say
         for filename, line, name in frames:  # most recent call first
-            if filename == target and line.isdigit():
-                linecache.checkcache(target)  # the file may have changed since it was last read
-                return [frame_text(target, int(line), name, linecache.getline(target, int(line)))]
+            if line.isdigit() and mine(filename) and _source_file(filename, mine):
+                linecache.checkcache(filename)  # the file may have changed since it was last read
+                return [frame_text(filename, int(line), name, linecache.getline(filename, int(line)))]
     return []
+
+
+def _source_file(filename: str, mine: Callable[[str], bool]) -> bool:
+    """Whether ``filename`` (named by the child: untrusted) is a plain file of
+    the student's that this process may read a line of: not a link out of
+    their folder (to a file only the grader may read), not a pipe."""
+    real = os.path.realpath(filename)
+    try:
+        regular = stat.S_ISREG(os.stat(real).st_mode)
+    except (OSError, ValueError):
+        return False
+    return regular and (real == filename or mine(real))

@@ -29,7 +29,7 @@ from typing import TYPE_CHECKING
 
 from turtletui.api import run
 from turtletui.errors import TurtletuiError, UsageError
-from turtletui.graph.logs import OUTPUT_SUFFIX, LogRecord
+from turtletui.graph.logs import PRINTED_SUFFIXES, LogRecord
 from turtletui.lessons.loader import display_path
 from turtletui.plugins.manager import Plugins, plugin_manager
 from turtletui.runtime.loader import ControllerSpec
@@ -378,7 +378,7 @@ def _comparable_logs(logs: list[LogRecord], across_hosts: bool) -> list[LogRecor
     # goes to stdout, so between hosts only the log proper is compared.
     if not across_hosts:
         return logs
-    return [record for record in logs if not record.node.endswith(OUTPUT_SUFFIX)]
+    return [record for record in logs if not record.node.endswith(PRINTED_SUFFIXES)]
 
 
 def _compare(shown: str, check: str, a: _Run, b: _Run) -> None:

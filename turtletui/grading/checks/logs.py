@@ -21,7 +21,7 @@ from turtletui.grading.checks.base import (
     turtle_of,
 )
 from turtletui.grading.trace import Trace
-from turtletui.graph.logs import LEVEL_NAMES, OUTPUT_SUFFIX
+from turtletui.graph.logs import LEVEL_NAMES, PRINTED_SUFFIXES
 from turtletui.messages import plural
 
 _LOG = {"pattern": "pattern", "node": "text", "level": "text"}
@@ -145,8 +145,8 @@ def log_period(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     if th.get("in_callback"):
         # A printed line cannot say where it was printed (the sandbox reads it
         # from a pipe), so only the node's logger's lines are judged here.
-        printed = [r for r in _matching_logs(trace, th) if r.node.endswith(OUTPUT_SUFFIX)]
-        trace = replace(trace, logs=[r for r in trace.logs if not r.node.endswith(OUTPUT_SUFFIX)])
+        printed = [r for r in _matching_logs(trace, th) if r.node.endswith(PRINTED_SUFFIXES)]
+        trace = replace(trace, logs=[r for r in trace.logs if not r.node.endswith(PRINTED_SUFFIXES)])
         verdict = _log_period(trace, th)
         if printed and not verdict.passed:
             return Verdict(
@@ -170,7 +170,7 @@ def _unmatched_callback_lines(trace: Trace, th: Mapping[str, Any], verdict: Verd
         if (
             record.in_callback
             and record.node not in ("turtlesim", "turtletui")
-            and not record.node.endswith(OUTPUT_SUFFIX)
+            and not record.node.endswith(PRINTED_SUFFIXES)
             and not pattern.search(record.msg)
         ):
             missed[record.msg] = missed.get(record.msg, 0) + 1
