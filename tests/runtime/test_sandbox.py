@@ -822,7 +822,7 @@ FORGED = {
     "too-big": (struct.pack(">I", 2**31) + b"{}", "flood", "bytes in one step"),
     "unknown-entry": (frame({"teleport": [[1, 2]]}), "exception", "unknown report entry 'teleport'"),
     "log-not-triples": (frame({"log": [1, 2]}), "exception", "a Log must be an array of its fields"),
-    "log-bad-level": (frame({"log": [["loud", "n", "m", True]]}), "exception", "log[0]: Log.level must be an integer"),
+    "log-bad-level": (frame({"log": [["loud", "n", "m", True, 0]]}), "exception", "log[0]: Log.level must be an integer"),
     "decl-empty": (frame({"decl": [[]]}), "exception", "decl[0]: a graph change must be an array"),
     "decl-unknown-kind": (frame({"decl": [["teleport", 1]]}), "exception", "unknown graph change str 'teleport'"),
     "decl-short": (frame({"decl": [["pub", 99, 1, "/x"]]}), "exception", "a DeclarePublisher has 6 fields"),
