@@ -107,6 +107,33 @@ def test_heading_error_wraps_around_pi():
     assert not judge("heading_error", t, theta=0.0, max=0.05).passed
 
 
+def test_longest_turn_adds_up_one_way_across_pi_and_starts_again_on_a_turn_back_or_a_teleport():
+    # left from 0 to 3 rad, across +-pi and on to -2.5 (0.78 rad past pi): 3.78 rad one way
+    left = [(5.0, 5.0, math.remainder(a, math.tau)) for a in np.linspace(0.0, 3.78, 80)]
+    verdict = judge("longest_turn", trace(left), max=4.71)
+    assert verdict.passed and "longest turn one way: 3.78 rad" in verdict.measured
+    # on round to a full turn and a half: the long way
+    longer = [(5.0, 5.0, math.remainder(a, math.tau)) for a in np.linspace(0.0, 3 * math.pi, 150)]
+    verdict = judge("longest_turn", trace(longer), max=4.71)
+    assert not verdict.passed and "9.42 rad (needs <= 4.71 rad)" in verdict.measured
+    assert "1.50 of a full turn" in verdict.measured
+    # the same angles left then right: two turns of half that each
+    back = [(5.0, 5.0, math.remainder(a, math.tau)) for a in np.linspace(0.0, 1.4 * math.pi, 75)]
+    back += list(reversed(back))
+    assert judge("longest_turn", trace(back), max=4.71).passed
+    # a teleport between two left turns ends the first
+    jumps = np.zeros(len(longer), dtype=bool)
+    jumps[75] = True
+    assert judge("longest_turn", trace(longer, jumps={"turtle1": jumps}), max=4.71).passed
+    # with a goal, only the turning on the way there counts: circling it once there is final_error's
+    arrive = [(5.0 + 0.02 * i, 5.0, 0.0) for i in range(50)]
+    circling = arrive + [(6.0, 5.0, math.remainder(a, math.tau)) for a in np.linspace(0.0, 3 * math.pi, 150)]
+    verdict = judge("longest_turn", trace(circling), goal=[6.0, 5.0], max=4.71)
+    assert verdict.passed and "longest turn one way on its way to the goal: 0 rad" in verdict.measured
+    assert not judge("longest_turn", trace(circling), max=4.71).passed
+    assert not judge("longest_turn", trace(circling), goal=[9.0, 5.0], max=4.71).passed  # never got there
+
+
 def test_pen_colour_by_side_and_calls_per_side_change():
     red, green = (255, 0, 0), (0, 255, 0)
     path = [(x, 5.0, 0.0, red if x > 5.5 else green) for x in np.linspace(2, 9, 100)]

@@ -97,3 +97,19 @@ def test_an_action_without_its_turtles_namespace_is_named_with_the_one_meant(gra
     assert result.score == 0.0
     text = feedback_of(result, "goals_sent")[0]
     assert "is an action client of /rotate_absolute, but nothing serves it (did you mean /turtle1/rotate_absolute?)" in text
+
+
+def test_feedback_read_without_its_feedback_field_crashes_and_is_told_the_field(grade):
+    result = grade(LESSON, HERE / "feedback_msg_remaining.py")
+    assert "no_crash" in failed_checks(result)
+    assert result.score == 0.0  # it stops at the first feedback, one goal sent
+    text = feedback_of(result, "no_crash")[0]
+    assert "AttributeError: 'RotateAbsolute_FeedbackMessage' object has no attribute 'remaining'" in text
+    assert "feedback_msg.feedback.remaining" in text
+
+
+def test_the_goals_heading_logged_as_the_remaining_angle_fails_log_feedback(grade):
+    # the words match, the number does not follow the turn: the feedback was never read
+    result = grade(LESSON, HERE / "logs_the_goal_as_remaining.py")
+    assert failed_checks(result) == {"log_feedback"}
+    assert result.score == 9.0

@@ -169,3 +169,24 @@ def test_a_goal_read_as_0_0_is_told_where_the_node_stopped_not_that_its_toleranc
     assert "your node stopped it with zero Twists at (0.04, 0.03), 11.26 m from the goal: does it steer to another goal?" in text
     assert "stops further out than" not in text
     assert "declare it with 8.0, not 8" in feedback(result, "no_crash")
+
+
+def test_an_error_wrapped_into_zero_to_two_pi_turns_the_long_way_and_is_told_so(grade):
+    # brisk gains make the long way round quick: every goal is still reached
+    # in time, and only the turning shows the wrap
+    result = grade(LESSON, HERE / "wraps_into_zero_to_two_pi.py")
+    failures = failed(result)
+    assert set(failures) == {"longest_turn"}
+    # the default goal is up and to the left: the wrap does no harm on the way there
+    assert failures["longest_turn"] == {"goal to the left", "goal behind", "goal due west", "hidden 1", "hidden 2"}
+    assert result.score < 9.0
+    text = feedback(result, "longest_turn")
+    assert "longest turn one way on its way to the goal: " in text and "(needs <= 4.71 rad)" in text
+    assert "e % (2 * math.pi) gives [0, 2 pi)" in text
+
+
+def test_an_error_wrapped_on_one_side_only_spins_due_west_and_is_told_so(grade):
+    result = grade(LESSON, HERE / "wraps_one_side_only.py")
+    assert failed(result) == {"longest_turn": {"goal due west"}}
+    assert result.score < result.max_score
+    assert "leaves errors below -pi unwrapped" in feedback(result, "longest_turn")

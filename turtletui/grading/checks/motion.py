@@ -432,3 +432,53 @@ def heading_error(trace: Trace, th: Mapping[str, Any]) -> Verdict:
         return Verdict(False, "the turtle never published a pose")
     error = abs(math.remainder(poses[-1, 3] - th["theta"], math.tau))
     return measured("final heading error:", bounds(error, th, " rad"))
+
+
+TURN_NOISE = 1e-4
+"""Radians per pose below which a change of heading is noise: it neither ends a turn nor adds to it."""
+
+
+def longest_turn_of(trace: Trace, turtle: str, until: int | None = None) -> float:
+    """The largest angle (radians) the turtle turned one way without turning
+    back, over its poses up to the index ``until`` (all of them by default);
+    a teleport or /reset ends a turn, as a turn the other way does."""
+    poses = trace.pose_array(turtle)[:until]
+    if len(poses) < 2:
+        return 0.0
+    steps = np.diff(np.unwrap(poses[:, 3]))
+    jumped = trace.jumped(turtle)[1 : len(poses)]
+    longest = turn = 0.0
+    for step, jump in zip(steps.tolist(), jumped.tolist(), strict=True):
+        if jump:
+            turn = 0.0
+        elif abs(step) >= TURN_NOISE:
+            turn = turn + step if turn * step >= 0 else step
+            longest = max(longest, abs(turn))
+    return longest
+
+
+@check(
+    "longest_turn",
+    "The largest angle in radians the turtle turned one way without turning back (a teleport "
+    "or /reset starts a new turn), threshold max; with `goal`, only until the turtle first came "
+    "within `tolerance` (0.1 m) of it: a heading error wrapped into [-pi, pi] never turns it "
+    "more than half a turn towards a goal, while circling a goal once there is final_error's to judge.",
+    {**MINMAX, **_GOAL},
+)
+def longest_turn(trace: Trace, th: Mapping[str, Any]) -> Verdict:
+    turtle = turtle_of(th)
+    if len(trace.pose_array(turtle)) < 2:
+        return Verdict(False, "the turtle never published a pose")
+    until = None
+    where = ""
+    if "goal" in th:
+        _, dists = _goal_distances(trace, th)
+        inside = np.nonzero(dists <= th.get("tolerance", 0.1))[0]
+        if inside.size:
+            until = int(inside[0]) + 1
+            where = " on its way to the goal"
+    turned = longest_turn_of(trace, turtle, until)
+    verdict = bounds(turned, th, " rad")
+    return Verdict(
+        verdict.passed, f"longest turn one way{where}: {verdict.measured} ({turned / math.tau:.2f} of a full turn)"
+    )
