@@ -168,10 +168,10 @@ REFUSED = [
     # (report entries, what the ProtocolError says)
     ({"teleport": []}, "unknown report entry 'teleport'"),
     ({"log": {"a": 1}}, "log: must be an array of Log records"),
-    ({"log": [[20, "n"]]}, r"log\[0\]: a Log has 5 fields \(level, node, text, in_callback, call\), got 2"),
+    ({"log": [[20, "n"]]}, r"log\[0\]: a Log has 5 fields \(level, node, text, in_callback, call_step\), got 2"),
     ({"log": [[20, "n", "m", True, 0, "extra"]]}, "a Log has 5 fields"),
     ({"log": [[20, "n", "m", "yes", 0]]}, r"log\[0\]: Log.in_callback must be true or false, got str 'yes'"),
-    ({"log": [[20, "n", "m", True, "first"]]}, r"log\[0\]: Log.call must be an integer, got str 'first'"),
+    ({"log": [[20, "n", "m", True, "first"]]}, r"log\[0\]: Log.call_step must be an integer, got str 'first'"),
     ({"log": [["loud", "n", "m", True, 0]]}, r"log\[0\]: Log.level must be an integer, got str 'loud'"),
     ({"log": [[True, "n", "m", True, 0]]}, "Log.level must be an integer, got bool True"),
     ({"log": [[20, 5, "m", True, 0]]}, "Log.node must be a string, got int 5"),

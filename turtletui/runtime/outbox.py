@@ -102,6 +102,8 @@ class ParentOutbox:
         """Log records not sent for being over the budget (the parent says how many)."""
         self.changes: list[GraphChange] = []
         self.logs: list[Log] = []
+        self._logged_call = 0
+        """The call number of the last Log sent (Log.call_step)."""
         self.publishes: list[Publish] = []
         self.calls: list[CallService] = []
         self.goals: list[SendGoal] = []
@@ -255,7 +257,9 @@ class ParentOutbox:
     def logged(self, record: LogRecord) -> None:
         if self.log_budget > 0:
             self.log_budget -= 1
-            self.logs.append(Log(record.level, str(record.node), record.msg, record.in_callback, record.call))
+            call = record.call
+            self.logs.append(Log(record.level, str(record.node), record.msg, record.in_callback, call - self._logged_call))
+            self._logged_call = call
         else:
             self.logs_dropped += 1
 

@@ -163,8 +163,11 @@ class Log(NamedTuple):
     text: str
     in_callback: bool = True
     """Whether a callback the executor ran logged it (turtletui.graph.logs.LogRecord)."""
-    call: int = 0
-    """Which callback call logged it, 0 outside any (LogRecord.call)."""
+    call_step: int = 0
+    """The number of the callback call that logged it (LogRecord.call, 0 outside
+    any) less the previous Log's: a controller that logs one line per call sends
+    the same Report bytes tick after tick, which the parent decodes once
+    (SandboxHost._decode); GraphProxy adds the steps up again."""
 
 
 class Publish(NamedTuple):

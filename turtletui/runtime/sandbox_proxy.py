@@ -98,6 +98,8 @@ class GraphProxy:
         """Endpoints the Report being applied destroyed: it may still carry their messages."""
         self._goals: dict[int, Any] = {}
         self._service_calls: dict[int, Callable[[list], None]] = {}
+        self._call = 0
+        """The call number of the child's last Log (the sum of their call_step)."""
         self._deliveries: list[Delivery] = []
         self._stamped: list[StampedDelivery] = []
         self._results: list[ServiceResult] = []
@@ -174,7 +176,8 @@ class GraphProxy:
             # The child knows what it did itself: no exchange just to tell it.
             self._mirrored_version = graph.version
         for log in report.logs:
-            self._log(log.level, log.node, log.text, log.in_callback, log.call)
+            self._call += log.call_step
+            self._log(log.level, log.node, log.text, log.in_callback, self._call)
         if report.logs_dropped > self._logs_dropped_there:
             self._logs_dropped_there = report.logs_dropped  # the child's own count: only ever shown
         owner = self.owner
