@@ -234,6 +234,10 @@ class ChildProcess:
         try:
             frame = self._answers.read_frame(_monotonic() + timeout)
             self.running = self.started
+            if self._errors:
+                # stderr read while the step ran (a wait that woke for it), its answer
+                # read straight after: shown now, with the step, not with the next one
+                self.drain_output()
             return frame
         except wire.WireTimeout:
             raise self.no_answer(timeout) from None
