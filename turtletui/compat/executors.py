@@ -96,8 +96,7 @@ def _seconds(timeout_sec: float | TimeoutObject | None) -> float | None:
 
 
 def _timeout_ns(timeout_sec: float | TimeoutObject | None) -> int | None:
-    if isinstance(timeout_sec, TimeoutObject):
-        timeout_sec = timeout_sec.timeout
+    timeout_sec = _seconds(timeout_sec)
     if timeout_sec is None or timeout_sec < 0:
         return None
     return int(min(timeout_sec, 1e9) * _NS)
@@ -589,11 +588,8 @@ class _RunsCallbacks(Executor):
         self._raise_failure()
 
     def spin_once_until_future_complete(self, future: Future, timeout_sec: float | TimeoutObject | None = None) -> None:
-        if self._waits_itself:
-            if not future.done():
-                _RunsCallbacks.spin_once(self, _seconds(timeout_sec))
-            return
-        future.add_done_callback(lambda _future: self.wake())
+        if not self._waits_itself:
+            future.add_done_callback(lambda _future: self.wake())
         self._spin_once_until_future_complete(future, timeout_sec)
 
     def _spin_once_until_future_complete(
