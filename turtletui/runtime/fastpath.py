@@ -349,7 +349,7 @@ class FastHost(SandboxHost):
             if self._ending:
                 self._no_last_report(failure)  # its answer to the run's end never came
             else:
-                self._fail(failure.kind, failure.message, failure.frames)
+                self._failed(failure)
             raise _Stop
         return records.popleft()
 

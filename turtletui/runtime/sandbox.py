@@ -238,6 +238,10 @@ class SandboxHost:
             log_crash(self.graph, self.crash)
         self._terminate()
 
+    def _failed(self, failed: ChildFailed) -> None:
+        """:meth:`_fail` as the child's process said it failed."""
+        self._fail(failed.kind, failed.message, failed.frames)
+
     def _report_dropped(self) -> None:
         """One line at the end of the run saying how much was not shown."""
         dropped = self.process.output_dropped()
@@ -282,7 +286,7 @@ class SandboxHost:
         try:
             self.process.send(protocol.encode_tick(tick), timeout)
         except ChildFailed as failed:
-            self._fail(failed.kind, failed.message, failed.frames)
+            self._failed(failed)
             return True
         if self.sim.realtime and not wait:
             self._awaiting = _monotonic()
@@ -343,14 +347,14 @@ class SandboxHost:
                     break
                 process.wait_for_answer(remaining)
         except ChildFailed as failed:
-            self._fail(failed.kind, failed.message, failed.frames)
+            self._failed(failed)
             return True
         except _Stop:
             return True
         assert self._awaiting is not None
         if _monotonic() - self._awaiting > self.limits.step_timeout:
             failed = process.no_answer()
-            self._fail(failed.kind, failed.message, failed.frames)
+            self._failed(failed)
             return True
         return False
 
@@ -361,7 +365,7 @@ class SandboxHost:
         try:
             payload = self.process.receive(timeout)
         except ChildFailed as failed:
-            self._fail(failed.kind, failed.message, failed.frames)
+            self._failed(failed)
             raise _Stop from None
         report = self._decode(payload)
         if not first:
