@@ -26,6 +26,7 @@ import sys
 import threading
 import traceback
 from collections.abc import Callable
+from pathlib import Path
 from select import select as _select
 from time import monotonic as _monotonic
 from typing import Any
@@ -306,20 +307,19 @@ def main(config: dict[str, Any] | None = None) -> None:
     compat_context.reset_default_context()
     compat_context.bind_host(host)
     scheduler.install(host.scheduler)
-    label_path = None if config.get("path") is None else __import__("pathlib").Path(config["path"])
+    spec = ControllerSpec(
+        name=config["name"],
+        path=None if config.get("path") is None else Path(config["path"]),
+        module=config.get("module"),
+        function=config.get("function"),
+    )
     host.scheduler.deadlocked = lambda idents: _finish(
-        outbox, loopback, fd_in, fd_out, _deadlock_crash(idents, label_path)
+        outbox, loopback, fd_in, fd_out, _deadlock_crash(idents, spec.path)
     )
     virtual_time.install_simulated_sleep(host)
     virtual_time.install_simulated_select(host)
     if not config.get("realtime"):
         virtual_time.patch_clocks(graph, host.clock_read)
-    spec = ControllerSpec(
-        name=config["name"],
-        path=None if config.get("path") is None else __import__("pathlib").Path(config["path"]),
-        module=config.get("module"),
-        function=config.get("function"),
-    )
     sys.argv = [spec.label, *config.get("ros_args", [])]
     random.seed(config.get("seed", 0))
     crash = None
