@@ -134,6 +134,24 @@ def test_longest_turn_adds_up_one_way_across_pi_and_starts_again_on_a_turn_back_
     assert not judge("longest_turn", trace(circling), goal=[9.0, 5.0], max=4.71).passed  # never got there
 
 
+def test_longest_turn_with_a_service_starts_a_new_turn_at_each_call():
+    # a turn and a half left (9.42 rad) in 150 poses 0.016 s apart: /kill answered at
+    # poses 75 and 149 splits it into two turns of 4.74 and 4.68 rad
+    longer = [(5.0, 5.0, math.remainder(a, math.tau)) for a in np.linspace(0.0, 3 * math.pi, 150)]
+    kills = [ServiceCall(75 * 0.016, "/kill", None, None), ServiceCall(149 * 0.016, "/kill", None, None)]
+    verdict = judge("longest_turn", trace(longer, service_calls=kills), service="/kill", max=4.75)
+    assert verdict.passed and "longest turn one way up to each call of /kill: 4.74 rad" in verdict.measured
+    assert not judge("longest_turn", trace(longer, service_calls=kills), max=4.75).passed  # no service: one turn
+    # only turns that end with a call count: after the last one the turtle chases nothing
+    first = kills[:1]
+    assert judge("longest_turn", trace(longer, service_calls=first), service="/kill", max=4.75).passed
+    late = [ServiceCall(140 * 0.016, "/kill", None, None)]
+    verdict = judge("longest_turn", trace(longer, service_calls=late), service="/kill", max=4.75)
+    assert not verdict.passed and "8.86 rad" in verdict.measured
+    other = [ServiceCall(149 * 0.016, "/spawn", None, None)]
+    verdict = judge("longest_turn", trace(longer, service_calls=other), service="/kill", max=4.75)
+    assert verdict.passed and "no call of /kill ended a turn" in verdict.measured
+
 def test_pen_colour_by_side_and_calls_per_side_change():
     red, green = (255, 0, 0), (0, 255, 0)
     path = [(x, 5.0, 0.0, red if x > 5.5 else green) for x in np.linspace(2, 9, 100)]

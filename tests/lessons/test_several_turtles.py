@@ -57,3 +57,13 @@ def test_killing_on_every_pose_catches_them_all_but_loses_the_kill_once_points(g
     assert "calls of /kill: 667 (needs <= 16)" in feedback(result, "kills_once")
     assert "set the target to None as soon as you call /kill" in feedback(result, "kills_once")
     assert result.score == 9.0
+
+
+def test_an_unwrapped_heading_error_catches_them_but_turns_the_long_way(grade):
+    result = grade(LESSON, HERE / "chase_without_wrap.py")
+    # with the other targets it turned 5.25 rad chasing a sixth one it never caught: not judged
+    assert failed(result) == {"longest_turn": {"centre", "corner", "hidden 1"}}
+    text = feedback(result, "longest_turn")
+    assert "longest turn one way up to each call of /kill" in text
+    assert "Wrap the heading error into [-pi, pi]" in text
+    assert result.score == 10.0 - 1.5 * 3 / 4

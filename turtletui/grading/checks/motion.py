@@ -438,17 +438,22 @@ TURN_NOISE = 1e-4
 """Radians per pose below which a change of heading is noise: it neither ends a turn nor adds to it."""
 
 
-def longest_turn_of(trace: Trace, turtle: str, until: int | None = None) -> float:
+def longest_turn_of(trace: Trace, turtle: str, until: int | None = None, service: str | None = None) -> float:
     """The largest angle (radians) the turtle turned one way without turning
     back, over its poses up to the index ``until`` (all of them by default);
-    a teleport or /reset ends a turn, as a turn the other way does."""
+    a teleport or /reset ends a turn, as a turn the other way does, and so
+    does each call of ``service`` (answered by the pose after it)."""
     poses = trace.pose_array(turtle)[:until]
     if len(poses) < 2:
         return 0.0
     steps = np.diff(np.unwrap(poses[:, 3]))
-    jumped = trace.jumped(turtle)[1 : len(poses)]
+    restart = trace.jumped(turtle)[: len(poses)].copy()
+    if service is not None:
+        called = [call.t for call in trace.service_calls if call.service == service]
+        after = np.searchsorted(poses[:, 0], called, side="right")
+        restart[after[after < len(poses)]] = True
     longest = turn = 0.0
-    for step, jump in zip(steps.tolist(), jumped.tolist(), strict=True):
+    for step, jump in zip(steps.tolist(), restart[1:].tolist(), strict=True):
         if jump:
             turn = 0.0
         elif abs(step) >= TURN_NOISE:
@@ -462,8 +467,10 @@ def longest_turn_of(trace: Trace, turtle: str, until: int | None = None) -> floa
     "The largest angle in radians the turtle turned one way without turning back (a teleport "
     "or /reset starts a new turn), threshold max; with `goal`, only until the turtle first came "
     "within `tolerance` (0.1 m) of it: a heading error wrapped into [-pi, pi] never turns it "
-    "more than half a turn towards a goal, while circling a goal once there is final_error's to judge.",
-    {**MINMAX, **_GOAL},
+    "more than half a turn towards a goal, while circling a goal once there is final_error's to judge. "
+    "With `service` (e.g. /kill), each call of it ends a turn, and the turning after the last "
+    "call is not judged: one chase per target.",
+    {**MINMAX, **_GOAL, "service": "text"},
 )
 def longest_turn(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     turtle = turtle_of(th)
@@ -477,7 +484,14 @@ def longest_turn(trace: Trace, th: Mapping[str, Any]) -> Verdict:
         if inside.size:
             until = int(inside[0]) + 1
             where = " on its way to the goal"
-    turned = longest_turn_of(trace, turtle, until)
+    elif "service" in th:
+        called = [call.t for call in trace.service_calls if call.service == th["service"]]
+        if not called:
+            return Verdict(True, f"no call of {th['service']} ended a turn: nothing to judge")
+        # the turning after the last call chases nothing the check knows of
+        until = int(np.searchsorted(trace.pose_array(turtle)[:, 0], called[-1], side="right"))
+        where = f" up to each call of {th['service']}"
+    turned = longest_turn_of(trace, turtle, until, th.get("service"))
     verdict = bounds(turned, th, " rad")
     return Verdict(
         verdict.passed, f"longest turn one way{where}: {verdict.measured} ({turned / math.tau:.2f} of a full turn)"
