@@ -203,7 +203,7 @@ def entry_point(module: types.ModuleType, label: str, function: str | None = Non
 
 def spin_nodes(classes: list[type]) -> None:
     """Run Node classes the way a ROS main() would: init, create, spin, shut down."""
-    import rclpy
+    import rclpy.executors
 
     if not rclpy.ok():
         rclpy.init()

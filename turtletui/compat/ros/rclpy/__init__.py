@@ -1,18 +1,21 @@
 """turtletui's rclpy: the API of ROS 2's rclpy over a simulated graph."""
+# The submodules rclpy's __init__ imports, and no others: ``rclpy.exceptions.X``
+# works after ``import rclpy`` alone, ``rclpy.node`` and the modules it imports
+# once ``rclpy.node`` is imported (rclpy/node.py), ``rclpy.action`` only once
+# imported itself, as under ROS.
 from rclpy import (  # noqa: F401,E402
-    action,
     callback_groups,
-    clock,
+    constants,
+    context,
     duration,
-    event_handler,
-    executors,
-    logging,
-    node,
+    exceptions,
+    guard_condition,
+    impl,
     parameter,
     qos,
     signals,
     task,
-    time,
+    utilities,
 )
 
 # the names rclpy's __init__ imports, which programs use as rclpy.X (the parameters
