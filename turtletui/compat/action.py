@@ -160,7 +160,7 @@ class ActionClient(Destroyable):
         node._require_alive()
         self._node = node
         self._action_type = action_type
-        self._action_name = node.resolve_topic_name(action_name)
+        self._action_name = node._resolve(action_name)
         self._record = node._graph.add_action_client(node._record, self._action_name, action_type)
         self._told_undiscovered = False
         node._entities.append(self)  # destroyed with the node

@@ -225,7 +225,7 @@ class ActionServer(Destroyable):
         self.register_execute_callback(execute_callback)
         self._node = node
         self._action_type = action_type
-        self._name = node.resolve_topic_name(action_name)
+        self._name = node._resolve(action_name)
         self._group = node._group(callback_group)
         self._logger = node.get_logger().get_child("action_server")
         host = node.context.host

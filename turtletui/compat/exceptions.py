@@ -196,29 +196,57 @@ def validate_namespace(namespace: str) -> None:
 
 def validate_topic_name(name: str, *, is_service: bool = False) -> None:
     """InvalidTopicNameException (or InvalidServiceNameException) unless ``name``,
-    as the program wrote it (before expansion), is a valid topic name."""
+    as the program wrote it (before expansion), is a valid topic name: rcl's
+    checks in rcl's order (rcl_validate_topic_name), so the first fault found
+    and its index are rcl's."""
     error = InvalidServiceNameException if is_service else InvalidTopicNameException
     if not name:
         raise error(name, "topic name must not be empty string", 0)
+    if name[0] in _DIGITS:
+        raise error(name, _TOKEN_STARTS_WITH_NUMBER, 0)
     if name.endswith("/"):
         raise error(name, "topic name must not end with a forward slash", len(name) - 1)
-    open_brace = -1
+    in_braces = False
+    opened = 0
     for i, char in enumerate(name):
-        if char == "{":
-            open_brace = i
+        if char.isascii() and char.isalnum():
+            if char in _DIGITS and in_braces and i - 1 == opened:
+                raise error(name, "substitution name must not start with a number", i)
+        elif char == "_":
+            pass
+        elif char == "/":
+            if in_braces:
+                raise error(name, _SUBSTITUTION_CHARACTERS, i)
+        elif char == "~":
+            if i != 0:
+                raise error(name, "topic name must not have tilde '~' unless it is the first character", i)
+        elif char == "{":
+            if in_braces:
+                raise error(name, _SUBSTITUTION_CHARACTERS, i)
+            in_braces, opened = True, i
         elif char == "}":
-            open_brace = -1
-        elif not (char.isascii() and (char.isalnum() or char in "_/~")):
-            raise error(
-                name, "topic name must not contain characters other than alphanumerics, '_', '~', '{', or '}'", i
+            if not in_braces:
+                raise error(name, _UNMATCHED_BRACES, i)
+            in_braces = False
+        else:
+            message = _SUBSTITUTION_CHARACTERS if in_braces else (
+                "topic name must not contain characters other than alphanumerics, '_', '~', '{', or '}'"
             )
-        elif char == "~" and i != 0:
-            raise error(name, "topic name must not have tilde '~' unless it is the first character", i)
-    if open_brace >= 0:
-        raise error(name, "topic name must not have unmatched (unbalanced) curly braces '{}'", open_brace)
-    for i, char in enumerate(name):
-        if char.isdigit() and (i == 0 or name[i - 1] == "/"):
-            raise error(name, "topic name token must not start with a number", i)
+            raise error(name, message, i)
+    if in_braces:
+        raise error(name, _UNMATCHED_BRACES, opened)
+    for i in range(len(name) - 1):
+        if name[i] == "/":
+            if name[i + 1] in _DIGITS:
+                raise error(name, _TOKEN_STARTS_WITH_NUMBER, i + 1)
+        elif i == 1 and name[0] == "~":
+            raise error(name, "topic name must not have a tilde '~' that is not followed by a forward slash '/'", 1)
+
+
+_DIGITS = "0123456789"
+_TOKEN_STARTS_WITH_NUMBER = "topic name token must not start with a number"
+_UNMATCHED_BRACES = "topic name must not have unmatched (unbalanced) curly braces '{}'"
+_SUBSTITUTION_CHARACTERS = "substitution name must not contain characters other than alphanumerics or '_'"
 
 
 def validate_full_topic_name(name: str, *, is_service: bool = False) -> None:

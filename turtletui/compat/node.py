@@ -730,7 +730,40 @@ class Node(Destroyable):
     # -- names ----------------------------------------------------------------
     def resolve_topic_name(self, topic: str, *, only_expand: bool = False) -> str:
         """Expand ``~``, relative names and (unless ``only_expand``) remappings, as rcl does."""
-        return self._resolve(topic, only_expand=only_expand)
+        return self._resolve_name(topic, only_expand, is_service=False)
+
+    def resolve_service_name(self, service: str, *, only_expand: bool = False) -> str:
+        """A service name with ``~``, relative names and (unless ``only_expand``) remappings resolved, as rcl does."""
+        return self._resolve_name(service, only_expand, is_service=True)
+
+    def _resolve_name(self, name: Any, only_expand: bool, *, is_service: bool) -> str:
+        """What rclpy's resolve_*_name do (rcl_node_resolve_name): a name rcl
+        cannot resolve is an RCLError with rcl's text, not the exception that
+        creating an entity of that name raises."""
+        self._require_alive()
+        if name is None:
+            raise RCLError(f"failed to resolve name: input_topic_name argument is null, {_RCL_EXPAND_AT}60")
+        if not isinstance(name, str):
+            raise TypeError(
+                "rclpy_resolve_name(): incompatible function arguments. The following argument types are supported:\n"
+                "    1. (arg0: rclpy::Node, arg1: str, arg2: bool, arg3: bool) -> str\n\n"
+                f"Invoked with: <rclpy._rclpy_pybind11.Node object at {id(self):#x}>, {name!r}, {only_expand!r}, {is_service!r}"
+            )
+        try:
+            validate_topic_name(name, is_service=is_service)
+        except NameValidationException as err:
+            raise RCLError(f"failed to resolve name: {err._error_msg}, {_RCL_EXPAND_AT}73") from None
+        for substitution in _SUBSTITUTION.findall(name):
+            if substitution not in ("{node}", "{ns}", "{namespace}"):
+                raise RCLError(f"failed to resolve name: unknown substitution: {substitution}, {_RCL_EXPAND_AT}164")
+        expanded = self._expand(name)
+        try:
+            validate_full_topic_name(expanded, is_service=is_service)
+        except NameValidationException as err:
+            raise RCLError(
+                f"failed to resolve name: {err._error_msg}, at /project/src/rcl/node_resolve_name.c:102"
+            ) from None
+        return expanded if only_expand else self._remaps.get(expanded, expanded)
 
     def _expand_topic_name(self, topic: str, *, is_service: bool = False) -> str:
         """``topic`` as a fully qualified name, not remapped (what graph queries use). A name
@@ -790,7 +823,9 @@ class Node(Destroyable):
     ) -> Publisher:
         self._require_alive()
         qos_profile = profile_of(qos_profile)  # rclpy's order: the QoS, the name, the type
-        name = self.resolve_topic_name(topic)
+        # rclpy resolves the name (rcl's RCLError for a bad one) only to declare the QoS
+        # parameters; otherwise making the entity names what is wrong with it
+        name = self.resolve_topic_name(topic) if qos_overriding_options is not None else self._resolve(topic)
         if qos_overriding_options is not None:
             declare_qos_parameters("publisher", self, name, qos_profile, qos_overriding_options)
         _check_msg_type(msg_type)
@@ -821,7 +856,9 @@ class Node(Destroyable):
     ) -> Subscription:
         self._require_alive()
         qos_profile = profile_of(qos_profile)  # rclpy's order: the QoS, the name, the type
-        name = self.resolve_topic_name(topic)
+        # rclpy resolves the name (rcl's RCLError for a bad one) only to declare the QoS
+        # parameters; otherwise making the entity names what is wrong with it
+        name = self.resolve_topic_name(topic) if qos_overriding_options is not None else self._resolve(topic)
         if qos_overriding_options is not None:
             declare_qos_parameters("subscription", self, name, qos_profile, qos_overriding_options)
         _check_msg_type(msg_type)
