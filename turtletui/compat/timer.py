@@ -131,6 +131,11 @@ class Timer(Destroyable):
         return self._clock
 
     @property
+    def handle(self) -> TimerHandle:
+        """The timer's rcl handle (rclpy's ``_rclpy.Timer``), as rclpy's Rate and examples use it."""
+        return TimerHandle(self)
+
+    @property
     def callback(self) -> Any:
         """The function the timer calls, as given to create_timer."""
         return self._callback
@@ -285,6 +290,54 @@ class Timer(Destroyable):
         self._record.callback()
 
 
+class TimerHandle:
+    """What ``timer.handle`` is in rclpy (``_rclpy.Timer``): the rcl timer's calls,
+    refused with InvalidHandle once the timer is destroyed; ``with handle:`` too."""
+
+    def __init__(self, timer: Timer) -> None:
+        self._timer = timer
+
+    @property
+    def pointer(self) -> int:
+        """A number naming the rcl timer (its address in rclpy)."""
+        self._timer._require_alive()
+        return id(self._timer)
+
+    def __enter__(self) -> TimerHandle:
+        self._timer._require_alive()
+        return self
+
+    def __exit__(self, *exc_info: object) -> None:
+        pass
+
+    def is_timer_ready(self) -> bool:
+        return self._timer.is_ready()
+
+    def is_timer_canceled(self) -> bool:
+        return self._timer.is_canceled()
+
+    def cancel_timer(self) -> None:
+        self._timer.cancel()
+
+    def reset_timer(self) -> None:
+        self._timer.reset()
+
+    def get_timer_period(self) -> int:
+        return self._timer.timer_period_ns
+
+    def change_timer_period(self, period_ns: int) -> None:
+        self._timer.timer_period_ns = period_ns
+
+    def time_since_last_call(self) -> int:
+        return self._timer.time_since_last_call()
+
+    def time_until_next_call(self) -> int | None:
+        return self._timer.time_until_next_call()
+
+    def destroy_when_not_in_use(self) -> None:
+        self._timer.destroy()
+
+
 class _TimerJumps(JumpHandle):
     """The jump callback rcl_timer_init registers on a ROS clock for its timer."""
 
@@ -358,3 +411,5 @@ class Rate:
 
 # as rclpy's classes print: <rclpy.node.Node object at ...> (turtletui.compat.identity)
 as_rclpy("rclpy.timer", Timer, Rate, TimerInfo)
+TimerHandle.__name__ = TimerHandle.__qualname__ = "Timer"
+TimerHandle.__module__ = "rclpy._rclpy_pybind11"  # as rclpy's prints
