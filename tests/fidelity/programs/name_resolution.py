@@ -22,7 +22,10 @@ def main():
     from std_msgs.msg import String
 
     for name in ("~bad", "1abc/", "a/{4x}", "a/{b/c}", "a/{{b}}", "}x", "a/{b", "{b c}", "~/1x", "a/2", "~1", "a~b", "é"):
-        for make in (lambda: node.create_publisher(String, name, 1), lambda: node.create_service(String, name, None)):
+        for make in (
+            lambda name=name: node.create_publisher(String, name, 1),
+            lambda name=name: node.create_service(String, name, None),
+        ):
             try:
                 make()
                 print("made", repr(name))

@@ -1,7 +1,3 @@
-from turtletui.compat.node import *  # noqa: F401,F403
-from turtletui.compat.node import Client, Node, Publisher, Rate, Service, Subscription, Timer  # noqa: F401
-from turtletui.compat.parameter import Parameter  # noqa: F401
-
 # the submodules rclpy/node.py imports, so that rclpy.publisher.Publisher and
 # the like work after ``from rclpy.node import Node`` as under ROS
 from rclpy import (  # noqa: E402,F401
@@ -29,3 +25,6 @@ from rclpy import (  # noqa: E402,F401
     validate_node_name,
     validate_topic_name,
 )
+from turtletui.compat.node import *  # noqa: F401,F403
+from turtletui.compat.node import Client, Node, Publisher, Rate, Service, Subscription, Timer  # noqa: F401
+from turtletui.compat.parameter import Parameter  # noqa: F401

@@ -1,3 +1,4 @@
+from rclpy.lifecycle import managed_entity, node, publisher  # noqa: E402,F401  (as rclpy's __init__ imports them)
 from turtletui.compat.lifecycle import (  # noqa: F401
     LifecycleNode,
     LifecycleNodeMixin,
@@ -7,7 +8,6 @@ from turtletui.compat.lifecycle import (  # noqa: F401
     SimpleManagedEntity,
     TransitionCallbackReturn,
 )
-from rclpy.lifecycle import managed_entity, node, publisher  # noqa: E402,F401  (as rclpy's __init__ imports them)
 
 # as rclpy: ``from rclpy.lifecycle import Node, State, Publisher`` work too
 Node = LifecycleNode
