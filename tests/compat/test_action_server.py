@@ -103,14 +103,19 @@ def main():
         "Feedback: array('i', [0, 1, 1, 2, 3])",
     ]
     # A single-threaded executor runs the blocking execute callback to its end
-    # before the client hears that its goal was accepted (as rclpy 9 does).
-    assert node_logs(result, "fibonacci_action_client") == [
-        "Goal accepted :)",
+    # before the client hears that its goal was accepted. The real rclpy (Kilted,
+    # measured) then logs the first feedback before "Goal accepted": its client
+    # takes the goal response and one feedback together, and the goal future's done
+    # callback runs two spins later, as a task. turtletui takes them one at a time,
+    # so where "Goal accepted" falls among the feedback is not compared here.
+    client_logs = node_logs(result, "fibonacci_action_client")
+    assert [line for line in client_logs if line != "Goal accepted :)"] == [
         "Received feedback: [0, 1, 1]",
         "Received feedback: [0, 1, 1, 2]",
         "Received feedback: [0, 1, 1, 2, 3]",
         "Result: [0, 1, 1, 2, 3]",
     ]
+    assert client_logs.count("Goal accepted :)") == 1
     ended = [r.t for r in result.logs if r.msg.startswith("Result:")]
     assert ended == [3.0]  # three 1 s sleeps of simulated time
 

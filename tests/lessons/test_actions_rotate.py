@@ -83,15 +83,6 @@ def test_velocity_commands_that_abort_the_goals_are_named(grade):
     assert result.score < 5.0
 
 
-def test_a_wait_inside_a_callback_is_named_though_rclpy_only_warns(grade):
-    result = grade(LESSON, HERE / "waits_inside_a_callback.py")
-    assert "goals_sent" in failed_checks(result)
-    text = feedback_of(result, "goals_sent")[0]
-    assert "A done callback of your node raised an error, which rclpy only prints as a warning" in text
-    assert "spin_until_future_complete() was called inside a callback" in text
-    assert result.score < 5.0
-
-
 def test_an_action_without_its_turtles_namespace_is_named_with_the_one_meant(grade):
     result = grade(LESSON, HERE / "action_without_namespace.py")
     assert result.score == 0.0
@@ -113,3 +104,10 @@ def test_the_goals_heading_logged_as_the_remaining_angle_fails_log_feedback(grad
     result = grade(LESSON, HERE / "logs_the_goal_as_remaining.py")
     assert failed_checks(result) == {"log_feedback"}
     assert result.score == 9.0
+
+
+def test_awaiting_goals_in_a_timer_of_the_client_s_own_group_never_hears_back(grade):
+    result = grade(LESSON, HERE / "async_await_in_the_default_group.py")
+    assert "goals_sent" in failed_checks(result)
+    assert "goals sent to /turtle1/rotate_absolute: 1 (needs >= 4" in feedback_of(result, "goals_sent")[0]
+    assert result.score < 5.0

@@ -1,9 +1,12 @@
-"""Right: async/await in a timer callback: await each goal handle and its result."""
+"""Right: async/await in a timer callback: await each goal handle and its result, the
+client in a callback group of its own (in the node's default group, with the timer
+that awaits, its answers could never be taken: see the wrong async_await_in_the_default_group)."""
 import math
 import time
 
 import rclpy
 from rclpy.action import ActionClient
+from rclpy.callback_groups import ReentrantCallbackGroup
 from rclpy.node import Node
 from turtlesim.action import RotateAbsolute
 
@@ -13,7 +16,9 @@ HEADINGS = {"north": math.pi / 2, "west": math.pi, "south": -math.pi / 2, "east"
 class RotateClientNode(Node):
     def __init__(self):
         super().__init__("compass")
-        self.client = ActionClient(self, RotateAbsolute, "/turtle1/rotate_absolute")
+        self.client = ActionClient(
+            self, RotateAbsolute, "/turtle1/rotate_absolute", callback_group=ReentrantCallbackGroup()
+        )
         self.timer = self.create_timer(0.2, self.run)
 
     async def run(self):

@@ -1,6 +1,7 @@
-"""Wrong: waits for the result with rclpy.spin_until_future_complete inside the goal
-response callback: rclpy refuses, the done callback fails with a mere warning, and
-no second goal is ever sent."""
+"""Right, though not the tutorial's way: waits for the result with
+rclpy.spin_until_future_complete inside the goal response's done callback. rclpy
+(Kilted, measured) spins the executor again there: a done callback is a task of no
+callback group, so the result is taken meanwhile and the next goal is sent from it."""
 import math
 
 import rclpy
