@@ -47,6 +47,7 @@ from turtletui.compat.graph_info import (
 from turtletui.compat.guard_condition import GuardCondition
 from turtletui.compat.identity import as_rclpy
 from turtletui.compat.logging import RcutilsLogger, get_logger
+from turtletui.compat.matched_events import watch_matches
 from turtletui.compat.matching import match_publisher, match_subscription, watch_mismatches
 from turtletui.compat.message_info import MessageInfo, message_info_maker, takes_message_info
 from turtletui.compat.parameter import (
@@ -804,6 +805,7 @@ class Node(Destroyable):
         self._entities.append(publisher)
         attach_event_callbacks(self, publisher, event_callbacks, "publisher")
         match_publisher(self, publisher)
+        watch_matches(self, publisher)
         return publisher
 
     def create_subscription(
@@ -850,6 +852,7 @@ class Node(Destroyable):
         self._entities.append(subscription)
         attach_event_callbacks(self, subscription, event_callbacks, "subscription")
         match_subscription(self, subscription)
+        watch_matches(self, subscription)
         return subscription
 
     def create_timer(
