@@ -47,6 +47,7 @@ from turtletui.compat.graph_info import (
 from turtletui.compat.guard_condition import GuardCondition
 from turtletui.compat.identity import as_rclpy
 from turtletui.compat.logging import RcutilsLogger, get_logger
+from turtletui.compat.logging_service import LoggingService
 from turtletui.compat.matched_events import watch_matches
 from turtletui.compat.matching import match_publisher, match_subscription, watch_mismatches
 from turtletui.compat.message_info import MessageInfo, message_info_maker, takes_message_info
@@ -616,6 +617,8 @@ class Node(Destroyable):
         self._time_source.attach_clock(self._clock)
         if start_parameter_services:
             ParameterService(self)
+        if enable_logger_service:
+            self._logger_service = LoggingService(self)
         if current_distro() != "humble":  # rclpy's TypeDescriptionService, Iron on
             self._type_description_service = TypeDescriptionService(self)
 
