@@ -234,6 +234,16 @@ _FIX_OUTSIDE = (
 )
 
 
+def _as_sent(msg: Any) -> Any:
+    """``msg`` as the middleware carries it to the other side: a copy of its own,
+    float32 fields rounded, numpy and other subclass values plain."""
+    copy = copier(type(msg))(msg)
+    rounder = float32_rounder(type(msg))
+    if rounder is not None:
+        rounder(copy)
+    return copy
+
+
 def _describe(msg: Any) -> str:
     try:
         return interface_name(type(msg))
@@ -313,6 +323,7 @@ class Client(Destroyable):
                 f"call_async() on {self.service_name} expects a {self._record.type_name}.Request, got "
                 + _describe(request)
             )
+        request = _as_sent(request)  # the caller may change its request (the docs' self.req) and send it again
         future = Future()
         future._client = self
         host = self._node.context.host
@@ -966,7 +977,7 @@ class Node(Destroyable):
                     f"got {response!r}"
                 )
             introspection.publish(ServiceEventInfo.RESPONSE_SENT, gid, sequence, response=response)
-            respond(response)
+            respond(_as_sent(response))  # the server may keep its response and change it
 
         handler.__name__ = getattr(callback, "__name__", "handler")
         record = self._graph.add_service(
