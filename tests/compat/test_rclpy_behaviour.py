@@ -702,8 +702,8 @@ def event_callbacks_turtletui_never_calls():
 
     node = beh_node()
     heard = []
-    node.create_publisher(String, "a", 10, event_callbacks=PublisherEventCallbacks(matched=heard.append, deadline=heard.append))
-    node.create_subscription(String, "a", heard.append, 10, event_callbacks=SubscriptionEventCallbacks(matched=heard.append))
+    node.create_publisher(String, "a", 10, event_callbacks=PublisherEventCallbacks(deadline=heard.append))
+    node.create_subscription(String, "a", heard.append, 10, event_callbacks=SubscriptionEventCallbacks(deadline=heard.append))
     rclpy.spin_once(node, timeout_sec=0.1)
     assert heard == []
 
@@ -712,7 +712,36 @@ def test_event_callbacks_turtletui_never_calls_are_named_once(controller_host):
     result = run_body(controller_host, event_callbacks_turtletui_never_calls)
     notes = [line for line in node_logs(result, "turtletui") if "never called in turtletui" in line]
     assert notes == [
-        "/beh: the deadline and matched callbacks of its publisher on '/a' are never called in turtletui (it has"
-        " no such events: deadline and liveliness are not enforced, an endpoint of another type never matches,"
-        " and matches are not reported); its incompatible_qos callback is."
+        "/beh: the deadline callback of its publisher on '/a' is never called in turtletui (it has"
+        " no such events: deadline and liveliness are not enforced, an endpoint of another type never matches);"
+        " its incompatible_qos and matched callbacks are."
     ]
+
+
+def matched_callbacks_count_matches():
+    from rclpy.event_handler import PublisherEventCallbacks, SubscriptionEventCallbacks
+    from std_msgs.msg import String
+
+    node = beh_node()
+    heard = []
+
+    def said(side):
+        return lambda s: heard.append((side, s.current_count, s.current_count_change, s.total_count, s.total_count_change))
+
+    node.create_publisher(String, "a", 10, event_callbacks=PublisherEventCallbacks(matched=said("pub")))
+    rclpy.spin_once(node, timeout_sec=0.1)
+    assert heard == []
+    sub = node.create_subscription(String, "a", print, 10, event_callbacks=SubscriptionEventCallbacks(matched=said("sub")))
+    node.create_subscription(String, "a", print, 10)
+    for _ in range(3):
+        rclpy.spin_once(node, timeout_sec=0.1)
+    # the publisher's two matches before the executor ran: one call (rmw's status, taken once)
+    assert heard == [("pub", 2, 2, 2, 2), ("sub", 1, 1, 1, 1)]
+    heard.clear()
+    node.destroy_subscription(sub)
+    rclpy.spin_once(node, timeout_sec=0.1)
+    assert heard == [("pub", 1, -1, 2, 0)]
+
+
+def test_matched_callbacks_count_matches(controller_host):
+    run_body(controller_host, matched_callbacks_count_matches)

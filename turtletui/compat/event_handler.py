@@ -7,8 +7,8 @@ graph has (turtletui.compat.matching): an ``incompatible_qos`` callback given
 receives rmw's status (``total_count``, ``total_count_change``,
 ``last_policy_kind``) in place of rclpy's default warning, when an executor
 next runs the node, and ``use_default_callbacks=False`` without one silences
-the warning, as in rclpy. Deadline, liveliness, message-lost, incompatible-type
-and matched events never happen here (deadline and liveliness are kept, not
+the warning, as in rclpy. Matched events are turtletui.compat.matched_events'.
+Deadline, liveliness, message-lost and incompatible-type events never happen here (deadline and liveliness are kept, not
 enforced; an endpoint of another type never matches); a callback given for
 one of them is accepted and never called, which turtletui says once.
 """
@@ -110,7 +110,7 @@ IncompatibleTypeInfo = _status("rmw_incompatible_type_status_t", ("total_count_c
 _NEVER_HERE = (
     "{node}: the {events} {callbacks} of its {kind} on '{topic}' {are} never called in turtletui "
     "(it has no such events: deadline and liveliness are not enforced, an endpoint of another type never "
-    "matches, and matches are not reported); its incompatible_qos callback is."
+    "matches); its incompatible_qos and matched callbacks are."
 )
 
 
@@ -158,7 +158,7 @@ class PublisherEventCallbacks:
         self.use_default_callbacks = use_default_callbacks
 
 
-_NEVER_CALLED = ("deadline", "liveliness", "message_lost", "incompatible_type", "matched")
+_NEVER_CALLED = ("deadline", "liveliness", "message_lost", "incompatible_type")
 
 
 def attach_event_callbacks(node: Any, entity: Any, callbacks: Any, kind: str) -> None:

@@ -47,6 +47,8 @@ from turtletui.compat.graph_info import (
 from turtletui.compat.guard_condition import GuardCondition
 from turtletui.compat.identity import as_rclpy
 from turtletui.compat.logging import RcutilsLogger, get_logger
+from turtletui.compat.logging_service import LoggingService
+from turtletui.compat.matched_events import watch_matches
 from turtletui.compat.matching import match_publisher, match_subscription, watch_mismatches
 from turtletui.compat.message_info import MessageInfo, message_info_maker, takes_message_info
 from turtletui.compat.parameter import (
@@ -232,6 +234,16 @@ _FIX_OUTSIDE = (
 )
 
 
+def _as_sent(msg: Any) -> Any:
+    """``msg`` as the middleware carries it to the other side: a copy of its own,
+    float32 fields rounded, numpy and other subclass values plain."""
+    copy = copier(type(msg))(msg)
+    rounder = float32_rounder(type(msg))
+    if rounder is not None:
+        rounder(copy)
+    return copy
+
+
 def _describe(msg: Any) -> str:
     try:
         return interface_name(type(msg))
@@ -311,6 +323,7 @@ class Client(Destroyable):
                 f"call_async() on {self.service_name} expects a {self._record.type_name}.Request, got "
                 + _describe(request)
             )
+        request = _as_sent(request)  # the caller may change its request (the docs' self.req) and send it again
         future = Future()
         future._client = self
         host = self._node.context.host
@@ -615,6 +628,8 @@ class Node(Destroyable):
         self._time_source.attach_clock(self._clock)
         if start_parameter_services:
             ParameterService(self)
+        if enable_logger_service:
+            self._logger_service = LoggingService(self)
         if current_distro() != "humble":  # rclpy's TypeDescriptionService, Iron on
             self._type_description_service = TypeDescriptionService(self)
 
@@ -839,6 +854,7 @@ class Node(Destroyable):
         self._entities.append(publisher)
         attach_event_callbacks(self, publisher, event_callbacks, "publisher")
         match_publisher(self, publisher)
+        watch_matches(self, publisher)
         return publisher
 
     def create_subscription(
@@ -887,6 +903,7 @@ class Node(Destroyable):
         self._entities.append(subscription)
         attach_event_callbacks(self, subscription, event_callbacks, "subscription")
         match_subscription(self, subscription)
+        watch_matches(self, subscription)
         return subscription
 
     def create_timer(
@@ -997,7 +1014,7 @@ class Node(Destroyable):
                     f"got {response!r}"
                 )
             introspection.publish(ServiceEventInfo.RESPONSE_SENT, gid, sequence, response=response)
-            respond(response)
+            respond(_as_sent(response))  # the server may keep its response and change it
 
         handler.__name__ = getattr(callback, "__name__", "handler")
         record = self._graph.add_service(

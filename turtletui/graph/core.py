@@ -527,6 +527,9 @@ class Graph:
         self.on_node: Callable[[NodeRecord], None] | None = None
         """Told of every node made (the simulation looks at a controller's
         endpoints a second after its nodes appear)."""
+        self.on_endpoints: Callable[[], None] | None = None
+        """Told after every publisher or subscription made or removed (the
+        rclpy layer's matched events, turtletui.compat.matched_events)."""
         self.on_mismatch: Callable[[Publisher, Subscription, str], None] | None = None
         """Told of every publisher and subscription that match but for their
         QoS (with the policy's name), as DDS tells both sides: the rclpy layer
@@ -661,6 +664,8 @@ class Graph:
                 timer.canceled = True
         if self.outbox is not None:
             self.outbox.removed(node)
+        if self.on_endpoints is not None:
+            self.on_endpoints()
 
     def set_parameter(self, node: NodeRecord, name: str, value: Any, *, remove: bool = False) -> None:
         """Record a node's parameter value (what ``ros2 param get`` shows)."""
@@ -775,6 +780,8 @@ class Graph:
             self.outbox.declared(pub)
         for sub in topic.subscriptions:
             self._match(pub, sub)
+        if self.on_endpoints is not None:
+            self.on_endpoints()
         return pub
 
     def add_subscription(
@@ -811,6 +818,8 @@ class Graph:
             self.outbox.declared(sub)
         for pub in topic.publishers:
             self._match(pub, sub)
+        if self.on_endpoints is not None:
+            self.on_endpoints()
         return sub
 
     def _match(self, pub: Publisher, sub: Subscription) -> None:
@@ -879,6 +888,8 @@ class Graph:
         self._drop_if_unused(topic)
         if removed and self.outbox is not None:
             self.outbox.removed(endpoint)
+        if removed and self.on_endpoints is not None:
+            self.on_endpoints()
         return removed
 
     def drop_unused_topics(self) -> None:

@@ -458,6 +458,15 @@ def _init_expr(spec: FieldSpec, i: int) -> str:
     return f'_c{i}({n})'
 
 
+def _plain_copy(spec: FieldSpec, value: str, pytype: str) -> str:
+    """The copy of a scalar field's ``value`` as the middleware carries it: a
+    value of a subclass (numpy's float64, an IntEnum, a str subclass) arrives
+    as the plain int, float, bool or str."""
+    if spec.kind not in ('int', 'float', 'bool', 'str'):
+        return value
+    return f'_a if (_a := {value}).__class__ is {pytype} else {pytype}(_a)'
+
+
 def _build(cls: type) -> None:
     """Compile ``__init__``, ``_trusted`` and ``_make_default`` for *cls*."""
     if '_BUILT' in cls.__dict__:
@@ -500,7 +509,9 @@ def _build(cls: type) -> None:
             # A flat nested message (Vector3 in Twist) is copied inline: no call.
             copy_lines.append(f'    _n = {value}')
             copy_lines.append(f'    _v = _new(_T{i})')
-            copy_lines.extend(f'    _v.{f.slot} = _n.{f.slot}' for f in inner)
+            for j, f in enumerate(inner):
+                ns[f'_T{i}_{j}'] = f.pytype
+                copy_lines.append(f'    _v.{f.slot} = {_plain_copy(f, f"_n.{f.slot}", f"_T{i}_{j}")}')
             copy_lines.append(f'    _o.{spec.slot} = _v')
             continue
         if spec.kind == 'msg':
@@ -515,6 +526,8 @@ def _build(cls: type) -> None:
             # same type), anything else a list or another sequence (a new list)
             value = f'{value}[:]' if spec.typecode is not None and spec.array != _FIXED \
                 else f'list({value})'
+        else:
+            value = _plain_copy(spec, value, f'_T{i}')
         copy_lines.append(f'    _o.{spec.slot} = {value}')
     setter_lines = []
     for i, spec in enumerate(specs):

@@ -271,6 +271,8 @@ class ParentOutbox:
         if tick.graph is not None:  # first: what arrives with it may come from nodes it adds
             graph_mirror.apply(graph, tick.graph, self.own)
             match_mirror(graph, self.remote_owner)
+            if graph.on_endpoints is not None:
+                graph.on_endpoints()  # matched events of the child's endpoints
         if tick.stamped:
             self._deliver_stamped(tick.deliveries, tick.stamped)
         elif tick.deliveries:

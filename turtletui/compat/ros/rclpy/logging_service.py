@@ -1,0 +1,1 @@
+from turtletui.compat.logging_service import LoggingService  # noqa: F401
