@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import pytest
 from support.lessons import SOLUTIONS, failed_checks, feedback_of, not_judged
 
 LESSON = "part6-closed-loop"
@@ -79,3 +80,14 @@ def test_a_turn_that_never_starts_is_told_it_pushes_against_the_wall(grade):
     assert "to the end the turtle was pushing against a wall" in text
     assert "did the condition that should turn it away ever hold?" in text
     assert "or between the four comparisons, not and" in text
+
+
+@pytest.mark.parametrize("in_process", [False, True], ids=["sandboxed", "in-process"])
+def test_a_publisher_made_per_message_is_told_its_messages_are_lost(grade, in_process):
+    # the callback runs and publishes, each time through a publisher too young to be matched
+    result = grade(LESSON, HERE / "publisher_per_message.py", in_process=in_process)
+    assert result.score == 0.0
+    text = feedback_of(result, "distance")[0]
+    assert "never published" not in text
+    assert "publishers on it, a new one for each message" in text
+    assert "create the publisher once, in __init__" in text

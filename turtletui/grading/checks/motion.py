@@ -112,7 +112,16 @@ def _unheard(trace: Trace, verdict: Verdict, turtle: str, moved: bool) -> Verdic
     if verdict.passed or moved or len(trace.command_array(turtle)):
         return verdict
     topic = f"/{turtle}/cmd_vel"
-    if topic in trace.published:
+    made = trace.publishers_made.get(topic, 0)
+    if made > 1:
+        # a publisher per message: each is discovered too late for its one message
+        note = (
+            f"; nothing reached turtlesim on {topic}: your node created {made} publishers on it, a new one "
+            "for each message, and a publisher made just before it publishes is not yet matched with "
+            "turtlesim's subscription (DDS discovery takes a moment), so its message is lost: create the "
+            "publisher once, in __init__, and publish through that one"
+        )
+    elif topic in trace.published:
         # the right publisher, never used: the code that publishes never ran
         note = (
             f"; nothing was published on {topic}: your node has a publisher on it but never published "
