@@ -91,3 +91,21 @@ def test_a_publisher_made_per_message_is_told_its_messages_are_lost(grade, in_pr
     assert "never published" not in text
     assert "publishers on it, a new one for each message" in text
     assert "create the publisher once, in __init__" in text
+
+
+def test_a_turn_that_never_brings_the_turtle_back_is_told_it_circles(grade):
+    # from the corner start, outside its own box, its tight turn never gets back in
+    result = grade(LESSON, HERE / "circles_outside_its_box.py")
+    assert result.score < 0.9 * result.max_score
+    assert failed_checks(result) == {"coverage"}
+    corner = [t.output for t in result.tests if t.check == "coverage" and t.scenario == "corner"][0]
+    assert "to the end the turtle went round and round in circles 1.0 m across at (9.1, 8.4)" in corner
+    assert "did the condition that ends it ever hold again?" in corner
+
+
+def test_a_turn_rate_divided_by_the_speed_is_caught_circling_after_a_crossing(grade):
+    # 7.5 rad/s at 1 m/s: a circle 0.27 m across just outside the safe zone, for good
+    result = grade(LESSON, HERE / "turn_rate_divided_by_speed.py")
+    assert "coverage" in failed_checks(result)
+    centre = [t.output for t in result.tests if t.check == "coverage" and t.scenario == "centre"][0]
+    assert "from t=2.5 s to the end the turtle went round and round in circles 0.3 m across" in centre

@@ -37,7 +37,8 @@ def coverage(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     ix = np.clip((poses[:, 1] / cell).astype(int), 0, cells - 1)
     iy = np.clip((poses[:, 2] / cell).astype(int), 0, cells - 1)
     visited = len(set(zip(ix.tolist(), iy.tolist(), strict=True)))
-    return _held(trace, measured("arena covered:", bounds(visited / (cells * cells), th)), turtle_of(th))
+    verdict = _held(trace, measured("arena covered:", bounds(visited / (cells * cells), th)), turtle_of(th))
+    return _circling(trace, verdict, turtle_of(th))
 
 
 HELD_SHARE = 0.25
@@ -82,6 +83,65 @@ def _held(trace: Trace, verdict: Verdict, turtle: str) -> Verdict:
     note = (
         f"; {when} the turtle was pushing against {what}: it drove into it and its "
         "commands kept driving it forward (did the condition that should turn it away ever hold?)"
+    )
+    return replace(verdict, measured=verdict.measured + note)
+
+
+CIRCLE_SPAN = 2.5
+"""Metres across (x and y) within which a turtle that keeps turning one way is going round in circles."""
+CIRCLE_DRIFT = 0.25
+"""Metres a circle may drift (turtlesim's steps do not close it exactly) and still be the same circle."""
+CIRCLE_TURNS = 2.0
+"""Full turns one way, at least, that make a stretch of a run going round in circles."""
+
+
+def circling(trace: Trace, turtle: str) -> tuple[float, float, float, float] | None:
+    """When the turtle ended its run going round in circles (turning one way
+    round a circle :data:`CIRCLE_DRIFT` to :data:`CIRCLE_SPAN` metres across,
+    :data:`CIRCLE_TURNS` turns or more, for :data:`HELD_SHARE` of the run or
+    more): since when, the centre (x, y) and how many metres across; else None."""
+    poses = trace.pose_array(turtle)
+    if len(poses) < 3 or trace.jumped(turtle).any():
+        return None
+    x, y = poses[:, 1], poses[:, 2]
+    span = np.maximum(
+        np.maximum.accumulate(x[::-1])[::-1] - np.minimum.accumulate(x[::-1])[::-1],
+        np.maximum.accumulate(y[::-1])[::-1] - np.minimum.accumulate(y[::-1])[::-1],
+    )
+    # the last full turn gives the circle's size; it began where the path first stayed that close
+    heading = np.unwrap(poses[:, 3])
+    whole = np.flatnonzero(np.abs(heading - heading[-1]) >= math.tau)
+    across = float(span[whole[-1]]) if len(whole) else 0.0
+    if not CIRCLE_DRIFT <= across <= CIRCLE_SPAN:  # (a turn on the spot is no circle)
+        return None
+    first = int(np.argmax(span <= across + CIRCLE_DRIFT))  # the spans shrink towards the end
+    times = poses[:, 0]
+    if times[-1] - times[first] < HELD_SHARE * (times[-1] - times[0]):
+        return None
+    tail = poses[first:]
+    steps = np.diff(heading[first:])
+    turned = float(steps.sum())
+    one_way = (steps * math.copysign(1.0, turned) >= -TURN_NOISE).all()
+    if abs(turned) < CIRCLE_TURNS * math.tau or not one_way:
+        return None
+    return float(times[first]), float(tail[:, 1].mean()), float(tail[:, 2].mean()), across
+
+
+def _circling(trace: Trace, verdict: Verdict, turtle: str) -> Verdict:
+    """A failed verdict of a turtle that ended its run going round in
+    circles, told so: the turn that should have ended (back on course, away
+    from a wall) never did, and "it stayed in a small part" alone does not
+    say that it drove off well and was caught later."""
+    if verdict.passed:
+        return verdict
+    found = circling(trace, turtle)
+    if found is None:
+        return verdict
+    since, cx, cy, across = found
+    note = (
+        f"; from t={since:.1f} s to the end the turtle went round and round in circles {across:.1f} m across "
+        f"at ({cx:.1f}, {cy:.1f}), turning one way all the time: the turn it began there never ended "
+        "(did the condition that ends it ever hold again?)"
     )
     return replace(verdict, measured=verdict.measured + note)
 
