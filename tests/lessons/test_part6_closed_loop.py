@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import pytest
 from support.lessons import SOLUTIONS, failed_checks, feedback_of, not_judged
 
 LESSON = "part6-closed-loop"
@@ -79,3 +80,32 @@ def test_a_turn_that_never_starts_is_told_it_pushes_against_the_wall(grade):
     assert "to the end the turtle was pushing against a wall" in text
     assert "did the condition that should turn it away ever hold?" in text
     assert "or between the four comparisons, not and" in text
+
+
+@pytest.mark.parametrize("in_process", [False, True], ids=["sandboxed", "in-process"])
+def test_a_publisher_made_per_message_is_told_its_messages_are_lost(grade, in_process):
+    # the callback runs and publishes, each time through a publisher too young to be matched
+    result = grade(LESSON, HERE / "publisher_per_message.py", in_process=in_process)
+    assert result.score == 0.0
+    text = feedback_of(result, "distance")[0]
+    assert "never published" not in text
+    assert "publishers on it, a new one for each message" in text
+    assert "create the publisher once, in __init__" in text
+
+
+def test_a_turn_that_never_brings_the_turtle_back_is_told_it_circles(grade):
+    # from the corner start, outside its own box, its tight turn never gets back in
+    result = grade(LESSON, HERE / "circles_outside_its_box.py")
+    assert result.score < 0.9 * result.max_score
+    assert failed_checks(result) == {"coverage"}
+    corner = [t.output for t in result.tests if t.check == "coverage" and t.scenario == "corner"][0]
+    assert "to the end the turtle went round and round in circles 1.0 m across at (9.1, 8.4)" in corner
+    assert "did the condition that ends it ever hold again?" in corner
+
+
+def test_a_turn_rate_divided_by_the_speed_is_caught_circling_after_a_crossing(grade):
+    # 7.5 rad/s at 1 m/s: a circle 0.27 m across just outside the safe zone, for good
+    result = grade(LESSON, HERE / "turn_rate_divided_by_speed.py")
+    assert "coverage" in failed_checks(result)
+    centre = [t.output for t in result.tests if t.check == "coverage" and t.scenario == "centre"][0]
+    assert "from t=2.5 s to the end the turtle went round and round in circles 0.3 m across" in centre

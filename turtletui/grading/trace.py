@@ -80,6 +80,9 @@ class Trace:
     """Topics the controller's nodes had a geometry_msgs/msg/Twist publisher on
     during the run, whether or not they published: a silent turtle's node may
     have the right publisher and never use it."""
+    publishers_made: dict[str, int] = field(default_factory=dict)
+    """Twist topic -> publishers the controller's nodes created on it during
+    the run: more than one is a node that makes a publisher per message."""
     twin: Trace | None = None
     """The twin run, for checks that compare with one
     (:attr:`turtletui.grading.checks.Check.twin`): the same scenario and seed
@@ -103,6 +106,17 @@ _TWIST = "geometry_msgs/msg/Twist"
 _NOT_CONTROLLERS = frozenset({"sim", "scenario"})
 """Owners of the graph's endpoints that are not the controller's: the
 simulator's own nodes and a scenario's scripted teleop."""
+
+
+def controller_twist_publishers(sim: Simulation) -> dict[str, int]:
+    """Twist topic -> publishers a controller's nodes created on it during the run."""
+    made = {}
+    for topic in sim.graph.channels():
+        if topic.type_name == _TWIST:
+            count = sum(n for owner, n in topic.publishers_made.items() if owner not in _NOT_CONTROLLERS)
+            if count:
+                made[topic.name] = count
+    return made
 
 
 def controller_twist_topics(sim: Simulation) -> frozenset[str]:
@@ -212,4 +226,5 @@ class TraceCollector:
             obstacles=tuple(getattr(sim.world, "obstacles", ()) or ()),
             sim_time=sim.t,
             published=controller_twist_topics(sim),
+            publishers_made=controller_twist_publishers(sim),
         )

@@ -216,6 +216,7 @@ class Topic:
         "count",
         "_stamps",
         "publisher_owners",
+        "publishers_made",
     )
 
     def __init__(self, name: str, msg_type: type, type_name: str) -> None:
@@ -228,6 +229,8 @@ class Topic:
         self._stamps: deque[int] = deque(maxlen=_RATE_WINDOW)
         self.publisher_owners: set[str] = set()
         """Every owner that ever had a publisher here (kept after it is gone)."""
+        self.publishers_made: dict[str, int] = {}
+        """Owner -> publishers it created here, counting those since destroyed."""
 
     def rate(self, now_ns: int) -> float:
         """Messages per simulated second over the last 64 messages (0 if idle for 2 s)."""
@@ -776,6 +779,7 @@ class Graph:
         pub = Publisher(node, topic, depth, node.owner, qos, self.now_ns)
         topic.publishers.append(pub)
         topic.publisher_owners.add(node.owner)
+        topic.publishers_made[node.owner] = topic.publishers_made.get(node.owner, 0) + 1
         if self.outbox is not None:
             self.outbox.declared(pub)
         for sub in topic.subscriptions:

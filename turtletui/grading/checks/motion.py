@@ -37,7 +37,8 @@ def coverage(trace: Trace, th: Mapping[str, Any]) -> Verdict:
     ix = np.clip((poses[:, 1] / cell).astype(int), 0, cells - 1)
     iy = np.clip((poses[:, 2] / cell).astype(int), 0, cells - 1)
     visited = len(set(zip(ix.tolist(), iy.tolist(), strict=True)))
-    return _held(trace, measured("arena covered:", bounds(visited / (cells * cells), th)), turtle_of(th))
+    verdict = _held(trace, measured("arena covered:", bounds(visited / (cells * cells), th)), turtle_of(th))
+    return _circling(trace, verdict, turtle_of(th))
 
 
 HELD_SHARE = 0.25
@@ -86,6 +87,65 @@ def _held(trace: Trace, verdict: Verdict, turtle: str) -> Verdict:
     return replace(verdict, measured=verdict.measured + note)
 
 
+CIRCLE_SPAN = 2.5
+"""Metres across (x and y) within which a turtle that keeps turning one way is going round in circles."""
+CIRCLE_DRIFT = 0.25
+"""Metres a circle may drift (turtlesim's steps do not close it exactly) and still be the same circle."""
+CIRCLE_TURNS = 2.0
+"""Full turns one way, at least, that make a stretch of a run going round in circles."""
+
+
+def circling(trace: Trace, turtle: str) -> tuple[float, float, float, float] | None:
+    """When the turtle ended its run going round in circles (turning one way
+    round a circle :data:`CIRCLE_DRIFT` to :data:`CIRCLE_SPAN` metres across,
+    :data:`CIRCLE_TURNS` turns or more, for :data:`HELD_SHARE` of the run or
+    more): since when, the centre (x, y) and how many metres across; else None."""
+    poses = trace.pose_array(turtle)
+    if len(poses) < 3 or trace.jumped(turtle).any():
+        return None
+    x, y = poses[:, 1], poses[:, 2]
+    span = np.maximum(
+        np.maximum.accumulate(x[::-1])[::-1] - np.minimum.accumulate(x[::-1])[::-1],
+        np.maximum.accumulate(y[::-1])[::-1] - np.minimum.accumulate(y[::-1])[::-1],
+    )
+    # the last full turn gives the circle's size; it began where the path first stayed that close
+    heading = np.unwrap(poses[:, 3])
+    whole = np.flatnonzero(np.abs(heading - heading[-1]) >= math.tau)
+    across = float(span[whole[-1]]) if len(whole) else 0.0
+    if not CIRCLE_DRIFT <= across <= CIRCLE_SPAN:  # (a turn on the spot is no circle)
+        return None
+    first = int(np.argmax(span <= across + CIRCLE_DRIFT))  # the spans shrink towards the end
+    times = poses[:, 0]
+    if times[-1] - times[first] < HELD_SHARE * (times[-1] - times[0]):
+        return None
+    tail = poses[first:]
+    steps = np.diff(heading[first:])
+    turned = float(steps.sum())
+    one_way = (steps * math.copysign(1.0, turned) >= -TURN_NOISE).all()
+    if abs(turned) < CIRCLE_TURNS * math.tau or not one_way:
+        return None
+    return float(times[first]), float(tail[:, 1].mean()), float(tail[:, 2].mean()), across
+
+
+def _circling(trace: Trace, verdict: Verdict, turtle: str) -> Verdict:
+    """A failed verdict of a turtle that ended its run going round in
+    circles, told so: the turn that should have ended (back on course, away
+    from a wall) never did, and "it stayed in a small part" alone does not
+    say that it drove off well and was caught later."""
+    if verdict.passed:
+        return verdict
+    found = circling(trace, turtle)
+    if found is None:
+        return verdict
+    since, cx, cy, across = found
+    note = (
+        f"; from t={since:.1f} s to the end the turtle went round and round in circles {across:.1f} m across "
+        f"at ({cx:.1f}, {cy:.1f}), turning one way all the time: the turn it began there never ended "
+        "(did the condition that ends it ever hold again?)"
+    )
+    return replace(verdict, measured=verdict.measured + note)
+
+
 def _distance(trace: Trace, turtle: str) -> float:
     """Metres driven: teleports and resets move the turtle without driving it."""
     poses = trace.pose_array(turtle)
@@ -112,7 +172,16 @@ def _unheard(trace: Trace, verdict: Verdict, turtle: str, moved: bool) -> Verdic
     if verdict.passed or moved or len(trace.command_array(turtle)):
         return verdict
     topic = f"/{turtle}/cmd_vel"
-    if topic in trace.published:
+    made = trace.publishers_made.get(topic, 0)
+    if made > 1:
+        # a publisher per message: each is discovered too late for its one message
+        note = (
+            f"; nothing reached turtlesim on {topic}: your node created {made} publishers on it, a new one "
+            "for each message, and a publisher made just before it publishes is not yet matched with "
+            "turtlesim's subscription (DDS discovery takes a moment), so its message is lost: create the "
+            "publisher once, in __init__, and publish through that one"
+        )
+    elif topic in trace.published:
         # the right publisher, never used: the code that publishes never ran
         note = (
             f"; nothing was published on {topic}: your node has a publisher on it but never published "
