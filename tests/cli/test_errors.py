@@ -145,3 +145,21 @@ def test_usage_errors_are_one_line_naming_the_option_and_the_value(_cache: Path)
     assert helped.exit_code == 0 and "gradescope" in helped.stdout
     assert "internal error" not in bad.stderr + helped.stderr
     assert not (_cache / "turtletui").exists()
+
+
+def test_a_controller_file_that_cannot_be_read_is_one_line_naming_it(tmp_path: Path, monkeypatch: pytest.MonkeyPatch):
+    # as for a file of another user's that this one may not read (root reads every file, so the
+    # refusal is made here): one line naming the file and the cause, no traceback
+    node = tmp_path / "node.py"
+    node.write_text("import rclpy\n")
+    real_read_bytes = Path.read_bytes
+
+    def refused(path: Path) -> bytes:
+        if path == node:
+            raise PermissionError(13, "Permission denied", str(path))
+        return real_read_bytes(path)
+
+    monkeypatch.setattr(Path, "read_bytes", refused)
+    result = CliRunner().invoke(app, ["run", str(node), "--headless", "--duration", "1"])
+    stderr = one_line_error(result)
+    assert f"{node}: cannot be read (Permission denied): check its permissions" in stderr

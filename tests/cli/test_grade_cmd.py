@@ -143,8 +143,20 @@ def test_a_check_the_lesson_names_that_does_not_exist_is_a_one_line_error(klass:
 def test_per_student_problems_are_in_their_rows_with_score_0_and_the_rest_is_graded(tmp_path: Path, lesson: Path):
     klass = make_class(
         tmp_path / "class",
-        {"ann": HONEST, "bin": b"\x7fELF\x02\x01\x01\x00\x00\x00" + bytes(range(256)), "syn": SYNTAX_ERROR},
+        {
+            "ann": HONEST,
+            "bin": b"\x7fELF\x02\x01\x01\x00\x00\x00" + bytes(range(256)),
+            "syn": SYNTAX_ERROR,
+            # Python reads these two (a byte order mark, a coding declaration): so does turtletui
+            "bom": b"\xef\xbb\xbf" + HONEST.encode(),
+            "latin": b"# -*- coding: latin-1 -*-\n# caf\xe9\n" + HONEST.encode(),
+            "cp": b"# caf\xe9 without a declaration\n" + HONEST.encode(),
+        },
     )
+    (klass / "pipe").mkdir()
+    os.mkfifo(klass / "pipe" / "controller.py")  # read, it would block the grader for ever
+    (klass / "link").mkdir()
+    (klass / "link" / "controller.py").symlink_to("/nonexistent/controller.py")
     (klass / "nocode").mkdir()
     (klass / "nocode" / "README.md").write_text("I forgot to upload it\n")
     (klass / "two").mkdir()
@@ -155,10 +167,14 @@ def test_per_student_problems_are_in_their_rows_with_score_0_and_the_rest_is_gra
     assert result.exit_code == 0, result.stderr
     assert "Traceback" not in result.stdout + result.stderr
     rows = {s["student"]: s for s in json.loads(result.stdout)["submissions"]}
-    assert rows["ann"]["score"] == MAX_SCORE and rows["ann"]["error"] is None
+    for right in ("ann", "bom", "latin"):
+        assert rows[right]["score"] == MAX_SCORE and rows[right]["error"] is None, rows[right]
     expected = {
         "bin": "is a binary file, not Python source",
         "syn": "SyntaxError",
+        "cp": "controller.py:1: is not utf-8 text (byte 5); save it as UTF-8",
+        "pipe": "controller.py is not a regular file (a pipe or a device?)",
+        "link": "controller.py is a link (to /nonexistent/controller.py), which is not graded",
         "nocode": "no controller",
         "two": "several possible controllers (a.py, b.py)",
     }
@@ -170,7 +186,7 @@ def test_per_student_problems_are_in_their_rows_with_score_0_and_the_rest_is_gra
         assert row["max_score"] == MAX_SCORE
     # ... each with a one-line progress line, and its result kept like any other
     progress = [line for line in result.stderr.splitlines() if line.startswith("[")]
-    assert len(progress) == len(rows) == 5
+    assert len(progress) == len(rows) == 10
     assert sorted(stored_results(klass.parent / "results")) == sorted(rows)
 
 

@@ -166,7 +166,7 @@ def _code_of(function: Any) -> bytes:
 
 
 def _files_of(path: Path) -> bytes:
-    files = sorted(path.rglob("*.py")) if path.is_dir() else [path]
+    files = sorted(p for p in path.rglob("*.py") if p.is_file()) if path.is_dir() else [path]
     digest = hashlib.sha256()
     for file in files:
         digest.update(str(file.relative_to(path) if path.is_dir() else file.name).encode())

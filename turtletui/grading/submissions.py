@@ -21,6 +21,7 @@ from __future__ import annotations
 import ast
 import configparser
 import hashlib
+import os
 import re
 from dataclasses import dataclass, replace
 from pathlib import Path
@@ -86,7 +87,9 @@ class Submission:
         digest = hashlib.sha256(f"{self.executable}\0{self.function}\0{self.graded}\0".encode())
         folder = self.path if self.path.is_dir() else None
         if folder is not None:
-            files = sorted(p for p in folder.rglob("*") if p.suffix == ".py" or p.name in _PACKAGE_FILES)
+            files = sorted(
+                p for p in folder.rglob("*") if (p.suffix == ".py" or p.name in _PACKAGE_FILES) and p.is_file()
+            )
         else:
             files = [self.path]
         for file in files:
@@ -151,6 +154,8 @@ def _walk(folder: Path, depth: int = 0):
 
 
 def _read_head(path: Path) -> bytes:
+    if not path.is_file():
+        return b""  # a pipe would block the read for ever
     try:
         with open(path, "rb") as file:
             return file.read(MAX_SOURCE_BYTES)
@@ -348,8 +353,25 @@ _NOT_PYTHON = {
 
 
 def _not_python(folder: Path) -> str:
-    """", but NAME, what it is" for the first file in ``folder`` that is a
-    usual wrong hand-in (a notebook, an archive), else ""."""
+    """", but NAME, what it is" for the first thing in ``folder`` that explains
+    why no Python file was found: a folder turtletui may not read, a .py that
+    is a link (never followed: it could point at anything on the grader's
+    machine), a usual wrong hand-in (a notebook, an archive); else ""."""
+    if not os.access(folder, os.R_OK | os.X_OK):
+        return ", or turtletui may not read it (check its permissions)"
+    unreadable = _unreadable_folder(folder)
+    if unreadable is not None:
+        return f", or none turtletui may read: it may not read {unreadable.relative_to(folder)} (check its permissions)"
+    try:
+        odd = sorted(p for p in folder.rglob("*.py") if (p.is_symlink() or not p.is_file()) and not ignored(p))
+    except OSError:
+        odd = []
+    if odd:
+        shown = odd[0].relative_to(folder)
+        if odd[0].is_symlink():
+            return f", but {shown} is a link (to {os.readlink(odd[0])}), which is not graded: hand in the file itself"
+        if not odd[0].is_dir():
+            return f", but {shown} is not a regular file (a pipe or a device?)"
     try:
         files = sorted(p for p in folder.rglob("*") if p.is_file() and not ignored(p))
     except OSError:
@@ -361,6 +383,20 @@ def _not_python(folder: Path) -> str:
         if what is not None:
             return f", but {path.relative_to(folder)}, {what}"
     return ""
+
+
+def _unreadable_folder(folder: Path) -> Path | None:
+    """The first folder under ``folder`` (within MAX_DEPTH) that cannot be listed, if any."""
+    pending = [(folder, 0)]
+    while pending:
+        current, depth = pending.pop(0)
+        try:
+            entries = sorted(current.iterdir())
+        except OSError:
+            return current
+        if depth < MAX_DEPTH:
+            pending += [(e, depth + 1) for e in entries if e.is_dir() and not e.is_symlink() and not ignored(e)]
+    return None
 
 
 def _looks_like_python(path: Path) -> bool:

@@ -6,8 +6,10 @@ import ast
 import importlib.abc
 import importlib.util
 import inspect
+import io
 import os
 import sys
+import tokenize
 import types
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -45,13 +47,27 @@ def check_source(path: Path) -> str:
         raise ControllerError(f"{path}: no such file")
     if path.is_dir():
         raise ControllerError(f"{path}: is a folder; name a Python file (e.g. {path}/my_node.py)")
-    data = path.read_bytes()
+    if not path.is_file():
+        raise ControllerError(f"{path}: is not a regular file (a pipe or a device?); name a Python file")
+    try:
+        data = path.read_bytes()
+    except OSError as err:
+        raise ControllerError(f"{path}: cannot be read ({err.strerror or err}): check its permissions") from None
     if b"\0" in data[:8192]:
         raise ControllerError(f"{path}: is a binary file, not Python source")
+    # as Python reads a file: a UTF-8 byte order mark, or a coding declaration in its first two lines
     try:
-        text = data.decode("utf-8")
-    except UnicodeDecodeError as err:
-        raise ControllerError(f"{path}: is not UTF-8 text (byte {err.start})") from None
+        encoding, _ = tokenize.detect_encoding(io.BytesIO(data).readline)
+    except SyntaxError as err:
+        if "unknown encoding" in str(err):
+            raise ControllerError(f"{path}: {err}") from None
+        encoding = "utf-8"  # no declaration and not UTF-8 text: said below, with where
+    try:
+        text = data.decode(encoding)
+    except (UnicodeDecodeError, LookupError) as err:
+        start = getattr(err, "start", 0)
+        line = data.count(b"\n", 0, start) + 1
+        raise ControllerError(f"{path}:{line}: is not {encoding} text (byte {start}); save it as UTF-8") from None
     try:
         ast.parse(text, filename=str(path))
     except SyntaxError as err:
