@@ -55,6 +55,7 @@ def test_exit_status_is_0_whatever_the_scores_and_1_below_fail_under(klass: Path
     below = grade_class(klass, lesson, "--format", "csv", "--fail-under", "3")
     assert below.exit_code == 1, below.stderr
     assert below.stdout == graded.stdout  # the report is written all the same
+    assert "turtletui: 1 scored under --fail-under 3: ben (1)" in below.stderr  # and who is below says why
     assert grade_class(klass, lesson, "--format", "csv", "--fail-under", "1").exit_code == 0
 
 
