@@ -11,6 +11,7 @@ from __future__ import annotations
 import os
 import sys
 from pathlib import Path
+from typing import Any
 
 import typer
 
@@ -173,13 +174,19 @@ def grade(
     except KeyboardInterrupt:
         sys.stderr.write("turtletui: interrupted: finished results are kept; run the same command to resume\n")
         raise SystemExit(EXIT_INTERRUPTED) from None
-    if fail_under is not None:
-        below = [s for s in report.submissions if s.score < fail_under]
-        if below:
-            named = ", ".join(f"{s.student or s.submission} ({s.score:g})" for s in below[:10])
-            more = f" and {len(below) - 10} more" if len(below) > 10 else ""
-            sys.stderr.write(f"turtletui: {len(below)} scored under --fail-under {fail_under:g}: {named}{more}\n")
-            raise SystemExit(EXIT_BELOW)
+    exit_if_below(report, fail_under)
+
+
+def exit_if_below(report: Any, fail_under: float | None) -> None:
+    """Exit 1, saying who, if any submission of ``report`` scored under ``fail_under``."""
+    if fail_under is None:
+        return
+    below = [s for s in report.submissions if s.score < fail_under]
+    if below:
+        named = ", ".join(f"{s.student or s.submission} ({s.score:g})" for s in below[:10])
+        more = f" and {len(below) - 10} more" if len(below) > 10 else ""
+        sys.stderr.write(f"turtletui: {len(below)} scored under --fail-under {fail_under:g}: {named}{more}\n")
+        raise SystemExit(EXIT_BELOW)
 
 
 def check_report_options(fmt: str, roster: Path | None, hidden_tests: str) -> None:

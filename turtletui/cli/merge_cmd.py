@@ -18,9 +18,9 @@ from typer.core import TyperCommand
 
 from turtletui.cli.errors import fail
 from turtletui.cli.grade_cmd import (
-    EXIT_BELOW,
     check_output,
     check_report_options,
+    exit_if_below,
     read_roster_option,
     write_output,
 )
@@ -71,8 +71,7 @@ def merge(
             f"merged part{'s' if len(merged.parts) != 1 else ''} {parts}: "
             f"{len(merged.report.submissions)} of {students} students\n"
         )
-    if fail_under is not None and any(s.score < fail_under for s in merged.report.submissions):
-        raise SystemExit(EXIT_BELOW)
+    exit_if_below(merged.report, fail_under)
 
 
 class GradeCommand(TyperCommand):
