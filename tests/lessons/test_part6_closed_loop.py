@@ -79,7 +79,7 @@ def test_a_turn_that_never_starts_is_told_it_pushes_against_the_wall(grade):
     text = feedback_of(result, "distance")[0]
     assert "to the end the turtle was pushing against a wall" in text
     assert "did the condition that should turn it away ever hold?" in text
-    assert "or between the four comparisons, not and" in text
+    assert "join the four comparisons with `or`, not `and`" in text
 
 
 @pytest.mark.parametrize("in_process", [False, True], ids=["sandboxed", "in-process"])
