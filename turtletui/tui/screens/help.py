@@ -76,7 +76,7 @@ class HelpScreen(ModalScreen[None]):
         context = [(key_label("up,down", True) if self._ascii and keys == "↑ ↓" else keys, what)
                    for keys, what in CONTEXT_KEYS]
         return Group(
-            Text.assemble(("turtletui keys", "bold underline"), "   Esc, ? or F1 closes this page\n"),
+            Text.assemble(("turtletui keys", "bold underline"), "   Esc, ?, F1 or q closes this page\n"),
             _grid([*self._rows, ("", ""), *context]),
             Text("\nros2 console", style="bold underline"),
             _grid(CONSOLE_COMMANDS),
