@@ -235,3 +235,24 @@ def test_the_default_budgets() -> None:
     limits = Limits()
     assert limits.output_bytes == 1_000_000 and limits.output_line_chars == 1000
     assert limits.realtime_lag == 3.0 and limits.run_seconds is None
+
+
+def test_a_rate_cap_shows_so_many_lines_a_second_and_notes_the_rest() -> None:
+    # the app's cap: no budget per run, at most 3 lines a second (a clock the test moves)
+    shown: list[str] = []
+    notes: list[int] = []
+    now = [100.0]
+    budget = OutputBudget(
+        shown.append, max_bytes=1 << 40, max_lines=1 << 40, line_chars=100,
+        lines_per_second=3, clock=lambda: now[0], note=notes.append,
+    )
+    budget.feed(b"a\nb\n")
+    budget.feed(b"c\nd\ne\n")  # d and e: over this second's 3
+    assert shown == ["a", "b", "c"] and notes == []
+    now[0] = 100.5
+    budget.feed(b"f\n")  # the same second
+    now[0] = 101.2
+    budget.feed(b"g\nh\n")  # a new second: the 3 not shown are told first
+    assert shown == ["a", "b", "c", "g", "h"] and notes == [3]
+    assert budget.over is False  # the run's budget is not spent: nothing is dropped for good
+    assert budget.dropped() == "6 bytes of output dropped (3 lines over 3 a second)"

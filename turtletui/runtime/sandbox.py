@@ -63,6 +63,10 @@ class Limits:
     """Lines of print() output shown per run; the rest is counted and dropped."""
     output_line_chars: int = 1000
     """Characters of one line of print() output shown; the rest is cut."""
+    output_lines_per_second: int | None = None
+    """Lines of print() output shown per wall second, the rest counted and
+    dropped with a note each second; None: no such cap (the app has one: its
+    screen and simulation share a process with the reading of the output)."""
     log_lines: int = 20_000
     """Log records (get_logger()) kept per run; the rest is dropped with a notice."""
     log_bytes: int = 4_000_000

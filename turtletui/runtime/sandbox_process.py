@@ -117,6 +117,8 @@ class ChildProcess:
             max_lines=limits.output_lines,
             line_chars=limits.output_line_chars,
             show_stderr=self._show_errors,
+            lines_per_second=limits.output_lines_per_second,
+            note=self._note_rate_dropped,
         )
 
     @property
@@ -419,6 +421,14 @@ class ChildProcess:
                 f"{self.spec.label}: output over its budget of {size_text(self.limits.output_bytes)} or "
                 f"{self.limits.output_lines:,} lines per run: the rest is dropped",
             )
+
+    def _note_rate_dropped(self, lines: int) -> None:
+        self._log(
+            "turtletui",
+            WARN,
+            f"{self.spec.label}: {lines:,} lines of output not shown: the app shows at most "
+            f"{self.limits.output_lines_per_second:,} a second of each controller",
+        )
 
     def _show_output(self, line: str) -> None:
         self._log(f"{self.spec.name}{OUTPUT_SUFFIX}", INFO, line)

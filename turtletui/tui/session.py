@@ -44,11 +44,17 @@ _OWNER = "app"
 UNCAPPED = 1 << 62
 """A line or byte count no controller reaches."""
 
+OUTPUT_LINES_PER_SECOND = 2000
+"""print() lines of one controller the app shows a second: reading more would
+starve the simulation and the screen, which share the process (and nobody
+reads 2,000 lines a second)."""
+
 APP_LIMITS = Limits(
     start_timeout=3.0,
     cpu_seconds=None,
     output_lines=UNCAPPED,
     output_bytes=UNCAPPED,
+    output_lines_per_second=OUTPUT_LINES_PER_SECOND,
     log_lines=UNCAPPED,
     log_bytes=UNCAPPED,
 )
