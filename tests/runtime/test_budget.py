@@ -256,3 +256,31 @@ def test_a_rate_cap_shows_so_many_lines_a_second_and_notes_the_rest() -> None:
     assert shown == ["a", "b", "c", "g", "h"] and notes == [3]
     assert budget.over is False  # the run's budget is not spent: nothing is dropped for good
     assert budget.dropped() == "6 bytes of output dropped (3 lines over 3 a second)"
+
+
+def test_the_child_sends_so_many_log_records_a_second_and_logs_a_note_of_the_rest() -> None:
+    # the app's cap on a log flood, in the child: what is refused is neither sent nor
+    # counted as over the run's budget; a [turtletui] note says how many, once a second
+    from turtletui.graph.core import Graph
+    from turtletui.graph.logs import INFO, WARN
+    from turtletui.interfaces import interface_name
+    from turtletui.runtime.budget import RateCap
+    from turtletui.runtime.outbox import ParentOutbox
+
+    graph = Graph(type_name=interface_name)
+    now = [5.0]
+
+    def note(count: int) -> None:
+        graph.log("turtletui", WARN, f"{count} not shown")
+
+    outbox = ParentOutbox(graph, log_rate=RateCap(2, lambda: now[0], note))
+    outbox.install()
+    for i in range(5):
+        graph.log("flood", INFO, f"line {i}")
+    now[0] = 6.5
+    graph.log("flood", INFO, "line 5")
+    report = outbox.report(None)
+    assert [(log.node, log.text) for log in report.logs] == [
+        ("flood", "line 0"), ("flood", "line 1"), ("turtletui", "3 not shown"), ("flood", "line 5"),
+    ]
+    assert report.logs_dropped == 0

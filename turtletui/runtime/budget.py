@@ -154,17 +154,9 @@ class OutputBudget:
         lines a second of ``clock`` (the app's, where a run has no budget but the
         screen and the simulation share one process); ``note(count)`` is told,
         at the start of a second, how many the seconds before could not show."""
-        self._note = note
-        self.rate_dropped_lines = 0
         self._shows = (show, show_stderr or show)
         self.lines_per_second = lines_per_second
-        self._clock = clock
-        self._second = -1.0
-        """When the current second began (``clock``)."""
-        self._second_lines = 0
-        """Lines shown in it."""
-        self._lately = 0
-        """Lines over ``lines_per_second`` not told to ``note`` yet."""
+        self._rate = None if lines_per_second is None else RateCap(lines_per_second, clock, note)
         self.max_bytes = max_bytes
         self.max_lines = max_lines
         self.line_chars = line_chars
@@ -202,8 +194,13 @@ class OutputBudget:
             buffer = b""
             self._skipping[stream] = True
         self._buffers[stream] = buffer
-        if self.lines_per_second is not None and lines:
-            lines = self._within_rate(lines)
+        if self._rate is not None and lines:
+            room = self._rate.allow(len(lines))
+            if room < len(lines):
+                over = lines[room:]
+                self.dropped_lines += len(over)
+                self.dropped_bytes += sum(map(len, over)) + len(over)
+                lines = lines[:room]
         show = self._shows[stream]
         for index, line in enumerate(lines):
             text, cut = self._cut(line)
@@ -223,25 +220,6 @@ class OutputBudget:
                 self.cut_lines += 1
             show(text)
         return False
-
-    def _within_rate(self, lines: list[bytes]) -> list[bytes]:
-        """The first of ``lines`` that the current second has room for; the rest counted, dropped."""
-        now = self._clock()
-        if now - self._second >= 1.0:
-            self._second, self._second_lines = now, 0
-            if self._lately and self._note is not None:
-                self._note(self._lately)
-            self._lately = 0
-        room = max(self.lines_per_second - self._second_lines, 0)
-        if len(lines) > room:
-            over = lines[room:]
-            self.dropped_lines += len(over)
-            self.dropped_bytes += sum(map(len, over)) + len(over)
-            self.rate_dropped_lines += len(over)
-            self._lately += len(over)
-            lines = lines[:room]
-        self._second_lines += len(lines)
-        return lines
 
     def _cut(self, line: bytes) -> tuple[str, int]:
         """The line as shown, and how many of its bytes are cut off."""
@@ -266,8 +244,40 @@ class OutputBudget:
                 f"{self.dropped_lines:,} lines over its budget of {size_text(self.max_bytes)} "
                 f"or {self.max_lines:,} lines per run"
             )
-        if self.rate_dropped_lines:
-            why.append(f"{self.rate_dropped_lines:,} lines over {self.lines_per_second:,} a second")
+        if self._rate is not None and self._rate.dropped:
+            why.append(f"{self._rate.dropped:,} lines over {self.lines_per_second:,} a second")
         if self.cut_lines:
             why.append(f"{self.cut_lines:,} long line{'s' if self.cut_lines != 1 else ''} cut at {self.line_chars:,} characters")
         return f"{size_text(self.dropped_bytes)} of output dropped ({'; '.join(why)})"
+
+
+class RateCap:
+    """At most ``per_second`` items a second of ``clock``; ``note(count)`` is
+    told, as a new second begins, how many the seconds before refused."""
+
+    def __init__(self, per_second: int, clock: Callable[[], float], note: Callable[[int], None] | None) -> None:
+        self.per_second = per_second
+        self._clock = clock
+        self._note = note
+        self._second = -1.0
+        """When the current second began."""
+        self._taken = 0
+        """Items allowed in it."""
+        self._untold = 0
+        """Items refused and not told to ``note`` yet."""
+        self.dropped = 0
+        """Items refused in all."""
+
+    def allow(self, count: int) -> int:
+        """How many of ``count`` items may pass now (the first ones); the rest are refused."""
+        now = self._clock()
+        if now - self._second >= 1.0:
+            self._second, self._taken = now, 0
+            untold, self._untold = self._untold, 0
+            if untold and self._note is not None:
+                self._note(untold)  # (which may take an item of the new second itself)
+        room = min(max(self.per_second - self._taken, 0), count)
+        self._taken += room
+        self._untold += count - room
+        self.dropped += count - room
+        return room

@@ -32,7 +32,9 @@ from time import monotonic as _monotonic
 from typing import Any
 
 from turtletui.graph.core import Graph
+from turtletui.graph.logs import WARN
 from turtletui.runtime import protocol, wire
+from turtletui.runtime.budget import RateCap
 from turtletui.runtime.host import CallbackTracking, RunEnded
 from turtletui.runtime.outbox import OWNER, ParentOutbox
 from turtletui.runtime.scheduler import Scheduler
@@ -238,6 +240,17 @@ def _finish(outbox: ParentOutbox, loopback: Any, fd_in: int, fd_out: int, crash:
     os._exit(0)
 
 
+def _rate_note(graph: Graph, per_second: int) -> Callable[[int], None]:
+    """What the child logs of the log records it did not send for the app's cap."""
+
+    def note(count: int) -> None:
+        graph.log(
+            "turtletui", WARN, f"{count:,} log messages not shown: the app shows at most {per_second:,} a second of each controller"
+        )
+
+    return note
+
+
 def _deadlock_crash(idents: list[int], path: Any) -> protocol.Crash:
     """The Crash of a deadlock among the threads ``idents`` (the one that found
     it last): where each waits, its innermost line of the student's files."""
@@ -295,8 +308,13 @@ def main(config: dict[str, Any] | None = None) -> None:
         epoch_ns=config["epoch_ns"], type_name=type_namer(distro), type_description_names=type_description_names(distro)
     )
     graph.discovery_ns = config.get("discovery_ns", 0)
-    log_lines = config.get("limits", {}).get("log_lines")
-    outbox = ParentOutbox(graph) if log_lines is None else ParentOutbox(graph, log_budget=int(log_lines) + 1)
+    limits = config.get("limits", {})
+    log_lines, per_second = limits.get("log_lines"), limits.get("log_lines_per_second")
+    outbox = ParentOutbox(
+        graph,
+        log_budget=1 << 62 if log_lines is None else int(log_lines) + 1,
+        log_rate=None if per_second is None else RateCap(int(per_second), _monotonic, _rate_note(graph, per_second)),
+    )
     outbox.install()
     host = ChildHost(graph, outbox, fd_in, fd_out, spin_seconds=config.get("spin_seconds", 0.0))
     loopback = None

@@ -34,6 +34,7 @@ from turtletui.graph.core import (
 from turtletui.graph.logs import WARN, LogRecord
 from turtletui.interfaces import get_interface, to_values, trusted_from_values
 from turtletui.runtime import graph_mirror
+from turtletui.runtime.budget import RateCap
 from turtletui.runtime.protocol import (
     AcceptServedGoal,
     AnswerServedCancel,
@@ -93,11 +94,13 @@ class ParentOutbox:
 
     remote_owner = graph_mirror.MIRROR_OWNER
 
-    def __init__(self, graph: Graph, *, log_budget: int = 1 << 62) -> None:
+    def __init__(self, graph: Graph, *, log_budget: int = 1 << 62, log_rate: RateCap | None = None) -> None:
         self.graph = graph
         self.log_budget = log_budget
         """Log records still worth sending: the parent keeps only Limits.log_lines
         (and notices one more), so a log flood costs no more than that."""
+        self.log_rate = log_rate
+        """Log records sent per wall second (the app's Limits.log_lines_per_second)."""
         self.logs_dropped = 0
         """Log records not sent for being over the budget (the parent says how many)."""
         self.changes: list[GraphChange] = []
@@ -255,6 +258,8 @@ class ParentOutbox:
         self.cancels.append(CancelGoal(wire_id))
 
     def logged(self, record: LogRecord) -> None:
+        if self.log_rate is not None and not self.log_rate.allow(1):
+            return  # over the app's cap: its note says how many, once a second
         if self.log_budget > 0:
             self.log_budget -= 1
             call = record.call

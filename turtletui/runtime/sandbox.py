@@ -71,6 +71,10 @@ class Limits:
     """Log records (get_logger()) kept per run; the rest is dropped with a notice."""
     log_bytes: int = 4_000_000
     """Bytes of log messages kept per run; the rest is dropped with a notice."""
+    log_lines_per_second: int | None = None
+    """Log records the child sends per wall second, the rest counted and
+    dropped with a note each second; None: no such cap (the app has one, as
+    for print(): decoding a flood would starve its simulation and screen)."""
     spin_seconds: float | None = None
     """Wall seconds the simulator and the controller poll for each other's
     answer before sleeping in the kernel; None: the machine's default
@@ -184,6 +188,7 @@ class SandboxHost:
                 "memory_bytes": self.limits.memory_bytes,
                 "file_bytes": self.limits.file_bytes,
                 "log_lines": self.limits.log_lines,
+                "log_lines_per_second": self.limits.log_lines_per_second,
             },
         }
 

@@ -44,23 +44,25 @@ _OWNER = "app"
 UNCAPPED = 1 << 62
 """A line or byte count no controller reaches."""
 
-OUTPUT_LINES_PER_SECOND = 2000
-"""print() lines of one controller the app shows a second: reading more would
-starve the simulation and the screen, which share the process (and nobody
-reads 2,000 lines a second)."""
+LINES_PER_SECOND = 2000
+"""print() lines, and log records, of one controller the app shows a second:
+taking in more would starve the simulation and the screen, which share the
+process (and nobody reads 2,000 lines a second)."""
 
 APP_LIMITS = Limits(
     start_timeout=3.0,
     cpu_seconds=None,
     output_lines=UNCAPPED,
     output_bytes=UNCAPPED,
-    output_lines_per_second=OUTPUT_LINES_PER_SECOND,
+    output_lines_per_second=LINES_PER_SECOND,
     log_lines=UNCAPPED,
     log_bytes=UNCAPPED,
+    log_lines_per_second=LINES_PER_SECOND,
 )
-"""Controllers in the app live as long as the app: no CPU cap and no cap on
-what they log (the log panel keeps a window of its own); memory, files and
-the per-step deadline stay limited as when grading."""
+"""Controllers in the app live as long as the app: no CPU cap and no cap per
+run on what they log or print (the log panel keeps a window of its own), only
+LINES_PER_SECOND of each a second; memory, files and the per-step deadline
+stay limited as when grading."""
 
 RATE_SECONDS = 1.0
 """Wall seconds over which log rates are measured."""
