@@ -8,7 +8,7 @@ from typing import Any
 
 from turtletui.compat.destroyable import Destroyable
 from turtletui.compat.dispatch import dispatcher
-from turtletui.compat.executors import busy_exclusive_group
+from turtletui.compat.executors import answers_can_run
 from turtletui.compat.identity import as_rclpy
 from turtletui.compat.node import wait_for_server
 from turtletui.compat.qos import (
@@ -226,10 +226,8 @@ class ActionClient(Destroyable):
         client's requests (and its goals, if this controller serves the action)
         could be handled: neither waits for a mutually exclusive group busy with
         that callback."""
-        if busy_exclusive_group(self._callback_group):
-            return False
         server = self._node._graph.action_servers.get(self._action_name)
-        return server is None or not busy_exclusive_group(getattr(server.on_goal, "group", None))
+        return answers_can_run(self._callback_group, None if server is None else server.on_goal)
 
     def _tell_response_waits(self) -> None:
         """Say, once, that a wait inside a callback ran out its timeout because

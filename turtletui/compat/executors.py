@@ -799,6 +799,16 @@ def busy_exclusive_group(group: Any) -> bool:
     return isinstance(group, MutuallyExclusiveCallbackGroup) and group in running_groups()
 
 
+def answers_can_run(client_group: Any, server_handler: Any) -> bool:
+    """Whether, while the calling thread runs a callback, a client's answers
+    (taken in ``client_group``) and, if this controller serves the request,
+    its server's handler could run: neither waits for a mutually exclusive
+    group busy with that callback."""
+    if busy_exclusive_group(client_group):
+        return False
+    return server_handler is None or not busy_exclusive_group(getattr(server_handler, "group", None))
+
+
 _FAILURES_KEPT = 16
 """Errors of callbacks an executor keeps for spin() to raise (it raises the first)."""
 

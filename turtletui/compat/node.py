@@ -33,6 +33,7 @@ from turtletui.compat.exceptions import (  # noqa: F401  (re-exported: rclpy.nod
     validate_topic_name,
 )
 from turtletui.compat.executors import (
+    answers_can_run,
     busy_exclusive_group,
     nothing_spins,
     threads_that_can_help,
@@ -429,10 +430,8 @@ class Client(Destroyable):
         to a call (and the service's handler, if this controller serves it)
         could be handled: neither waits for a mutually exclusive group busy
         with that callback."""
-        if busy_exclusive_group(self.callback_group):
-            return False
         service = self._node._graph.services.get(self.service_name)
-        return service is None or not busy_exclusive_group(getattr(service.handler, "group", None))
+        return answers_can_run(self.callback_group, None if service is None else service.handler)
 
     def _tell_response_waits(self) -> None:
         """Say, once, that a wait inside a callback ran out its timeout because
