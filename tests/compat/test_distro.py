@@ -140,3 +140,21 @@ def test_headless_runs_take_the_lessons_distro_and_refuse_a_bad_lesson_or_pixels
         bad = cli(*args)
         assert bad.returncode == 2 and bad.stderr.startswith(message), bad.stderr
         assert len(bad.stderr.strip().splitlines()) == 1
+
+
+@pytest.mark.parametrize("sandbox", HOSTS, ids=["sandboxed", "in-process"])
+@pytest.mark.parametrize(
+    ("line", "says"),
+    [
+        ("from turtlesim.msg import Pos", "ImportError: cannot import name 'Pos' from 'turtlesim.msg'. Did you mean: 'Pose'?"),
+        ("from geometry_msgs.msg import twist", "from 'geometry_msgs.msg'. Did you mean: 'Twist'?"),
+        ("from turtlesim.msgs import Pose", "ModuleNotFoundError: No module named 'turtlesim.msgs'. Did you mean: 'turtlesim.msg'?"),
+    ],
+)
+def test_a_misspelt_import_says_which_was_meant_and_not_where_turtletui_keeps_ros(tmp_path, sandbox, line, says):
+    # as Python 3.12 says it (ROS 2 Jazzy's Ubuntu), whatever Python runs turtletui
+    path = tmp_path / "typo.py"
+    path.write_text(f"import rclpy\n{line}\n")
+    (crash,) = run([path], duration=0.5, sandbox=sandbox, distro="jazzy").crashes
+    assert says in crash.message
+    assert "turtletui" not in crash.message and "\n" not in crash.message

@@ -300,7 +300,7 @@ def main(config: dict[str, Any] | None = None) -> None:
         spin_nodes,
         user_frames,
     )
-    from turtletui.runtime.report import exit_message, exited_in_callback
+    from turtletui.runtime.report import exception_message, exit_message, exited_in_callback
 
     distro = resolve_distro(config.get("distro"))
     compat.install(distro)
@@ -376,9 +376,8 @@ def main(config: dict[str, Any] | None = None) -> None:
         within = f" of {limit / 1024**2:g} MiB" if limit else ""
         crash = protocol.Crash("memory", f"MemoryError: ran out of its memory limit{within}", tuple(frames))
     except BaseException as exc:  # noqa: BLE001 - controller code may raise anything
-        message = f"{type(exc).__name__}: {exc}" if str(exc) else type(exc).__name__
         kind = "memory" if _out_of_memory(exc) else "exception"
-        crash = protocol.Crash(kind, message, tuple(user_frames(exc.__traceback__, spec.path)))
+        crash = protocol.Crash(kind, exception_message(exc), tuple(user_frames(exc.__traceback__, spec.path)))
     _finish(outbox, loopback, fd_in, fd_out, crash)
 
 

@@ -106,8 +106,54 @@ def exit_message(code: object) -> str:
 def crash_from_exception(spec: ControllerSpec, t: float, exc: BaseException) -> CrashReport:
     from turtletui.runtime.loader import user_frames
 
+    return CrashReport(spec.label, t, "exception", exception_message(exc), user_frames(exc.__traceback__, spec.path))
+
+
+def exception_message(exc: BaseException) -> str:
+    """``Type: text`` of an exception that ended a controller; an import of a
+    name or module that is not there also says which was meant, as Python
+    3.12 does ("Did you mean: 'Pose'?"), and not where turtletui keeps
+    ROS's modules."""
     message = f"{type(exc).__name__}: {exc}" if str(exc) else type(exc).__name__
-    return CrashReport(spec.label, t, "exception", message, user_frames(exc.__traceback__, spec.path))
+    if isinstance(exc, ImportError) and exc.name:
+        message = _without_shim_path(message, exc)
+        if "Did you mean" not in message:
+            message += _meant(exc)
+    return message
+
+
+def _without_shim_path(message: str, exc: ImportError) -> str:
+    from turtletui.compat import SHIM_PATH
+
+    path = getattr(exc, "path", None)
+    if path and str(path).startswith(SHIM_PATH):
+        message = message.replace(f" ({path})", "")
+    return message
+
+
+def _meant(exc: ImportError) -> str:
+    """". Did you mean: 'X'?" for the closest name the module (or package) has, or ""."""
+    import difflib
+    import pkgutil
+    import re
+    import sys
+
+    assert exc.name is not None
+    if isinstance(exc, ModuleNotFoundError):
+        parent, _, wanted = exc.name.rpartition(".")
+        package = sys.modules.get(parent) if parent else None
+        if package is None or not hasattr(package, "__path__"):
+            return ""
+        names = [info.name for info in pkgutil.iter_modules(package.__path__)]
+        prefix = f"{parent}."
+    else:
+        found = re.match(r"cannot import name '([^']+)'", str(exc))
+        module = sys.modules.get(exc.name)
+        if found is None or module is None:
+            return ""
+        wanted, names, prefix = found.group(1), [n for n in dir(module) if not n.startswith("_")], ""
+    close = difflib.get_close_matches(wanted, names, n=1)
+    return f". Did you mean: '{prefix}{close[0]}'?" if close else ""
 
 
 def stop_turtles(sim: Simulation, owner: str) -> list[str]:
