@@ -204,12 +204,16 @@ def test_crashing_controller_exits_1_with_summary_and_its_own_file_and_line(tmp_
     assert summary and summary["sim"] == "2.000", proc.stdout
     assert summary["status"] == "1 controller(s) failed"
     assert "Traceback" not in proc.stderr
-    assert "ValueError: boom at half a second" in proc.stderr
+    assert proc.stderr.count("ValueError: boom at half a second") == 1  # said once, as the log had it
     assert "t=0.500 s" in proc.stderr
     assert f'File "{path.resolve()}", line {raise_line}, in tick' in proc.stderr
     assert 'raise ValueError("boom at half a second")' in proc.stderr
     # Only the student's own frames: nothing of turtletui's internals.
     assert "turtletui/" not in proc.stderr.replace(str(tmp_path), "")
+    # --quiet prints no log, and still says why the run failed, once
+    quiet = turtletui_cli("run", "crasher.py", "--headless", "--duration", "2", "-q", *mode, cwd=tmp_path)
+    assert quiet.returncode == 1 and quiet.stderr.count("ValueError: boom at half a second") == 1, quiet.stderr
+    assert f'File "{path.resolve()}", line {raise_line}, in tick' in quiet.stderr
 
 
 def test_duration_must_be_positive(tmp_path):

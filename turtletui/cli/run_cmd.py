@@ -168,7 +168,8 @@ def run(
         if crash.kind == "load":
             # A sandboxed file without main() or Node is bad input, as in-process.
             fail(crash.message)
-        sys.stderr.write(crash.details() + "\n")
+        if quiet:  # else the log said it already, as it happened
+            sys.stderr.write(crash.details() + "\n")
     sys.stdout.write(result.summary() + "\n")
     if result.interrupted:
         raise SystemExit(130)
