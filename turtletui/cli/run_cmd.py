@@ -121,12 +121,17 @@ def run(
     specs = resolve_controllers(controllers or [demo_controller(found)], plugins=plugins)
     sim_world = None if world_spec is None else world_spec.build(seed)
 
+    said: set[str] = set()
+    """turtletui's own lines printed: a crash the log told is not told again."""
+
     def print_log(record) -> None:
         # As under ROS: a node's log lines go to stderr in rcutils' console
         # format, what a sandboxed controller prints goes to stdout as it is,
         # and what it writes to stderr to stderr.
         if quiet:
             return
+        if record.node == "turtletui":
+            said.add(record.msg)
         if record.node.endswith(OUTPUT_SUFFIX):
             sys.stdout.write(record.msg + "\n")
         elif record.node.endswith(ERROR_SUFFIX):
@@ -168,7 +173,7 @@ def run(
         if crash.kind == "load":
             # A sandboxed file without main() or Node is bad input, as in-process.
             fail(crash.message)
-        if quiet:  # else the log said it already, as it happened
+        if crash.summary() not in said:  # (a crash the log told, as it happened, is not told twice)
             sys.stderr.write(crash.details() + "\n")
     sys.stdout.write(result.summary() + "\n")
     if result.interrupted:
