@@ -9,9 +9,23 @@ from typing import Literal
 from turtletui.compat import exceptions
 from turtletui.compat.exceptions import NameValidationException
 
-_RCL_EXPAND_AT = "at /project/src/rcl/expand_topic_name.c:"
+RCL_EXPAND_AT = "at /project/src/rcl/expand_topic_name.c:"
 """Where rcl's errors for a name it cannot expand say they come from (the Kilted wheels' build)."""
 _SUBSTITUTION = re.compile(r"\{[^}]*\}")
+_KNOWN = ("{node}", "{ns}", "{namespace}")
+"""The substitutions rcl makes in a topic name."""
+
+
+def unknown_substitution(topic: str) -> str | None:
+    """The first ``{...}`` of ``topic`` rcl cannot substitute, if any."""
+    return next((found for found in _SUBSTITUTION.findall(topic) if found not in _KNOWN), None)
+
+
+def check_substitutions(topic: str) -> None:
+    """A ValueError with rcl's text (rclpy's expand_topic_name's) for an unknown substitution."""
+    unknown = unknown_substitution(topic)
+    if unknown is not None:
+        raise ValueError(f"topic name '{topic}' is invalid: unknown substitution: {unknown}, {RCL_EXPAND_AT}164")
 
 
 def validate_node_name(node_name: str) -> Literal[True]:
@@ -47,12 +61,10 @@ def expand_topic_name(topic_name: str, node_name: str, node_namespace: str) -> s
         try:
             validate(value)
         except NameValidationException as err:
-            raise ValueError(f"{what} '{value}' is invalid: {err._error_msg}, {_RCL_EXPAND_AT}{line}") from None
+            raise ValueError(f"{what} '{value}' is invalid: {err._error_msg}, {RCL_EXPAND_AT}{line}") from None
     node_path = f"{node_namespace.rstrip('/')}/{node_name}"
     substitutions = {"{node}": node_name, "{ns}": node_namespace, "{namespace}": node_namespace}
-    for found in _SUBSTITUTION.findall(topic_name):
-        if found not in substitutions:
-            raise ValueError(f"topic name '{topic_name}' is invalid: unknown substitution: {found}, {_RCL_EXPAND_AT}164")
+    check_substitutions(topic_name)
     name = node_path + topic_name[1:] if topic_name.startswith("~") else topic_name
     name = _SUBSTITUTION.sub(lambda match: substitutions[match.group()], name)
     if not name.startswith("/"):

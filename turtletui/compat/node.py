@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import re
 import warnings
 from collections.abc import Callable, Iterator, Sequence
 from typing import Any
@@ -52,6 +51,7 @@ from turtletui.compat.logging_service import LoggingService
 from turtletui.compat.matched_events import watch_matches
 from turtletui.compat.matching import match_publisher, match_subscription, watch_mismatches
 from turtletui.compat.message_info import MessageInfo, message_info_maker, takes_message_info
+from turtletui.compat.names import RCL_EXPAND_AT, check_substitutions, unknown_substitution
 from turtletui.compat.parameter import (
     ListParametersResult,
     Parameter,
@@ -114,11 +114,6 @@ _NS = 1_000_000_000
 
 def _no_call() -> None:
     """The call of a timer made with no callback."""
-
-
-_RCL_EXPAND_AT = "at /project/src/rcl/expand_topic_name.c:"
-"""Where rcl's errors for a name it cannot expand say they come from (the Kilted wheels' build)."""
-_SUBSTITUTION = re.compile(r"\{[^}]*\}")
 
 
 def _check_msg_type(msg_type: Any) -> None:
@@ -756,7 +751,7 @@ class Node(Destroyable):
         creating an entity of that name raises."""
         self._require_alive()
         if name is None:
-            raise RCLError(f"failed to resolve name: input_topic_name argument is null, {_RCL_EXPAND_AT}60")
+            raise RCLError(f"failed to resolve name: input_topic_name argument is null, {RCL_EXPAND_AT}60")
         if not isinstance(name, str):
             raise TypeError(
                 "rclpy_resolve_name(): incompatible function arguments. The following argument types are supported:\n"
@@ -766,10 +761,10 @@ class Node(Destroyable):
         try:
             validate_topic_name(name, is_service=is_service)
         except NameValidationException as err:
-            raise RCLError(f"failed to resolve name: {err._error_msg}, {_RCL_EXPAND_AT}73") from None
-        for substitution in _SUBSTITUTION.findall(name):
-            if substitution not in ("{node}", "{ns}", "{namespace}"):
-                raise RCLError(f"failed to resolve name: unknown substitution: {substitution}, {_RCL_EXPAND_AT}164")
+            raise RCLError(f"failed to resolve name: {err._error_msg}, {RCL_EXPAND_AT}73") from None
+        unknown = unknown_substitution(name)
+        if unknown is not None:
+            raise RCLError(f"failed to resolve name: unknown substitution: {unknown}, {RCL_EXPAND_AT}164")
         expanded = self._expand(name)
         try:
             validate_full_topic_name(expanded, is_service=is_service)
@@ -786,12 +781,8 @@ class Node(Destroyable):
             try:
                 validate_topic_name(topic)
             except NameValidationException as err:
-                raise ValueError(f"topic name '{topic}' is invalid: {err._error_msg}, {_RCL_EXPAND_AT}73") from None
-            for substitution in _SUBSTITUTION.findall(topic):
-                if substitution not in ("{node}", "{ns}", "{namespace}"):
-                    raise ValueError(
-                        f"topic name '{topic}' is invalid: unknown substitution: {substitution}, {_RCL_EXPAND_AT}164"
-                    )
+                raise ValueError(f"topic name '{topic}' is invalid: {err._error_msg}, {RCL_EXPAND_AT}73") from None
+            check_substitutions(topic)
         return self._resolve(topic, is_service, only_expand=True)
 
     def _resolve(self, topic: str, is_service: bool = False, *, only_expand: bool = False) -> str:
@@ -809,11 +800,7 @@ class Node(Destroyable):
 
     def _expand(self, topic: str) -> str:
         record = self._record
-        for substitution in _SUBSTITUTION.findall(topic):  # rcl's
-            if substitution not in ("{node}", "{ns}", "{namespace}"):
-                raise ValueError(
-                    f"topic name '{topic}' is invalid: unknown substitution: {substitution}, {_RCL_EXPAND_AT}164"
-                )
+        check_substitutions(topic)
         if topic.startswith("~"):
             topic = record.fqn + topic[1:]
         if "{" in topic:
