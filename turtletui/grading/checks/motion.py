@@ -4,7 +4,7 @@ commands per pose, circles, goals and headings."""
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import replace
 from typing import Any
 
@@ -507,19 +507,18 @@ TURN_NOISE = 1e-4
 """Radians per pose below which a change of heading is noise: it neither ends a turn nor adds to it."""
 
 
-def longest_turn_of(trace: Trace, turtle: str, until: int | None = None, service: str | None = None) -> float:
+def longest_turn_of(trace: Trace, turtle: str, until: int | None = None, ends: Sequence[float] = ()) -> float:
     """The largest angle (radians) the turtle turned one way without turning
     back, over its poses up to the index ``until`` (all of them by default);
     a teleport or /reset ends a turn, as a turn the other way does, and so
-    does each call of ``service`` (answered by the pose after it)."""
+    does each time in ``ends`` (the pose after it turns anew)."""
     poses = trace.pose_array(turtle)[:until]
     if len(poses) < 2:
         return 0.0
     steps = np.diff(np.unwrap(poses[:, 3]))
     restart = trace.jumped(turtle)[: len(poses)].copy()
-    if service is not None:
-        called = [call.t for call in trace.service_calls if call.service == service]
-        after = np.searchsorted(poses[:, 0], called, side="right")
+    if len(ends):
+        after = np.searchsorted(poses[:, 0], ends, side="right")
         restart[after[after < len(poses)]] = True
     longest = turn = 0.0
     for step, jump in zip(steps.tolist(), restart[1:].tolist(), strict=True):
@@ -547,20 +546,21 @@ def longest_turn(trace: Trace, th: Mapping[str, Any]) -> Verdict:
         return Verdict(False, "the turtle never published a pose")
     until = None
     where = ""
+    service = th.get("service")
+    called = [call.t for call in trace.service_calls if call.service == service] if service else []
     if "goal" in th:
         _, dists = _goal_distances(trace, th)
         inside = np.nonzero(dists <= th.get("tolerance", 0.1))[0]
         if inside.size:
             until = int(inside[0]) + 1
             where = " on its way to the goal"
-    elif "service" in th:
-        called = [call.t for call in trace.service_calls if call.service == th["service"]]
+    elif service:
         if not called:
-            return Verdict(True, f"no call of {th['service']} ended a turn: nothing to judge")
+            return Verdict(True, f"no call of {service} ended a turn: nothing to judge")
         # the turning after the last call chases nothing the check knows of
         until = int(np.searchsorted(trace.pose_array(turtle)[:, 0], called[-1], side="right"))
-        where = f" up to each call of {th['service']}"
-    turned = longest_turn_of(trace, turtle, until, th.get("service"))
+        where = f" up to each call of {service}"
+    turned = longest_turn_of(trace, turtle, until, called)
     verdict = bounds(turned, th, " rad")
     return Verdict(
         verdict.passed, f"longest turn one way{where}: {verdict.measured} ({turned / math.tau:.2f} of a full turn)"
