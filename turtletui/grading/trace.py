@@ -76,13 +76,11 @@ class Trace:
     arena_size: float = ARENA_SIZE
     sim_time: float = 0.0
     """Simulated seconds the run actually lasted."""
-    published: frozenset[str] = frozenset()
-    """Topics the controller's nodes had a geometry_msgs/msg/Twist publisher on
-    during the run, whether or not they published: a silent turtle's node may
-    have the right publisher and never use it."""
     publishers_made: dict[str, int] = field(default_factory=dict)
     """Twist topic -> publishers the controller's nodes created on it during
-    the run: more than one is a node that makes a publisher per message."""
+    the run, whether or not they published (a silent turtle's node may have
+    the right publisher and never use it); more than one is a node that makes
+    a publisher per message."""
     twin: Trace | None = None
     """The twin run, for checks that compare with one
     (:attr:`turtletui.grading.checks.Check.twin`): the same scenario and seed
@@ -117,15 +115,6 @@ def controller_twist_publishers(sim: Simulation) -> dict[str, int]:
             if count:
                 made[topic.name] = count
     return made
-
-
-def controller_twist_topics(sim: Simulation) -> frozenset[str]:
-    """Topics on which a controller's node had a Twist publisher during the run."""
-    return frozenset(
-        topic.name
-        for topic in sim.graph.channels()
-        if topic.type_name == _TWIST and topic.publisher_owners - _NOT_CONTROLLERS
-    )
 
 
 class TraceCollector:
@@ -225,6 +214,5 @@ class TraceCollector:
             killed=self._killed,
             obstacles=tuple(getattr(sim.world, "obstacles", ()) or ()),
             sim_time=sim.t,
-            published=controller_twist_topics(sim),
             publishers_made=controller_twist_publishers(sim),
         )

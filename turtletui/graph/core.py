@@ -215,7 +215,6 @@ class Topic:
         "subscriptions",
         "count",
         "_stamps",
-        "publisher_owners",
         "publishers_made",
     )
 
@@ -227,10 +226,9 @@ class Topic:
         self.subscriptions: list[Subscription] = []
         self.count = 0
         self._stamps: deque[int] = deque(maxlen=_RATE_WINDOW)
-        self.publisher_owners: set[str] = set()
-        """Every owner that ever had a publisher here (kept after it is gone)."""
         self.publishers_made: dict[str, int] = {}
-        """Owner -> publishers it created here, counting those since destroyed."""
+        """Owner -> publishers it created here, counting those since destroyed:
+        its keys are every owner that ever had a publisher here."""
 
     def rate(self, now_ns: int) -> float:
         """Messages per simulated second over the last 64 messages (0 if idle for 2 s)."""
@@ -778,7 +776,6 @@ class Graph:
         self.version += 1
         pub = Publisher(node, topic, depth, node.owner, qos, self.now_ns)
         topic.publishers.append(pub)
-        topic.publisher_owners.add(node.owner)
         topic.publishers_made[node.owner] = topic.publishers_made.get(node.owner, 0) + 1
         if self.outbox is not None:
             self.outbox.declared(pub)

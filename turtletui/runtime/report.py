@@ -163,7 +163,7 @@ def stop_turtles(sim: Simulation, owner: str) -> list[str]:
     names = [
         name
         for name in sim.world.turtles
-        if owner in getattr(sim.graph.topics.get(f"/{name}/cmd_vel"), "publisher_owners", ())
+        if owner in getattr(sim.graph.topics.get(f"/{name}/cmd_vel"), "publishers_made", ())
     ]
 
     def stop() -> None:

@@ -181,7 +181,7 @@ def _unheard(trace: Trace, verdict: Verdict, turtle: str, moved: bool) -> Verdic
             "turtlesim's subscription (DDS discovery takes a moment), so its message is lost: create the "
             "publisher once, in __init__, and publish through that one"
         )
-    elif topic in trace.published:
+    elif made:
         # the right publisher, never used: the code that publishes never ran
         note = (
             f"; nothing was published on {topic}: your node has a publisher on it but never published "
